@@ -1,0 +1,28 @@
+//! The command line: the only module that prints.
+
+pub mod args;
+mod check;
+mod convert;
+pub mod error;
+mod input;
+pub mod render;
+mod rewrite;
+
+pub use args::Args;
+pub use error::CliError;
+
+/// 0 clean, 1 findings, 2 the tool failed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExitStatus {
+    Success = 0,
+    Failure = 1,
+    Error = 2,
+}
+
+pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
+    match &args.command {
+        args::Command::Check(check) => check::run(check),
+        args::Command::Rewrite(rewrite) => rewrite::run(rewrite),
+        args::Command::Convert(convert) => convert::run(convert),
+    }
+}

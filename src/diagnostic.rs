@@ -1,0 +1,67 @@
+//! One diagnostic type for syntax errors, lint findings and refusals to rewrite.
+//!
+//! A diagnostic is data: a stable code, a kebab-case name, a severity, a
+//! message naming what was found, a label at the primary span and a help line
+//! that says how to fix it. Rendering (miette, short lines, JSON) lives in the
+//! CLI; nothing here prints.
+
+use crate::span::Span;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Info,
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "info",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnostic {
+    pub code: &'static str,
+    pub name: &'static str,
+    pub severity: Severity,
+    pub message: String,
+    pub span: Span,
+    /// Short text shown under the span.
+    pub label: String,
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn new(code: &'static str, name: &'static str, severity: Severity, span: Span) -> Self {
+        Self {
+            code,
+            name,
+            severity,
+            message: String::new(),
+            span,
+            label: String::new(),
+            help: None,
+        }
+    }
+
+    pub fn message(mut self, message: impl Into<String>) -> Self {
+        self.message = message.into();
+        self
+    }
+
+    pub fn label(mut self, label: impl Into<String>) -> Self {
+        self.label = label.into();
+        self
+    }
+
+    pub fn help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
+}

@@ -1,0 +1,25 @@
+//! sinuprep: a preprocessor and linter for Siemens Sinumerik (840D sl / ONE)
+//! part programs.
+//!
+//! The pipeline runs one way:
+//!
+//! ```text
+//! bytes -> syntax (lossless lines and spans) -> semantic (values, CYCLE600 model)
+//!       -> rotation (pure math) -> emit (text edits) -> lint / cli (diagnostics, output)
+//! ```
+//!
+//! Modules:
+//! - [`span`]: byte ranges and their line/column positions.
+//! - [`diagnostic`]: the one diagnostic type for syntax errors, findings and refusals.
+//! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
+//! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra;
+//!   knows nothing of syntax.
+//! - [`cli`]: the command line; the only place that prints.
+//!
+//! The semantic, emit and lint layers are still to come (see the README).
+
+pub mod cli;
+pub mod diagnostic;
+pub mod rotation;
+pub mod span;
+pub mod syntax;

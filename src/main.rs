@@ -1,0 +1,17 @@
+use std::process::ExitCode;
+
+use clap::Parser;
+use sinuprep::cli::{run, Args, ExitStatus};
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    let status = match run(&args) {
+        Ok(status) => status,
+        Err(error) if error.is_broken_pipe() => ExitStatus::Success,
+        Err(error) => {
+            eprintln!("{:?}", miette::Report::new(error));
+            ExitStatus::Error
+        }
+    };
+    ExitCode::from(status as u8)
+}

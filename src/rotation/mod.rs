@@ -1,0 +1,29 @@
+//! Rotation mathematics for CYCLE600: sequences, angles <-> matrices, frames.
+//!
+//! Pure functions on nalgebra. No spans, no syntax types, no printing: the
+//! conventions are those of `spec/cycle600.md` sections 2-4 (right-handed
+//! elemental rotations, angles in degrees, intrinsic R = R_a·R_b·R_c and
+//! extrinsic R = R_c·R_b·R_a).
+
+pub mod euler;
+pub mod frame;
+pub mod sequence;
+
+pub use euler::{decompose, matrix, Angles, Decomposition};
+pub use frame::Frame;
+pub use sequence::{Axis, Kind, Sequence, SequenceError};
+
+use nalgebra::Rotation3;
+
+/// Angles of one sequence converted into another.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conversion {
+    pub matrix: Rotation3<f64>,
+    pub output: Decomposition,
+}
+
+/// Builds the rotation from `angles` in `from` and reads it back in `to`.
+pub fn convert(from: Sequence, angles: Angles, to: Sequence) -> Conversion {
+    let matrix = matrix(from, angles);
+    Conversion { matrix, output: decompose(to, &matrix) }
+}

@@ -1,0 +1,608 @@
+//! Blocks and statements: one physical line becomes one [`Block`].
+//!
+//! The first name of a statement decides what it is (`DEF`, `IF`, `GOTOF`, a
+//! frame keyword, ...); anything else is an address word, an assignment, a
+//! call or a bare command. A line is never rejected whole: what cannot be read
+//! becomes the block's `unparsed` rest, and the caller reports the error.
+
+use nom::Input as _;
+
+use crate::syntax::expr::{parse_arguments, parse_expr, parse_indices, parse_list};
+use crate::syntax::lexer::{
+    is_name_char, is_name_start, keyword, offset, parse_blank, parse_name, parse_number,
+    peek, peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
+};
+use crate::syntax::tree::*;
+
+/// The upper-case text of a name that starts `input`, for keyword dispatch.
+fn upper<'a>(input: &Input<'a>, name: Name, buffer: &'a mut [u8; 16]) -> &'a [u8] {
+    let text = &input.fragment()[..name.span.len()];
+    if text.len() > buffer.len() {
+        return b"";
+    }
+    let out = &mut buffer[..text.len()];
+    out.copy_from_slice(text);
+    out.make_ascii_uppercase();
+    out
+}
+
+/// `block := blank skip? blank block_number? blank label? statement* comment?`
+///
+/// Returns the block and, if a statement could not be read, the error.
+pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
+    let mut block = Block::default();
+    let mut input = parse_blank(input);
+    if let Ok((rest, skip)) = parse_skip(input) {
+        block.skip = Some(skip);
+        input = parse_blank(rest);
+    }
+    if let Ok((rest, number)) = parse_block_number(input) {
+        block.number = Some(number);
+        input = parse_blank(rest);
+    }
+    if let Ok((rest, label)) = parse_label(input) {
+        block.label = Some(label);
+        input = parse_blank(rest);
+    }
+    loop {
+        input = parse_blank(input);
+        match peek(&input) {
+            None => return (block, None),
+            Some(b';') => {
+                block.comment = Some(span_between(&input, &input.take_from(input.input_len())));
+                return (block, None);
+            }
+            Some(_) => match parse_statement(input) {
+                Ok((rest, statement)) => {
+                    block.statements.push(statement);
+                    input = rest;
+                }
+                Err(nom::Err::Error(error) | nom::Err::Failure(error)) => {
+                    let end = input.take_from(input.input_len());
+                    block.unparsed = Some(span_between(&input, &end));
+                    return (block, Some(error));
+                }
+                Err(nom::Err::Incomplete(_)) => unreachable!("complete parsers only"),
+            },
+        }
+    }
+}
+
+/// `skip := '/' digit?`
+pub fn parse_skip(input: Input) -> PResult<Skip> {
+    if peek(&input) != Some(b'/') {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("`/`"));
+    }
+    let level = peek_at(&input, 1).filter(u8::is_ascii_digit);
+    let rest = input.take_from(1 + usize::from(level.is_some()));
+    Ok((rest, Skip { span: span_between(&input, &rest), level: level.map(|d| d - b'0') }))
+}
+
+/// `block_number := 'N' digit+ | ':' digit+`
+pub fn parse_block_number(input: Input) -> PResult<BlockNumber> {
+    let main = match peek(&input) {
+        Some(b'N' | b'n') => false,
+        Some(b':') => true,
+        _ => return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number")),
+    };
+    let digits = input.fragment()[1..].iter().take_while(|b| b.is_ascii_digit()).count();
+    // `N10=5` would be an assignment, not a block number.
+    if digits == 0 || peek_at(&input, 1 + digits).is_some_and(|b| b == b'=' || b == b'[' || b == b'.') {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number"));
+    }
+    let after_prefix = input.take_from(1);
+    let rest = input.take_from(1 + digits);
+    Ok((
+        rest,
+        BlockNumber { span: span_between(&input, &rest), main, digits: span_between(&after_prefix, &rest) },
+    ))
+}
+
+/// `label := name ':'` (not `::`, which is not a label)
+pub fn parse_label(input: Input) -> PResult<Name> {
+    let (rest, name) = parse_name(input)?;
+    if name.span.len() < 2 || peek(&rest) != Some(b':') || peek_at(&rest, 1) == Some(b':') {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a label"));
+    }
+    Ok((rest.take_from(1), name))
+}
+
+/// `statement := keyword_statement | word | assignment | call | command`
+pub fn parse_statement(input: Input) -> PResult<Statement> {
+    let start = input;
+    let (rest, kind) = parse_statement_kind(input)?;
+    Ok((rest, Statement { span: span_between(&start, &rest), kind }))
+}
+
+fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
+    let Some(first) = peek(&input) else {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a statement"));
+    };
+    // An identifier has two leading letters (or `_`); one letter followed by
+    // anything else is an address: `X10`, `G01X5`, `R1=2`, `A3=0.5`.
+    if first.is_ascii_alphabetic() && !peek_at(&input, 1).is_some_and(|b| is_name_start(b)) {
+        return parse_word(input);
+    }
+    if first != b'$' && !is_name_start(first) {
+        return SyntaxError::at(&input, stray_kind(first));
+    }
+    let (after_name, name) = parse_name(input)?;
+    let next = parse_blank(after_name);
+    let is_assignment_like = matches!(peek(&next), Some(b'=' | b'['));
+    if !is_assignment_like && first != b'$' {
+        let mut buffer = [0u8; 16];
+        if let Some(parsed) = parse_keyword_statement(input, after_name, name, upper(&input, name, &mut buffer)) {
+            return parsed;
+        }
+    }
+    parse_assignment_call_or_command(input, name, after_name)
+}
+
+fn stray_kind(byte: u8) -> SyntaxErrorKind {
+    match byte {
+        b')' | b']' => SyntaxErrorKind::UnmatchedClose(byte),
+        b'0'..=b'9' | b'.' | b',' | b'(' | b'+' | b'-' | b'*' | b'/' | b'=' | b'<' | b'>' | b':' | b'"' | b'\'' => {
+            SyntaxErrorKind::Expected("a word, an assignment or a statement")
+        }
+        _ => SyntaxErrorKind::UnknownCharacter,
+    }
+}
+
+/// Statements introduced by a keyword; `None` when `word` is no keyword.
+fn parse_keyword_statement<'a>(
+    start: Input<'a>,
+    after: Input<'a>,
+    name: Name,
+    word: &[u8],
+) -> Option<PResult<'a, StatementKind>> {
+    let simple = |kind: StatementKind| Some(Ok((after, kind)));
+    let expr = |make: fn(Expr) -> StatementKind| Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))));
+    match word {
+        b"DEF" | b"REDEF" => Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(d)))),
+        b"PROC" => Some(parse_proc(after).map(|(r, p)| (r, StatementKind::Proc(p)))),
+        b"EXTERN" => Some(parse_extern(after)),
+        b"DEFINE" => Some(parse_define(after)),
+        b"IF" => expr(|condition| StatementKind::If { condition }),
+        b"ELSE" => simple(StatementKind::Else),
+        b"ENDIF" => simple(StatementKind::EndIf),
+        b"WHILE" => expr(|condition| StatementKind::While { condition }),
+        b"ENDWHILE" => simple(StatementKind::EndWhile),
+        b"FOR" => Some(parse_for(after)),
+        b"ENDFOR" => simple(StatementKind::EndFor),
+        b"LOOP" => simple(StatementKind::Loop),
+        b"ENDLOOP" => simple(StatementKind::EndLoop),
+        b"REPEAT" | b"REPEATB" => Some(parse_repeat(after)),
+        b"UNTIL" => expr(|condition| StatementKind::Until { condition }),
+        b"CASE" => Some(parse_case(after).map(|(r, c)| (r, StatementKind::Case(c)))),
+        b"GOTO" | b"GOTOF" | b"GOTOB" | b"GOTOC" | b"GOTOS" => {
+            Some(parse_goto(start).map(|(r, g)| (r, StatementKind::Goto(g))))
+        }
+        b"CALL" | b"PCALL" | b"MCALL" | b"EXTCALL" => Some(parse_indirect_call(after, name)),
+        b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => Some(
+            parse_expr(parse_blank(after))
+                .map(|(r, condition)| (r, StatementKind::SyncCondition { keyword: name, condition })),
+        ),
+        _ => FrameKind::ALL
+            .iter()
+            .find(|(text, _)| text.as_bytes() == word)
+            .and_then(|&(_, kind)| simple(StatementKind::Frame(FrameStatement { keyword: name, kind }))),
+    }
+}
+
+/// `word := letter (extension? blank '=' blank expr | index blank '=' blank expr | sign? number)`
+///
+/// `R<n>=` and `R[..]=` are assignments to R parameters.
+pub fn parse_word(input: Input) -> PResult<StatementKind> {
+    let address = Name { span: span_between(&input, &input.take_from(1)) };
+    let is_r = input.fragment()[0].eq_ignore_ascii_case(&b'R');
+    let after_letter = input.take_from(1);
+    let digits = after_letter.fragment().iter().take_while(|b| b.is_ascii_digit()).count();
+    let after_digits = after_letter.take_from(digits);
+    let equals = parse_blank(after_digits);
+
+    // `X1=100`, `A3=0.5`, `R1 = 2`: digits then `=` make an extension.
+    if peek(&equals) == Some(b'=') && peek_at(&equals, 1) != Some(b'=') {
+        let (rest, value) = parse_expr(parse_blank(equals.take_from(1)))?;
+        if is_r && digits > 0 {
+            let name = Name { span: span_between(&input, &after_digits) };
+            let target = Variable { span: name.span, name, indices: Vec::new() };
+            return Ok((rest, StatementKind::Assign(Assign { target, value })));
+        }
+        let extension = (digits > 0).then(|| span_between(&after_letter, &after_digits));
+        return Ok((rest, StatementKind::Word(Word { address, extension, index: Vec::new(), value: WordValue::Expr(value) })));
+    }
+    if digits == 0 && peek(&after_letter) == Some(b'[') {
+        let (after_index, index) = parse_indices(after_letter, 0)?;
+        let equals = parse_blank(after_index);
+        if peek(&equals) != Some(b'=') {
+            return SyntaxError::fail(offset(&equals), SyntaxErrorKind::Expected("`=` after an indexed address"));
+        }
+        let (rest, value) = parse_expr(parse_blank(equals.take_from(1)))?;
+        if is_r {
+            let target = Variable { span: span_between(&input, &after_index), name: address, indices: index };
+            return Ok((rest, StatementKind::Assign(Assign { target, value })));
+        }
+        return Ok((rest, StatementKind::Word(Word { address, extension: None, index, value: WordValue::Expr(value) })));
+    }
+    // `X-12.5`, `F.02`, `G01`: the number directly after the letter.
+    let mut number_start = after_letter;
+    let negative = match peek(&number_start) {
+        Some(sign @ (b'-' | b'+')) => {
+            number_start = number_start.take_from(1);
+            sign == b'-'
+        }
+        _ => false,
+    };
+    if !matches!(peek(&number_start), Some(b'0'..=b'9' | b'.' | b'\'')) {
+        return SyntaxError::fail(address.span.start, SyntaxErrorKind::MissingValue);
+    }
+    let (rest, mut number) = parse_number(number_start)?;
+    number.span = span_between(&after_letter, &rest);
+    if negative {
+        number.value = -number.value;
+    }
+    Ok((rest, StatementKind::Word(Word { address, extension: None, index: Vec::new(), value: WordValue::Number(number) })))
+}
+
+/// `assignment := variable blank '=' blank expr` ;
+/// `call := name blank arguments` ; `command := name`
+fn parse_assignment_call_or_command<'a>(start: Input<'a>, name: Name, after_name: Input<'a>) -> PResult<'a, StatementKind> {
+    let (after_index, indices) = parse_indices(after_name, 0)?;
+    let next = parse_blank(after_index);
+    match peek(&next) {
+        Some(b'=') if peek_at(&next, 1) != Some(b'=') => {
+            let (rest, value) = parse_expr(parse_blank(next.take_from(1)))?;
+            let target = Variable { span: span_between(&start, &after_index), name, indices };
+            Ok((rest, StatementKind::Assign(Assign { target, value })))
+        }
+        Some(b'(') if indices.is_empty() => {
+            let (rest, arguments) = parse_arguments(next, 0)?;
+            Ok((rest, StatementKind::Call(Call { name, arguments })))
+        }
+        _ if !indices.is_empty() => SyntaxError::fail(offset(&next), SyntaxErrorKind::Expected("`=` after an indexed variable")),
+        _ => Ok((after_name, StatementKind::Command(name))),
+    }
+}
+
+/// `def := ('DEF' | 'REDEF') scope? attribute* data_type attribute* declarator (',' declarator)*`
+pub fn parse_def(input: Input) -> PResult<Def> {
+    let mut input = parse_blank(input);
+    let mut scope = None;
+    if let Ok((rest, name)) = keyword("NCK")(input).or_else(|_| keyword("CHAN")(input)) {
+        scope = Some(name);
+        input = parse_blank(rest);
+    }
+    let (rest, mut attributes) = parse_attributes(input)?;
+    let (rest, data_type) = parse_data_type(parse_blank(rest))?;
+    let (rest, more) = parse_attributes(parse_blank(rest))?;
+    attributes.extend(more);
+    let mut input = parse_blank(rest);
+    let mut variables = Vec::new();
+    loop {
+        let (rest, declarator) = parse_declarator(input)?;
+        variables.push(declarator);
+        let rest = parse_blank(rest);
+        if peek(&rest) == Some(b',') {
+            input = parse_blank(rest.take_from(1));
+        } else {
+            return Ok((rest, Def { scope, attributes, data_type, variables }));
+        }
+    }
+}
+
+const VALUED_ATTRIBUTES: [&str; 10] = ["APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI"];
+const FLAG_ATTRIBUTES: [&str; 7] = ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
+
+/// `attribute := ('APR' | 'APW' | ... | 'LLI' | 'ULI') expr | 'SYNR' | ... | 'PRLOC'`
+pub fn parse_attributes(mut input: Input) -> PResult<Vec<Attribute>> {
+    let mut attributes = Vec::new();
+    loop {
+        let Ok((rest, keyword)) = parse_name(input) else {
+            return Ok((input, attributes));
+        };
+        let text = &input.fragment()[..keyword.span.len()];
+        let is = |list: &[&str]| list.iter().any(|k| text.eq_ignore_ascii_case(k.as_bytes()));
+        if is(&VALUED_ATTRIBUTES) {
+            let (rest, value) = parse_expr(parse_blank(rest))?;
+            attributes.push(Attribute { keyword, value: Some(value) });
+            input = parse_blank(rest);
+        } else if is(&FLAG_ATTRIBUTES) {
+            attributes.push(Attribute { keyword, value: None });
+            input = parse_blank(rest);
+        } else {
+            return Ok((input, attributes));
+        }
+    }
+}
+
+const TYPES: [(&str, TypeKind); 7] = [
+    ("INT", TypeKind::Int),
+    ("REAL", TypeKind::Real),
+    ("BOOL", TypeKind::Bool),
+    ("CHAR", TypeKind::Char),
+    ("STRING", TypeKind::String),
+    ("AXIS", TypeKind::Axis),
+    ("FRAME", TypeKind::Frame),
+];
+
+/// `data_type := 'INT' | 'REAL' | 'BOOL' | 'CHAR' | 'STRING' '[' expr ']' | 'AXIS' | 'FRAME'`
+pub fn parse_data_type(input: Input) -> PResult<DataType> {
+    let expected = SyntaxErrorKind::Expected("a data type: INT, REAL, BOOL, CHAR, STRING[n], AXIS or FRAME");
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), expected);
+    };
+    let text = &input.fragment()[..name.span.len()];
+    let Some(&(_, kind)) = TYPES.iter().find(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes())) else {
+        return SyntaxError::fail(offset(&input), expected);
+    };
+    let mut rest = rest;
+    let mut length = None;
+    if kind == TypeKind::String {
+        let (after, mut list) = parse_indices(rest, 0)?;
+        if list.len() > 1 {
+            return SyntaxError::fail(offset(&rest), SyntaxErrorKind::Expected("one length, `STRING[n]`"));
+        }
+        length = list.pop();
+        rest = after;
+    }
+    Ok((rest, DataType { span: span_between(&input, &rest), kind, length }))
+}
+
+/// `declarator := name dimensions? (blank '=' blank initializer)?`
+pub fn parse_declarator(input: Input) -> PResult<Declarator> {
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("a variable name"));
+    };
+    let (rest, dimensions) = if peek(&rest) == Some(b'[') {
+        let (rest, list) = parse_list(rest, b'[', b']', 0)?;
+        (rest, list.items)
+    } else {
+        (rest, Vec::new())
+    };
+    let equals = parse_blank(rest);
+    if peek(&equals) != Some(b'=') {
+        return Ok((rest, Declarator { name, dimensions, init: None }));
+    }
+    let (rest, init) = parse_initializer(parse_blank(equals.take_from(1)))?;
+    Ok((rest, Declarator { name, dimensions, init: Some(init) }))
+}
+
+/// `initializer := '(' argument (',' argument)+ ')' | expr`
+pub fn parse_initializer(input: Input) -> PResult<Initializer> {
+    if peek(&input) == Some(b'(') {
+        if let Ok((rest, list)) = parse_arguments(input, 0) {
+            if list.items.len() > 1 {
+                return Ok((rest, Initializer::List(list)));
+            }
+        }
+    }
+    parse_expr(input).map(|(rest, expr)| (rest, Initializer::Expr(expr)))
+}
+
+/// `proc := 'PROC' name (blank '(' (parameter (',' parameter)*)? ')')? (blank name)*`
+pub fn parse_proc(input: Input) -> PResult<Proc> {
+    let input = parse_blank(input);
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the procedure's name"));
+    };
+    let mut input = parse_blank(rest);
+    let mut parameters = Vec::new();
+    if peek(&input) == Some(b'(') {
+        let open = input;
+        input = parse_blank(input.take_from(1));
+        if peek(&input) != Some(b')') {
+            loop {
+                let (rest, parameter) = parse_parameter(input)?;
+                parameters.push(parameter);
+                input = parse_blank(rest);
+                match peek(&input) {
+                    Some(b',') => input = parse_blank(input.take_from(1)),
+                    Some(b')') => break,
+                    None => return SyntaxError::fail(offset(&open), SyntaxErrorKind::UnclosedBracket(b'(')),
+                    Some(_) => return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("`,` or `)` in the parameter list")),
+                }
+            }
+        }
+        input = input.take_from(1);
+    }
+    let mut attributes = Vec::new();
+    loop {
+        let at = parse_blank(input);
+        match parse_name(at) {
+            Ok((rest, attribute)) => {
+                attributes.push(attribute);
+                input = rest;
+            }
+            Err(_) => return Ok((input, Proc { name, parameters, attributes })),
+        }
+    }
+}
+
+/// `parameter := 'VAR'? data_type blank declarator`
+pub fn parse_parameter(input: Input) -> PResult<Parameter> {
+    let start = input;
+    let (rest, by_reference) = match keyword("VAR")(input) {
+        Ok((rest, _)) => (parse_blank(rest), true),
+        Err(_) => (input, false),
+    };
+    let (rest, data_type) = parse_data_type(rest)?;
+    let (rest, declarator) = parse_declarator(parse_blank(rest))?;
+    Ok((rest, Parameter { span: span_between(&start, &rest), by_reference, data_type, declarator }))
+}
+
+/// `extern := 'EXTERN' name ('(' any ')')?`
+pub fn parse_extern(input: Input) -> PResult<StatementKind> {
+    let input = parse_blank(input);
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the subprogram's name"));
+    };
+    let next = parse_blank(rest);
+    if peek(&next) != Some(b'(') {
+        return Ok((rest, StatementKind::Extern { name, parameters: None }));
+    }
+    match memchr::memchr(b')', next.fragment()) {
+        Some(close) => {
+            let after = next.take_from(close + 1);
+            Ok((after, StatementKind::Extern { name, parameters: Some(span_between(&next, &after)) }))
+        }
+        None => SyntaxError::fail(offset(&next), SyntaxErrorKind::UnclosedBracket(b'(')),
+    }
+}
+
+/// `define := 'DEFINE' name 'AS' any` (the macro text runs to the comment)
+pub fn parse_define(input: Input) -> PResult<StatementKind> {
+    let input = parse_blank(input);
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the macro's name"));
+    };
+    let Ok((rest, _)) = keyword("AS")(parse_blank(rest)) else {
+        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`AS` after the macro's name"));
+    };
+    let body_start = parse_blank(rest);
+    let len = memchr::memchr(b';', body_start.fragment()).unwrap_or(body_start.input_len());
+    let end = body_start.take_from(len);
+    Ok((end, StatementKind::Define { name, body: span_between(&body_start, &end) }))
+}
+
+/// `for := 'FOR' name blank '=' expr 'TO' expr`
+pub fn parse_for(input: Input) -> PResult<StatementKind> {
+    let input = parse_blank(input);
+    let Ok((rest, variable)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the loop variable"));
+    };
+    let equals = parse_blank(rest);
+    if peek(&equals) != Some(b'=') {
+        return SyntaxError::fail(offset(&equals), SyntaxErrorKind::Expected("`=` after the loop variable"));
+    }
+    let (rest, start) = parse_expr(parse_blank(equals.take_from(1)))?;
+    let Ok((rest, _)) = keyword("TO")(parse_blank(rest)) else {
+        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`TO` and the end value"));
+    };
+    let (rest, end) = parse_expr(parse_blank(rest))?;
+    Ok((rest, StatementKind::For { variable, start, end }))
+}
+
+/// `repeat := ('REPEAT' | 'REPEATB') (blank name)*` (the `P=n` after it is a word)
+pub fn parse_repeat(mut input: Input) -> PResult<StatementKind> {
+    let mut targets = Vec::new();
+    loop {
+        let at = parse_blank(input);
+        let Ok((rest, name)) = parse_name(at) else { break };
+        if matches!(peek(&parse_blank(rest)), Some(b'=')) {
+            break;
+        }
+        targets.push(name);
+        input = rest;
+    }
+    Ok((input, StatementKind::Repeat { targets }))
+}
+
+/// `case := 'CASE' expr 'OF' (expr goto)* ('DEFAULT' goto)?`
+pub fn parse_case(input: Input) -> PResult<Case> {
+    let (rest, selector) = parse_expr(parse_blank(input))?;
+    let Ok((mut input, _)) = keyword("OF")(parse_blank(rest)) else {
+        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`OF` after the CASE expression"));
+    };
+    let mut branches = Vec::new();
+    let mut default = None;
+    loop {
+        let at = parse_blank(input);
+        if matches!(peek(&at), None | Some(b';')) {
+            return Ok((input, Case { selector, branches, default }));
+        }
+        if let Ok((rest, _)) = keyword("DEFAULT")(at) {
+            let (rest, goto) = parse_goto(parse_blank(rest))?;
+            default = Some(goto);
+            input = rest;
+            continue;
+        }
+        let (rest, value) = parse_expr(at)?;
+        let (rest, goto) = parse_goto(parse_blank(rest))?;
+        branches.push((value, goto));
+        input = rest;
+    }
+}
+
+/// `goto := ('GOTO' | 'GOTOF' | 'GOTOB' | 'GOTOC') goto_target | 'GOTOS'`
+/// `goto_target := name | number | expr`
+pub fn parse_goto(input: Input) -> PResult<Goto> {
+    let Ok((rest, keyword_name)) = parse_name(input) else {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC"));
+    };
+    let text = &input.fragment()[..keyword_name.span.len()];
+    let kind = match text.to_ascii_uppercase().as_slice() {
+        b"GOTOF" => GotoKind::Forward,
+        b"GOTOB" => GotoKind::Backward,
+        b"GOTO" => GotoKind::Both,
+        b"GOTOC" => GotoKind::Conditional,
+        b"GOTOS" => return Ok((rest, Goto { keyword: keyword_name, kind: GotoKind::Start, target: None })),
+        _ => return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC")),
+    };
+    let at = parse_blank(rest);
+    let target = match peek(&at) {
+        Some(byte) if is_name_start(byte) && !is_operator_after_name(at) => {
+            let (rest, label) = parse_name(at)?;
+            (rest, GotoTarget::Label(label))
+        }
+        Some(b'0'..=b'9') if !is_operator_after_number(at) => {
+            let (rest, number) = parse_number(at)?;
+            (rest, GotoTarget::Number(number))
+        }
+        Some(b';') | None => {
+            return SyntaxError::fail(offset(&at), SyntaxErrorKind::Expected("a label or block number to jump to"));
+        }
+        _ => {
+            let (rest, expr) = parse_expr(at)?;
+            (rest, GotoTarget::Computed(expr))
+        }
+    };
+    Ok((target.0, Goto { keyword: keyword_name, kind, target: Some(target.1) }))
+}
+
+/// `GOTOF "L"<<I` and `GOTOF LBL<<I` are computed targets, not labels.
+fn is_operator_after_name(input: Input) -> bool {
+    let len = input.fragment().iter().take_while(|&&b| is_name_char(b)).count();
+    input.fragment()[len..].starts_with(b"<<")
+}
+
+fn is_operator_after_number(input: Input) -> bool {
+    let len = input.fragment().iter().take_while(|b| b.is_ascii_digit()).count();
+    input.fragment()[len..].starts_with(b"<<")
+}
+
+/// `indirect_call := ('CALL' | 'PCALL' | 'MCALL' | 'EXTCALL') any?` (kept as written up to the comment)
+pub fn parse_indirect_call<'a>(input: Input<'a>, keyword_name: Name) -> PResult<'a, StatementKind> {
+    let at = parse_blank(input);
+    let len = target_len(at.fragment());
+    if len == 0 {
+        return Ok((input, StatementKind::IndirectCall { keyword: keyword_name, target: None }));
+    }
+    let end = at.take_from(len);
+    let span = span_between(&at, &end);
+    if let Some(quote) = unclosed_quote(&at.fragment()[..len]) {
+        return SyntaxError::fail(span.start + quote, SyntaxErrorKind::UnclosedString);
+    }
+    Ok((end, StatementKind::IndirectCall { keyword: keyword_name, target: Some(span) }))
+}
+
+/// Up to the comment (outside strings), without trailing blanks.
+fn target_len(bytes: &[u8]) -> usize {
+    let mut in_string = false;
+    let mut end = bytes.len();
+    for (i, &b) in bytes.iter().enumerate() {
+        match b {
+            b'"' => in_string = !in_string,
+            b';' if !in_string => {
+                end = i;
+                break;
+            }
+            _ => {}
+        }
+    }
+    bytes[..end].iter().rposition(|&b| !crate::syntax::lexer::is_blank(b)).map_or(0, |p| p + 1)
+}
+
+fn unclosed_quote(bytes: &[u8]) -> Option<usize> {
+    let quotes: Vec<usize> = memchr::memchr_iter(b'"', bytes).collect();
+    (quotes.len() % 2 == 1).then(|| quotes[quotes.len() - 1])
+}

@@ -1,0 +1,349 @@
+//! Expressions with Sinumerik operator priority (Siemens PM, "Priority of the
+//! operations"): comparisons bind weakest, below `<<`, `OR`, `XOR`, `AND`, the
+//! bit operators, `+ -`, and `* / DIV MOD`; `NOT` and `B_NOT` bind strongest.
+//! `:` (frame chaining) sits below everything. Same priority: left to right.
+//!
+//! This module only builds the tree; evaluating it is the semantic layer's job.
+
+use nom::Input as _;
+
+use crate::syntax::lexer::{
+    is_name_start, offset, parse_blank, parse_name, parse_number, parse_string, peek, peek_at,
+    span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
+};
+use crate::syntax::tree::{
+    Argument, Arguments, BinaryOp, Call, Expr, ExprKind, UnaryOp, Variable,
+};
+
+/// Nesting deeper than this is refused with a diagnostic instead of
+/// overflowing the stack; real programs stay far below it.
+pub const MAX_DEPTH: usize = 256;
+
+/// `expr := chain`
+pub fn parse_expr(input: Input) -> PResult<Expr> {
+    parse_binary(input, 0, 0)
+}
+
+fn deeper(input: &Input, depth: usize) -> Result<usize, nom::Err<SyntaxError>> {
+    if depth >= MAX_DEPTH {
+        SyntaxError::fail(offset(input), SyntaxErrorKind::TooDeep)
+    } else {
+        Ok(depth + 1)
+    }
+}
+
+/// Priority levels, weakest first.
+const CHAIN: u8 = 0;
+const COMPARISON: u8 = 1;
+const CONCAT: u8 = 2;
+const OR: u8 = 3;
+const XOR: u8 = 4;
+const AND: u8 = 5;
+const BIT_OR: u8 = 6;
+const BIT_XOR: u8 = 7;
+const BIT_AND: u8 = 8;
+const ADDITIVE: u8 = 9;
+const MULTIPLICATIVE: u8 = 10;
+
+/// The binary operator after optional blanks, its level and the input after it.
+fn peek_binary_operator(input: Input) -> Option<(BinaryOp, u8, Input)> {
+    let at = parse_blank(input);
+    let bytes = *at.fragment();
+    let two = bytes.get(..2);
+    let symbol = match two {
+        Some(b"==") => Some((BinaryOp::Eq, COMPARISON, 2)),
+        Some(b"<>") => Some((BinaryOp::Ne, COMPARISON, 2)),
+        Some(b"<=") => Some((BinaryOp::Le, COMPARISON, 2)),
+        Some(b">=") => Some((BinaryOp::Ge, COMPARISON, 2)),
+        Some(b"<<") => Some((BinaryOp::Concat, CONCAT, 2)),
+        _ => match bytes.first() {
+            Some(b'<') => Some((BinaryOp::Lt, COMPARISON, 1)),
+            Some(b'>') => Some((BinaryOp::Gt, COMPARISON, 1)),
+            Some(b'+') => Some((BinaryOp::Add, ADDITIVE, 1)),
+            Some(b'-') => Some((BinaryOp::Sub, ADDITIVE, 1)),
+            Some(b'*') => Some((BinaryOp::Mul, MULTIPLICATIVE, 1)),
+            Some(b'/') => Some((BinaryOp::Div, MULTIPLICATIVE, 1)),
+            Some(b':') => Some((BinaryOp::Chain, CHAIN, 1)),
+            _ => None,
+        },
+    };
+    if let Some((op, level, len)) = symbol {
+        return Some((op, level, at.take_from(len)));
+    }
+    if !peek(&at).is_some_and(is_name_start) {
+        return None;
+    }
+    let (rest, name) = parse_name(at).ok()?;
+    let word = name.span.of_fragment(&at);
+    let (op, level) = WORD_OPERATORS
+        .iter()
+        .find(|(text, _, _)| word.eq_ignore_ascii_case(text.as_bytes()))
+        .map(|&(_, op, level)| (op, level))?;
+    Some((op, level, rest))
+}
+
+const WORD_OPERATORS: [(&str, BinaryOp, u8); 8] = [
+    ("DIV", BinaryOp::IntDiv, MULTIPLICATIVE),
+    ("MOD", BinaryOp::Mod, MULTIPLICATIVE),
+    ("B_AND", BinaryOp::BitAnd, BIT_AND),
+    ("B_XOR", BinaryOp::BitXor, BIT_XOR),
+    ("B_OR", BinaryOp::BitOr, BIT_OR),
+    ("AND", BinaryOp::And, AND),
+    ("XOR", BinaryOp::Xor, XOR),
+    ("OR", BinaryOp::Or, OR),
+];
+
+trait SpanOfFragment {
+    fn of_fragment<'a>(self, input: &Input<'a>) -> &'a [u8];
+}
+
+impl SpanOfFragment for crate::span::Span {
+    /// The bytes of a span that starts where `input` starts.
+    fn of_fragment<'a>(self, input: &Input<'a>) -> &'a [u8] {
+        &input.fragment()[..self.len()]
+    }
+}
+
+/// `binary(level) := unary (operator(level' >= level) binary(level' + 1))*`
+fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
+    let depth = deeper(&input, depth)?;
+    let (mut input, mut lhs) = parse_unary(input, depth)?;
+    while let Some((op, level, after)) = peek_binary_operator(input) {
+        if level < min_level {
+            break;
+        }
+        let (rest, rhs) = parse_binary(parse_blank(after), level + 1, depth)?;
+        let span = lhs.span.to(rhs.span);
+        lhs = Expr {
+            span,
+            kind: ExprKind::Binary { op, lhs: Box::new(lhs), rhs: Box::new(rhs) },
+        };
+        input = rest;
+    }
+    Ok((input, lhs))
+}
+
+/// `unary := ('-' | '+' | 'NOT' | 'B_NOT') unary | primary`
+fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
+    let depth = deeper(&input, depth)?;
+    let start = input;
+    let symbol = match peek(&input) {
+        Some(b'-') => Some((UnaryOp::Neg, 1)),
+        Some(b'+') => Some((UnaryOp::Plus, 1)),
+        _ => None,
+    };
+    let word = symbol.or_else(|| {
+        let (_, name) = parse_name(input).ok()?;
+        let text = name.span.of_fragment(&input);
+        if text.eq_ignore_ascii_case(b"NOT") {
+            Some((UnaryOp::Not, 3))
+        } else if text.eq_ignore_ascii_case(b"B_NOT") {
+            Some((UnaryOp::BitNot, 5))
+        } else {
+            None
+        }
+    });
+    let Some((op, len)) = word else {
+        return parse_primary(input, depth);
+    };
+    let (rest, operand) = parse_unary(parse_blank(input.take_from(len)), depth)?;
+    Ok((
+        rest,
+        Expr {
+            span: span_between(&start, &rest),
+            kind: ExprKind::Unary { op, operand: Box::new(operand) },
+        },
+    ))
+}
+
+/// `primary := number | string | '(' expr ')' | variable | call`
+fn parse_primary(input: Input, depth: usize) -> PResult<Expr> {
+    let start = input;
+    match peek(&input) {
+        Some(b'0'..=b'9' | b'.' | b'\'') => {
+            let (rest, number) = parse_number(input)?;
+            Ok((rest, Expr { span: number.span, kind: ExprKind::Number(number) }))
+        }
+        Some(b'"') => {
+            let (rest, span) = parse_string(input)?;
+            Ok((rest, Expr { span, kind: ExprKind::String }))
+        }
+        Some(b'(') => {
+            let inner = parse_blank(input.take_from(1));
+            let (rest, inner) = parse_binary(inner, 0, depth)?;
+            let rest = parse_blank(rest);
+            if peek(&rest) != Some(b')') {
+                return close_error(&start, &rest, b'(');
+            }
+            let rest = rest.take_from(1);
+            Ok((rest, Expr { span: span_between(&start, &rest), kind: ExprKind::Paren(Box::new(inner)) }))
+        }
+        Some(b'$') => parse_variable_or_call(input, depth),
+        Some(byte) if is_name_start(byte) => parse_variable_or_call(input, depth),
+        Some(b')' | b']') => SyntaxError::at(&input, SyntaxErrorKind::UnmatchedClose(input.fragment()[0])),
+        Some(byte) if !is_known_byte(byte) => SyntaxError::at(&input, SyntaxErrorKind::UnknownCharacter),
+        _ => SyntaxError::at(&input, SyntaxErrorKind::Expected("an expression")),
+    }
+}
+
+/// Bytes that can start or continue some token of the language.
+pub fn is_known_byte(byte: u8) -> bool {
+    byte.is_ascii_alphanumeric()
+        || b"_$.'\"()[]+-*/<>=:,;%".contains(&byte)
+        || crate::syntax::lexer::is_blank(byte)
+}
+
+/// The error for a `(` or `[` at `open` whose partner is missing at `at`.
+fn close_error<T>(open: &Input, at: &Input, bracket: u8) -> PResult<'static, T> {
+    match peek(at) {
+        // Something unreadable inside: report that, it is the real cause.
+        Some(byte) if !is_known_byte(byte) => SyntaxError::fail(offset(at), SyntaxErrorKind::UnknownCharacter),
+        _ => SyntaxError::fail(offset(open), SyntaxErrorKind::UnclosedBracket(bracket)),
+    }
+}
+
+/// `variable := name ('[' expr (',' expr)* ']')?` ; `call := name arguments`
+fn parse_variable_or_call(input: Input, depth: usize) -> PResult<Expr> {
+    let start = input;
+    let (rest, name) = parse_name(input)?;
+    if peek(&rest) == Some(b'(') {
+        let (rest, arguments) = parse_arguments(rest, depth)?;
+        return Ok((rest, Expr { span: span_between(&start, &rest), kind: ExprKind::Call(Call { name, arguments }) }));
+    }
+    let (rest, indices) = parse_indices(rest, depth)?;
+    let span = span_between(&start, &rest);
+    Ok((rest, Expr { span, kind: ExprKind::Variable(Variable { span, name, indices }) }))
+}
+
+/// `indices := ('[' expr (',' expr)* ']')?`
+pub fn parse_indices(input: Input, depth: usize) -> PResult<Vec<crate::syntax::tree::Expr>> {
+    if peek(&input) != Some(b'[') {
+        return Ok((input, Vec::new()));
+    }
+    let (rest, list) = parse_list(input, b'[', b']', depth)?;
+    let mut indices = Vec::with_capacity(list.items.len());
+    for item in list.items {
+        match item.value {
+            Some(value) => indices.push(value),
+            None => return SyntaxError::fail(item.span.start, SyntaxErrorKind::Expected("an index")),
+        }
+    }
+    Ok((rest, indices))
+}
+
+/// `arguments := '(' argument (',' argument)* ')'` ; `argument := expr?`
+pub fn parse_arguments(input: Input, depth: usize) -> PResult<Arguments> {
+    parse_list(input, b'(', b')', depth)
+}
+
+/// A bracketed, comma-separated list whose items may be empty.
+pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Arguments> {
+    let start = input;
+    if peek(&input) != Some(open) {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("an argument list"));
+    }
+    let depth = deeper(&input, depth)?;
+    let mut input = input.take_from(1);
+    let mut items = Vec::new();
+    loop {
+        input = parse_blank(input);
+        let item_start = input;
+        let value = match peek(&input) {
+            Some(b',') => None,
+            Some(b) if b == close => None,
+            _ => match parse_binary(input, 0, depth) {
+                Ok((rest, value)) => {
+                    input = rest;
+                    Some(value)
+                }
+                Err(nom::Err::Error(error)) => {
+                    return Err(nom::Err::Failure(list_error(&start, &input, close, error)));
+                }
+                Err(other) => return Err(other),
+            },
+        };
+        let span = match &value {
+            Some(value) => value.span,
+            None => span_between(&item_start, &item_start),
+        };
+        items.push(Argument { span, value });
+        input = parse_blank(input);
+        match peek(&input) {
+            Some(b',') => input = input.take_from(1),
+            Some(b) if b == close => {
+                let rest = input.take_from(1);
+                return Ok((rest, Arguments { span: span_between(&start, &rest), items }));
+            }
+            _ => return close_error(&start, &input, open),
+        }
+    }
+}
+
+/// An item that failed inside a list: at the end of the line it is the list
+/// that is unclosed; elsewhere the item itself is wrong.
+fn list_error(open: &Input, at: &Input, _close: u8, error: SyntaxError) -> SyntaxError {
+    if peek_at(at, 0).is_none() {
+        SyntaxError::new(offset(open), SyntaxErrorKind::UnclosedBracket(open.fragment()[0]))
+    } else {
+        error
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shape(text: &str) -> String {
+        let (rest, expr) = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect("parses");
+        assert!(rest.fragment().is_empty(), "left over: {:?}", String::from_utf8_lossy(rest.fragment()));
+        render(text.as_bytes(), &expr)
+    }
+
+    fn render(source: &[u8], expr: &Expr) -> String {
+        match &expr.kind {
+            ExprKind::Binary { op, lhs, rhs } => format!("({} {op:?} {})", render(source, lhs), render(source, rhs)),
+            ExprKind::Unary { op, operand } => format!("({op:?} {})", render(source, operand)),
+            ExprKind::Paren(inner) => render(source, inner),
+            _ => String::from_utf8_lossy(expr.span.of(source)).into_owned(),
+        }
+    }
+
+    #[test]
+    fn comparison_binds_weaker_than_and() {
+        assert_eq!(shape("A==1 AND B==2"), "((A Eq (1 And B)) Eq 2)");
+    }
+
+    #[test]
+    fn arithmetic_priority_and_left_to_right() {
+        assert_eq!(shape("2+3*4"), "(2 Add (3 Mul 4))");
+        assert_eq!(shape("10-6/2"), "(10 Sub (6 Div 2))");
+        assert_eq!(shape("7 DIV 3 MOD 2"), "((7 IntDiv 3) Mod 2)");
+        assert_eq!(shape("2*-3"), "(2 Mul (Neg 3))");
+        assert_eq!(shape("NOT A AND B"), "((Not A) And B)");
+    }
+
+    #[test]
+    fn strings_concatenate_below_or() {
+        assert_eq!(shape("\"R1=\" << R1 OR 1"), "(\"R1=\" Concat (R1 Or 1))");
+    }
+
+    #[test]
+    fn frame_chain_is_the_weakest() {
+        assert_eq!(shape("CTRANS(X,15):CROT(Z,45)"), "(CTRANS(X,15) Chain CROT(Z,45))");
+    }
+
+    #[test]
+    fn empty_arguments_are_kept() {
+        let (_, expr) = parse_expr(Input::new_extra(b"SET(0,,,9,)", 0)).expect("parses");
+        let ExprKind::Call(call) = expr.kind else { panic!("not a call") };
+        let present: Vec<bool> = call.arguments.items.iter().map(|a| a.value.is_some()).collect();
+        assert_eq!(present, [true, false, false, true, false]);
+    }
+
+    #[test]
+    fn deep_nesting_is_refused_not_overflowed() {
+        let text = "(".repeat(100_000) + "1" + &")".repeat(100_000);
+        let error = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect_err("too deep");
+        assert!(matches!(error, nom::Err::Failure(SyntaxError { kind: SyntaxErrorKind::TooDeep, .. })));
+    }
+}

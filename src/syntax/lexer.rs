@@ -1,0 +1,312 @@
+//! Token recognizers written with nom: blanks, names, numbers, strings.
+//!
+//! They work on bytes (files are often Latin-1) through `nom_locate`, whose
+//! `extra` carries the absolute offset of the line, so every token gets a file
+//! span without allocating. They do not decide what a token means.
+
+use nom::bytes::complete::{take_while, take_while1};
+use nom::error::{ErrorKind, ParseError};
+use nom::{Err, IResult, Input as _, Parser};
+use nom_locate::LocatedSpan;
+
+use crate::span::Span;
+use crate::syntax::tree::{Name, Number, NumberKind};
+
+/// A line's bytes; `extra` is the file offset where the line starts.
+pub type Input<'a> = LocatedSpan<&'a [u8], usize>;
+
+pub type PResult<'a, T> = IResult<Input<'a>, T, SyntaxError>;
+
+/// Why the parser stopped, and where.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SyntaxError {
+    pub at: usize,
+    pub kind: SyntaxErrorKind,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum SyntaxErrorKind {
+    /// Something else was expected here; the text says what.
+    Expected(&'static str),
+    UnclosedString,
+    /// The `(` or `[` at `at` has no partner on this line.
+    UnclosedBracket(u8),
+    /// A `)` or `]` without an opening partner.
+    UnmatchedClose(u8),
+    InvalidNumber(&'static str),
+    UnknownCharacter,
+    /// An address letter without a value, `X` alone.
+    MissingValue,
+    /// Parentheses or operators nested deeper than the parser follows.
+    TooDeep,
+}
+
+impl SyntaxError {
+    pub fn new(at: usize, kind: SyntaxErrorKind) -> Self {
+        Self { at, kind }
+    }
+
+    /// A recoverable error at `input` (another alternative may still match).
+    pub fn at<T>(input: &Input, kind: SyntaxErrorKind) -> Result<T, Err<SyntaxError>> {
+        Err(Err::Error(SyntaxError::new(offset(input), kind)))
+    }
+
+    /// A committed error at `at`: the construct is known, and it is broken.
+    pub fn fail<T>(at: usize, kind: SyntaxErrorKind) -> Result<T, Err<SyntaxError>> {
+        Err(Err::Failure(SyntaxError::new(at, kind)))
+    }
+}
+
+impl<'a> ParseError<Input<'a>> for SyntaxError {
+    fn from_error_kind(input: Input<'a>, _kind: ErrorKind) -> Self {
+        SyntaxError::new(offset(&input), SyntaxErrorKind::Expected("something else"))
+    }
+
+    fn append(_input: Input<'a>, _kind: ErrorKind, other: Self) -> Self {
+        other
+    }
+
+    /// Of two failed alternatives, report the one that got further.
+    fn or(self, other: Self) -> Self {
+        if other.at >= self.at {
+            other
+        } else {
+            self
+        }
+    }
+}
+
+/// The absolute file offset of `input`.
+pub fn offset(input: &Input) -> usize {
+    input.extra + input.location_offset()
+}
+
+/// The span from `start` up to (not including) where `end` begins.
+pub fn span_between(start: &Input, end: &Input) -> Span {
+    Span::new(offset(start), offset(end))
+}
+
+pub fn peek(input: &Input) -> Option<u8> {
+    input.fragment().first().copied()
+}
+
+pub fn peek_at(input: &Input, n: usize) -> Option<u8> {
+    input.fragment().get(n).copied()
+}
+
+/// Blanks separate words: space, tab, `&` and other non-printing bytes, which
+/// the control treats like a blank (Siemens PM, "Character set").
+pub fn is_blank(byte: u8) -> bool {
+    matches!(byte, b' ' | b'\t' | b'&' | 0x7f) || (byte < 0x20 && byte != b'\n' && byte != b'\r')
+}
+
+pub fn is_name_start(byte: u8) -> bool {
+    byte.is_ascii_alphabetic() || byte == b'_'
+}
+
+pub fn is_name_char(byte: u8) -> bool {
+    byte.is_ascii_alphanumeric() || byte == b'_'
+}
+
+/// `blank := (' ' | TAB | '&' | control)*`
+pub fn parse_blank(input: Input) -> Input {
+    let len = input.fragment().iter().take_while(|&&b| is_blank(b)).count();
+    input.take_from(len)
+}
+
+/// Consumes one expected byte after optional blanks.
+pub fn symbol(byte: u8) -> impl Fn(Input) -> PResult<Input> {
+    move |input| {
+        let rest = parse_blank(input);
+        if peek(&rest) == Some(byte) {
+            Ok(rest.take_split(1))
+        } else {
+            SyntaxError::at(&rest, SyntaxErrorKind::Expected("another character"))
+        }
+    }
+}
+
+/// `name := '$'* (letter | '_') (letter | digit | '_')*`
+pub fn parse_name(input: Input) -> PResult<Name> {
+    let start = input;
+    let (input, _) = take_while(|b| b == b'$').parse(input)?;
+    if !peek(&input).is_some_and(is_name_start) {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a name"));
+    }
+    let (input, _) = take_while1(is_name_char).parse(input)?;
+    Ok((
+        input,
+        Name {
+            span: span_between(&start, &input),
+        },
+    ))
+}
+
+/// A whole word that equals `keyword`, case-insensitively.
+pub fn keyword<'a>(word: &'static str) -> impl Fn(Input<'a>) -> PResult<'a, Name> {
+    move |input| {
+        let (rest, name) = parse_name(input)?;
+        if input.fragment()[..name.span.len()].eq_ignore_ascii_case(word.as_bytes()) {
+            Ok((rest, name))
+        } else {
+            SyntaxError::at(&input, SyntaxErrorKind::Expected(word))
+        }
+    }
+}
+
+/// `number := decimal | "'H" hex+ "'" | "'B" ('0'|'1')+ "'"`
+/// `decimal := (digit+ ('.' digit*)? | '.' digit+) ('EX' ('+'|'-')? digit+)?`
+pub fn parse_number(input: Input) -> PResult<Number> {
+    match peek(&input) {
+        Some(b'\'') => parse_radix_number(input),
+        Some(b'0'..=b'9' | b'.') => parse_decimal(input),
+        _ => SyntaxError::at(&input, SyntaxErrorKind::Expected("a number")),
+    }
+}
+
+fn parse_decimal(input: Input) -> PResult<Number> {
+    let start = input;
+    let bytes = *input.fragment();
+    let mut len = bytes.iter().take_while(|b| b.is_ascii_digit()).count();
+    let integer_digits = len;
+    let mut fraction_digits = 0;
+    if bytes.get(len) == Some(&b'.') {
+        len += 1;
+        fraction_digits = bytes[len..].iter().take_while(|b| b.is_ascii_digit()).count();
+        len += fraction_digits;
+    }
+    if integer_digits + fraction_digits == 0 {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a number"));
+    }
+    let mantissa_len = len;
+    let mut exponent = None;
+    if bytes.len() > len + 1 && bytes[len..len + 2].eq_ignore_ascii_case(b"EX") {
+        let mut at = len + 2;
+        if matches!(bytes.get(at), Some(b'+' | b'-')) {
+            at += 1;
+        }
+        let digits = bytes[at..].iter().take_while(|b| b.is_ascii_digit()).count();
+        if digits == 0 {
+            return SyntaxError::fail(offset(&start), SyntaxErrorKind::InvalidNumber("`EX` must be followed by the exponent's digits, as in `1.5EX3`"));
+        }
+        exponent = Some(&bytes[len + 2..at + digits]);
+        len = at + digits;
+    }
+    if bytes.get(len) == Some(&b'.') {
+        return SyntaxError::fail(offset(&start), SyntaxErrorKind::InvalidNumber("a number has at most one decimal point"));
+    }
+    let value = decimal_value(&bytes[..mantissa_len], exponent);
+    let (rest, _) = input.take_split(len);
+    let span = span_between(&start, &rest);
+    if !value.is_finite() {
+        return SyntaxError::fail(span.start, SyntaxErrorKind::InvalidNumber("the number is too large for a REAL (at most about 1.8EX308)"));
+    }
+    Ok((rest, Number { span, value, kind: NumberKind::Decimal }))
+}
+
+/// The value of `mantissa` × 10^`exponent`, both ASCII digits (already checked).
+fn decimal_value(mantissa: &[u8], exponent: Option<&[u8]>) -> f64 {
+    let mut text = String::with_capacity(mantissa.len() + 8);
+    text.extend(mantissa.iter().map(|&b| b as char));
+    if text.ends_with('.') {
+        text.push('0');
+    }
+    if let Some(exponent) = exponent {
+        text.push('e');
+        text.extend(exponent.iter().map(|&b| b as char));
+    }
+    // Only digits, one '.', and 'e' with an optional sign reach here, so the
+    // parse cannot fail; an exponent beyond i32 parses to inf or 0.
+    text.parse().unwrap_or(f64::NAN)
+}
+
+fn parse_radix_number(input: Input) -> PResult<Number> {
+    let start = input;
+    let bytes = *input.fragment();
+    let (kind, radix) = match bytes.get(1).map(u8::to_ascii_uppercase) {
+        Some(b'H') => (NumberKind::Hex, 16),
+        Some(b'B') => (NumberKind::Binary, 2),
+        _ => return SyntaxError::fail(offset(&input), SyntaxErrorKind::InvalidNumber("a quoted number is hexadecimal `'H1F'` or binary `'B101'`")),
+    };
+    let digits = bytes[2..].iter().take_while(|b| b.is_ascii_alphanumeric()).count();
+    let text = &bytes[2..2 + digits];
+    if bytes.get(2 + digits) != Some(&b'\'') {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::InvalidNumber("a quoted number ends with `'`"));
+    }
+    let value = std::str::from_utf8(text)
+        .ok()
+        .filter(|t| !t.is_empty())
+        .and_then(|t| u64::from_str_radix(t, radix).ok());
+    let Some(value) = value else {
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::InvalidNumber(if radix == 16 {
+                "`'H` takes hexadecimal digits 0-9 and A-F"
+            } else {
+                "`'B` takes binary digits 0 and 1"
+            }),
+        );
+    };
+    let (rest, _) = input.take_split(3 + digits);
+    Ok((rest, Number { span: span_between(&start, &rest), value: value as f64, kind }))
+}
+
+/// `string := '"' (any byte but '"')* '"'`: strings may not span lines.
+pub fn parse_string(input: Input) -> PResult<Span> {
+    if peek(&input) != Some(b'"') {
+        return SyntaxError::at(&input, SyntaxErrorKind::Expected("a string"));
+    }
+    match memchr::memchr(b'"', &input.fragment()[1..]) {
+        Some(end) => {
+            let (rest, _) = input.take_split(end + 2);
+            Ok((rest, span_between(&input, &rest)))
+        }
+        None => SyntaxError::fail(offset(&input), SyntaxErrorKind::UnclosedString),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn input(text: &str) -> Input<'_> {
+        Input::new_extra(text.as_bytes(), 0)
+    }
+
+    fn number(text: &str) -> f64 {
+        parse_number(input(text)).map(|(_, n)| n.value).unwrap_or(f64::NAN)
+    }
+
+    #[test]
+    fn numbers_in_every_spelling() {
+        assert_eq!(number("1"), 1.0);
+        assert_eq!(number("1."), 1.0);
+        assert_eq!(number(".5"), 0.5);
+        assert_eq!(number("1.5EX3"), 1500.0);
+        assert_eq!(number("10ex-5"), 1e-4);
+        assert_eq!(number("'H1F'"), 31.0);
+        assert_eq!(number("'b101'"), 5.0);
+    }
+
+    #[test]
+    fn bad_numbers_are_committed_errors() {
+        for bad in ["1.2.3", "1EX", "'H1G'", "'B102'", "'X1'", "1EX99999"] {
+            assert!(matches!(parse_number(input(bad)), Err(Err::Failure(_))), "{bad}");
+        }
+    }
+
+    #[test]
+    fn names_and_keywords() {
+        let (rest, name) = parse_name(input("$AA_IW[Z]")).expect("name");
+        assert_eq!(name.span, Span::new(0, 6));
+        assert_eq!(*rest.fragment(), b"[Z]");
+        assert!(keyword("GOTOF")(input("gotof x")).is_ok());
+        assert!(keyword("GOTO")(input("GOTOF x")).is_err());
+    }
+
+    #[test]
+    fn strings_do_not_span_lines() {
+        assert!(parse_string(input("\"abc\" x")).is_ok());
+        assert!(matches!(parse_string(input("\"abc")), Err(Err::Failure(_))));
+    }
+}

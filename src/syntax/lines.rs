@@ -1,0 +1,136 @@
+//! Splitting a file into physical lines, each with its exact terminator.
+//!
+//! A block ends at LF; CRLF and a lone CR also end a line (files from PCs and
+//! old controls). The last line may have no terminator. Concatenating every
+//! line's content and terminator gives back the input byte for byte.
+
+use crate::span::Span;
+
+/// How a physical line ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LineEnding {
+    Lf,
+    CrLf,
+    Cr,
+    /// The last line of a file without a final newline.
+    None,
+}
+
+impl LineEnding {
+    pub fn as_bytes(self) -> &'static [u8] {
+        match self {
+            LineEnding::Lf => b"\n",
+            LineEnding::CrLf => b"\r\n",
+            LineEnding::Cr => b"\r",
+            LineEnding::None => b"",
+        }
+    }
+}
+
+/// One physical line: its content (without terminator) and how it ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RawLine {
+    pub content: Span,
+    pub ending: LineEnding,
+}
+
+impl RawLine {
+    /// The content plus the terminator.
+    pub fn full(self) -> Span {
+        Span::new(self.content.start, self.content.end + self.ending.as_bytes().len())
+    }
+}
+
+/// Iterates over the physical lines of `source`; allocation-free.
+pub fn raw_lines(source: &[u8]) -> RawLines<'_> {
+    RawLines { source, at: 0 }
+}
+
+pub struct RawLines<'a> {
+    source: &'a [u8],
+    at: usize,
+}
+
+impl Iterator for RawLines<'_> {
+    type Item = RawLine;
+
+    fn next(&mut self) -> Option<RawLine> {
+        let start = self.at;
+        if start >= self.source.len() {
+            return None;
+        }
+        let (end, ending) = match memchr::memchr2(b'\n', b'\r', &self.source[start..]) {
+            None => (self.source.len(), LineEnding::None),
+            Some(found) => {
+                let end = start + found;
+                match (self.source[end], self.source.get(end + 1)) {
+                    (b'\n', _) => (end, LineEnding::Lf),
+                    (_, Some(b'\n')) => (end, LineEnding::CrLf),
+                    _ => (end, LineEnding::Cr),
+                }
+            }
+        };
+        let line = RawLine {
+            content: Span::new(start, end),
+            ending,
+        };
+        self.at = line.full().end;
+        Some(line)
+    }
+}
+
+/// The line ending most lines of the file use (LF for a file without any).
+pub fn dominant_ending(source: &[u8]) -> LineEnding {
+    let (mut lf, mut crlf, mut cr) = (0usize, 0usize, 0usize);
+    for line in raw_lines(source) {
+        match line.ending {
+            LineEnding::Lf => lf += 1,
+            LineEnding::CrLf => crlf += 1,
+            LineEnding::Cr => cr += 1,
+            LineEnding::None => {}
+        }
+    }
+    if crlf > lf && crlf >= cr {
+        LineEnding::CrLf
+    } else if cr > lf && cr > crlf {
+        LineEnding::Cr
+    } else {
+        LineEnding::Lf
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rebuild(source: &[u8]) -> Vec<u8> {
+        raw_lines(source)
+            .flat_map(|line| line.full().of(source).to_vec())
+            .collect()
+    }
+
+    #[test]
+    fn lines_keep_every_kind_of_terminator() {
+        let source = b"N10\nN20\r\nN30\rN40";
+        let endings: Vec<_> = raw_lines(source).map(|l| l.ending).collect();
+        assert_eq!(
+            endings,
+            [LineEnding::Lf, LineEnding::CrLf, LineEnding::Cr, LineEnding::None]
+        );
+        assert_eq!(rebuild(source), source);
+    }
+
+    #[test]
+    fn empty_lines_and_cr_before_crlf_are_lines_too() {
+        let source = b"\n\n\r\r\n";
+        assert_eq!(raw_lines(source).count(), 4);
+        assert_eq!(rebuild(source), source);
+        assert_eq!(raw_lines(b"").count(), 0);
+    }
+
+    #[test]
+    fn dominant_ending_follows_the_majority() {
+        assert_eq!(dominant_ending(b"a\r\nb\r\nc\n"), LineEnding::CrLf);
+        assert_eq!(dominant_ending(b"a"), LineEnding::Lf);
+    }
+}

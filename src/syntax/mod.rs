@@ -1,0 +1,249 @@
+//! The syntax layer: bytes in, a lossless tree of lines out.
+//!
+//! [`parse`] never fails: a line it cannot read keeps its bytes as an
+//! `unparsed` span and yields one diagnostic, and the next line is read as
+//! usual. Printing a [`Program`] copies the source lines, so
+//! `print(parse(x)) == x` for every input. This layer knows spelling only:
+//! no values, no rotations.
+
+pub mod block;
+pub mod expr;
+pub mod lexer;
+pub mod lines;
+pub mod tree;
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::span::Span;
+use lexer::{Input, SyntaxError, SyntaxErrorKind};
+use lines::{raw_lines, RawLine};
+use tree::{Block, Line, LineKind, StatementKind};
+
+/// A parsed program: its lines, in order, covering every byte of the source.
+#[derive(Debug)]
+pub struct Program<'src> {
+    pub source: &'src [u8],
+    pub lines: Vec<Line>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Program<'_> {
+    /// The program's bytes, rebuilt from its lines.
+    pub fn print(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(self.source.len());
+        for line in &self.lines {
+            out.extend_from_slice(line.raw.full().of(self.source));
+        }
+        out
+    }
+
+    pub fn blocks(&self) -> impl Iterator<Item = (&Line, &Block)> {
+        self.lines.iter().filter_map(|line| match &line.kind {
+            LineKind::Block(block) => Some((line, block)),
+            _ => None,
+        })
+    }
+}
+
+/// Parses a whole program.
+pub fn parse(source: &[u8]) -> Program<'_> {
+    let mut parser = LineParser::default();
+    let mut lines = Vec::new();
+    let mut diagnostics = Vec::new();
+    for raw in raw_lines(source) {
+        let (line, diagnostic) = parser.parse_line(source, raw);
+        lines.push(line);
+        diagnostics.extend(diagnostic);
+    }
+    Program { source, lines, diagnostics }
+}
+
+/// Parses line after line, remembering the one thing that crosses lines: a
+/// call left open at the end of the previous line (as the paper prints
+/// CYCLE600 over two lines), so the next line's error can say so.
+#[derive(Default)]
+pub struct LineParser {
+    row: usize,
+    open_call: Option<OpenCall>,
+}
+
+struct OpenCall {
+    row: usize,
+    name: String,
+}
+
+impl LineParser {
+    pub fn parse_line(&mut self, source: &[u8], raw: RawLine) -> (Line, Option<Diagnostic>) {
+        self.row += 1;
+        let content = raw.content.of(source);
+        let continued = self.open_call.take();
+        let (kind, error) = parse_line_kind(content, raw.content.start);
+        let diagnostic = error.map(|error| {
+            if let (Some(open), LineKind::Block(block)) = (&continued, &kind) {
+                if block.statements.is_empty() {
+                    return continuation(open, block.unparsed.unwrap_or(raw.content));
+                }
+            }
+            if let (SyntaxErrorKind::UnclosedBracket(b'('), LineKind::Block(block)) = (&error.kind, &kind) {
+                self.open_call = open_call_name(source, block, error.at).map(|name| OpenCall { row: self.row, name });
+            }
+            to_diagnostic(source, raw, &error)
+        });
+        (Line { raw, kind }, diagnostic)
+    }
+}
+
+fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxError>) {
+    if content.first() == Some(&b'%') {
+        return (LineKind::Header { name: Span::new(start + 1, start + content.len()) }, None);
+    }
+    const PATH: &[u8] = b";$PATH=";
+    if content.len() >= PATH.len() && content[..PATH.len()].eq_ignore_ascii_case(PATH) {
+        return (LineKind::Path { directory: Span::new(start + PATH.len(), start + content.len()) }, None);
+    }
+    let (block, error) = block::parse_block(Input::new_extra(content, start));
+    (LineKind::Block(block), error)
+}
+
+/// The name of the call whose `(` at `open` was left unclosed, if it is one.
+fn open_call_name(source: &[u8], block: &Block, open: usize) -> Option<String> {
+    let unparsed = block.unparsed?;
+    let text = &source[unparsed.start..open];
+    let name = text.trim_ascii_end();
+    let start = name.iter().rposition(|&b| !lexer::is_name_char(b)).map_or(0, |p| p + 1);
+    let name = &name[start..];
+    (!name.is_empty()).then(|| String::from_utf8_lossy(name).into_owned())
+}
+
+fn continuation(open: &OpenCall, unparsed: Span) -> Diagnostic {
+    Diagnostic::new("S007", "continued-block", Severity::Error, unparsed)
+        .message(format!(
+            "this line continues `{}(` from line {}, but a block ends at the end of its line",
+            open.name, open.row
+        ))
+        .label("continuation of the previous line")
+        .help(format!("join this line to line {}: on the control a block is one line", open.row))
+}
+
+/// Turns the parser's stop into a diagnostic at the offending bytes.
+fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
+    let at = error.at.min(raw.content.end);
+    let line_end = raw.content.end;
+    let one = Span::new(at, (at + 1).min(line_end).max(at));
+    let rest = Span::new(at, line_end);
+    let show = |span: Span| String::from_utf8_lossy(span.of(source)).into_owned();
+    match &error.kind {
+        SyntaxErrorKind::UnclosedString => Diagnostic::new("S001", "unclosed-string", Severity::Error, rest)
+            .message("string is not closed on this line")
+            .label("this string has no closing `\"`")
+            .help("add the closing `\"`; strings cannot span lines"),
+        SyntaxErrorKind::UnclosedBracket(open) => {
+            let (open, close) = (*open as char, if *open == b'(' { ')' } else { ']' });
+            let help = if is_call_paren(source, raw.content.start, at) {
+                format!("add the missing `{close}`; a call broken over several lines (as the paper prints CYCLE600) must be joined into one line")
+            } else {
+                format!("add the missing `{close}`")
+            };
+            Diagnostic::new("S002", "unbalanced-bracket", Severity::Error, one)
+                .message(format!("`{open}` is not closed on this line"))
+                .label(format!("this `{open}` has no matching `{close}`"))
+                .help(help)
+        }
+        SyntaxErrorKind::UnmatchedClose(close) => {
+            let close = *close as char;
+            Diagnostic::new("S002", "unbalanced-bracket", Severity::Error, one)
+                .message(format!("`{close}` without a matching opening bracket"))
+                .label("nothing to close here")
+                .help(format!("remove this `{close}` or add the opening bracket it closes"))
+        }
+        SyntaxErrorKind::InvalidNumber(why) => Diagnostic::new("S003", "invalid-number", Severity::Error, number_span(source, at, line_end))
+            .message(format!("invalid number `{}`", show(number_span(source, at, line_end))))
+            .label("not a number")
+            .help(format!("{why}")),
+        SyntaxErrorKind::UnknownCharacter => Diagnostic::new("S004", "unknown-character", Severity::Error, char_span(source, at, line_end))
+            .message(format!("character `{}` has no meaning here", show_char(source, at, line_end)))
+            .label("unknown character")
+            .help("remove it, or put it in a comment after `;` or inside a string"),
+        SyntaxErrorKind::MissingValue => Diagnostic::new("S006", "missing-value", Severity::Error, one)
+            .message(format!("address `{}` has no value", show(one)))
+            .label("value missing")
+            .help("write the value directly after the address (`X0`, not `X`) or as `X=expression`"),
+        SyntaxErrorKind::TooDeep => Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
+            .message(format!("expression nested deeper than {} levels", expr::MAX_DEPTH))
+            .label("too deep")
+            .help("split the expression over several assignments"),
+        SyntaxErrorKind::Expected(what) => {
+            let found = if at >= line_end { "the end of the line".to_string() } else { format!("`{}`", show_char(source, at, line_end)) };
+            Diagnostic::new("S005", "unexpected-token", Severity::Error, if at >= line_end { Span::new(at, at) } else { one })
+                .message(format!("expected {what}, found {found}"))
+                .label(format!("expected {what}"))
+                .help("check the statement's spelling against the Sinumerik programming manual")
+        }
+    }
+}
+
+/// Whether the `(` at `at` follows a name, as in `CYCLE600 (`.
+fn is_call_paren(source: &[u8], line_start: usize, at: usize) -> bool {
+    source[line_start..at]
+        .iter()
+        .rev()
+        .find(|&&b| !lexer::is_blank(b))
+        .is_some_and(|&b| lexer::is_name_char(b))
+}
+
+/// The bytes of a malformed number, up to the next blank or separator.
+fn number_span(source: &[u8], at: usize, end: usize) -> Span {
+    let len = source[at..end]
+        .iter()
+        .take_while(|&&b| b.is_ascii_alphanumeric() || b == b'.' || b == b'\'')
+        .count();
+    Span::new(at, at + len.max(1).min(end - at))
+}
+
+/// One character: a whole UTF-8 sequence when it is one, else one byte.
+fn char_span(source: &[u8], at: usize, end: usize) -> Span {
+    let len = (1..=4)
+        .filter(|&n| at + n <= end)
+        .find(|&n| std::str::from_utf8(&source[at..at + n]).is_ok())
+        .unwrap_or(1);
+    Span::new(at, (at + len).min(end))
+}
+
+fn show_char(source: &[u8], at: usize, end: usize) -> String {
+    let span = char_span(source, at, end);
+    match std::str::from_utf8(span.of(source)) {
+        Ok(text) if !text.chars().any(char::is_control) => text.to_string(),
+        _ => span.of(source).iter().map(|b| format!("\\x{b:02X}")).collect(),
+    }
+}
+
+/// What kind of program a file holds, by its name or its content.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProgramKind {
+    Main,
+    Subprogram,
+}
+
+impl Program<'_> {
+    /// `.SPF`, a `%_N_…_SPF` header or a `PROC` line make a subprogram.
+    pub fn kind(&self, file_name: Option<&str>) -> ProgramKind {
+        if let Some(name) = file_name {
+            let upper = name.to_ascii_uppercase();
+            if upper.ends_with(".SPF") {
+                return ProgramKind::Subprogram;
+            }
+            if upper.ends_with(".MPF") {
+                return ProgramKind::Main;
+            }
+        }
+        let is_sub = self.lines.iter().any(|line| match &line.kind {
+            LineKind::Header { name } => name.of(self.source).to_ascii_uppercase().ends_with(b"_SPF"),
+            LineKind::Block(block) => block.statements.iter().any(|s| matches!(s.kind, StatementKind::Proc(_))),
+            LineKind::Path { .. } => false,
+        });
+        if is_sub {
+            ProgramKind::Subprogram
+        } else {
+            ProgramKind::Main
+        }
+    }
+}
