@@ -7,7 +7,11 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::rotation::Sequence;
 
 #[derive(Debug, Parser)]
-#[command(name = "sinuprep", version, about = "Preprocessor and linter for Siemens Sinumerik part programs")]
+#[command(
+    name = "sinuprep",
+    version,
+    about = "Preprocessor and linter for Siemens Sinumerik part programs"
+)]
 pub struct Args {
     #[command(subcommand)]
     pub command: Command,
@@ -77,7 +81,11 @@ pub struct ConvertArgs {
 fn finite_angle(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(value) if value.is_finite() => Ok(value),
-        Ok(_) => Err(format!("`{text}` is not a finite angle; give degrees such as -16.28")),
-        Err(_) => Err(format!("`{text}` is not a number; give degrees such as -16.28")),
+        Ok(_) => Err(format!(
+            "`{text}` is not a finite angle; give degrees such as -16.28"
+        )),
+        Err(_) => Err(format!(
+            "`{text}` is not a number; give degrees such as -16.28"
+        )),
     }
 }

@@ -27,7 +27,11 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     }
     let reports: Vec<FileReport> = checked
         .iter()
-        .map(|(file, diagnostics)| FileReport { name: &file.name, source: &file.bytes, diagnostics })
+        .map(|(file, diagnostics)| FileReport {
+            name: &file.name,
+            source: &file.bytes,
+            diagnostics,
+        })
         .collect();
 
     let mut out = String::new();
@@ -41,7 +45,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     }
     std::io::stdout().lock().write_all(out.as_bytes())?;
 
-    let has_error = reports.iter().flat_map(|r| r.diagnostics).any(|d| d.severity == Severity::Error);
+    let has_error = reports
+        .iter()
+        .flat_map(|r| r.diagnostics)
+        .any(|d| d.severity == Severity::Error);
     Ok(if failed {
         ExitStatus::Error
     } else if has_error {

@@ -9,7 +9,11 @@ use crate::rotation::{convert, Conversion, Sequence};
 
 pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
     let conversion = convert(args.from, [args.a1, args.a2, args.a3], args.to);
-    let text = if args.json { json(args.to, &conversion) } else { table(args.from, args.to, &conversion) };
+    let text = if args.json {
+        json(args.to, &conversion)
+    } else {
+        table(args.from, args.to, &conversion)
+    };
     std::io::stdout().lock().write_all(text.as_bytes())?;
     Ok(ExitStatus::Success)
 }
@@ -41,7 +45,10 @@ fn table(from: Sequence, to: Sequence, conversion: &Conversion) -> String {
         angles(conversion.output.alternative),
     );
     for row in rows(conversion) {
-        text.push_str(&format!("  {}\n", row.map(|x| format!("{x:>10.6}")).join(" ")));
+        text.push_str(&format!(
+            "  {}\n",
+            row.map(|x| format!("{x:>10.6}")).join(" ")
+        ));
     }
     if conversion.output.gimbal_lock {
         let letters: Vec<char> = to.axes.iter().map(|a| a.letter()).collect();

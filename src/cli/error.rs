@@ -6,11 +6,20 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error, miette::Diagnostic)]
 pub enum CliError {
     #[error("cannot read {path}: {source}")]
-    #[diagnostic(code(sinuprep::read), help("check that the path exists and is readable"))]
-    Read { path: PathBuf, source: std::io::Error },
+    #[diagnostic(
+        code(sinuprep::read),
+        help("check that the path exists and is readable")
+    )]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
 
     #[error("{path} is a directory")]
-    #[diagnostic(code(sinuprep::read), help("`rewrite` takes one program file; `check` takes directories"))]
+    #[diagnostic(
+        code(sinuprep::read),
+        help("`rewrite` takes one program file; `check` takes directories")
+    )]
     IsDirectory { path: PathBuf },
 
     #[error("cannot write the output: {0}")]

@@ -28,7 +28,12 @@ pub fn expand(paths: &[PathBuf]) -> Vec<Result<PathBuf, CliError>> {
 fn walk(dir: &Path, out: &mut Vec<Result<PathBuf, CliError>>) {
     let entries = match std::fs::read_dir(dir) {
         Ok(entries) => entries,
-        Err(source) => return out.push(Err(CliError::Read { path: dir.to_path_buf(), source })),
+        Err(source) => {
+            return out.push(Err(CliError::Read {
+                path: dir.to_path_buf(),
+                source,
+            }))
+        }
     };
     let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
     paths.sort();
@@ -53,12 +58,26 @@ pub fn read(path: &Path) -> Result<SourceFile, CliError> {
         let mut bytes = Vec::new();
         std::io::stdin()
             .read_to_end(&mut bytes)
-            .map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
-        return Ok(SourceFile { name: "<stdin>".to_string(), bytes });
+            .map_err(|source| CliError::Read {
+                path: path.to_path_buf(),
+                source,
+            })?;
+        return Ok(SourceFile {
+            name: "<stdin>".to_string(),
+            bytes,
+        });
     }
     if path.is_dir() {
-        return Err(CliError::IsDirectory { path: path.to_path_buf() });
+        return Err(CliError::IsDirectory {
+            path: path.to_path_buf(),
+        });
     }
-    let bytes = std::fs::read(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
-    Ok(SourceFile { name: path.display().to_string(), bytes })
+    let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    Ok(SourceFile {
+        name: path.display().to_string(),
+        bytes,
+    })
 }

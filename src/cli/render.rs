@@ -38,10 +38,18 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
     }
     let text = TextSource::new(report.source);
     let named = NamedSource::new(report.name, text.text.clone());
-    let theme = if colour { GraphicalTheme::unicode() } else { GraphicalTheme::unicode_nocolor() };
+    let theme = if colour {
+        GraphicalTheme::unicode()
+    } else {
+        GraphicalTheme::unicode_nocolor()
+    };
     let handler = GraphicalReportHandler::new_themed(theme).with_width(100);
     for diagnostic in report.diagnostics {
-        let shown = Shown { diagnostic, source: &named, text: &text };
+        let shown = Shown {
+            diagnostic,
+            source: &named,
+            text: &text,
+        };
         // Rendering into a String cannot fail.
         let _ = handler.render_report(out, &shown);
         out.push('\n');
@@ -59,15 +67,27 @@ struct TextSource {
 impl TextSource {
     fn new(source: &[u8]) -> Self {
         match std::str::from_utf8(source) {
-            Ok(text) => Self { text: text.to_string(), latin1: false, source: Vec::new() },
-            Err(_) => Self { text: source.iter().map(|&b| b as char).collect(), latin1: true, source: source.to_vec() },
+            Ok(text) => Self {
+                text: text.to_string(),
+                latin1: false,
+                source: Vec::new(),
+            },
+            Err(_) => Self {
+                text: source.iter().map(|&b| b as char).collect(),
+                latin1: true,
+                source: source.to_vec(),
+            },
         }
     }
 
     /// A byte offset of the source as a byte offset of `text`.
     fn offset(&self, offset: usize) -> usize {
         if self.latin1 {
-            offset + self.source[..offset.min(self.source.len())].iter().filter(|&&b| b >= 0x80).count()
+            offset
+                + self.source[..offset.min(self.source.len())]
+                    .iter()
+                    .filter(|&&b| b >= 0x80)
+                    .count()
         } else {
             offset
         }
@@ -96,7 +116,10 @@ impl std::error::Error for Shown<'_> {}
 
 impl miette::Diagnostic for Shown<'_> {
     fn code<'b>(&'b self) -> Option<Box<dyn fmt::Display + 'b>> {
-        Some(Box::new(format!("{}({})", self.diagnostic.code, self.diagnostic.name)))
+        Some(Box::new(format!(
+            "{}({})",
+            self.diagnostic.code, self.diagnostic.name
+        )))
     }
 
     fn severity(&self) -> Option<miette::Severity> {
@@ -108,7 +131,10 @@ impl miette::Diagnostic for Shown<'_> {
     }
 
     fn help<'b>(&'b self) -> Option<Box<dyn fmt::Display + 'b>> {
-        self.diagnostic.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+        self.diagnostic
+            .help
+            .as_ref()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
@@ -119,7 +145,11 @@ impl miette::Diagnostic for Shown<'_> {
         let span = self.diagnostic.span;
         let start = self.text.offset(span.start);
         let len = self.text.offset(span.end) - start;
-        Some(Box::new(std::iter::once(LabeledSpan::new(Some(self.diagnostic.label.clone()), start, len))))
+        Some(Box::new(std::iter::once(LabeledSpan::new(
+            Some(self.diagnostic.label.clone()),
+            start,
+            len,
+        ))))
     }
 }
 
@@ -169,10 +199,14 @@ pub fn json(reports: &[FileReport]) -> String {
                     length: d.span.len(),
                 })
                 .collect();
-            JsonFile { path: report.name, diagnostics }
+            JsonFile {
+                path: report.name,
+                diagnostics,
+            }
         })
         .collect();
-    let mut text = serde_json::to_string_pretty(&JsonDocument { version: 1, files }).unwrap_or_default();
+    let mut text =
+        serde_json::to_string_pretty(&JsonDocument { version: 1, files }).unwrap_or_default();
     text.push('\n');
     text
 }

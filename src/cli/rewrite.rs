@@ -16,7 +16,14 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     if !program.diagnostics.is_empty() {
         // The program still goes through unchanged; the errors are for the user.
         let mut note = String::new();
-        short(&FileReport { name: &file.name, source: &file.bytes, diagnostics: &program.diagnostics }, &mut note);
+        short(
+            &FileReport {
+                name: &file.name,
+                source: &file.bytes,
+                diagnostics: &program.diagnostics,
+            },
+            &mut note,
+        );
         eprint!("{note}");
     }
     std::io::stdout().lock().write_all(&program.print())?;

@@ -39,16 +39,25 @@ pub struct Decomposition {
 /// Sine and cosine of an angle in degrees, exact at multiples of 90°, so that
 /// a programmed 90° gives exactly 0 and not 6e-17.
 pub fn sin_cos_degrees(degrees: f64) -> (f64, f64) {
-    let reduced = degrees.rem_euclid(360.0);
-    if reduced % 90.0 == 0.0 {
-        return match reduced as u32 {
-            0 => (0.0, 1.0),
-            90 => (1.0, 0.0),
-            180 => (0.0, -1.0),
-            _ => (-1.0, 0.0),
-        };
+    // `%` is exact, unlike `rem_euclid`, which rounds -1e-14 up to 360.
+    let reduced = if degrees.abs() < 360.0 {
+        degrees
+    } else {
+        degrees % 360.0
+    };
+    // In (-360, 360) the multiples of 90 are seven exact values: compare them
+    // rather than pay for `fmod` on every angle.
+    if reduced == 0.0 {
+        (0.0, 1.0)
+    } else if reduced == 90.0 || reduced == -270.0 {
+        (1.0, 0.0)
+    } else if reduced == 180.0 || reduced == -180.0 {
+        (0.0, -1.0)
+    } else if reduced == 270.0 || reduced == -90.0 {
+        (-1.0, 0.0)
+    } else {
+        reduced.to_radians().sin_cos()
     }
-    reduced.to_radians().sin_cos()
 }
 
 /// The elemental right-handed rotation about `axis` (`sin`, `cos` given).
@@ -88,7 +97,11 @@ pub fn decompose(sequence: Sequence, rotation: &Rotation3<f64>) -> Decomposition
         }
     };
     let angles = angles.map(clean);
-    Decomposition { angles, alternative: alternative(sequence, angles), gimbal_lock }
+    Decomposition {
+        angles,
+        alternative: alternative(sequence, angles),
+        gimbal_lock,
+    }
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -117,10 +130,10 @@ fn decompose_intrinsic(sequence: Sequence, m: &Matrix3<f64>, zero: GimbalZero) -
     // Middle angle, and the first angle's (sin, cos) pair scaled by |cos b|
     // (Tait-Bryan) or |sin b| (proper Euler).
     let (b, first_pair) = if proper {
-        let sin_b = m[(i, j)].hypot(m[(i, k)]);
+        let sin_b = norm(m[(i, j)], m[(i, k)]);
         (sin_b.atan2(m[(i, i)]), (m[(j, i)], -s * m[(k, i)]))
     } else {
-        let cos_b = m[(i, i)].hypot(m[(i, j)]);
+        let cos_b = norm(m[(i, i)], m[(i, j)]);
         ((s * m[(i, k)]).atan2(cos_b), (-s * m[(j, k)], m[(k, k)]))
     };
     let conditioning = if proper { b.sin() } else { b.cos() };
@@ -146,10 +159,37 @@ fn decompose_intrinsic(sequence: Sequence, m: &Matrix3<f64>, zero: GimbalZero) -
         }
     } else {
         let a = first_pair.0.atan2(first_pair.1);
-        let norm = first_pair.0.hypot(first_pair.1);
-        (a, third_from(first_pair.0 / norm, first_pair.1 / norm))
+        let length = norm(first_pair.0, first_pair.1);
+        (a, third_from(first_pair.0 / length, first_pair.1 / length))
     };
-    ([a.to_degrees(), b.to_degrees(), c.to_degrees()].map(wrap), gimbal_lock)
+    (
+        [a.to_degrees(), b.to_degrees(), c.to_degrees()].map(principal),
+        gimbal_lock,
+    )
+}
+
+/// √(x² + y²) of matrix elements, which lie in [-1, 1]: no overflow to guard
+/// against, so the plain formula is as exact as `hypot` and much faster.
+fn norm(x: f64, y: f64) -> f64 {
+    (x * x + y * y).sqrt()
+}
+
+/// atan2 gives [-180, 180]; the principal range is (-180, 180].
+fn principal(degrees: f64) -> f64 {
+    if degrees <= -180.0 {
+        degrees + 360.0
+    } else {
+        degrees
+    }
+}
+
+/// An angle of the principal range turned half a revolution, back in (-180, 180].
+fn half_turn(degrees: f64) -> f64 {
+    if degrees > 0.0 {
+        degrees - 180.0
+    } else {
+        degrees + 180.0
+    }
 }
 
 /// The second solution of the same rotation.
@@ -161,7 +201,7 @@ fn alternative(sequence: Sequence, [a, b, c]: Angles) -> Angles {
     } else {
         -180.0 - b
     };
-    [wrap(a + 180.0), middle, wrap(c + 180.0)].map(clean)
+    [half_turn(a), middle, half_turn(c)].map(clean)
 }
 
 /// An angle in (-180, 180].
@@ -198,27 +238,49 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant)] // the paper's matrix, printed to 4 decimals
     fn paper_matrix_of_extrinsic_xyz_30_45_60() {
         let m = matrix(sequence("e:XYZ"), [30.0, 45.0, 60.0]);
-        let expected = Matrix3::new(0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124);
+        let expected = Matrix3::new(
+            0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124,
+        );
         assert!((m.matrix() - expected).abs().max() < 5e-5, "{m}");
     }
 
     #[test]
     fn paper_conversions_of_extrinsic_xyz_30_45_60() {
         let m = matrix(sequence("e:XYZ"), [30.0, 45.0, 60.0]);
-        assert_angles(decompose(sequence("i:ZXY"), &m).angles, [37.7923, 20.7048, 49.1066], 5e-5);
+        assert_angles(
+            decompose(sequence("i:ZXY"), &m).angles,
+            [37.7923, 20.7048, 49.1066],
+            5e-5,
+        );
         // The paper prints 39.6392: it truncates rather than rounds.
-        assert_angles(decompose(sequence("e:ZXY"), &m).angles, [39.6393, -16.2799, 50.3607], 5e-5);
+        assert_angles(
+            decompose(sequence("e:ZXY"), &m).angles,
+            [39.6393, -16.2799, 50.3607],
+            5e-5,
+        );
         // The paper's -24.5939 / 47.6633 / 58.3301 were computed from the matrix
         // rounded to 4 decimals; from the exact matrix these come out.
-        assert_angles(decompose(sequence("i:XYZ"), &m).angles, [-24.5972, 47.6632, 58.3345], 5e-5);
+        assert_angles(
+            decompose(sequence("i:XYZ"), &m).angles,
+            [-24.5972, 47.6632, 58.3345],
+            5e-5,
+        );
     }
 
     #[test]
+    #[allow(clippy::approx_constant)] // the paper's matrix, printed to 4 decimals
     fn paper_intrinsic_xyz_from_the_rounded_matrix_gives_the_papers_figures() {
-        let rounded = Matrix3::new(0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124);
-        let angles = decompose(sequence("i:XYZ"), &Rotation3::from_matrix_unchecked(rounded)).angles;
+        let rounded = Matrix3::new(
+            0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124,
+        );
+        let angles = decompose(
+            sequence("i:XYZ"),
+            &Rotation3::from_matrix_unchecked(rounded),
+        )
+        .angles;
         assert_angles(angles, [-24.5939, 47.6633, 58.3301], 5e-3);
     }
 
@@ -241,11 +303,22 @@ mod tests {
     #[test]
     fn every_sequence_reproduces_its_matrix_with_both_solutions() {
         for seq in Sequence::all() {
-            for angles in [[10.0, 20.0, 30.0], [-170.0, 89.0, 120.0], [200.0, -100.0, 400.0], [0.0, 0.0, 0.0]] {
+            for angles in [
+                [10.0, 20.0, 30.0],
+                [-170.0, 89.0, 120.0],
+                [200.0, -100.0, 400.0],
+                [0.0, 0.0, 0.0],
+            ] {
                 let m = matrix(seq, angles);
                 let d = decompose(seq, &m);
-                assert!(max_difference(&matrix(seq, d.angles), &m) < 1e-12, "{seq} {angles:?}");
-                assert!(max_difference(&matrix(seq, d.alternative), &m) < 1e-12, "{seq} alt {angles:?}");
+                assert!(
+                    max_difference(&matrix(seq, d.angles), &m) < 1e-12,
+                    "{seq} {angles:?}"
+                );
+                assert!(
+                    max_difference(&matrix(seq, d.alternative), &m) < 1e-12,
+                    "{seq} alt {angles:?}"
+                );
             }
         }
     }
@@ -269,5 +342,10 @@ mod tests {
         assert_eq!(wrap(540.0), 180.0);
         assert_eq!(wrap(-190.0), 170.0);
         assert_eq!(sin_cos_degrees(-90.0), (-1.0, 0.0));
+        assert_eq!(sin_cos_degrees(-270.0), (1.0, 0.0));
+        assert_eq!(sin_cos_degrees(720.0), (0.0, 1.0));
+        // Found by the property test: a tiny negative angle is not 270 degrees.
+        let (s, c) = sin_cos_degrees(-2.842170943040401e-14);
+        assert!(s < 0.0 && s > -1e-15 && c == 1.0);
     }
 }

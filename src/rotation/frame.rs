@@ -16,7 +16,11 @@ pub struct Frame {
 
 impl Frame {
     pub fn new(before: Vector3<f64>, rotation: Rotation3<f64>, after: Vector3<f64>) -> Self {
-        Self { before, rotation, after }
+        Self {
+            before,
+            rotation,
+            after,
+        }
     }
 
     /// The whole transformation as one rigid motion.
@@ -34,7 +38,11 @@ impl Frame {
 /// An additive rotation on top of the active one: about the current workpiece
 /// axes (intrinsic, R0 · R_add) or about the machine axes (extrinsic, R_add · R0),
 /// as the paper states.
-pub fn compose_additive(active: &Rotation3<f64>, added: &Rotation3<f64>, kind: Kind) -> Rotation3<f64> {
+pub fn compose_additive(
+    active: &Rotation3<f64>,
+    added: &Rotation3<f64>,
+    kind: Kind,
+) -> Rotation3<f64> {
     match kind {
         Kind::Intrinsic => active * added,
         Kind::Extrinsic => added * active,
@@ -76,11 +84,21 @@ mod tests {
     #[test]
     fn frame_shifts_rotates_then_shifts_in_the_rotated_system() {
         let rotation = matrix("i:ZYX".parse().expect("valid"), [90.0, 0.0, 0.0]);
-        let frame = Frame::new(Vector3::new(10.0, 0.0, 0.0), rotation, Vector3::new(1.0, 0.0, 0.0));
+        let frame = Frame::new(
+            Vector3::new(10.0, 0.0, 0.0),
+            rotation,
+            Vector3::new(1.0, 0.0, 0.0),
+        );
         let moved = frame.apply(Point3::origin());
-        assert!(close(&moved.coords, &Vector3::new(10.0, 1.0, 0.0)), "{moved}");
+        assert!(
+            close(&moved.coords, &Vector3::new(10.0, 1.0, 0.0)),
+            "{moved}"
+        );
         let by_isometry = frame.isometry() * Point3::new(1.0, 2.0, 3.0);
-        assert!(close(&by_isometry.coords, &frame.apply(Point3::new(1.0, 2.0, 3.0)).coords));
+        assert!(close(
+            &by_isometry.coords,
+            &frame.apply(Point3::new(1.0, 2.0, 3.0)).coords
+        ));
     }
 
     #[test]

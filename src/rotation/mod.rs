@@ -25,5 +25,8 @@ pub struct Conversion {
 /// Builds the rotation from `angles` in `from` and reads it back in `to`.
 pub fn convert(from: Sequence, angles: Angles, to: Sequence) -> Conversion {
     let matrix = matrix(from, angles);
-    Conversion { matrix, output: decompose(to, &matrix) }
+    Conversion {
+        matrix,
+        output: decompose(to, &matrix),
+    }
 }

@@ -87,20 +87,27 @@ impl Sequence {
     pub fn new(axes: [Axis; 3], kind: Kind) -> Result<Sequence, SequenceError> {
         if axes[0] == axes[1] || axes[1] == axes[2] {
             let text: String = axes.iter().map(|a| a.letter()).collect();
-            return Err(SequenceError::InvalidText(format!("{}:{text}", kind.name())));
+            return Err(SequenceError::InvalidText(format!(
+                "{}:{text}",
+                kind.name()
+            )));
         }
         Ok(Sequence { axes, kind })
     }
 
     /// All 24 sequences: 6 Tait-Bryan and 6 proper Euler orders, each of both kinds.
     pub fn all() -> impl Iterator<Item = Sequence> {
-        [Kind::Intrinsic, Kind::Extrinsic].into_iter().flat_map(|kind| {
-            Axis::ALL.into_iter().flat_map(move |a| {
-                Axis::ALL.into_iter().flat_map(move |b| {
-                    Axis::ALL.into_iter().filter_map(move |c| Sequence::new([a, b, c], kind).ok())
+        [Kind::Intrinsic, Kind::Extrinsic]
+            .into_iter()
+            .flat_map(|kind| {
+                Axis::ALL.into_iter().flat_map(move |a| {
+                    Axis::ALL.into_iter().flat_map(move |b| {
+                        Axis::ALL
+                            .into_iter()
+                            .filter_map(move |c| Sequence::new([a, b, c], kind).ok())
+                    })
                 })
             })
-        })
     }
 
     /// Proper Euler sequences (first axis = third axis) have their middle
@@ -125,7 +132,9 @@ impl Sequence {
             _ => None,
         };
         match (group(0), group(2), group(4)) {
-            (Some(a), Some(b), Some(c)) => Sequence::new([a, b, c], kind).map_err(|_| SequenceError::InvalidCode(code)),
+            (Some(a), Some(b), Some(c)) => {
+                Sequence::new([a, b, c], kind).map_err(|_| SequenceError::InvalidCode(code))
+            }
             _ => Err(SequenceError::InvalidCode(code)),
         }
     }
@@ -138,7 +147,10 @@ impl Sequence {
             Kind::Intrinsic => Kind::Extrinsic,
             Kind::Extrinsic => Kind::Intrinsic,
         };
-        Sequence { axes: [c, b, a], kind }
+        Sequence {
+            axes: [c, b, a],
+            kind,
+        }
     }
 
     pub fn letters(self) -> String {
@@ -187,7 +199,15 @@ mod tests {
 
     #[test]
     fn spec_table_codes_map_both_ways() {
-        let table = [(57, "XYZ"), (45, "XZY"), (54, "YXZ"), (30, "YZX"), (39, "ZXY"), (27, "ZYX"), (55, "ZXZ")];
+        let table = [
+            (57, "XYZ"),
+            (45, "XZY"),
+            (54, "YXZ"),
+            (30, "YZX"),
+            (39, "ZXY"),
+            (27, "ZYX"),
+            (55, "ZXZ"),
+        ];
         for (code, letters) in table {
             for kind in [Kind::Intrinsic, Kind::Extrinsic] {
                 let sequence = Sequence::from_code(code, kind).expect("valid code");
@@ -202,7 +222,10 @@ mod tests {
         let all: Vec<Sequence> = Sequence::all().collect();
         assert_eq!(all.len(), 24);
         for sequence in all {
-            assert_eq!(Sequence::from_code(sequence.code() as i64, sequence.kind), Ok(sequence));
+            assert_eq!(
+                Sequence::from_code(sequence.code() as i64, sequence.kind),
+                Ok(sequence)
+            );
             assert_eq!(sequence.to_string().parse(), Ok(sequence));
         }
     }
@@ -210,7 +233,10 @@ mod tests {
     #[test]
     fn invalid_codes_are_refused() {
         for code in [0, 5, 21, 63, 64, -1, 1000, 0b111111] {
-            assert!(Sequence::from_code(code, Kind::Intrinsic).is_err(), "{code}");
+            assert!(
+                Sequence::from_code(code, Kind::Intrinsic).is_err(),
+                "{code}"
+            );
         }
     }
 
@@ -220,7 +246,10 @@ mod tests {
         assert_eq!("intrinsic:ZXY".parse(), Ok(zxy));
         assert_eq!("I:zxy".parse(), Ok(zxy));
         assert_eq!("i:39".parse(), Ok(zxy));
-        assert_eq!("e:57".parse::<Sequence>().map(|s| s.kind), Ok(Kind::Extrinsic));
+        assert_eq!(
+            "e:57".parse::<Sequence>().map(|s| s.kind),
+            Ok(Kind::Extrinsic)
+        );
         for bad in ["ZXY", "x:ZXY", "i:ZZY", "i:XY", "i:ABC", "e:0", ""] {
             assert!(bad.parse::<Sequence>().is_err(), "{bad}");
         }

@@ -9,8 +9,8 @@ use nom::Input as _;
 
 use crate::syntax::expr::{parse_arguments, parse_expr, parse_indices, parse_list};
 use crate::syntax::lexer::{
-    is_name_char, is_name_start, keyword, offset, parse_blank, parse_name, parse_number,
-    peek, peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
+    is_name_char, is_name_start, keyword, offset, parse_blank, parse_name, parse_number, peek,
+    peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
 };
 use crate::syntax::tree::*;
 
@@ -75,7 +75,13 @@ pub fn parse_skip(input: Input) -> PResult<Skip> {
     }
     let level = peek_at(&input, 1).filter(u8::is_ascii_digit);
     let rest = input.take_from(1 + usize::from(level.is_some()));
-    Ok((rest, Skip { span: span_between(&input, &rest), level: level.map(|d| d - b'0') }))
+    Ok((
+        rest,
+        Skip {
+            span: span_between(&input, &rest),
+            level: level.map(|d| d - b'0'),
+        },
+    ))
 }
 
 /// `block_number := 'N' digit+ | ':' digit+`
@@ -85,16 +91,25 @@ pub fn parse_block_number(input: Input) -> PResult<BlockNumber> {
         Some(b':') => true,
         _ => return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number")),
     };
-    let digits = input.fragment()[1..].iter().take_while(|b| b.is_ascii_digit()).count();
+    let digits = input.fragment()[1..]
+        .iter()
+        .take_while(|b| b.is_ascii_digit())
+        .count();
     // `N10=5` would be an assignment, not a block number.
-    if digits == 0 || peek_at(&input, 1 + digits).is_some_and(|b| b == b'=' || b == b'[' || b == b'.') {
+    if digits == 0
+        || peek_at(&input, 1 + digits).is_some_and(|b| b == b'=' || b == b'[' || b == b'.')
+    {
         return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number"));
     }
     let after_prefix = input.take_from(1);
     let rest = input.take_from(1 + digits);
     Ok((
         rest,
-        BlockNumber { span: span_between(&input, &rest), main, digits: span_between(&after_prefix, &rest) },
+        BlockNumber {
+            span: span_between(&input, &rest),
+            main,
+            digits: span_between(&after_prefix, &rest),
+        },
     ))
 }
 
@@ -111,7 +126,13 @@ pub fn parse_label(input: Input) -> PResult<Name> {
 pub fn parse_statement(input: Input) -> PResult<Statement> {
     let start = input;
     let (rest, kind) = parse_statement_kind(input)?;
-    Ok((rest, Statement { span: span_between(&start, &rest), kind }))
+    Ok((
+        rest,
+        Statement {
+            span: span_between(&start, &rest),
+            kind,
+        },
+    ))
 }
 
 fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
@@ -120,7 +141,7 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     };
     // An identifier has two leading letters (or `_`); one letter followed by
     // anything else is an address: `X10`, `G01X5`, `R1=2`, `A3=0.5`.
-    if first.is_ascii_alphabetic() && !peek_at(&input, 1).is_some_and(|b| is_name_start(b)) {
+    if first.is_ascii_alphabetic() && !peek_at(&input, 1).is_some_and(is_name_start) {
         return parse_word(input);
     }
     if first != b'$' && !is_name_start(first) {
@@ -131,7 +152,9 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     let is_assignment_like = matches!(peek(&next), Some(b'=' | b'['));
     if !is_assignment_like && first != b'$' {
         let mut buffer = [0u8; 16];
-        if let Some(parsed) = parse_keyword_statement(input, after_name, name, upper(&input, name, &mut buffer)) {
+        if let Some(parsed) =
+            parse_keyword_statement(input, after_name, name, upper(&input, name, &mut buffer))
+        {
             return parsed;
         }
     }
@@ -141,9 +164,20 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
 fn stray_kind(byte: u8) -> SyntaxErrorKind {
     match byte {
         b')' | b']' => SyntaxErrorKind::UnmatchedClose(byte),
-        b'0'..=b'9' | b'.' | b',' | b'(' | b'+' | b'-' | b'*' | b'/' | b'=' | b'<' | b'>' | b':' | b'"' | b'\'' => {
-            SyntaxErrorKind::Expected("a word, an assignment or a statement")
-        }
+        b'0'..=b'9'
+        | b'.'
+        | b','
+        | b'('
+        | b'+'
+        | b'-'
+        | b'*'
+        | b'/'
+        | b'='
+        | b'<'
+        | b'>'
+        | b':'
+        | b'"'
+        | b'\'' => SyntaxErrorKind::Expected("a word, an assignment or a statement"),
         _ => SyntaxErrorKind::UnknownCharacter,
     }
 }
@@ -156,7 +190,9 @@ fn parse_keyword_statement<'a>(
     word: &[u8],
 ) -> Option<PResult<'a, StatementKind>> {
     let simple = |kind: StatementKind| Some(Ok((after, kind)));
-    let expr = |make: fn(Expr) -> StatementKind| Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))));
+    let expr = |make: fn(Expr) -> StatementKind| {
+        Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))))
+    };
     match word {
         b"DEF" | b"REDEF" => Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(d)))),
         b"PROC" => Some(parse_proc(after).map(|(r, p)| (r, StatementKind::Proc(p)))),
@@ -178,25 +214,44 @@ fn parse_keyword_statement<'a>(
             Some(parse_goto(start).map(|(r, g)| (r, StatementKind::Goto(g))))
         }
         b"CALL" | b"PCALL" | b"MCALL" | b"EXTCALL" => Some(parse_indirect_call(after, name)),
-        b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => Some(
-            parse_expr(parse_blank(after))
-                .map(|(r, condition)| (r, StatementKind::SyncCondition { keyword: name, condition })),
-        ),
+        b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => {
+            Some(parse_expr(parse_blank(after)).map(|(r, condition)| {
+                (
+                    r,
+                    StatementKind::SyncCondition {
+                        keyword: name,
+                        condition,
+                    },
+                )
+            }))
+        }
         _ => FrameKind::ALL
             .iter()
             .find(|(text, _)| text.as_bytes() == word)
-            .and_then(|&(_, kind)| simple(StatementKind::Frame(FrameStatement { keyword: name, kind }))),
+            .and_then(|&(_, kind)| {
+                simple(StatementKind::Frame(FrameStatement {
+                    keyword: name,
+                    kind,
+                }))
+            }),
     }
 }
 
-/// `word := letter (extension? blank '=' blank expr | index blank '=' blank expr | sign? number)`
+/// `word := letter (extension? blank '=' blank expr | sign? number)`
 ///
-/// `R<n>=` and `R[..]=` are assignments to R parameters.
+/// `R<n>=` is an assignment to an R parameter, and `letter[..]=` one to an
+/// indexed variable (`R[1]`, `A[1,2]`).
 pub fn parse_word(input: Input) -> PResult<StatementKind> {
-    let address = Name { span: span_between(&input, &input.take_from(1)) };
+    let address = Name {
+        span: span_between(&input, &input.take_from(1)),
+    };
     let is_r = input.fragment()[0].eq_ignore_ascii_case(&b'R');
     let after_letter = input.take_from(1);
-    let digits = after_letter.fragment().iter().take_while(|b| b.is_ascii_digit()).count();
+    let digits = after_letter
+        .fragment()
+        .iter()
+        .take_while(|b| b.is_ascii_digit())
+        .count();
     let after_digits = after_letter.take_from(digits);
     let equals = parse_blank(after_digits);
 
@@ -204,25 +259,43 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
     if peek(&equals) == Some(b'=') && peek_at(&equals, 1) != Some(b'=') {
         let (rest, value) = parse_expr(parse_blank(equals.take_from(1)))?;
         if is_r && digits > 0 {
-            let name = Name { span: span_between(&input, &after_digits) };
-            let target = Variable { span: name.span, name, indices: Vec::new() };
+            let name = Name {
+                span: span_between(&input, &after_digits),
+            };
+            let target = Variable {
+                span: name.span,
+                name,
+                indices: Vec::new(),
+            };
             return Ok((rest, StatementKind::Assign(Assign { target, value })));
         }
         let extension = (digits > 0).then(|| span_between(&after_letter, &after_digits));
-        return Ok((rest, StatementKind::Word(Word { address, extension, index: Vec::new(), value: WordValue::Expr(value) })));
+        return Ok((
+            rest,
+            StatementKind::Word(Word {
+                address,
+                extension,
+                value: WordValue::Expr(value),
+            }),
+        ));
     }
+    // `R[1]=`, `A[1,2]=`: a letter with an index is an indexed variable.
     if digits == 0 && peek(&after_letter) == Some(b'[') {
-        let (after_index, index) = parse_indices(after_letter, 0)?;
+        let (after_index, indices) = parse_indices(after_letter, 0)?;
         let equals = parse_blank(after_index);
         if peek(&equals) != Some(b'=') {
-            return SyntaxError::fail(offset(&equals), SyntaxErrorKind::Expected("`=` after an indexed address"));
+            return SyntaxError::fail(
+                offset(&equals),
+                SyntaxErrorKind::Expected("`=` after an indexed variable"),
+            );
         }
         let (rest, value) = parse_expr(parse_blank(equals.take_from(1)))?;
-        if is_r {
-            let target = Variable { span: span_between(&input, &after_index), name: address, indices: index };
-            return Ok((rest, StatementKind::Assign(Assign { target, value })));
-        }
-        return Ok((rest, StatementKind::Word(Word { address, extension: None, index, value: WordValue::Expr(value) })));
+        let target = Variable {
+            span: span_between(&input, &after_index),
+            name: address,
+            indices,
+        };
+        return Ok((rest, StatementKind::Assign(Assign { target, value })));
     }
     // `X-12.5`, `F.02`, `G01`: the number directly after the letter.
     let mut number_start = after_letter;
@@ -233,33 +306,55 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
         }
         _ => false,
     };
-    if !matches!(peek(&number_start), Some(b'0'..=b'9' | b'.' | b'\'')) {
-        return SyntaxError::fail(address.span.start, SyntaxErrorKind::MissingValue);
+    match peek(&number_start) {
+        Some(b'0'..=b'9' | b'.' | b'\'') => {}
+        Some(byte) if !crate::syntax::expr::is_known_byte(byte) => {
+            return SyntaxError::fail(offset(&number_start), SyntaxErrorKind::UnknownCharacter);
+        }
+        _ => return SyntaxError::fail(address.span.start, SyntaxErrorKind::MissingValue),
     }
     let (rest, mut number) = parse_number(number_start)?;
     number.span = span_between(&after_letter, &rest);
     if negative {
         number.value = -number.value;
     }
-    Ok((rest, StatementKind::Word(Word { address, extension: None, index: Vec::new(), value: WordValue::Number(number) })))
+    Ok((
+        rest,
+        StatementKind::Word(Word {
+            address,
+            extension: None,
+            value: WordValue::Number(number),
+        }),
+    ))
 }
 
 /// `assignment := variable blank '=' blank expr` ;
 /// `call := name blank arguments` ; `command := name`
-fn parse_assignment_call_or_command<'a>(start: Input<'a>, name: Name, after_name: Input<'a>) -> PResult<'a, StatementKind> {
+fn parse_assignment_call_or_command<'a>(
+    start: Input<'a>,
+    name: Name,
+    after_name: Input<'a>,
+) -> PResult<'a, StatementKind> {
     let (after_index, indices) = parse_indices(after_name, 0)?;
     let next = parse_blank(after_index);
     match peek(&next) {
         Some(b'=') if peek_at(&next, 1) != Some(b'=') => {
             let (rest, value) = parse_expr(parse_blank(next.take_from(1)))?;
-            let target = Variable { span: span_between(&start, &after_index), name, indices };
+            let target = Variable {
+                span: span_between(&start, &after_index),
+                name,
+                indices,
+            };
             Ok((rest, StatementKind::Assign(Assign { target, value })))
         }
         Some(b'(') if indices.is_empty() => {
             let (rest, arguments) = parse_arguments(next, 0)?;
             Ok((rest, StatementKind::Call(Call { name, arguments })))
         }
-        _ if !indices.is_empty() => SyntaxError::fail(offset(&next), SyntaxErrorKind::Expected("`=` after an indexed variable")),
+        _ if !indices.is_empty() => SyntaxError::fail(
+            offset(&next),
+            SyntaxErrorKind::Expected("`=` after an indexed variable"),
+        ),
         _ => Ok((after_name, StatementKind::Command(name))),
     }
 }
@@ -285,12 +380,22 @@ pub fn parse_def(input: Input) -> PResult<Def> {
         if peek(&rest) == Some(b',') {
             input = parse_blank(rest.take_from(1));
         } else {
-            return Ok((rest, Def { scope, attributes, data_type, variables }));
+            return Ok((
+                rest,
+                Def {
+                    scope,
+                    attributes,
+                    data_type,
+                    variables,
+                },
+            ));
         }
     }
 }
 
-const VALUED_ATTRIBUTES: [&str; 10] = ["APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI"];
+const VALUED_ATTRIBUTES: [&str; 10] = [
+    "APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI",
+];
 const FLAG_ATTRIBUTES: [&str; 7] = ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
 
 /// `attribute := ('APR' | 'APW' | ... | 'LLI' | 'ULI') expr | 'SYNR' | ... | 'PRLOC'`
@@ -304,10 +409,16 @@ pub fn parse_attributes(mut input: Input) -> PResult<Vec<Attribute>> {
         let is = |list: &[&str]| list.iter().any(|k| text.eq_ignore_ascii_case(k.as_bytes()));
         if is(&VALUED_ATTRIBUTES) {
             let (rest, value) = parse_expr(parse_blank(rest))?;
-            attributes.push(Attribute { keyword, value: Some(value) });
+            attributes.push(Attribute {
+                keyword,
+                value: Some(value),
+            });
             input = parse_blank(rest);
         } else if is(&FLAG_ATTRIBUTES) {
-            attributes.push(Attribute { keyword, value: None });
+            attributes.push(Attribute {
+                keyword,
+                value: None,
+            });
             input = parse_blank(rest);
         } else {
             return Ok((input, attributes));
@@ -327,12 +438,16 @@ const TYPES: [(&str, TypeKind); 7] = [
 
 /// `data_type := 'INT' | 'REAL' | 'BOOL' | 'CHAR' | 'STRING' '[' expr ']' | 'AXIS' | 'FRAME'`
 pub fn parse_data_type(input: Input) -> PResult<DataType> {
-    let expected = SyntaxErrorKind::Expected("a data type: INT, REAL, BOOL, CHAR, STRING[n], AXIS or FRAME");
+    let expected =
+        SyntaxErrorKind::Expected("a data type: INT, REAL, BOOL, CHAR, STRING[n], AXIS or FRAME");
     let Ok((rest, name)) = parse_name(input) else {
         return SyntaxError::fail(offset(&input), expected);
     };
     let text = &input.fragment()[..name.span.len()];
-    let Some(&(_, kind)) = TYPES.iter().find(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes())) else {
+    let Some(&(_, kind)) = TYPES
+        .iter()
+        .find(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes()))
+    else {
         return SyntaxError::fail(offset(&input), expected);
     };
     let mut rest = rest;
@@ -340,12 +455,22 @@ pub fn parse_data_type(input: Input) -> PResult<DataType> {
     if kind == TypeKind::String {
         let (after, mut list) = parse_indices(rest, 0)?;
         if list.len() > 1 {
-            return SyntaxError::fail(offset(&rest), SyntaxErrorKind::Expected("one length, `STRING[n]`"));
+            return SyntaxError::fail(
+                offset(&rest),
+                SyntaxErrorKind::Expected("one length, `STRING[n]`"),
+            );
         }
         length = list.pop();
         rest = after;
     }
-    Ok((rest, DataType { span: span_between(&input, &rest), kind, length }))
+    Ok((
+        rest,
+        DataType {
+            span: span_between(&input, &rest),
+            kind,
+            length,
+        },
+    ))
 }
 
 /// `declarator := name dimensions? (blank '=' blank initializer)?`
@@ -361,10 +486,24 @@ pub fn parse_declarator(input: Input) -> PResult<Declarator> {
     };
     let equals = parse_blank(rest);
     if peek(&equals) != Some(b'=') {
-        return Ok((rest, Declarator { name, dimensions, init: None }));
+        return Ok((
+            rest,
+            Declarator {
+                name,
+                dimensions,
+                init: None,
+            },
+        ));
     }
     let (rest, init) = parse_initializer(parse_blank(equals.take_from(1)))?;
-    Ok((rest, Declarator { name, dimensions, init: Some(init) }))
+    Ok((
+        rest,
+        Declarator {
+            name,
+            dimensions,
+            init: Some(init),
+        },
+    ))
 }
 
 /// `initializer := '(' argument (',' argument)+ ')' | expr`
@@ -383,7 +522,10 @@ pub fn parse_initializer(input: Input) -> PResult<Initializer> {
 pub fn parse_proc(input: Input) -> PResult<Proc> {
     let input = parse_blank(input);
     let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the procedure's name"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("the procedure's name"),
+        );
     };
     let mut input = parse_blank(rest);
     let mut parameters = Vec::new();
@@ -398,8 +540,18 @@ pub fn parse_proc(input: Input) -> PResult<Proc> {
                 match peek(&input) {
                     Some(b',') => input = parse_blank(input.take_from(1)),
                     Some(b')') => break,
-                    None => return SyntaxError::fail(offset(&open), SyntaxErrorKind::UnclosedBracket(b'(')),
-                    Some(_) => return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("`,` or `)` in the parameter list")),
+                    None => {
+                        return SyntaxError::fail(
+                            offset(&open),
+                            SyntaxErrorKind::UnclosedBracket(b'('),
+                        )
+                    }
+                    Some(_) => {
+                        return SyntaxError::fail(
+                            offset(&input),
+                            SyntaxErrorKind::Expected("`,` or `)` in the parameter list"),
+                        )
+                    }
                 }
             }
         }
@@ -413,7 +565,16 @@ pub fn parse_proc(input: Input) -> PResult<Proc> {
                 attributes.push(attribute);
                 input = rest;
             }
-            Err(_) => return Ok((input, Proc { name, parameters, attributes })),
+            Err(_) => {
+                return Ok((
+                    input,
+                    Proc {
+                        name,
+                        parameters,
+                        attributes,
+                    },
+                ))
+            }
         }
     }
 }
@@ -427,23 +588,46 @@ pub fn parse_parameter(input: Input) -> PResult<Parameter> {
     };
     let (rest, data_type) = parse_data_type(rest)?;
     let (rest, declarator) = parse_declarator(parse_blank(rest))?;
-    Ok((rest, Parameter { span: span_between(&start, &rest), by_reference, data_type, declarator }))
+    Ok((
+        rest,
+        Parameter {
+            span: span_between(&start, &rest),
+            by_reference,
+            data_type,
+            declarator,
+        },
+    ))
 }
 
 /// `extern := 'EXTERN' name ('(' any ')')?`
 pub fn parse_extern(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
     let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the subprogram's name"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("the subprogram's name"),
+        );
     };
     let next = parse_blank(rest);
     if peek(&next) != Some(b'(') {
-        return Ok((rest, StatementKind::Extern { name, parameters: None }));
+        return Ok((
+            rest,
+            StatementKind::Extern {
+                name,
+                parameters: None,
+            },
+        ));
     }
     match memchr::memchr(b')', next.fragment()) {
         Some(close) => {
             let after = next.take_from(close + 1);
-            Ok((after, StatementKind::Extern { name, parameters: Some(span_between(&next, &after)) }))
+            Ok((
+                after,
+                StatementKind::Extern {
+                    name,
+                    parameters: Some(span_between(&next, &after)),
+                },
+            ))
         }
         None => SyntaxError::fail(offset(&next), SyntaxErrorKind::UnclosedBracket(b'(')),
     }
@@ -453,33 +637,62 @@ pub fn parse_extern(input: Input) -> PResult<StatementKind> {
 pub fn parse_define(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
     let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the macro's name"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("the macro's name"),
+        );
     };
     let Ok((rest, _)) = keyword("AS")(parse_blank(rest)) else {
-        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`AS` after the macro's name"));
+        return SyntaxError::fail(
+            offset(&parse_blank(rest)),
+            SyntaxErrorKind::Expected("`AS` after the macro's name"),
+        );
     };
     let body_start = parse_blank(rest);
     let len = memchr::memchr(b';', body_start.fragment()).unwrap_or(body_start.input_len());
+    let len = target_len(&body_start.fragment()[..len]);
     let end = body_start.take_from(len);
-    Ok((end, StatementKind::Define { name, body: span_between(&body_start, &end) }))
+    Ok((
+        end,
+        StatementKind::Define {
+            name,
+            body: span_between(&body_start, &end),
+        },
+    ))
 }
 
 /// `for := 'FOR' name blank '=' expr 'TO' expr`
 pub fn parse_for(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
     let Ok((rest, variable)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("the loop variable"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("the loop variable"),
+        );
     };
     let equals = parse_blank(rest);
     if peek(&equals) != Some(b'=') {
-        return SyntaxError::fail(offset(&equals), SyntaxErrorKind::Expected("`=` after the loop variable"));
+        return SyntaxError::fail(
+            offset(&equals),
+            SyntaxErrorKind::Expected("`=` after the loop variable"),
+        );
     }
     let (rest, start) = parse_expr(parse_blank(equals.take_from(1)))?;
     let Ok((rest, _)) = keyword("TO")(parse_blank(rest)) else {
-        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`TO` and the end value"));
+        return SyntaxError::fail(
+            offset(&parse_blank(rest)),
+            SyntaxErrorKind::Expected("`TO` and the end value"),
+        );
     };
     let (rest, end) = parse_expr(parse_blank(rest))?;
-    Ok((rest, StatementKind::For { variable, start, end }))
+    Ok((
+        rest,
+        StatementKind::For {
+            variable,
+            start,
+            end,
+        },
+    ))
 }
 
 /// `repeat := ('REPEAT' | 'REPEATB') (blank name)*` (the `P=n` after it is a word)
@@ -487,7 +700,9 @@ pub fn parse_repeat(mut input: Input) -> PResult<StatementKind> {
     let mut targets = Vec::new();
     loop {
         let at = parse_blank(input);
-        let Ok((rest, name)) = parse_name(at) else { break };
+        let Ok((rest, name)) = parse_name(at) else {
+            break;
+        };
         if matches!(peek(&parse_blank(rest)), Some(b'=')) {
             break;
         }
@@ -501,14 +716,24 @@ pub fn parse_repeat(mut input: Input) -> PResult<StatementKind> {
 pub fn parse_case(input: Input) -> PResult<Case> {
     let (rest, selector) = parse_expr(parse_blank(input))?;
     let Ok((mut input, _)) = keyword("OF")(parse_blank(rest)) else {
-        return SyntaxError::fail(offset(&parse_blank(rest)), SyntaxErrorKind::Expected("`OF` after the CASE expression"));
+        return SyntaxError::fail(
+            offset(&parse_blank(rest)),
+            SyntaxErrorKind::Expected("`OF` after the CASE expression"),
+        );
     };
     let mut branches = Vec::new();
     let mut default = None;
     loop {
         let at = parse_blank(input);
         if matches!(peek(&at), None | Some(b';')) {
-            return Ok((input, Case { selector, branches, default }));
+            return Ok((
+                input,
+                Case {
+                    selector,
+                    branches,
+                    default,
+                },
+            ));
         }
         if let Ok((rest, _)) = keyword("DEFAULT")(at) {
             let (rest, goto) = parse_goto(parse_blank(rest))?;
@@ -527,7 +752,10 @@ pub fn parse_case(input: Input) -> PResult<Case> {
 /// `goto_target := name | number | expr`
 pub fn parse_goto(input: Input) -> PResult<Goto> {
     let Ok((rest, keyword_name)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC"),
+        );
     };
     let text = &input.fragment()[..keyword_name.span.len()];
     let kind = match text.to_ascii_uppercase().as_slice() {
@@ -535,8 +763,22 @@ pub fn parse_goto(input: Input) -> PResult<Goto> {
         b"GOTOB" => GotoKind::Backward,
         b"GOTO" => GotoKind::Both,
         b"GOTOC" => GotoKind::Conditional,
-        b"GOTOS" => return Ok((rest, Goto { keyword: keyword_name, kind: GotoKind::Start, target: None })),
-        _ => return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC")),
+        b"GOTOS" => {
+            return Ok((
+                rest,
+                Goto {
+                    keyword: keyword_name,
+                    kind: GotoKind::Start,
+                    target: None,
+                },
+            ))
+        }
+        _ => {
+            return SyntaxError::fail(
+                offset(&input),
+                SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC"),
+            )
+        }
     };
     let at = parse_blank(rest);
     let target = match peek(&at) {
@@ -549,24 +791,42 @@ pub fn parse_goto(input: Input) -> PResult<Goto> {
             (rest, GotoTarget::Number(number))
         }
         Some(b';') | None => {
-            return SyntaxError::fail(offset(&at), SyntaxErrorKind::Expected("a label or block number to jump to"));
+            return SyntaxError::fail(
+                offset(&at),
+                SyntaxErrorKind::Expected("a label or block number to jump to"),
+            );
         }
         _ => {
             let (rest, expr) = parse_expr(at)?;
             (rest, GotoTarget::Computed(expr))
         }
     };
-    Ok((target.0, Goto { keyword: keyword_name, kind, target: Some(target.1) }))
+    Ok((
+        target.0,
+        Goto {
+            keyword: keyword_name,
+            kind,
+            target: Some(target.1),
+        },
+    ))
 }
 
 /// `GOTOF "L"<<I` and `GOTOF LBL<<I` are computed targets, not labels.
 fn is_operator_after_name(input: Input) -> bool {
-    let len = input.fragment().iter().take_while(|&&b| is_name_char(b)).count();
+    let len = input
+        .fragment()
+        .iter()
+        .take_while(|&&b| is_name_char(b))
+        .count();
     input.fragment()[len..].starts_with(b"<<")
 }
 
 fn is_operator_after_number(input: Input) -> bool {
-    let len = input.fragment().iter().take_while(|b| b.is_ascii_digit()).count();
+    let len = input
+        .fragment()
+        .iter()
+        .take_while(|b| b.is_ascii_digit())
+        .count();
     input.fragment()[len..].starts_with(b"<<")
 }
 
@@ -575,14 +835,26 @@ pub fn parse_indirect_call<'a>(input: Input<'a>, keyword_name: Name) -> PResult<
     let at = parse_blank(input);
     let len = target_len(at.fragment());
     if len == 0 {
-        return Ok((input, StatementKind::IndirectCall { keyword: keyword_name, target: None }));
+        return Ok((
+            input,
+            StatementKind::IndirectCall {
+                keyword: keyword_name,
+                target: None,
+            },
+        ));
     }
     let end = at.take_from(len);
     let span = span_between(&at, &end);
     if let Some(quote) = unclosed_quote(&at.fragment()[..len]) {
         return SyntaxError::fail(span.start + quote, SyntaxErrorKind::UnclosedString);
     }
-    Ok((end, StatementKind::IndirectCall { keyword: keyword_name, target: Some(span) }))
+    Ok((
+        end,
+        StatementKind::IndirectCall {
+            keyword: keyword_name,
+            target: Some(span),
+        },
+    ))
 }
 
 /// Up to the comment (outside strings), without trailing blanks.
@@ -599,7 +871,10 @@ fn target_len(bytes: &[u8]) -> usize {
             _ => {}
         }
     }
-    bytes[..end].iter().rposition(|&b| !crate::syntax::lexer::is_blank(b)).map_or(0, |p| p + 1)
+    bytes[..end]
+        .iter()
+        .rposition(|&b| !crate::syntax::lexer::is_blank(b))
+        .map_or(0, |p| p + 1)
 }
 
 fn unclosed_quote(bytes: &[u8]) -> Option<usize> {

@@ -11,12 +11,12 @@ use crate::syntax::lexer::{
     is_name_start, offset, parse_blank, parse_name, parse_number, parse_string, peek, peek_at,
     span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
 };
-use crate::syntax::tree::{
-    Argument, Arguments, BinaryOp, Call, Expr, ExprKind, UnaryOp, Variable,
-};
+use crate::syntax::tree::{Argument, Arguments, BinaryOp, Call, Expr, ExprKind, UnaryOp, Variable};
 
-/// Nesting deeper than this is refused with a diagnostic instead of
-/// overflowing the stack; real programs stay far below it.
+/// Trees deeper than this (parentheses, unary operators and chained binary
+/// operators together) are refused with a diagnostic instead of overflowing
+/// the stack while parsing or dropping them. A block of the control's 512
+/// characters cannot come near it.
 pub const MAX_DEPTH: usize = 256;
 
 /// `expr := chain`
@@ -108,15 +108,22 @@ impl SpanOfFragment for crate::span::Span {
 fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
     let depth = deeper(&input, depth)?;
     let (mut input, mut lhs) = parse_unary(input, depth)?;
+    // Each operator in a chain deepens the (left-leaning) tree by one.
+    let mut chain_depth = depth;
     while let Some((op, level, after)) = peek_binary_operator(input) {
         if level < min_level {
             break;
         }
-        let (rest, rhs) = parse_binary(parse_blank(after), level + 1, depth)?;
+        chain_depth = deeper(&input, chain_depth)?;
+        let (rest, rhs) = parse_binary(parse_blank(after), level + 1, chain_depth)?;
         let span = lhs.span.to(rhs.span);
         lhs = Expr {
             span,
-            kind: ExprKind::Binary { op, lhs: Box::new(lhs), rhs: Box::new(rhs) },
+            kind: ExprKind::Binary {
+                op,
+                lhs: Box::new(lhs),
+                rhs: Box::new(rhs),
+            },
         };
         input = rest;
     }
@@ -151,7 +158,10 @@ fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
         rest,
         Expr {
             span: span_between(&start, &rest),
-            kind: ExprKind::Unary { op, operand: Box::new(operand) },
+            kind: ExprKind::Unary {
+                op,
+                operand: Box::new(operand),
+            },
         },
     ))
 }
@@ -162,11 +172,23 @@ fn parse_primary(input: Input, depth: usize) -> PResult<Expr> {
     match peek(&input) {
         Some(b'0'..=b'9' | b'.' | b'\'') => {
             let (rest, number) = parse_number(input)?;
-            Ok((rest, Expr { span: number.span, kind: ExprKind::Number(number) }))
+            Ok((
+                rest,
+                Expr {
+                    span: number.span,
+                    kind: ExprKind::Number(number),
+                },
+            ))
         }
         Some(b'"') => {
             let (rest, span) = parse_string(input)?;
-            Ok((rest, Expr { span, kind: ExprKind::String }))
+            Ok((
+                rest,
+                Expr {
+                    span,
+                    kind: ExprKind::String,
+                },
+            ))
         }
         Some(b'(') => {
             let inner = parse_blank(input.take_from(1));
@@ -176,12 +198,22 @@ fn parse_primary(input: Input, depth: usize) -> PResult<Expr> {
                 return close_error(&start, &rest, b'(');
             }
             let rest = rest.take_from(1);
-            Ok((rest, Expr { span: span_between(&start, &rest), kind: ExprKind::Paren(Box::new(inner)) }))
+            Ok((
+                rest,
+                Expr {
+                    span: span_between(&start, &rest),
+                    kind: ExprKind::Paren(Box::new(inner)),
+                },
+            ))
         }
         Some(b'$') => parse_variable_or_call(input, depth),
         Some(byte) if is_name_start(byte) => parse_variable_or_call(input, depth),
-        Some(b')' | b']') => SyntaxError::at(&input, SyntaxErrorKind::UnmatchedClose(input.fragment()[0])),
-        Some(byte) if !is_known_byte(byte) => SyntaxError::at(&input, SyntaxErrorKind::UnknownCharacter),
+        Some(b')' | b']') => {
+            SyntaxError::at(&input, SyntaxErrorKind::UnmatchedClose(input.fragment()[0]))
+        }
+        Some(byte) if !is_known_byte(byte) => {
+            SyntaxError::at(&input, SyntaxErrorKind::UnknownCharacter)
+        }
         _ => SyntaxError::at(&input, SyntaxErrorKind::Expected("an expression")),
     }
 }
@@ -197,7 +229,9 @@ pub fn is_known_byte(byte: u8) -> bool {
 fn close_error<T>(open: &Input, at: &Input, bracket: u8) -> PResult<'static, T> {
     match peek(at) {
         // Something unreadable inside: report that, it is the real cause.
-        Some(byte) if !is_known_byte(byte) => SyntaxError::fail(offset(at), SyntaxErrorKind::UnknownCharacter),
+        Some(byte) if !is_known_byte(byte) => {
+            SyntaxError::fail(offset(at), SyntaxErrorKind::UnknownCharacter)
+        }
         _ => SyntaxError::fail(offset(open), SyntaxErrorKind::UnclosedBracket(bracket)),
     }
 }
@@ -208,11 +242,27 @@ fn parse_variable_or_call(input: Input, depth: usize) -> PResult<Expr> {
     let (rest, name) = parse_name(input)?;
     if peek(&rest) == Some(b'(') {
         let (rest, arguments) = parse_arguments(rest, depth)?;
-        return Ok((rest, Expr { span: span_between(&start, &rest), kind: ExprKind::Call(Call { name, arguments }) }));
+        return Ok((
+            rest,
+            Expr {
+                span: span_between(&start, &rest),
+                kind: ExprKind::Call(Call { name, arguments }),
+            },
+        ));
     }
     let (rest, indices) = parse_indices(rest, depth)?;
     let span = span_between(&start, &rest);
-    Ok((rest, Expr { span, kind: ExprKind::Variable(Variable { span, name, indices }) }))
+    Ok((
+        rest,
+        Expr {
+            span,
+            kind: ExprKind::Variable(Variable {
+                span,
+                name,
+                indices,
+            }),
+        },
+    ))
 }
 
 /// `indices := ('[' expr (',' expr)* ']')?`
@@ -225,13 +275,15 @@ pub fn parse_indices(input: Input, depth: usize) -> PResult<Vec<crate::syntax::t
     for item in list.items {
         match item.value {
             Some(value) => indices.push(value),
-            None => return SyntaxError::fail(item.span.start, SyntaxErrorKind::Expected("an index")),
+            None => {
+                return SyntaxError::fail(item.span.start, SyntaxErrorKind::Expected("an index"))
+            }
         }
     }
     Ok((rest, indices))
 }
 
-/// `arguments := '(' argument (',' argument)* ')'` ; `argument := expr?`
+/// `arguments := '(' blank ')' | '(' argument (',' argument)* ')'` ; `argument := expr?`
 pub fn parse_arguments(input: Input, depth: usize) -> PResult<Arguments> {
     parse_list(input, b'(', b')', depth)
 }
@@ -245,6 +297,18 @@ pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Ar
     let depth = deeper(&input, depth)?;
     let mut input = input.take_from(1);
     let mut items = Vec::new();
+    // `CYCLE800()` has no arguments at all, not one empty one.
+    let inside = parse_blank(input);
+    if peek(&inside) == Some(close) {
+        let rest = inside.take_from(1);
+        return Ok((
+            rest,
+            Arguments {
+                span: span_between(&start, &rest),
+                items,
+            },
+        ));
+    }
     loop {
         input = parse_blank(input);
         let item_start = input;
@@ -272,7 +336,13 @@ pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Ar
             Some(b',') => input = input.take_from(1),
             Some(b) if b == close => {
                 let rest = input.take_from(1);
-                return Ok((rest, Arguments { span: span_between(&start, &rest), items }));
+                return Ok((
+                    rest,
+                    Arguments {
+                        span: span_between(&start, &rest),
+                        items,
+                    },
+                ));
             }
             _ => return close_error(&start, &input, open),
         }
@@ -283,7 +353,10 @@ pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Ar
 /// that is unclosed; elsewhere the item itself is wrong.
 fn list_error(open: &Input, at: &Input, _close: u8, error: SyntaxError) -> SyntaxError {
     if peek_at(at, 0).is_none() {
-        SyntaxError::new(offset(open), SyntaxErrorKind::UnclosedBracket(open.fragment()[0]))
+        SyntaxError::new(
+            offset(open),
+            SyntaxErrorKind::UnclosedBracket(open.fragment()[0]),
+        )
     } else {
         error
     }
@@ -295,13 +368,19 @@ mod tests {
 
     fn shape(text: &str) -> String {
         let (rest, expr) = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect("parses");
-        assert!(rest.fragment().is_empty(), "left over: {:?}", String::from_utf8_lossy(rest.fragment()));
+        assert!(
+            rest.fragment().is_empty(),
+            "left over: {:?}",
+            String::from_utf8_lossy(rest.fragment())
+        );
         render(text.as_bytes(), &expr)
     }
 
     fn render(source: &[u8], expr: &Expr) -> String {
         match &expr.kind {
-            ExprKind::Binary { op, lhs, rhs } => format!("({} {op:?} {})", render(source, lhs), render(source, rhs)),
+            ExprKind::Binary { op, lhs, rhs } => {
+                format!("({} {op:?} {})", render(source, lhs), render(source, rhs))
+            }
             ExprKind::Unary { op, operand } => format!("({op:?} {})", render(source, operand)),
             ExprKind::Paren(inner) => render(source, inner),
             _ => String::from_utf8_lossy(expr.span.of(source)).into_owned(),
@@ -329,21 +408,52 @@ mod tests {
 
     #[test]
     fn frame_chain_is_the_weakest() {
-        assert_eq!(shape("CTRANS(X,15):CROT(Z,45)"), "(CTRANS(X,15) Chain CROT(Z,45))");
+        assert_eq!(
+            shape("CTRANS(X,15):CROT(Z,45)"),
+            "(CTRANS(X,15) Chain CROT(Z,45))"
+        );
     }
 
     #[test]
     fn empty_arguments_are_kept() {
         let (_, expr) = parse_expr(Input::new_extra(b"SET(0,,,9,)", 0)).expect("parses");
-        let ExprKind::Call(call) = expr.kind else { panic!("not a call") };
-        let present: Vec<bool> = call.arguments.items.iter().map(|a| a.value.is_some()).collect();
+        let ExprKind::Call(call) = expr.kind else {
+            panic!("not a call")
+        };
+        let present: Vec<bool> = call
+            .arguments
+            .items
+            .iter()
+            .map(|a| a.value.is_some())
+            .collect();
         assert_eq!(present, [true, false, false, true, false]);
+    }
+
+    #[test]
+    fn long_operator_chains_are_refused_not_overflowed() {
+        let text = "1".to_string() + &"+1".repeat(100_000);
+        let error = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect_err("too deep");
+        assert!(matches!(
+            error,
+            nom::Err::Failure(SyntaxError {
+                kind: SyntaxErrorKind::TooDeep,
+                ..
+            })
+        ));
+        let fine = "1".to_string() + &"+1".repeat(200);
+        assert!(parse_expr(Input::new_extra(fine.as_bytes(), 0)).is_ok());
     }
 
     #[test]
     fn deep_nesting_is_refused_not_overflowed() {
         let text = "(".repeat(100_000) + "1" + &")".repeat(100_000);
         let error = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect_err("too deep");
-        assert!(matches!(error, nom::Err::Failure(SyntaxError { kind: SyntaxErrorKind::TooDeep, .. })));
+        assert!(matches!(
+            error,
+            nom::Err::Failure(SyntaxError {
+                kind: SyntaxErrorKind::TooDeep,
+                ..
+            })
+        ));
     }
 }

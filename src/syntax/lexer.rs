@@ -110,7 +110,11 @@ pub fn is_name_char(byte: u8) -> bool {
 
 /// `blank := (' ' | TAB | '&' | control)*`
 pub fn parse_blank(input: Input) -> Input {
-    let len = input.fragment().iter().take_while(|&&b| is_blank(b)).count();
+    let len = input
+        .fragment()
+        .iter()
+        .take_while(|&&b| is_blank(b))
+        .count();
     input.take_from(len)
 }
 
@@ -172,7 +176,10 @@ fn parse_decimal(input: Input) -> PResult<Number> {
     let mut fraction_digits = 0;
     if bytes.get(len) == Some(&b'.') {
         len += 1;
-        fraction_digits = bytes[len..].iter().take_while(|b| b.is_ascii_digit()).count();
+        fraction_digits = bytes[len..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .count();
         len += fraction_digits;
     }
     if integer_digits + fraction_digits == 0 {
@@ -185,23 +192,46 @@ fn parse_decimal(input: Input) -> PResult<Number> {
         if matches!(bytes.get(at), Some(b'+' | b'-')) {
             at += 1;
         }
-        let digits = bytes[at..].iter().take_while(|b| b.is_ascii_digit()).count();
+        let digits = bytes[at..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .count();
         if digits == 0 {
-            return SyntaxError::fail(offset(&start), SyntaxErrorKind::InvalidNumber("`EX` must be followed by the exponent's digits, as in `1.5EX3`"));
+            return SyntaxError::fail(
+                offset(&start),
+                SyntaxErrorKind::InvalidNumber(
+                    "`EX` must be followed by the exponent's digits, as in `1.5EX3`",
+                ),
+            );
         }
         exponent = Some(&bytes[len + 2..at + digits]);
         len = at + digits;
     }
     if bytes.get(len) == Some(&b'.') {
-        return SyntaxError::fail(offset(&start), SyntaxErrorKind::InvalidNumber("a number has at most one decimal point"));
+        return SyntaxError::fail(
+            offset(&start),
+            SyntaxErrorKind::InvalidNumber("a number has at most one decimal point"),
+        );
     }
     let value = decimal_value(&bytes[..mantissa_len], exponent);
     let (rest, _) = input.take_split(len);
     let span = span_between(&start, &rest);
     if !value.is_finite() {
-        return SyntaxError::fail(span.start, SyntaxErrorKind::InvalidNumber("the number is too large for a REAL (at most about 1.8EX308)"));
+        return SyntaxError::fail(
+            span.start,
+            SyntaxErrorKind::InvalidNumber(
+                "the number is too large for a REAL (at most about 1.8EX308)",
+            ),
+        );
     }
-    Ok((rest, Number { span, value, kind: NumberKind::Decimal }))
+    Ok((
+        rest,
+        Number {
+            span,
+            value,
+            kind: NumberKind::Decimal,
+        },
+    ))
 }
 
 /// The value of `mantissa` × 10^`exponent`, both ASCII digits (already checked).
@@ -226,12 +256,25 @@ fn parse_radix_number(input: Input) -> PResult<Number> {
     let (kind, radix) = match bytes.get(1).map(u8::to_ascii_uppercase) {
         Some(b'H') => (NumberKind::Hex, 16),
         Some(b'B') => (NumberKind::Binary, 2),
-        _ => return SyntaxError::fail(offset(&input), SyntaxErrorKind::InvalidNumber("a quoted number is hexadecimal `'H1F'` or binary `'B101'`")),
+        _ => {
+            return SyntaxError::fail(
+                offset(&input),
+                SyntaxErrorKind::InvalidNumber(
+                    "a quoted number is hexadecimal `'H1F'` or binary `'B101'`",
+                ),
+            )
+        }
     };
-    let digits = bytes[2..].iter().take_while(|b| b.is_ascii_alphanumeric()).count();
+    let digits = bytes[2..]
+        .iter()
+        .take_while(|b| b.is_ascii_alphanumeric())
+        .count();
     let text = &bytes[2..2 + digits];
     if bytes.get(2 + digits) != Some(&b'\'') {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::InvalidNumber("a quoted number ends with `'`"));
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::InvalidNumber("a quoted number ends with `'`"),
+        );
     }
     let value = std::str::from_utf8(text)
         .ok()
@@ -248,7 +291,14 @@ fn parse_radix_number(input: Input) -> PResult<Number> {
         );
     };
     let (rest, _) = input.take_split(3 + digits);
-    Ok((rest, Number { span: span_between(&start, &rest), value: value as f64, kind }))
+    Ok((
+        rest,
+        Number {
+            span: span_between(&start, &rest),
+            value: value as f64,
+            kind,
+        },
+    ))
 }
 
 /// `string := '"' (any byte but '"')* '"'`: strings may not span lines.
@@ -274,7 +324,9 @@ mod tests {
     }
 
     fn number(text: &str) -> f64 {
-        parse_number(input(text)).map(|(_, n)| n.value).unwrap_or(f64::NAN)
+        parse_number(input(text))
+            .map(|(_, n)| n.value)
+            .unwrap_or(f64::NAN)
     }
 
     #[test]
@@ -291,7 +343,10 @@ mod tests {
     #[test]
     fn bad_numbers_are_committed_errors() {
         for bad in ["1.2.3", "1EX", "'H1G'", "'B102'", "'X1'", "1EX99999"] {
-            assert!(matches!(parse_number(input(bad)), Err(Err::Failure(_))), "{bad}");
+            assert!(
+                matches!(parse_number(input(bad)), Err(Err::Failure(_))),
+                "{bad}"
+            );
         }
     }
 

@@ -37,7 +37,10 @@ pub struct RawLine {
 impl RawLine {
     /// The content plus the terminator.
     pub fn full(self) -> Span {
-        Span::new(self.content.start, self.content.end + self.ending.as_bytes().len())
+        Span::new(
+            self.content.start,
+            self.content.end + self.ending.as_bytes().len(),
+        )
     }
 }
 
@@ -115,7 +118,12 @@ mod tests {
         let endings: Vec<_> = raw_lines(source).map(|l| l.ending).collect();
         assert_eq!(
             endings,
-            [LineEnding::Lf, LineEnding::CrLf, LineEnding::Cr, LineEnding::None]
+            [
+                LineEnding::Lf,
+                LineEnding::CrLf,
+                LineEnding::Cr,
+                LineEnding::None
+            ]
         );
         assert_eq!(rebuild(source), source);
     }

@@ -54,7 +54,11 @@ pub fn parse(source: &[u8]) -> Program<'_> {
         lines.push(line);
         diagnostics.extend(diagnostic);
     }
-    Program { source, lines, diagnostics }
+    Program {
+        source,
+        lines,
+        diagnostics,
+    }
 }
 
 /// Parses line after line, remembering the one thing that crosses lines: a
@@ -83,8 +87,13 @@ impl LineParser {
                     return continuation(open, block.unparsed.unwrap_or(raw.content));
                 }
             }
-            if let (SyntaxErrorKind::UnclosedBracket(b'('), LineKind::Block(block)) = (&error.kind, &kind) {
-                self.open_call = open_call_name(source, block, error.at).map(|name| OpenCall { row: self.row, name });
+            if let (SyntaxErrorKind::UnclosedBracket(b'('), LineKind::Block(block)) =
+                (&error.kind, &kind)
+            {
+                self.open_call = open_call_name(source, block, error.at).map(|name| OpenCall {
+                    row: self.row,
+                    name,
+                });
             }
             to_diagnostic(source, raw, &error)
         });
@@ -94,11 +103,21 @@ impl LineParser {
 
 fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxError>) {
     if content.first() == Some(&b'%') {
-        return (LineKind::Header { name: Span::new(start + 1, start + content.len()) }, None);
+        return (
+            LineKind::Header {
+                name: Span::new(start + 1, start + content.len()),
+            },
+            None,
+        );
     }
     const PATH: &[u8] = b";$PATH=";
     if content.len() >= PATH.len() && content[..PATH.len()].eq_ignore_ascii_case(PATH) {
-        return (LineKind::Path { directory: Span::new(start + PATH.len(), start + content.len()) }, None);
+        return (
+            LineKind::Path {
+                directory: Span::new(start + PATH.len(), start + content.len()),
+            },
+            None,
+        );
     }
     let (block, error) = block::parse_block(Input::new_extra(content, start));
     (LineKind::Block(block), error)
@@ -109,7 +128,10 @@ fn open_call_name(source: &[u8], block: &Block, open: usize) -> Option<String> {
     let unparsed = block.unparsed?;
     let text = &source[unparsed.start..open];
     let name = text.trim_ascii_end();
-    let start = name.iter().rposition(|&b| !lexer::is_name_char(b)).map_or(0, |p| p + 1);
+    let start = name
+        .iter()
+        .rposition(|&b| !lexer::is_name_char(b))
+        .map_or(0, |p| p + 1);
     let name = &name[start..];
     (!name.is_empty()).then(|| String::from_utf8_lossy(name).into_owned())
 }
@@ -121,7 +143,10 @@ fn continuation(open: &OpenCall, unparsed: Span) -> Diagnostic {
             open.name, open.row
         ))
         .label("continuation of the previous line")
-        .help(format!("join this line to line {}: on the control a block is one line", open.row))
+        .help(format!(
+            "join this line to line {}: on the control a block is one line",
+            open.row
+        ))
 }
 
 /// Turns the parser's stop into a diagnostic at the offending bytes.
@@ -132,10 +157,12 @@ fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic
     let rest = Span::new(at, line_end);
     let show = |span: Span| String::from_utf8_lossy(span.of(source)).into_owned();
     match &error.kind {
-        SyntaxErrorKind::UnclosedString => Diagnostic::new("S001", "unclosed-string", Severity::Error, rest)
-            .message("string is not closed on this line")
-            .label("this string has no closing `\"`")
-            .help("add the closing `\"`; strings cannot span lines"),
+        SyntaxErrorKind::UnclosedString => {
+            Diagnostic::new("S001", "unclosed-string", Severity::Error, rest)
+                .message("string is not closed on this line")
+                .label("this string has no closing `\"`")
+                .help("add the closing `\"`; strings cannot span lines")
+        }
         SyntaxErrorKind::UnclosedBracket(open) => {
             let (open, close) = (*open as char, if *open == b'(' { ')' } else { ']' });
             let help = if is_call_paren(source, raw.content.start, at) {
@@ -153,30 +180,80 @@ fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic
             Diagnostic::new("S002", "unbalanced-bracket", Severity::Error, one)
                 .message(format!("`{close}` without a matching opening bracket"))
                 .label("nothing to close here")
-                .help(format!("remove this `{close}` or add the opening bracket it closes"))
+                .help(format!(
+                    "remove this `{close}` or add the opening bracket it closes"
+                ))
         }
-        SyntaxErrorKind::InvalidNumber(why) => Diagnostic::new("S003", "invalid-number", Severity::Error, number_span(source, at, line_end))
-            .message(format!("invalid number `{}`", show(number_span(source, at, line_end))))
-            .label("not a number")
-            .help(format!("{why}")),
-        SyntaxErrorKind::UnknownCharacter => Diagnostic::new("S004", "unknown-character", Severity::Error, char_span(source, at, line_end))
-            .message(format!("character `{}` has no meaning here", show_char(source, at, line_end)))
+        SyntaxErrorKind::InvalidNumber(why) => Diagnostic::new(
+            "S003",
+            "invalid-number",
+            Severity::Error,
+            number_span(source, at, line_end),
+        )
+        .message(format!(
+            "invalid number `{}`",
+            show(number_span(source, at, line_end))
+        ))
+        .label("not a number")
+        .help(why.to_string()),
+        SyntaxErrorKind::UnknownCharacter => {
+            let help = match source.get(at) {
+                Some(b'^') => {
+                    "Sinumerik has no power operator: write POT(x) for x², or EXP(y*LN(x))"
+                }
+                Some(b'!') => "write `<>` for not equal and NOT for negation",
+                _ => "remove it, or put it in a comment after `;` or inside a string",
+            };
+            Diagnostic::new(
+                "S004",
+                "unknown-character",
+                Severity::Error,
+                char_span(source, at, line_end),
+            )
+            .message(format!(
+                "character {} has no meaning here",
+                describe_char(source, at, line_end)
+            ))
             .label("unknown character")
-            .help("remove it, or put it in a comment after `;` or inside a string"),
-        SyntaxErrorKind::MissingValue => Diagnostic::new("S006", "missing-value", Severity::Error, one)
-            .message(format!("address `{}` has no value", show(one)))
-            .label("value missing")
-            .help("write the value directly after the address (`X0`, not `X`) or as `X=expression`"),
-        SyntaxErrorKind::TooDeep => Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
-            .message(format!("expression nested deeper than {} levels", expr::MAX_DEPTH))
-            .label("too deep")
-            .help("split the expression over several assignments"),
+            .help(help)
+        }
+        SyntaxErrorKind::MissingValue => Diagnostic::new(
+            "S006",
+            "missing-value",
+            Severity::Error,
+            one,
+        )
+        .message(format!("address `{}` has no value", show(one)))
+        .label("value missing")
+        .help("write the value directly after the address (`X0`, not `X`) or as `X=expression`"),
+        SyntaxErrorKind::TooDeep => {
+            Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
+                .message(format!(
+                    "expression nested deeper than {} levels",
+                    expr::MAX_DEPTH
+                ))
+                .label("too deep")
+                .help("split the expression over several assignments")
+        }
         SyntaxErrorKind::Expected(what) => {
-            let found = if at >= line_end { "the end of the line".to_string() } else { format!("`{}`", show_char(source, at, line_end)) };
-            Diagnostic::new("S005", "unexpected-token", Severity::Error, if at >= line_end { Span::new(at, at) } else { one })
-                .message(format!("expected {what}, found {found}"))
-                .label(format!("expected {what}"))
-                .help("check the statement's spelling against the Sinumerik programming manual")
+            let found = if at >= line_end {
+                "the end of the line".to_string()
+            } else {
+                format!("`{}`", show_token(source, at, line_end))
+            };
+            Diagnostic::new(
+                "S005",
+                "unexpected-token",
+                Severity::Error,
+                if at >= line_end {
+                    Span::new(at, at)
+                } else {
+                    one
+                },
+            )
+            .message(format!("expected {what}, found {found}"))
+            .label(format!("expected {what}"))
+            .help("check the statement's spelling against the Sinumerik programming manual")
         }
     }
 }
@@ -208,11 +285,45 @@ fn char_span(source: &[u8], at: usize, end: usize) -> Span {
     Span::new(at, (at + len).min(end))
 }
 
+/// A whole name if one starts at `at`, else one character.
+fn show_token(source: &[u8], at: usize, end: usize) -> String {
+    let len = source[at..end]
+        .iter()
+        .take_while(|&&b| lexer::is_name_char(b))
+        .count();
+    if len > 1 {
+        String::from_utf8_lossy(&source[at..at + len]).into_owned()
+    } else {
+        show_char(source, at, end)
+    }
+}
+
+/// `` `#` ``, `` `ä` (Latin-1 byte 0xE4) `` or `byte 0x01`, for messages.
+fn describe_char(source: &[u8], at: usize, end: usize) -> String {
+    let span = char_span(source, at, end);
+    let bytes = span.of(source);
+    match (std::str::from_utf8(bytes), bytes) {
+        (Ok(text), _) if !text.chars().any(char::is_control) => format!("`{text}`"),
+        (Err(_), &[byte]) if byte >= 0xA0 => {
+            format!("`{}` (Latin-1 byte 0x{byte:02X})", byte as char)
+        }
+        _ => bytes
+            .iter()
+            .map(|b| format!("byte 0x{b:02X}"))
+            .collect::<Vec<_>>()
+            .join(" "),
+    }
+}
+
 fn show_char(source: &[u8], at: usize, end: usize) -> String {
     let span = char_span(source, at, end);
     match std::str::from_utf8(span.of(source)) {
         Ok(text) if !text.chars().any(char::is_control) => text.to_string(),
-        _ => span.of(source).iter().map(|b| format!("\\x{b:02X}")).collect(),
+        _ => span
+            .of(source)
+            .iter()
+            .map(|b| format!("\\x{b:02X}"))
+            .collect(),
     }
 }
 
@@ -236,8 +347,13 @@ impl Program<'_> {
             }
         }
         let is_sub = self.lines.iter().any(|line| match &line.kind {
-            LineKind::Header { name } => name.of(self.source).to_ascii_uppercase().ends_with(b"_SPF"),
-            LineKind::Block(block) => block.statements.iter().any(|s| matches!(s.kind, StatementKind::Proc(_))),
+            LineKind::Header { name } => {
+                name.of(self.source).to_ascii_uppercase().ends_with(b"_SPF")
+            }
+            LineKind::Block(block) => block
+                .statements
+                .iter()
+                .any(|s| matches!(s.kind, StatementKind::Proc(_))),
             LineKind::Path { .. } => false,
         });
         if is_sub {

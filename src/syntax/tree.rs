@@ -99,28 +99,52 @@ pub enum StatementKind {
     Def(Def),
     Proc(Proc),
     /// `EXTERN NAME(REAL, VAR BOOL)`: the declaration is kept as written.
-    Extern { name: Name, parameters: Option<Span> },
+    Extern {
+        name: Name,
+        parameters: Option<Span>,
+    },
     /// `DEFINE NAME AS text`: the macro text is kept as written.
-    Define { name: Name, body: Span },
+    Define {
+        name: Name,
+        body: Span,
+    },
     /// `IF cond`; a `GOTO…` after it in the same block makes it a one-line jump.
-    If { condition: Expr },
+    If {
+        condition: Expr,
+    },
     Else,
     EndIf,
-    While { condition: Expr },
+    While {
+        condition: Expr,
+    },
     EndWhile,
-    For { variable: Name, start: Expr, end: Expr },
+    For {
+        variable: Name,
+        start: Expr,
+        end: Expr,
+    },
     EndFor,
     Loop,
     EndLoop,
     /// `REPEAT` (opens a REPEAT/UNTIL loop) or `REPEAT LBL1 [LBL2] [P=n]`.
-    Repeat { targets: Vec<Name> },
-    Until { condition: Expr },
+    Repeat {
+        targets: Vec<Name>,
+    },
+    Until {
+        condition: Expr,
+    },
     Case(Case),
     Goto(Goto),
     /// `CALL`, `PCALL`, `MCALL`, `EXTCALL` with what follows kept as written.
-    IndirectCall { keyword: Name, target: Option<Span> },
+    IndirectCall {
+        keyword: Name,
+        target: Option<Span>,
+    },
     /// `WHEN`, `WHENEVER`, `FROM`, `EVERY` of a synchronized action.
-    SyncCondition { keyword: Name, condition: Expr },
+    SyncCondition {
+        keyword: Name,
+        condition: Expr,
+    },
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -129,8 +153,6 @@ pub struct Word {
     pub address: Name,
     /// The extension digits of `A3=`, `X1=`, `M1=`.
     pub extension: Option<Span>,
-    /// `X[1]=` style index.
-    pub index: Vec<Expr>,
     pub value: WordValue,
 }
 
@@ -352,8 +374,15 @@ pub enum ExprKind {
     Variable(Variable),
     /// `SIN(30)`, `IC(5)`, `CTRANS(X,15)`.
     Call(Call),
-    Unary { op: UnaryOp, operand: Box<Expr> },
-    Binary { op: BinaryOp, lhs: Box<Expr>, rhs: Box<Expr> },
+    Unary {
+        op: UnaryOp,
+        operand: Box<Expr>,
+    },
+    Binary {
+        op: BinaryOp,
+        lhs: Box<Expr>,
+        rhs: Box<Expr>,
+    },
     Paren(Box<Expr>),
 }
 

@@ -1,0 +1,192 @@
+//! The built binary: exit codes, stdin, each output format, `convert`.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn sinuprep(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin)
+        .expect("write stdin");
+    child.wait_with_output().expect("binary ends")
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+#[test]
+fn check_of_clean_samples_exits_0() {
+    let output = sinuprep(&["check", "samples"], b"");
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(output.stdout.is_empty());
+}
+
+#[test]
+fn check_json_of_samples_follows_the_schema() {
+    let output = sinuprep(&["check", "--format", "json", "samples/"], b"");
+    assert_eq!(output.status.code(), Some(0));
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn check_reports_errors_with_exit_1_in_every_format() {
+    let broken = b"N10 G1 X10\nN20 MSG(\"open\nN30 X=(1+2\n";
+    let short = sinuprep(&["check", "--format", "short", "-"], broken);
+    assert_eq!(short.status.code(), Some(1));
+    insta::assert_snapshot!("short", stdout(&short));
+    let json = sinuprep(&["check", "--format", "json", "-"], broken);
+    assert_eq!(json.status.code(), Some(1));
+    insta::assert_snapshot!("json", stdout(&json));
+    let human = sinuprep(&["check", "-"], broken);
+    assert_eq!(human.status.code(), Some(1));
+    insta::assert_snapshot!("human", stdout(&human));
+}
+
+#[test]
+fn check_of_a_missing_file_exits_2_and_names_it() {
+    let output = sinuprep(&["check", "no/such/file.mpf"], b"");
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("no/such/file.mpf"));
+}
+
+#[test]
+fn check_takes_named_files_whatever_their_extension() {
+    let output = sinuprep(
+        &[
+            "check",
+            "--format",
+            "short",
+            "tests/fixtures/invalid/bad_number.mpf",
+            "README.md",
+        ],
+        b"",
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stdout(&output).contains("bad_number.mpf:1:6: error[S003]"));
+}
+
+#[test]
+fn rewrite_gives_every_byte_back() {
+    let input = b"N10 G1 X1\r\n\xe4\xf6 broken ( \"\rN20 X2";
+    let output = sinuprep(&["rewrite", "-"], input);
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(output.stdout, input);
+    let sample = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/samples/PAPER_EXAMPLE3.MPF"
+    ))
+    .expect("sample");
+    let output = sinuprep(&["rewrite", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_eq!(output.stdout, sample);
+}
+
+#[test]
+fn rewrite_of_a_directory_is_a_tool_error() {
+    let output = sinuprep(&["rewrite", "samples"], b"");
+    assert_eq!(output.status.code(), Some(2));
+}
+
+#[test]
+fn convert_prints_the_papers_angles() {
+    let output = sinuprep(
+        &[
+            "convert",
+            "30",
+            "45",
+            "60",
+            "--from",
+            "e:XYZ",
+            "--to",
+            "intrinsic:ZXY",
+        ],
+        b"",
+    );
+    assert_eq!(output.status.code(), Some(0));
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn convert_json_has_full_precision() {
+    let output = sinuprep(
+        &[
+            "convert", "30", "45", "60", "--from", "e:57", "--to", "e:39", "--json",
+        ],
+        b"",
+    );
+    assert_eq!(output.status.code(), Some(0));
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    assert_eq!(value["sequence"], "extrinsic:ZXY");
+    assert_eq!(value["code"], 39);
+    assert_eq!(value["gimbal_lock"], false);
+    let angles: Vec<f64> = value["angles"]
+        .as_array()
+        .expect("angles")
+        .iter()
+        .map(|a| a.as_f64().expect("number"))
+        .collect();
+    assert!(
+        (angles[0] - 39.6393).abs() < 5e-5
+            && (angles[1] + 16.2799).abs() < 5e-5
+            && (angles[2] - 50.3607).abs() < 5e-5
+    );
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn convert_accepts_negative_angles_and_warns_at_gimbal_lock() {
+    let output = sinuprep(
+        &[
+            "convert", "-16.28", "90", "10", "--from", "i:ZYX", "--to", "i:ZYX",
+        ],
+        b"",
+    );
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn convert_refuses_bad_input_with_exit_2() {
+    for args in [
+        vec!["convert", "1", "2", "3", "--from", "i:ZZX", "--to", "i:XYZ"],
+        vec!["convert", "1", "2", "3", "--from", "e:58", "--to", "i:XYZ"],
+        vec![
+            "convert", "1", "two", "3", "--from", "i:XYZ", "--to", "i:XYZ",
+        ],
+        vec![
+            "convert", "1", "NaN", "3", "--from", "i:XYZ", "--to", "i:XYZ",
+        ],
+        vec![
+            "convert", "1", "inf", "3", "--from", "i:XYZ", "--to", "i:XYZ",
+        ],
+    ] {
+        let output = sinuprep(&args, b"");
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(!output.stderr.is_empty());
+    }
+    let output = sinuprep(
+        &["convert", "1", "2", "3", "--from", "x:ZYX", "--to", "i:XYZ"],
+        b"",
+    );
+    insta::assert_snapshot!(String::from_utf8_lossy(&output.stderr));
+}

@@ -1,0 +1,57 @@
+//! Helpers shared by the integration tests: where the inputs are, and a
+//! readable dump of a syntax tree for snapshots.
+#![allow(dead_code)]
+
+pub mod dump;
+
+use std::path::{Path, PathBuf};
+
+pub fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Every file below `dir`, sorted.
+pub fn files_below(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+            let path = entry.expect("directory entry").path();
+            if path.is_dir() {
+                stack.push(path);
+            } else {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The outside corpus of real programs (`../shared/corpus`, or
+/// `SINUPREP_CORPUS`). Absent under CI it fails the test; elsewhere it says
+/// loudly that it was skipped.
+pub fn corpus_files() -> Vec<PathBuf> {
+    let dir = std::env::var_os("SINUPREP_CORPUS")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| repo().join("../shared/corpus"));
+    if !dir.is_dir() {
+        let message = format!("outside corpus not found at {}", dir.display());
+        if std::env::var("CI").is_ok_and(|v| v == "true") {
+            panic!("{message}: CI must test it (set SINUPREP_CORPUS)");
+        }
+        eprintln!("NOTE: {message}; the outside corpus was SKIPPED");
+        return Vec::new();
+    }
+    files_below(&dir)
+        .into_iter()
+        .filter(|p| p.file_name().is_some_and(|n| n != "PROVENANCE.md"))
+        .collect()
+}
+
+/// Samples and every fixture.
+pub fn own_inputs() -> Vec<PathBuf> {
+    let mut files = files_below(&repo().join("samples"));
+    files.extend(files_below(&repo().join("tests/fixtures")));
+    files
+}
