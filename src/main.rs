@@ -7,7 +7,6 @@ fn main() -> ExitCode {
     let args = Args::parse();
     let status = match run(&args) {
         Ok(status) => status,
-        Err(error) if error.is_broken_pipe() => ExitStatus::Success,
         Err(error) => {
             eprintln!("{:?}", miette::Report::new(error));
             ExitStatus::Error

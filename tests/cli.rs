@@ -190,3 +190,27 @@ fn convert_refuses_bad_input_with_exit_2() {
     );
     insta::assert_snapshot!(String::from_utf8_lossy(&output.stderr));
 }
+
+#[test]
+fn a_closed_pipe_is_not_a_failure() {
+    // Far more output than a pipe buffers, read by `head`, which then closes the pipe.
+    let input = "N10 X=(1\n".repeat(20_000);
+    let script = format!(
+        "set -o pipefail; '{}' check --format short - | head -c 10 >/dev/null",
+        env!("CARGO_BIN_EXE_sinuprep")
+    );
+    let mut child = Command::new("bash")
+        .args(["-c", &script])
+        .stdin(Stdio::piped())
+        .spawn()
+        .expect("bash runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(input.as_bytes())
+        .expect("write");
+    let status = child.wait().expect("ends");
+    // pipefail reports sinuprep's own status: it found errors (1), and did not fail (2) on the pipe.
+    assert_eq!(status.code(), Some(1));
+}

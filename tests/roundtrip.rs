@@ -33,6 +33,11 @@ fn assert_lossless(name: &str, source: &[u8]) {
         }
     }
     assert_eq!(at, source.len(), "{name}: lines must cover the file");
+    assert_eq!(
+        sinuprep::syntax::diagnostics(source),
+        program.diagnostics,
+        "{name}: both passes agree"
+    );
     for diagnostic in &program.diagnostics {
         assert!(
             diagnostic.span.end <= source.len(),

@@ -1,14 +1,14 @@
 //! `sinuprep check`: parse every program named and report its diagnostics.
 
-use std::io::{IsTerminal, Write};
+use std::io::IsTerminal;
 
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read, SourceFile};
 use crate::cli::render::{human, json, short, FileReport};
-use crate::cli::ExitStatus;
+use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::syntax::parse;
+use crate::syntax;
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut checked: Vec<(SourceFile, Vec<Diagnostic>)> = Vec::new();
@@ -16,7 +16,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     for path in expand(&args.paths) {
         match path.and_then(|path| read(&path)) {
             Ok(file) => {
-                let diagnostics = parse(&file.bytes).diagnostics;
+                let diagnostics = syntax::diagnostics(&file.bytes);
                 checked.push((file, diagnostics));
             }
             Err(error) => {
@@ -43,7 +43,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
             reports.iter().for_each(|r| human(r, colour, &mut out));
         }
     }
-    std::io::stdout().lock().write_all(out.as_bytes())?;
+    write_stdout(out.as_bytes())?;
 
     let has_error = reports
         .iter()

@@ -1,10 +1,8 @@
 //! `sinuprep convert`: three angles from one rotation sequence to another.
 
-use std::io::Write;
-
 use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
-use crate::cli::ExitStatus;
+use crate::cli::{write_stdout, ExitStatus};
 use crate::rotation::{convert, Conversion, Sequence};
 
 pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
@@ -14,7 +12,7 @@ pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
     } else {
         table(args.from, args.to, &conversion)
     };
-    std::io::stdout().lock().write_all(text.as_bytes())?;
+    write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
 }
 

@@ -26,10 +26,3 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::write))]
     Write(#[from] std::io::Error),
 }
-
-impl CliError {
-    /// A closed pipe downstream (`sinuprep check | head`) is not a failure.
-    pub fn is_broken_pipe(&self) -> bool {
-        matches!(self, CliError::Write(error) if error.kind() == std::io::ErrorKind::BrokenPipe)
-    }
-}

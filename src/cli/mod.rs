@@ -19,6 +19,16 @@ pub enum ExitStatus {
     Error = 2,
 }
 
+/// Writes data to stdout. A reader that went away (`sinuprep check | head`)
+/// ends the output but is not a failure: the command's status stands.
+pub(crate) fn write_stdout(bytes: &[u8]) -> Result<(), CliError> {
+    use std::io::Write;
+    match std::io::stdout().lock().write_all(bytes) {
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        result => Ok(result?),
+    }
+}
+
 pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
     match &args.command {
         args::Command::Check(check) => check::run(check),

@@ -1,13 +1,11 @@
 //! `sinuprep rewrite`: today the program comes back byte for byte; the
 //! CYCLE600 rewrite will edit only the blocks it replaces.
 
-use std::io::Write;
-
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
 use crate::cli::render::{short, FileReport};
-use crate::cli::ExitStatus;
+use crate::cli::{write_stdout, ExitStatus};
 use crate::syntax::parse;
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
@@ -26,6 +24,6 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         );
         eprint!("{note}");
     }
-    std::io::stdout().lock().write_all(&program.print())?;
+    write_stdout(&program.print())?;
     Ok(ExitStatus::Success)
 }

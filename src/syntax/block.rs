@@ -57,12 +57,20 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
                     block.statements.push(statement);
                     input = rest;
                 }
-                Err(nom::Err::Error(error) | nom::Err::Failure(error)) => {
+                Err(stop) => {
+                    let error = match stop {
+                        nom::Err::Error(error) | nom::Err::Failure(error) => error,
+                        // Complete parsers never ask for more input; should one, the
+                        // line is still kept and reported, not a panic.
+                        nom::Err::Incomplete(_) => SyntaxError::new(
+                            offset(&input),
+                            SyntaxErrorKind::Expected("a complete statement"),
+                        ),
+                    };
                     let end = input.take_from(input.input_len());
                     block.unparsed = Some(span_between(&input, &end));
                     return (block, Some(error));
                 }
-                Err(nom::Err::Incomplete(_)) => unreachable!("complete parsers only"),
             },
         }
     }

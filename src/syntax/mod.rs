@@ -61,6 +61,15 @@ pub fn parse(source: &[u8]) -> Program<'_> {
     }
 }
 
+/// The syntax diagnostics of a program, without keeping its tree: each line
+/// is parsed and dropped, so memory holds one line's tree at a time.
+pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
+    let mut parser = LineParser::default();
+    raw_lines(source)
+        .filter_map(|raw| parser.parse_line(source, raw).1)
+        .collect()
+}
+
 /// Parses line after line, remembering the one thing that crosses lines: a
 /// call left open at the end of the previous line (as the paper prints
 /// CYCLE600 over two lines), so the next line's error can say so.
@@ -126,7 +135,7 @@ fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxErro
 /// The name of the call whose `(` at `open` was left unclosed, if it is one.
 fn open_call_name(source: &[u8], block: &Block, open: usize) -> Option<String> {
     let unparsed = block.unparsed?;
-    let text = &source[unparsed.start..open];
+    let text = source.get(unparsed.start..open)?;
     let name = text.trim_ascii_end();
     let start = name
         .iter()
