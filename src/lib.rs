@@ -20,6 +20,8 @@
 
 pub mod cli;
 pub mod diagnostic;
+pub mod emit;
 pub mod rotation;
+pub mod semantic;
 pub mod span;
 pub mod syntax;

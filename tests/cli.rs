@@ -82,18 +82,40 @@ fn check_takes_named_files_whatever_their_extension() {
 }
 
 #[test]
-fn rewrite_gives_every_byte_back() {
+fn rewrite_gives_every_byte_back_when_there_is_nothing_to_rewrite() {
     let input = b"N10 G1 X1\r\n\xe4\xf6 broken ( \"\rN20 X2";
     let output = sinuprep(&["rewrite", "-"], input);
-    assert_eq!(output.status.code(), Some(0));
+    // The syntax errors are reported (exit 1), and not a byte is lost.
+    assert_eq!(output.status.code(), Some(1));
     assert_eq!(output.stdout, input);
+    let clean = b"N10 G1 X1\r\nN20 X2";
+    let output = sinuprep(&["rewrite", "-"], clean);
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(output.stdout, clean);
+}
+
+#[test]
+fn rewrite_of_the_paper_example_replaces_only_the_cycle600_blocks() {
     let sample = std::fs::read(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/samples/PAPER_EXAMPLE3.MPF"
     ))
     .expect("sample");
     let output = sinuprep(&["rewrite", "samples/PAPER_EXAMPLE3.MPF"], b"");
-    assert_eq!(output.stdout, sample);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.contains("N120 _CYC600_1=\"UFK600\" _CYC600_2=37.792346 _CYC600_3=20.704811 _CYC600_4=49.106605 _CYC600_5=1 _CYC600_6=39\n"));
+    let original = String::from_utf8_lossy(&sample);
+    let kept = original
+        .lines()
+        .filter(|l| !l.contains("CYCLE600"))
+        .all(|l| text.lines().any(|o| o == l));
+    assert!(kept, "every other line is kept");
 }
 
 #[test]

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use crate::emit::cycle600::Form;
 use crate::rotation::Sequence;
 
 #[derive(Debug, Parser)]
@@ -21,9 +22,12 @@ pub struct Args {
 pub enum Command {
     /// Report syntax errors in NC programs (files, directories, or `-` for stdin).
     Check(CheckArgs),
-    /// Print a program back (CYCLE600 rewriting is still to come; today every
-    /// byte comes back unchanged).
+    /// Rewrite CYCLE600 calls as native CYCLE800 / frames / TRAORI code; every
+    /// other byte stays as it is.
     Rewrite(RewriteArgs),
+    /// Show how each CYCLE600 call evaluates: parameters, provenance, matrix,
+    /// angles, results and the code a rewrite emits.
+    Eval(EvalArgs),
     /// Convert three rotation angles from one sequence to another.
     #[command(allow_negative_numbers = true)]
     Convert(ConvertArgs),
@@ -49,11 +53,66 @@ pub enum Format {
     Json,
 }
 
+/// What the offline evaluation needs beyond the program.
+#[derive(Debug, clap::Args)]
+pub struct AnalysisArgs {
+    /// A measured value, as an NC assignment: `--set R10=0.215`, `--set _OVR[16]=-0.113` (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<String>,
+    /// A file of measured values, one NC assignment per line (`R10=0.215`, `;` comments).
+    #[arg(long, value_name = "FILE")]
+    pub values: Option<PathBuf>,
+    /// The HEAD_DEF subprogram defining the accessories (default: HEAD_DEF.SPF next to the program, any case).
+    #[arg(long, value_name = "FILE")]
+    pub heads: Option<PathBuf>,
+    /// How a rotating CYCLE600 (_SW_REC=0) is written.
+    #[arg(long, value_enum, default_value_t = Form::Cycle800)]
+    pub emit: Form,
+    /// Decimals of emitted numbers (trailing zeros trimmed, never an exponent).
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(0..=15))]
+    pub precision: u8,
+}
+
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
     /// The program to rewrite; `-` reads stdin.
     #[arg(default_value = "-")]
     pub path: PathBuf,
+    #[command(flatten)]
+    pub analysis: AnalysisArgs,
+    /// Do not keep the original call as a `; sinuprep:` comment above the new code.
+    #[arg(long)]
+    pub no_original: bool,
+    /// Replace later reads of `_CYC600_n` by their values, until the next CYCLE600.
+    #[arg(long)]
+    pub inline_results: bool,
+    /// Write the result to FILE (atomically) instead of stdout.
+    #[arg(short, long, value_name = "FILE", conflicts_with = "in_place")]
+    pub output: Option<PathBuf>,
+    /// Rewrite the file itself: a temporary file in its directory, synced, renamed over it; a `.bak` is kept.
+    #[arg(long)]
+    pub in_place: bool,
+    /// With --in-place, keep no `.bak` copy.
+    #[arg(long, requires = "in_place")]
+    pub no_backup: bool,
+    /// Write nothing; exit 1 when the rewrite would change the program (for CI).
+    #[arg(long, conflicts_with_all = ["output", "in_place"])]
+    pub check: bool,
+    /// Print a unified diff instead of the program.
+    #[arg(long, conflicts_with_all = ["output", "in_place"])]
+    pub diff: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct EvalArgs {
+    /// The program; `-` reads stdin.
+    #[arg(default_value = "-")]
+    pub path: PathBuf,
+    #[command(flatten)]
+    pub analysis: AnalysisArgs,
+    /// Print one JSON document instead of the tables.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Debug, clap::Args)]

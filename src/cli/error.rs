@@ -22,6 +22,25 @@ pub enum CliError {
     )]
     IsDirectory { path: PathBuf },
 
+    #[error("`--set {text}`: {why}")]
+    #[diagnostic(code(sinuprep::set), help("write one NC assignment with a constant value, as `--set R10=0.215` or `--set _OVR[16]=-0.113`"))]
+    Set { text: String, why: String },
+
+    #[error("{path}:{line}: {why}")]
+    #[diagnostic(code(sinuprep::values), help("a values file holds NC assignments with constant values, one or more per line (`R10=0.215`), and `;` comments"))]
+    Values {
+        path: PathBuf,
+        line: usize,
+        why: String,
+    },
+
+    #[error("cannot write {path}: {source}")]
+    #[diagnostic(code(sinuprep::write), help("check that the directory is writable and the disk not full; the original file is unchanged"))]
+    WriteFile {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+
     #[error("cannot write the output: {0}")]
     #[diagnostic(code(sinuprep::write))]
     Write(#[from] std::io::Error),

@@ -1,10 +1,13 @@
 //! The command line: the only module that prints.
 
+mod analysis;
 pub mod args;
 mod check;
 mod convert;
 pub mod error;
+mod eval;
 mod input;
+mod output;
 pub mod render;
 mod rewrite;
 
@@ -33,6 +36,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
     match &args.command {
         args::Command::Check(check) => check::run(check),
         args::Command::Rewrite(rewrite) => rewrite::run(rewrite),
+        args::Command::Eval(eval) => eval::run(eval),
         args::Command::Convert(convert) => convert::run(convert),
     }
 }

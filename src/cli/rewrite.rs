@@ -1,29 +1,77 @@
-//! `sinuprep rewrite`: today the program comes back byte for byte; the
-//! CYCLE600 rewrite will edit only the blocks it replaces.
+//! `sinuprep rewrite`: CYCLE600 calls become native code; every other byte
+//! stays. A call that cannot be evaluated stays as it was, with a diagnostic.
 
+use std::io::IsTerminal;
+
+use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
-use crate::cli::render::{short, FileReport};
+use crate::cli::output::write_atomically;
+use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
-use crate::syntax::parse;
+use crate::emit::cycle600::Options;
+use crate::emit::{apply, diff};
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
-    let program = parse(&file.bytes);
-    if !program.diagnostics.is_empty() {
-        // The program still goes through unchanged; the errors are for the user.
-        let mut note = String::new();
-        short(
-            &FileReport {
-                name: &file.name,
-                source: &file.bytes,
-                diagnostics: &program.diagnostics,
-            },
-            &mut note,
-        );
-        eprint!("{note}");
+    let options = Options {
+        form: args.analysis.emit,
+        precision: usize::from(args.analysis.precision),
+        keep_original: !args.no_original,
+        inline_results: args.inline_results,
+    };
+    let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;
+    let report = FileReport {
+        name: &file.name,
+        source: &file.bytes,
+        diagnostics: &analyzed.diagnostics,
+    };
+    let mut messages = String::new();
+    human(&report, std::io::stderr().is_terminal(), &mut messages);
+    eprint!("{messages}");
+
+    let edits = &analyzed.rewrite.edits;
+    let changed = !edits.is_empty();
+    let errors = analyzed.has_errors();
+    if args.check {
+        if changed {
+            eprintln!(
+                "{}: would rewrite {} CYCLE600 call(s)",
+                file.name, analyzed.rewrite.rewritten
+            );
+        }
+        return Ok(status(errors || changed));
     }
-    write_stdout(&program.print())?;
-    Ok(ExitStatus::Success)
+    if args.diff {
+        write_stdout(diff::unified(&file.name, &file.bytes, edits).as_bytes())?;
+        return Ok(status(errors));
+    }
+    let output = apply(&file.bytes, edits);
+    if args.in_place {
+        if errors {
+            eprintln!(
+                "{}: not rewritten in place, because of the errors above",
+                file.name
+            );
+            return Ok(ExitStatus::Failure);
+        }
+        if changed {
+            write_atomically(&args.path, &output, !args.no_backup)?;
+        }
+        return Ok(ExitStatus::Success);
+    }
+    match &args.output {
+        Some(path) => write_atomically(path, &output, false)?,
+        None => write_stdout(&output)?,
+    }
+    Ok(status(errors))
+}
+
+fn status(failure: bool) -> ExitStatus {
+    if failure {
+        ExitStatus::Failure
+    } else {
+        ExitStatus::Success
+    }
 }

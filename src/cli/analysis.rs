@@ -1,0 +1,180 @@
+//! What `rewrite` and `eval` share: measured values from the user, HEAD_DEF,
+//! the walk, and the rewrite of the CYCLE600 calls.
+
+use std::path::{Path, PathBuf};
+
+use crate::cli::args::AnalysisArgs;
+use crate::cli::error::CliError;
+use crate::cli::input::SourceFile;
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::emit::cycle600::{rewrite, Options, Rewrite};
+use crate::semantic::env::Env;
+use crate::semantic::eval::{evaluate, variable_key};
+use crate::semantic::{analyze, Analysis, Heads, Supplied};
+use crate::span::Span;
+use crate::syntax::parse;
+use crate::syntax::tree::{LineKind, StatementKind};
+
+pub struct Analyzed {
+    pub analysis: Analysis,
+    pub rewrite: Rewrite,
+    /// Syntax errors, the HEAD_DEF note, and every refusal or warning.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Analyzed {
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Error)
+    }
+}
+
+pub fn run(
+    file: &SourceFile,
+    path: &Path,
+    args: &AnalysisArgs,
+    options: &Options,
+) -> Result<Analyzed, CliError> {
+    let supplied = supplied(args)?;
+    let heads = heads(path, args.heads.as_deref())?;
+    let program = parse(&file.bytes);
+    let analysis = analyze(&program, &supplied, heads.as_ref());
+    let rewrite = rewrite(&program, &analysis, options);
+    let mut diagnostics = program.diagnostics.clone();
+    if heads.is_none() && !analysis.calls.is_empty() {
+        diagnostics.push(
+            Diagnostic::new(
+                "C610",
+                "head-def-missing",
+                Severity::Warning,
+                Span::new(0, 0),
+            )
+            .message("head names were not checked: no HEAD_DEF.SPF next to the program")
+            .label("accessories unchecked")
+            .help("give the accessory definitions with --heads HEAD_DEF.SPF"),
+        );
+    }
+    diagnostics.extend(rewrite.diagnostics.iter().cloned());
+    diagnostics.sort_by_key(|d| (d.span.start, d.code));
+    Ok(Analyzed {
+        analysis,
+        rewrite,
+        diagnostics,
+    })
+}
+
+/// `--set` values and the `--values` file, as keys of the walk.
+fn supplied(args: &AnalysisArgs) -> Result<Supplied, CliError> {
+    let mut supplied = Supplied::default();
+    for text in &args.set {
+        let assignments = assignments(text.as_bytes()).map_err(|(_, why)| CliError::Set {
+            text: text.clone(),
+            why,
+        })?;
+        if assignments.len() != 1 {
+            return Err(CliError::Set {
+                text: text.clone(),
+                why: "give exactly one assignment".into(),
+            });
+        }
+        for (key, value, _) in assignments {
+            supplied.insert(key, value, format!("--set {text}"));
+        }
+    }
+    if let Some(path) = &args.values {
+        let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+            path: path.clone(),
+            source,
+        })?;
+        let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values {
+            path: path.clone(),
+            line,
+            why,
+        })?;
+        for (key, value, line) in assignments {
+            supplied.insert(key, value, format!("{}:{line}", path.display()));
+        }
+    }
+    Ok(supplied)
+}
+
+/// A supplied value: its variable's key, the value, the line it was given on.
+type Assignment = (String, crate::semantic::value::Value, usize);
+
+/// Constant assignments read by the project's own parser.
+fn assignments(bytes: &[u8]) -> Result<Vec<Assignment>, (usize, String)> {
+    let program = parse(bytes);
+    if let Some(error) = program.diagnostics.first() {
+        let line = program
+            .lines
+            .iter()
+            .position(|l| l.raw.full().end > error.span.start)
+            .unwrap_or(0)
+            + 1;
+        return Err((line, error.message.clone()));
+    }
+    let env = Env::default();
+    let empty = Supplied::default();
+    let mut out = Vec::new();
+    for (index, line) in program.lines.iter().enumerate() {
+        let LineKind::Block(block) = &line.kind else {
+            continue;
+        };
+        for statement in &block.statements {
+            let StatementKind::Assign(assign) = &statement.kind else {
+                return Err((
+                    index + 1,
+                    format!(
+                        "`{}` is not an assignment",
+                        String::from_utf8_lossy(statement.span.of(bytes))
+                    ),
+                ));
+            };
+            let scope = env.scope(&empty, index + 1);
+            let key = variable_key(bytes, &assign.target, &scope)
+                .map_err(|why| (index + 1, why.to_string()))?;
+            let value = evaluate(bytes, &assign.value, &scope)
+                .map_err(|why| (index + 1, format!("the value must be a constant: {why}")))?;
+            out.push((key, value, index + 1));
+        }
+    }
+    Ok(out)
+}
+
+/// `--heads FILE`, or a HEAD_DEF.SPF (any case) beside the program.
+fn heads(program: &Path, explicit: Option<&Path>) -> Result<Option<Heads>, CliError> {
+    let path = match explicit {
+        Some(path) => Some(path.to_path_buf()),
+        None => beside(program),
+    };
+    let Some(path) = path else { return Ok(None) };
+    let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    Ok(Some(Heads::read(path.display().to_string(), &bytes)))
+}
+
+fn beside(program: &Path) -> Option<PathBuf> {
+    let dir = if program == Path::new("-") {
+        PathBuf::from(".")
+    } else {
+        program.parent().map(|p| {
+            if p.as_os_str().is_empty() {
+                PathBuf::from(".")
+            } else {
+                p.to_path_buf()
+            }
+        })?
+    };
+    std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok())
+        .map(|e| e.path())
+        .find(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF"))
+        })
+}

@@ -1,0 +1,220 @@
+//! CYCLE600 calls rewritten as native code (spec section 7).
+//!
+//! `_SW_REC=1` becomes the GUD assignments of the results; `_SW_REC=0` a
+//! swivel: a CYCLE800 call (default), programmable frames, or frames under
+//! TRAORI. Only the call's own bytes are replaced, so the block number,
+//! indentation, other words and trailing comment stay; the original call is
+//! kept as a comment line above, and added lines use the file's line ending.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::emit::number::format;
+use crate::emit::Edit;
+use crate::rotation::Kind;
+use crate::semantic::cycle600::Evaluation;
+use crate::semantic::value::Value;
+use crate::semantic::walk::{Analysis, CallSite};
+use crate::span::Span;
+use crate::syntax::lines::dominant_ending;
+use crate::syntax::Program;
+
+/// How a rotating CYCLE600 (`_SW_REC=0`) is written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Form {
+    /// One CYCLE800 call (swivel with the head).
+    #[default]
+    Cycle800,
+    /// TRANS, one AROT per rotation, ATRANS.
+    Frames,
+    /// The frames under a 5-axis transformation, tool along the new Z (3+2 machining).
+    Traori,
+}
+
+#[derive(Clone, Debug)]
+pub struct Options {
+    pub form: Form,
+    /// Decimals of emitted numbers.
+    pub precision: usize,
+    /// Keep the original call as a comment above the new code.
+    pub keep_original: bool,
+    /// Replace later reads of `_CYC600_n` by their values.
+    pub inline_results: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            form: Form::Cycle800,
+            precision: 6,
+            keep_original: true,
+            inline_results: false,
+        }
+    }
+}
+
+/// What a rewrite changes, and why some calls were left alone.
+#[derive(Debug, Default)]
+pub struct Rewrite {
+    pub edits: Vec<Edit>,
+    pub diagnostics: Vec<Diagnostic>,
+    /// Calls replaced, calls left as they were.
+    pub rewritten: usize,
+    pub refused: usize,
+}
+
+pub fn rewrite(program: &Program, analysis: &Analysis, options: &Options) -> Rewrite {
+    let source = program.source;
+    let eol = dominant_ending(source).as_bytes();
+    let mut out = Rewrite::default();
+    for site in &analysis.calls {
+        let refused = site
+            .diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Error);
+        out.diagnostics.extend(site.diagnostics.iter().cloned());
+        match (&site.evaluation, refused) {
+            (Some(evaluation), false) => match code(evaluation, options, site.statement) {
+                Ok(blocks) => {
+                    out.edits
+                        .extend(edits(program, site, &blocks, options, eol));
+                    out.rewritten += 1;
+                }
+                Err(problem) => {
+                    out.diagnostics.push(problem);
+                    out.refused += 1;
+                }
+            },
+            _ => out.refused += 1,
+        }
+    }
+    if options.inline_results {
+        for read in &analysis.result_reads {
+            let text = literal(&read.value, options.precision);
+            // A read may follow an operator, and a sign right after one is
+            // not accepted by every control: `<< (-16.28)`, not `<< -16.28`.
+            let text = if text.starts_with('-') {
+                format!("({text})")
+            } else {
+                text
+            };
+            out.edits.push(Edit::replace(read.span, text));
+        }
+    }
+    out
+}
+
+fn literal(value: &Value, precision: usize) -> String {
+    match value {
+        Value::Number(n) => format(*n, precision),
+        Value::Text(t) => format!("\"{t}\""),
+    }
+}
+
+/// The blocks that replace the call, first one in the call's place.
+pub fn code(
+    evaluation: &Evaluation,
+    options: &Options,
+    span: Span,
+) -> Result<Vec<String>, Diagnostic> {
+    let p = &evaluation.parameters;
+    let n = |v: f64| format(v, options.precision);
+    if p.recalculate_only {
+        let gud: Vec<String> = evaluation
+            .gud()
+            .iter()
+            .enumerate()
+            .map(|(i, value)| format!("_CYC600_{}={}", i + 1, literal(value, options.precision)))
+            .collect();
+        return Ok(vec![gud.join(" ")]);
+    }
+    // CYCLE800 and AROT turn about the rotated axes: intrinsic angles only.
+    let (sequence, angles) = match p.output.kind {
+        Kind::Intrinsic => (p.output, evaluation.output.angles),
+        Kind::Extrinsic => {
+            let [a, b, c] = evaluation.output.angles;
+            (p.output.reversed(), [c, b, a])
+        }
+    };
+    let [x0, y0, z0] = [p.before.x, p.before.y, p.before.z].map(n);
+    let [x1, y1, z1] = [p.after.x, p.after.y, p.after.z].map(n);
+    match options.form {
+        Form::Cycle800 => {
+            if sequence.is_proper_euler() {
+                return Err(
+                    Diagnostic::new("C611", "cycle600-no-cycle800-form", Severity::Error, span)
+                        .message(format!("CYCLE800 swivels axis by axis in the six Tait-Bryan orders only; {} is a proper Euler sequence", p.output))
+                        .label("no CYCLE800 _MODE for this order")
+                        .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)"),
+                );
+            }
+            let st = u8::from(evaluation.additive_on_control);
+            let dir = if p.inverse { 1 } else { -1 };
+            let [a, b, c] = angles.map(n);
+            Ok(vec![format!(
+                "CYCLE800({},\"{}\",{st},{},{x0},{y0},{z0},{a},{b},{c},{x1},{y1},{z1},{dir})",
+                u8::from(p.retract),
+                p.head,
+                sequence.code()
+            )])
+        }
+        Form::Frames | Form::Traori => {
+            let mut blocks = Vec::new();
+            if options.form == Form::Traori {
+                blocks.push("TRAORI".to_string());
+                blocks.push("ORIWKS".to_string());
+            }
+            // An additive rotation onto an unknown active one adds to the frame.
+            let shift = if evaluation.additive_on_control {
+                "ATRANS"
+            } else {
+                "TRANS"
+            };
+            blocks.push(format!("{shift} X{x0} Y{y0} Z{z0}"));
+            for (axis, angle) in sequence.axes.iter().zip(angles) {
+                blocks.push(format!("AROT {}={}", axis.letter(), n(angle)));
+            }
+            blocks.push(format!("ATRANS X{x1} Y{y1} Z{z1}"));
+            if options.form == Form::Traori {
+                blocks.push("G0 A3=0 B3=0 C3=1".to_string());
+            }
+            Ok(blocks)
+        }
+    }
+}
+
+fn edits(
+    program: &Program,
+    site: &CallSite,
+    blocks: &[String],
+    options: &Options,
+    eol: &[u8],
+) -> Vec<Edit> {
+    let source = program.source;
+    let line = &program.lines[site.line];
+    let content = line.raw.content;
+    let indent_len = content
+        .of(source)
+        .iter()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count();
+    let indent = &source[content.start..content.start + indent_len];
+    let mut edits = Vec::new();
+    if options.keep_original {
+        let mut comment = indent.to_vec();
+        comment.extend_from_slice(b"; sinuprep: ");
+        comment.extend_from_slice(site.statement.of(source));
+        comment.extend_from_slice(eol);
+        edits.push(Edit::insert(content.start, comment));
+    }
+    edits.push(Edit::replace(site.statement, blocks[0].as_bytes()));
+    if blocks.len() > 1 {
+        let mut rest = Vec::new();
+        for block in &blocks[1..] {
+            rest.extend_from_slice(eol);
+            rest.extend_from_slice(indent);
+            rest.extend_from_slice(block.as_bytes());
+        }
+        edits.push(Edit::insert(content.end, rest));
+    }
+    edits
+}

@@ -1,0 +1,1039 @@
+//! A walk through the program in execution order, tracking what is known.
+//!
+//! A branch whose condition is known is followed; with an unknown condition
+//! both branches are walked and what differs afterwards is unknown. Loops are
+//! walked once, with everything they write unknown from their start (the walk
+//! never iterates, so it always ends). A forward jump that may or may not be
+//! taken makes what it jumps over unknown at its target; a region that a
+//! backward jump can repeat is a loop. CYCLE600 calls are evaluated where the
+//! walk meets them; CYCLE800 and CYCLE600 set the active rotation.
+//!
+//! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
+//! subprogram does beyond possibly changing R parameters.
+
+use std::collections::HashMap;
+
+use crate::diagnostic::Diagnostic;
+use crate::rotation::{self, Kind, Sequence};
+use crate::semantic::cycle600::{self, Bound, Evaluation};
+use crate::semantic::env::{Active, Env, Supplied};
+use crate::semantic::eval::{evaluate, key, variable_key};
+use crate::semantic::head_def::Heads;
+use crate::semantic::value::{Binding, Origin, Unknown, Value};
+use crate::span::Span;
+use crate::syntax::tree::{
+    Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
+    TypeKind, Variable, WordValue,
+};
+use crate::syntax::Program;
+
+/// One CYCLE600 call met on the walk.
+#[derive(Debug)]
+pub struct CallSite {
+    /// 0-based index of the line.
+    pub line: usize,
+    /// The call statement.
+    pub statement: Span,
+    pub bound: Option<Bound>,
+    pub evaluation: Option<Evaluation>,
+    /// Refusals (errors) and warnings about this call.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// A read of `_CYC600_n` whose value a CYCLE600 evaluated offline.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ResultRead {
+    pub span: Span,
+    pub value: Value,
+}
+
+#[derive(Debug, Default)]
+pub struct Analysis {
+    pub calls: Vec<CallSite>,
+    pub result_reads: Vec<ResultRead>,
+}
+
+pub fn analyze(program: &Program, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+    let mut walker = Walker {
+        program,
+        source: program.source,
+        supplied,
+        heads,
+        structure: Structure::build(program),
+        pending: HashMap::new(),
+        analysis: Analysis::default(),
+    };
+    let mut env = Env::default();
+    walker.walk(0, program.lines.len(), &mut env);
+    walker
+        .analysis
+        .calls
+        .sort_by_key(|c| (c.line, c.statement.start));
+    walker.analysis
+}
+
+/// Names a region writes, for forgetting them.
+#[derive(Default)]
+struct Written {
+    names: Vec<String>,
+    rotation: bool,
+}
+
+struct Walker<'a> {
+    program: &'a Program<'a>,
+    source: &'a [u8],
+    supplied: &'a Supplied,
+    heads: Option<&'a Heads>,
+    structure: Structure,
+    /// Line -> what jumps that may skip to it have jumped over.
+    pending: HashMap<usize, Vec<(Written, Origin)>>,
+    analysis: Analysis,
+}
+
+enum Control<'a> {
+    IfBlock(&'a Expr),
+    Loop {
+        condition: Option<&'a Expr>,
+        runs_once: bool,
+    },
+    Else,
+    None,
+}
+
+impl<'a> Walker<'a> {
+    fn block(&self, line: usize) -> Option<&'a Block> {
+        match &self.program.lines[line].kind {
+            LineKind::Block(block) => Some(block),
+            _ => None,
+        }
+    }
+
+    fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
+        let mut pc = start;
+        while pc < end {
+            self.enter(pc, env);
+            let Some(block) = self.block(pc) else {
+                pc += 1;
+                continue;
+            };
+            match control(block) {
+                Control::IfBlock(condition) => {
+                    if let Some(&(else_line, end_line)) = self.structure.ends.get(&pc) {
+                        self.visit_expressions(block, env);
+                        let then_end = else_line.unwrap_or(end_line);
+                        match self.truth(condition, env, pc) {
+                            Some(true) => self.walk(pc + 1, then_end, env),
+                            Some(false) => {
+                                if let Some(else_line) = else_line {
+                                    self.walk(else_line + 1, end_line, env);
+                                }
+                            }
+                            None => {
+                                let mut other = env.clone();
+                                self.walk(pc + 1, then_end, env);
+                                if let Some(else_line) = else_line {
+                                    self.walk(else_line + 1, end_line, &mut other);
+                                }
+                                env.merge(other, pc + 1);
+                            }
+                        }
+                        pc = end_line + 1;
+                        continue;
+                    }
+                }
+                Control::Loop {
+                    condition,
+                    runs_once,
+                } => {
+                    if let Some(&(_, end_line)) = self.structure.ends.get(&pc) {
+                        if condition.is_some_and(|c| self.truth(c, env, pc) == Some(false)) {
+                            pc = end_line + 1;
+                            continue;
+                        }
+                        let origin = Origin::ControlFlow {
+                            line: pc + 1,
+                            what: "loop",
+                        };
+                        let written = self.written(pc, end_line + 1);
+                        forget(&written, env, &origin);
+                        self.visit(pc, block, env);
+                        self.walk(pc + 1, end_line, env);
+                        if !runs_once {
+                            forget(&written, env, &origin);
+                        }
+                        pc = end_line + 1;
+                        continue;
+                    }
+                }
+                // Reached at the end of a THEN branch walked in sequence.
+                Control::Else => {
+                    if let Some(&end_line) = self.structure.else_ends.get(&pc) {
+                        pc = end_line + 1;
+                        continue;
+                    }
+                }
+                Control::None => {}
+            }
+            self.visit(pc, block, env);
+            pc = match self.jump(pc, block, env, end) {
+                Some(target) => target,
+                None => pc + 1,
+            };
+        }
+    }
+
+    /// Forget what loops and skipped regions write, on arriving at `line`.
+    fn enter(&mut self, line: usize, env: &mut Env) {
+        if let Some(&last) = self.structure.loop_starts.get(&line) {
+            let written = self.written(line, last + 1);
+            forget(
+                &written,
+                env,
+                &Origin::ControlFlow {
+                    line: last + 1,
+                    what: "backward jump",
+                },
+            );
+        }
+        if let Some(skipped) = self.pending.remove(&line) {
+            for (written, origin) in &skipped {
+                forget(written, env, origin);
+            }
+        }
+    }
+
+    fn truth(&self, condition: &Expr, env: &Env, line: usize) -> Option<bool> {
+        match evaluate(self.source, condition, &env.scope(self.supplied, line + 1)) {
+            Ok(Value::Number(n)) => Some(n != 0.0),
+            _ => None,
+        }
+    }
+
+    /// The next line when the block certainly jumps forward within `end`.
+    fn jump(&mut self, pc: usize, block: &Block, env: &Env, end: usize) -> Option<usize> {
+        let mut condition: Option<Option<bool>> = None;
+        let mut targets: Vec<(Option<usize>, bool)> = Vec::new();
+        for statement in &block.statements {
+            match &statement.kind {
+                StatementKind::If { condition: c } => condition = Some(self.truth(c, env, pc)),
+                StatementKind::Goto(goto) => {
+                    let certain = match condition.take() {
+                        Some(Some(false)) => continue,
+                        Some(None) => false,
+                        Some(Some(true)) | None => true,
+                    };
+                    let target = goto
+                        .target
+                        .as_ref()
+                        .and_then(|t| self.structure.resolve(self.source, t, goto.kind, pc));
+                    targets.push((target, certain));
+                }
+                StatementKind::Case(case) => {
+                    let selector = evaluate(
+                        self.source,
+                        &case.selector,
+                        &env.scope(self.supplied, pc + 1),
+                    )
+                    .ok();
+                    let chosen = selector.and_then(|s| {
+                        case.branches
+                            .iter()
+                            .find(|(v, _)| {
+                                evaluate(self.source, v, &env.scope(self.supplied, pc + 1)).ok()
+                                    == Some(s.clone())
+                            })
+                            .map(|(_, g)| g)
+                            .or(case.default.as_ref())
+                    });
+                    match chosen {
+                        Some(goto) => {
+                            let target = goto.target.as_ref().and_then(|t| {
+                                self.structure.resolve(self.source, t, goto.kind, pc)
+                            });
+                            targets.push((target, true));
+                        }
+                        None => {
+                            for goto in case.branches.iter().map(|(_, g)| g).chain(&case.default) {
+                                let target = goto.target.as_ref().and_then(|t| {
+                                    self.structure.resolve(self.source, t, goto.kind, pc)
+                                });
+                                targets.push((target, false));
+                            }
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        for (target, certain) in targets {
+            let Some(target) = target else { continue };
+            if target <= pc {
+                continue; // backward: a loop, handled by `loop_starts`
+            }
+            if certain && target < end {
+                return Some(target);
+            }
+            // Taken or not, or leaving the region walked: what lies between
+            // is unknown at the target.
+            let written = self.written(pc + 1, target);
+            self.pending.entry(target).or_default().push((
+                written,
+                Origin::ControlFlow {
+                    line: pc + 1,
+                    what: "jump",
+                },
+            ));
+        }
+        None
+    }
+
+    /// What lines `start..end` may write.
+    fn written(&self, start: usize, end: usize) -> Written {
+        let mut written = Written::default();
+        for line in start..end.min(self.program.lines.len()) {
+            let Some(block) = self.block(line) else {
+                continue;
+            };
+            for statement in &block.statements {
+                match &statement.kind {
+                    StatementKind::Assign(assign) => {
+                        let name = upper(assign.target.name.text(self.source));
+                        written.names.push(if assign.target.indices.is_empty() {
+                            key(&name, &[])
+                        } else {
+                            name
+                        });
+                    }
+                    StatementKind::Def(def) => {
+                        written.names.extend(
+                            def.variables
+                                .iter()
+                                .map(|d| upper(d.name.text(self.source))),
+                        );
+                    }
+                    StatementKind::For { variable, .. } => written
+                        .names
+                        .push(key(&upper(variable.text(self.source)), &[])),
+                    StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
+                        let name = upper(name.text(self.source));
+                        match call_kind(&name) {
+                            CallKind::Cycle600 => {
+                                written
+                                    .names
+                                    .extend((1..=6).map(|n| format!("_CYC600_{n}")));
+                                written.rotation = true;
+                            }
+                            CallKind::Cycle800 => written.rotation = true,
+                            CallKind::Measuring => written
+                                .names
+                                .extend(["_OVR".to_string(), "_OVI".to_string()]),
+                            CallKind::Builtin => {}
+                            CallKind::Subprogram => written.names.push("R".to_string()),
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+        written
+    }
+
+    fn visit(&mut self, pc: usize, block: &Block, env: &mut Env) {
+        let line = pc + 1;
+        for statement in &block.statements {
+            self.record_result_reads(statement, env);
+            match &statement.kind {
+                StatementKind::Def(def) => {
+                    for declarator in &def.variables {
+                        let name = upper(declarator.name.text(self.source));
+                        let default = if def.data_type.kind == TypeKind::String {
+                            Value::Text(String::new())
+                        } else {
+                            Value::Number(0.0)
+                        };
+                        if !declarator.dimensions.is_empty() {
+                            match declarator.init {
+                                None => env.declare_array(name, default),
+                                Some(_) => env.forget(
+                                    &name,
+                                    Origin::Unevaluable {
+                                        line,
+                                        why: "array initialisers are not evaluated offline".into(),
+                                    },
+                                ),
+                            }
+                            continue;
+                        }
+                        let binding = match &declarator.init {
+                            None => Binding::Known {
+                                value: default,
+                                origin: Origin::Assigned { line },
+                            },
+                            Some(Initializer::Expr(expr)) => self.binding(&name, expr, env, line),
+                            Some(Initializer::List(_)) => Binding::Unknown {
+                                origin: Origin::Unevaluable {
+                                    line,
+                                    why: "a list initialiser".into(),
+                                },
+                            },
+                        };
+                        env.set(name, binding);
+                    }
+                }
+                StatementKind::Assign(assign) => {
+                    let scope = env.scope(self.supplied, line);
+                    match variable_key(self.source, &assign.target, &scope) {
+                        Ok(key) => {
+                            let binding = self.binding(&key, &assign.value, env, line);
+                            env.set(key, binding);
+                        }
+                        Err(_) => {
+                            let name = upper(assign.target.name.text(self.source));
+                            env.forget(
+                                &name,
+                                Origin::Unevaluable {
+                                    line,
+                                    why: "its index is unknown offline".into(),
+                                },
+                            );
+                        }
+                    }
+                }
+                StatementKind::For { variable, .. } => {
+                    env.forget(
+                        &key(&upper(variable.text(self.source)), &[]),
+                        Origin::ControlFlow {
+                            line,
+                            what: "FOR loop",
+                        },
+                    );
+                }
+                StatementKind::Call(call) => self.call(
+                    pc,
+                    statement,
+                    &upper(call.name.text(self.source)),
+                    Some(call),
+                    env,
+                ),
+                StatementKind::Command(name) => {
+                    self.call(pc, statement, &upper(name.text(self.source)), None, env)
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// Only the expressions of a control block (its reads).
+    fn visit_expressions(&mut self, block: &Block, env: &Env) {
+        for statement in &block.statements {
+            self.record_result_reads(statement, env);
+        }
+    }
+
+    /// The binding an assignment gives `key`: a measured value the user
+    /// supplied takes the place of the measurement.
+    fn binding(&self, key: &str, value: &Expr, env: &Env, line: usize) -> Binding {
+        match evaluate(self.source, value, &env.scope(self.supplied, line)) {
+            Ok(value) => Binding::Known {
+                value,
+                origin: Origin::Assigned { line },
+            },
+            Err(Unknown::Variables(vars)) => {
+                let measured = vars.iter().find_map(|(name, origin)| match origin {
+                    Origin::Measured { line: at, source } => Some(Origin::Measured {
+                        line: *at,
+                        source: format!("{source} into {name}"),
+                    }),
+                    _ => None,
+                });
+                match (measured, self.supplied.get(key)) {
+                    (Some(_), Some((value, by))) => Binding::Known {
+                        value: value.clone(),
+                        origin: Origin::Supplied { by: by.to_string() },
+                    },
+                    (Some(origin), None) => Binding::Unknown { origin },
+                    (None, _) => Binding::Unknown {
+                        origin: vars[0].1.clone(),
+                    },
+                }
+            }
+            Err(Unknown::Invalid(why)) => Binding::Unknown {
+                origin: Origin::Unevaluable { line, why },
+            },
+        }
+    }
+
+    fn call(
+        &mut self,
+        pc: usize,
+        statement: &Statement,
+        name: &str,
+        call: Option<&Call>,
+        env: &mut Env,
+    ) {
+        let line = pc + 1;
+        match (call_kind(name), call) {
+            (CallKind::Cycle600, Some(call)) => self.cycle600(pc, statement, call, env),
+            (CallKind::Cycle800, Some(call)) => env.active = self.cycle800(call, env, line),
+            (CallKind::Measuring, _) => env.measure_arrays(line, name),
+            (CallKind::Subprogram, _) => env.clobber_r_parameters(Origin::ControlFlow {
+                line,
+                what: "subprogram call (it may change R parameters)",
+            }),
+            _ => {}
+        }
+    }
+
+    fn cycle600(&mut self, pc: usize, statement: &Statement, call: &Call, env: &mut Env) {
+        let line = pc + 1;
+        let mut site = CallSite {
+            line: pc,
+            statement: statement.span,
+            bound: None,
+            evaluation: None,
+            diagnostics: Vec::new(),
+        };
+        let scope = env.scope(self.supplied, line);
+        match cycle600::bind(self.source, call, &scope) {
+            Err(problem) => site.diagnostics.push(problem),
+            Ok(bound) => {
+                let (parameters, problems) = cycle600::check(&bound, self.heads);
+                site.diagnostics.extend(problems);
+                site.bound = Some(bound);
+                if let Some(parameters) = parameters {
+                    match cycle600::evaluate_parameters(parameters, &env.active, statement.span) {
+                        Ok((evaluation, warnings)) => {
+                            site.diagnostics.extend(warnings);
+                            site.evaluation = Some(evaluation);
+                        }
+                        Err(problem) => site.diagnostics.push(problem),
+                    }
+                }
+            }
+        }
+        match &site.evaluation {
+            Some(evaluation) if !evaluation.additive_on_control => {
+                for (n, value) in evaluation.gud().into_iter().enumerate() {
+                    env.set(
+                        format!("_CYC600_{}", n + 1),
+                        Binding::Known {
+                            value,
+                            origin: Origin::Cycle600 { line },
+                        },
+                    );
+                }
+                if !evaluation.parameters.recalculate_only {
+                    env.active = Active::Known {
+                        rotation: evaluation.target,
+                        line,
+                    };
+                }
+            }
+            _ => {
+                let origin = Origin::Unevaluable {
+                    line,
+                    why: "the CYCLE600 there is not evaluated offline".into(),
+                };
+                for n in 1..=6 {
+                    env.forget(&format!("_CYC600_{n}"), origin.clone());
+                }
+                let recalculates = site
+                    .evaluation
+                    .as_ref()
+                    .is_some_and(|e| e.parameters.recalculate_only);
+                if !recalculates {
+                    env.active = Active::Unknown {
+                        why: format!("the CYCLE600 on line {line} is not known offline"),
+                    };
+                }
+            }
+        }
+        self.analysis.calls.push(site);
+    }
+
+    /// The rotation after a CYCLE800 (axis by axis, intrinsic; `_ST` ones
+    /// digit 1 adds to the active swivel).
+    fn cycle800(&self, call: &Call, env: &Env, line: usize) -> Active {
+        let items = &call.arguments.items;
+        if items.is_empty() {
+            return Active::None;
+        }
+        let scope = env.scope(self.supplied, line);
+        let number = |i: usize| -> Option<f64> {
+            match items.get(i)?.value.as_ref() {
+                None => Some(0.0),
+                Some(expr) => evaluate(self.source, expr, &scope).ok()?.number(),
+            }
+        };
+        let unknown = || Active::Unknown {
+            why: format!("the CYCLE800 on line {line} is not known offline"),
+        };
+        let (Some(st), Some(mode), Some(a), Some(b), Some(c)) =
+            (number(2), number(3), number(7), number(8), number(9))
+        else {
+            return unknown();
+        };
+        let Ok(sequence) = Sequence::from_code(mode as i64, Kind::Intrinsic) else {
+            return unknown();
+        };
+        let rotation = rotation::matrix(sequence, [a, b, c]);
+        if (st as i64) % 10 == 1 {
+            match env.active.rotation() {
+                Some(active) => Active::Known {
+                    rotation: active * rotation,
+                    line,
+                },
+                None => unknown(),
+            }
+        } else {
+            Active::Known { rotation, line }
+        }
+    }
+
+    /// Reads of `_CYC600_n` holding a value from an evaluated CYCLE600.
+    fn record_result_reads(&mut self, statement: &Statement, env: &Env) {
+        if let StatementKind::Call(call) = &statement.kind {
+            if call_kind(&upper(call.name.text(self.source))) == CallKind::Cycle600 {
+                return;
+            }
+        }
+        let mut reads = Vec::new();
+        for_each_expression(&statement.kind, &mut |expr| {
+            collect_variables(expr, &mut reads)
+        });
+        for variable in reads {
+            let name = upper(variable.name.text(self.source));
+            if !name.starts_with("_CYC600_") || !variable.indices.is_empty() {
+                continue;
+            }
+            if let Some(Binding::Known {
+                value,
+                origin: Origin::Cycle600 { .. },
+            }) = env.binding(&name)
+            {
+                self.analysis.result_reads.push(ResultRead {
+                    span: variable.span,
+                    value: value.clone(),
+                });
+            }
+        }
+    }
+}
+
+fn forget(written: &Written, env: &mut Env, origin: &Origin) {
+    for name in &written.names {
+        env.forget(name, origin.clone());
+    }
+    if written.rotation {
+        env.active = Active::Unknown {
+            why: origin.to_string(),
+        };
+    }
+}
+
+fn upper(text: &[u8]) -> String {
+    String::from_utf8_lossy(text).to_ascii_uppercase()
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum CallKind {
+    Cycle600,
+    Cycle800,
+    /// Siemens measuring cycles: their results land in `_OVR[]`/`_OVI[]`.
+    Measuring,
+    /// Commands and cycles that do not write user variables.
+    Builtin,
+    Subprogram,
+}
+
+fn call_kind(name: &str) -> CallKind {
+    match name {
+        "CYCLE600" => CallKind::Cycle600,
+        "CYCLE800" => CallKind::Cycle800,
+        _ if name.starts_with("CYCLE9")
+            && name.len() == 8
+            && name[5..].bytes().all(|b| b.is_ascii_digit()) =>
+        {
+            CallKind::Measuring
+        }
+        _ if name.starts_with("CYCLE") || BUILTINS.contains(&name) => CallKind::Builtin,
+        _ => CallKind::Subprogram,
+    }
+}
+
+/// Commands and procedures of the control that do not write user variables.
+const BUILTINS: &[&str] = &[
+    "STOPRE",
+    "MSG",
+    "SETAL",
+    "RET",
+    "TRAORI",
+    "TRAFOOF",
+    "TRACYL",
+    "TRANSMIT",
+    "SUPA",
+    "FNORM",
+    "FLIN",
+    "FCUB",
+    "SOFT",
+    "BRISK",
+    "DRIVE",
+    "ORIWKS",
+    "ORIMKS",
+    "ORIAXES",
+    "ORIVECT",
+    "ORIPLANE",
+    "ORIEULER",
+    "ORIRPY",
+    "ORIRPY2",
+    "ORIVIRT1",
+    "ORIVIRT2",
+    "ORICONCW",
+    "ORICONCCW",
+    "ORICURVE",
+    "COMPOF",
+    "COMPON",
+    "COMPCURV",
+    "COMPCAD",
+    "CFTCP",
+    "CFC",
+    "CFIN",
+    "TCOABS",
+    "TCOFR",
+    "TCOFRX",
+    "TCOFRY",
+    "TCOFRZ",
+    "PAROT",
+    "PAROTOF",
+    "TOROT",
+    "TOROTOF",
+    "TOFRAME",
+    "TOFRAMEX",
+    "TOFRAMEY",
+    "TOFRAMEZ",
+    "TCARR",
+    "DO",
+    "LIFTFAST",
+    "SBLOF",
+    "SBLON",
+    "DISPLOF",
+    "DISPLON",
+    "SAVE",
+    "WAITM",
+    "WAITE",
+    "WAITS",
+    "SPOS",
+    "SPOSA",
+    "TRAILON",
+    "TRAILOF",
+    "ASPLINE",
+    "BSPLINE",
+    "CSPLINE",
+    "BNAT",
+    "BTAN",
+    "BAUTO",
+    "ENAT",
+    "ETAN",
+    "EAUTO",
+    "G64",
+    "SETINT",
+    "PRIO",
+    "MEAS",
+    "MEAW",
+    "SETPIECE",
+    "GETT",
+    "GETD",
+    "CANCEL",
+    "ENABLE",
+    "DISABLE",
+    "CLEARM",
+    "SETM",
+    "G290",
+    "G291",
+    "ACC",
+    "OVR",
+    "ID",
+    "IDS",
+    "EXECSTRING",
+    "WRITE",
+    "PUNCH_ON",
+    "PUNCH_OFF",
+];
+
+/// Every expression directly in a statement, for collecting reads.
+fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Expr)) {
+    match kind {
+        StatementKind::Word(word) => {
+            if let WordValue::Expr(expr) = &word.value {
+                visit(expr);
+            }
+        }
+        StatementKind::Assign(assign) => {
+            assign.target.indices.iter().for_each(&mut *visit);
+            visit(&assign.value);
+        }
+        StatementKind::Call(call) => call
+            .arguments
+            .items
+            .iter()
+            .filter_map(|a| a.value.as_ref())
+            .for_each(visit),
+        StatementKind::If { condition }
+        | StatementKind::While { condition }
+        | StatementKind::Until { condition } => visit(condition),
+        StatementKind::SyncCondition { condition, .. } => visit(condition),
+        StatementKind::For { start, end, .. } => {
+            visit(start);
+            visit(end);
+        }
+        StatementKind::Case(case) => visit(&case.selector),
+        _ => {}
+    }
+}
+
+/// Variables read in `expr` (iteratively: trees may be deep).
+fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
+    let mut stack = vec![expr];
+    while let Some(expr) = stack.pop() {
+        match &expr.kind {
+            ExprKind::Variable(variable) => {
+                out.push(variable);
+                stack.extend(variable.indices.iter());
+            }
+            ExprKind::Call(call) => {
+                stack.extend(call.arguments.items.iter().filter_map(|a| a.value.as_ref()))
+            }
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { lhs, rhs, .. } => {
+                stack.push(lhs);
+                stack.push(rhs);
+            }
+            ExprKind::Paren(inner) => stack.push(inner),
+            ExprKind::Number(_) | ExprKind::String => {}
+        }
+    }
+}
+
+/// The block structure: where each IF/loop ends, labels, backward jumps.
+struct Structure {
+    /// Opener line -> (ELSE line, closing line).
+    ends: HashMap<usize, (Option<usize>, usize)>,
+    /// ELSE line -> ENDIF line.
+    else_ends: HashMap<usize, usize>,
+    /// Label (and `N<number>`) -> lines where it stands.
+    labels: HashMap<String, Vec<usize>>,
+    /// First line of a region a backward jump repeats -> its last line.
+    loop_starts: HashMap<usize, usize>,
+}
+
+#[derive(PartialEq)]
+enum Opener {
+    If,
+    While,
+    For,
+    Loop,
+    Repeat,
+}
+
+impl Structure {
+    fn build(program: &Program) -> Structure {
+        let source = program.source;
+        let mut structure = Structure {
+            ends: HashMap::new(),
+            else_ends: HashMap::new(),
+            labels: HashMap::new(),
+            loop_starts: HashMap::new(),
+        };
+        let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
+        for (line, block) in program
+            .lines
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| match &l.kind {
+                LineKind::Block(b) => Some((i, b)),
+                _ => None,
+            })
+        {
+            if let Some(label) = block.label {
+                structure
+                    .labels
+                    .entry(upper(label.text(source)))
+                    .or_default()
+                    .push(line);
+            }
+            if let Some(number) = &block.number {
+                if !number.main {
+                    let digits = String::from_utf8_lossy(number.digits.of(source))
+                        .trim_start_matches('0')
+                        .to_string();
+                    structure
+                        .labels
+                        .entry(format!("N{digits}"))
+                        .or_default()
+                        .push(line);
+                }
+            }
+            let close =
+                |stack: &mut Vec<(Opener, usize, Option<usize>)>,
+                 kind: Opener,
+                 ends: &mut HashMap<usize, (Option<usize>, usize)>| {
+                    if stack.last().is_some_and(|(k, _, _)| *k == kind) {
+                        if let Some((_, open, else_line)) = stack.pop() {
+                            ends.insert(open, (else_line, line));
+                        }
+                    }
+                };
+            match control(block) {
+                Control::IfBlock(_) => stack.push((Opener::If, line, None)),
+                Control::Else => {
+                    if let Some((Opener::If, _, else_line)) = stack.last_mut() {
+                        *else_line = Some(line);
+                    }
+                }
+                Control::Loop { .. } => {
+                    let kind = block.statements.iter().find_map(|s| match s.kind {
+                        StatementKind::While { .. } => Some(Opener::While),
+                        StatementKind::For { .. } => Some(Opener::For),
+                        StatementKind::Loop => Some(Opener::Loop),
+                        StatementKind::Repeat { .. } => Some(Opener::Repeat),
+                        _ => None,
+                    });
+                    if let Some(kind) = kind {
+                        stack.push((kind, line, None));
+                    }
+                }
+                Control::None => {}
+            }
+            for statement in &block.statements {
+                match statement.kind {
+                    StatementKind::EndIf => close(&mut stack, Opener::If, &mut structure.ends),
+                    StatementKind::EndWhile => {
+                        close(&mut stack, Opener::While, &mut structure.ends)
+                    }
+                    StatementKind::EndFor => close(&mut stack, Opener::For, &mut structure.ends),
+                    StatementKind::EndLoop => close(&mut stack, Opener::Loop, &mut structure.ends),
+                    StatementKind::Until { .. } => {
+                        close(&mut stack, Opener::Repeat, &mut structure.ends)
+                    }
+                    _ => {}
+                }
+            }
+        }
+        for &(else_line, end) in structure.ends.values() {
+            if let Some(else_line) = else_line {
+                structure.else_ends.insert(else_line, end);
+            }
+        }
+        // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
+        for (line, block) in program
+            .lines
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| match &l.kind {
+                LineKind::Block(b) => Some((i, b)),
+                _ => None,
+            })
+        {
+            for statement in &block.statements {
+                let gotos: Vec<&crate::syntax::tree::Goto> = match &statement.kind {
+                    StatementKind::Goto(goto) => vec![goto],
+                    StatementKind::Case(case) => case
+                        .branches
+                        .iter()
+                        .map(|(_, g)| g)
+                        .chain(&case.default)
+                        .collect(),
+                    _ => continue,
+                };
+                for goto in gotos {
+                    let target = match (&goto.kind, &goto.target) {
+                        (crate::syntax::tree::GotoKind::Start, _) => Some(0),
+                        (kind, Some(target)) => structure.resolve(source, target, *kind, line),
+                        _ => None,
+                    };
+                    if let Some(target) = target.filter(|&t| t <= line) {
+                        let last = structure.loop_starts.entry(target).or_insert(line);
+                        *last = (*last).max(line);
+                    }
+                }
+            }
+        }
+        structure
+    }
+
+    /// The line a jump from `from` lands on, searching as its kind says.
+    fn resolve(
+        &self,
+        source: &[u8],
+        target: &GotoTarget,
+        kind: crate::syntax::tree::GotoKind,
+        from: usize,
+    ) -> Option<usize> {
+        use crate::syntax::tree::GotoKind;
+        let name = match target {
+            GotoTarget::Label(name) => {
+                let text = upper(name.text(source));
+                // `N0100` and `N100` are the same block number.
+                match text.strip_prefix('N') {
+                    Some(digits)
+                        if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) =>
+                    {
+                        format!("N{}", digits.trim_start_matches('0'))
+                    }
+                    _ => text,
+                }
+            }
+            GotoTarget::Number(number) => format!("N{}", number.value as u64),
+            GotoTarget::Computed(_) => return None,
+        };
+        let lines = self.labels.get(&name)?;
+        let forward = lines.iter().copied().find(|&l| l > from);
+        let backward = lines.iter().copied().rev().find(|&l| l <= from);
+        match kind {
+            GotoKind::Forward => forward,
+            GotoKind::Backward => backward,
+            GotoKind::Both | GotoKind::Conditional => forward.or(backward),
+            GotoKind::Start => Some(0),
+        }
+    }
+}
+
+/// The control statement that decides how a block is walked.
+fn control(block: &Block) -> Control<'_> {
+    for statement in &block.statements {
+        let control = match &statement.kind {
+            // `IF cond GOTOF L` is a jump, not a block.
+            StatementKind::If { condition } => {
+                if block
+                    .statements
+                    .iter()
+                    .any(|s| matches!(s.kind, StatementKind::Goto(_)))
+                {
+                    Control::None
+                } else {
+                    Control::IfBlock(condition)
+                }
+            }
+            StatementKind::While { condition } => Control::Loop {
+                condition: Some(condition),
+                runs_once: false,
+            },
+            StatementKind::For { .. } => Control::Loop {
+                condition: None,
+                runs_once: false,
+            },
+            StatementKind::Loop => Control::Loop {
+                condition: None,
+                runs_once: true,
+            },
+            StatementKind::Repeat { targets } if targets.is_empty() => Control::Loop {
+                condition: None,
+                runs_once: true,
+            },
+            StatementKind::Else => Control::Else,
+            _ => continue,
+        };
+        return control;
+    }
+    Control::None
+}
