@@ -236,3 +236,79 @@ fn a_closed_pipe_is_not_a_failure() {
     // pipefail reports sinuprep's own status: it found errors (1), and did not fail (2) on the pipe.
     assert_eq!(status.code(), Some(1));
 }
+
+#[test]
+fn eval_shows_parameters_provenance_and_results() {
+    let output = sinuprep(&["eval", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn eval_json_of_a_probe_program_with_supplied_values() {
+    let output = sinuprep(
+        &[
+            "eval",
+            "samples/PROBE_ALIGN.MPF",
+            "--set",
+            "R10=0.215",
+            "--set",
+            "R11=-0.113",
+            "--json",
+        ],
+        b"",
+    );
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let call = &value["calls"][0];
+    assert_eq!(call["arguments"][7]["name"], "_ANG_1");
+    assert_eq!(
+        call["arguments"][7]["from"],
+        "R10: supplied by --set R10=0.215"
+    );
+    assert_eq!(call["evaluation"]["output"]["code"], 39);
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn malformed_supplied_values_are_tool_errors() {
+    for args in [
+        vec!["rewrite", "samples/PROBE_ALIGN.MPF", "--set", "R10"],
+        vec!["rewrite", "samples/PROBE_ALIGN.MPF", "--set", "R10=R11+1"],
+        vec!["rewrite", "samples/PROBE_ALIGN.MPF", "--set", "R10=(1"],
+        vec![
+            "rewrite",
+            "samples/PROBE_ALIGN.MPF",
+            "--values",
+            "no/such/file",
+        ],
+        vec![
+            "rewrite",
+            "samples/PROBE_ALIGN.MPF",
+            "--values",
+            "samples/PAPER_EXAMPLE3.MPF",
+        ],
+    ] {
+        let output = sinuprep(&args, b"");
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(
+            output.stdout.is_empty(),
+            "nothing is written when the tool fails"
+        );
+    }
+    let output = sinuprep(
+        &["rewrite", "samples/PROBE_ALIGN.MPF", "--set", "R10=R11+1"],
+        b"",
+    );
+    insta::assert_snapshot!(String::from_utf8_lossy(&output.stderr));
+}

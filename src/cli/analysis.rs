@@ -3,9 +3,12 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::cli::args::AnalysisArgs;
+use std::io::IsTerminal;
+
+use crate::cli::args::{AnalysisArgs, MessageFormat};
 use crate::cli::error::CliError;
 use crate::cli::input::SourceFile;
+use crate::cli::render::{human, short, FileReport};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::cycle600::{rewrite, Options, Rewrite};
 use crate::semantic::env::Env;
@@ -27,6 +30,21 @@ impl Analyzed {
         self.diagnostics
             .iter()
             .any(|d| d.severity == Severity::Error)
+    }
+
+    /// Prints the diagnostics on stderr, in the format asked for.
+    pub fn report(&self, file: &SourceFile, format: MessageFormat) {
+        let report = FileReport {
+            name: &file.name,
+            source: &file.bytes,
+            diagnostics: &self.diagnostics,
+        };
+        let mut text = String::new();
+        match format {
+            MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
+            MessageFormat::Short => short(&report, &mut text),
+        }
+        eprint!("{text}");
     }
 }
 

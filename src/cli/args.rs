@@ -71,6 +71,17 @@ pub struct AnalysisArgs {
     /// Decimals of emitted numbers (trailing zeros trimmed, never an exponent).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(0..=15))]
     pub precision: u8,
+    /// How diagnostics are printed on stderr.
+    #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
+    pub message_format: MessageFormat,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MessageFormat {
+    /// miette's report with the source line.
+    Human,
+    /// One line each: `path:line:col: severity[CODE] message`.
+    Short,
 }
 
 #[derive(Debug, clap::Args)]

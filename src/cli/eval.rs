@@ -1,13 +1,10 @@
 //! `sinuprep eval`: for each CYCLE600 call, what it evaluates to and why, so
 //! a user can check the numbers before the program goes to the control.
 
-use std::io::IsTerminal;
-
 use crate::cli::analysis;
 use crate::cli::args::EvalArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
-use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -45,14 +42,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
         }
-        let report = FileReport {
-            name: &file.name,
-            source: &file.bytes,
-            diagnostics: &analyzed.diagnostics,
-        };
-        let mut messages = String::new();
-        human(&report, std::io::stderr().is_terminal(), &mut messages);
-        eprint!("{messages}");
+        analyzed.report(&file, args.analysis.message_format);
         text
     };
     write_stdout(text.as_bytes())?;
@@ -69,6 +59,14 @@ fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String 
         Ok(Value::Text(t)) => format!("\"{t}\""),
         Err(_) => "unknown".to_string(),
     }
+}
+
+/// The arguments in the order they stand in the call (the 19-value form's
+/// reserved value is the 14th).
+fn in_call_order(bound: &crate::semantic::cycle600::Bound) -> Vec<&Argument> {
+    let mut arguments: Vec<&Argument> = bound.reserved.iter().chain(&bound.arguments).collect();
+    arguments.sort_by_key(|a| a.span.start);
+    arguments
 }
 
 fn provenance_text(argument: &Argument) -> String {
@@ -106,7 +104,7 @@ fn table(
             "  {:<10} {:<14} {:<16} {}\n",
             "parameter", "argument", "value", "from"
         ));
-        for argument in bound.reserved.iter().chain(&bound.arguments) {
+        for argument in in_call_order(bound) {
             out.push_str(&format!(
                 "  {:<10} {:<14} {:<16} {}\n",
                 argument.name,
@@ -186,7 +184,7 @@ fn json(site: &CallSite, source: &[u8], options: &Options) -> serde_json::Value 
     let arguments: Vec<serde_json::Value> = site
         .bound
         .iter()
-        .flat_map(|b| b.reserved.iter().chain(&b.arguments))
+        .flat_map(in_call_order)
         .map(|a| {
             let value = match &a.value {
                 Ok(Value::Number(n)) => serde_json::json!(n),

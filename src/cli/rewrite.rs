@@ -1,14 +1,11 @@
 //! `sinuprep rewrite`: CYCLE600 calls become native code; every other byte
 //! stays. A call that cannot be evaluated stays as it was, with a diagnostic.
 
-use std::io::IsTerminal;
-
 use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
 use crate::cli::output::write_atomically;
-use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::Options;
 use crate::emit::{apply, diff};
@@ -22,14 +19,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         inline_results: args.inline_results,
     };
     let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;
-    let report = FileReport {
-        name: &file.name,
-        source: &file.bytes,
-        diagnostics: &analyzed.diagnostics,
-    };
-    let mut messages = String::new();
-    human(&report, std::io::stderr().is_terminal(), &mut messages);
-    eprint!("{messages}");
+    analyzed.report(&file, args.analysis.message_format);
 
     let edits = &analyzed.rewrite.edits;
     let changed = !edits.is_empty();

@@ -198,7 +198,7 @@ impl Lookup for Scope<'_> {
                 Some((value, _)) => Ok(value.clone()),
                 None => unknown(Origin::Measured {
                     line: *line,
-                    source: cycle.clone(),
+                    source: format!("{cycle} into {key}"),
                 }),
             };
         }
@@ -207,7 +207,7 @@ impl Lookup for Scope<'_> {
                 Some((value, _)) => Ok(value.clone()),
                 None => unknown(Origin::Measured {
                     line: self.line,
-                    source: "reading it on the machine".to_string(),
+                    source: format!("{key} read from the probe"),
                 }),
             };
         }

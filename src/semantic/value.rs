@@ -61,7 +61,7 @@ impl fmt::Display for Origin {
         match self {
             Origin::Literal => write!(f, "literal"),
             Origin::Assigned { line } => write!(f, "assigned on line {line}"),
-            Origin::Measured { line, source } => write!(f, "measured on line {line} by {source}"),
+            Origin::Measured { line, source } => write!(f, "measured on line {line}: {source}"),
             Origin::Supplied { by } => write!(f, "supplied by {by}"),
             Origin::Cycle600 { line } => write!(f, "result of the CYCLE600 on line {line}"),
             Origin::ControlFlow { line, what } => write!(

@@ -439,11 +439,8 @@ impl<'a> Walker<'a> {
                 origin: Origin::Assigned { line },
             },
             Err(Unknown::Variables(vars)) => {
-                let measured = vars.iter().find_map(|(name, origin)| match origin {
-                    Origin::Measured { line: at, source } => Some(Origin::Measured {
-                        line: *at,
-                        source: format!("{source} into {name}"),
-                    }),
+                let measured = vars.iter().find_map(|(_, origin)| match origin {
+                    Origin::Measured { .. } => Some(origin.clone()),
                     _ => None,
                 });
                 match (measured, self.supplied.get(key)) {
@@ -537,14 +534,15 @@ impl<'a> Walker<'a> {
                 for n in 1..=6 {
                     env.forget(&format!("_CYC600_{n}"), origin.clone());
                 }
-                let recalculates = site
-                    .evaluation
-                    .as_ref()
-                    .is_some_and(|e| e.parameters.recalculate_only);
-                if !recalculates {
-                    env.active = Active::Unknown {
-                        why: format!("the CYCLE600 on line {line} is not known offline"),
-                    };
+                let why = match &site.evaluation {
+                    Some(e) if e.parameters.recalculate_only => None,
+                    Some(_) => Some(format!(
+                        "the CYCLE600 on line {line} adds to a rotation unknown offline"
+                    )),
+                    None => Some(format!("the CYCLE600 on line {line} is not known offline")),
+                };
+                if let Some(why) = why {
+                    env.active = Active::Unknown { why };
                 }
             }
         }

@@ -1,0 +1,325 @@
+//! The rewrite, end to end through the binary: snapshots of what it emits and
+//! says for each fixture (`tests/fixtures/rewrite`, arguments on a first
+//! `; args:` line), plus checks that do not rely on the snapshots: the
+//! emitted swivel reproduces the CYCLE600 rotation (computed here
+//! independently), the rewrite is idempotent, keeps every other byte, and
+//! adds no syntax error.
+
+mod support;
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use nalgebra::{Matrix3, Rotation3, Vector3};
+use sinuprep::emit::apply;
+use sinuprep::emit::cycle600::{rewrite, Options};
+use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::syntax::parse;
+
+fn sinuprep(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin)
+        .expect("write stdin");
+    child.wait_with_output().expect("binary ends")
+}
+
+/// The arguments a fixture asks for on its first line.
+fn fixture_args(source: &[u8]) -> Vec<String> {
+    let first = String::from_utf8_lossy(source)
+        .lines()
+        .next()
+        .unwrap_or_default()
+        .to_string();
+    first
+        .strip_prefix("; args:")
+        .map(|a| a.split_whitespace().map(String::from).collect())
+        .unwrap_or_default()
+}
+
+#[test]
+fn rewrites() {
+    insta::glob!("fixtures/rewrite/*.mpf", |path| {
+        let source = std::fs::read(path).expect("fixture");
+        let relative = path
+            .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+            .expect("inside the repo")
+            .to_string_lossy()
+            .into_owned();
+        let extra = fixture_args(&source);
+        let mut args: Vec<&str> = vec![
+            "rewrite",
+            &relative,
+            "--heads",
+            "samples/HEAD_DEF.SPF",
+            "--message-format",
+            "short",
+        ];
+        args.extend(extra.iter().map(String::as_str));
+        let output = sinuprep(&args, b"");
+        let mut diff_args = args.clone();
+        diff_args.push("--diff");
+        let diff = sinuprep(&diff_args, b"");
+
+        assert_invariants(&relative, &source, &output.stdout, &args);
+        let snapshot = format!(
+            "## Arguments\n{}\n## Exit status\n{}\n## Diagnostics\n{}\n## Diff\n{}",
+            extra.join(" "),
+            output.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&output.stderr),
+            String::from_utf8_lossy(&diff.stdout)
+        );
+        insta::assert_snapshot!(snapshot);
+    });
+}
+
+fn assert_invariants(name: &str, source: &[u8], output: &[u8], args: &[&str]) {
+    // Rewriting the output again changes nothing.
+    let mut again_args: Vec<&str> = args.to_vec();
+    again_args[1] = "-";
+    let again = sinuprep(&again_args, output);
+    assert_eq!(
+        again.stdout, output,
+        "{name}: a second rewrite changed the output"
+    );
+    // No syntax error is added.
+    assert!(
+        parse(output).diagnostics.len() <= parse(source).diagnostics.len(),
+        "{name}: the rewrite added a syntax error"
+    );
+    // Added lines use the file's line ending.
+    if !source.windows(2).any(|w| w[1] == b'\n' && w[0] != b'\r') && !source.starts_with(b"\n") {
+        assert!(
+            !output.windows(2).any(|w| w[1] == b'\n' && w[0] != b'\r'),
+            "{name}: an added line ends in LF in a CRLF file"
+        );
+    }
+    // Every line without CYCLE600 is kept, in order (with --inline-results,
+    // lines reading its results change too).
+    let inline = args.contains(&"--inline-results");
+    let kept: Vec<&[u8]> = source
+        .split(|&b| b == b'\n')
+        .filter(|l| {
+            let rewritten = contains(l, b"CYCLE600") || (inline && contains(l, b"_CYC600_"));
+            !rewritten
+        })
+        .collect();
+    let out_lines: Vec<&[u8]> = output.split(|&b| b == b'\n').collect();
+    let mut at = 0;
+    for line in kept {
+        match out_lines[at..].iter().position(|o| *o == line) {
+            Some(found) => at += found + 1,
+            None => panic!("{name}: line {:?} lost", String::from_utf8_lossy(line)),
+        }
+    }
+    check_swivels_independently(name, output);
+}
+
+fn contains(haystack: &[u8], needle: &[u8]) -> bool {
+    haystack.windows(needle.len()).any(|w| w == needle)
+}
+
+// ---- the independent check -------------------------------------------------
+
+/// Right-handed rotation about X, Y or Z (0, 1, 2) by degrees, via nalgebra's
+/// axis-angle constructor (not the engine's own elemental matrices).
+fn elemental(axis: usize, degrees: f64) -> Matrix3<f64> {
+    let unit = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()][axis];
+    *Rotation3::from_axis_angle(&unit, degrees.to_radians()).matrix()
+}
+
+/// The axes of a Siemens code, first rotation in bits 1-0.
+fn axes(code: u32) -> [usize; 3] {
+    [0, 2, 4].map(|shift| ((code >> shift) & 0b11) as usize - 1)
+}
+
+fn numbers(arguments: &str) -> Option<Vec<f64>> {
+    arguments
+        .split(',')
+        .map(|a| {
+            let a = a.trim();
+            if a.is_empty() {
+                Some(0.0)
+            } else {
+                a.parse().ok()
+            }
+        })
+        .collect()
+}
+
+/// For each `; sinuprep: CYCLE600(...)` comment with literal arguments, the
+/// rotation of the call must equal the rotation of what replaced it.
+fn check_swivels_independently(name: &str, output: &[u8]) {
+    let text = String::from_utf8_lossy(output);
+    let lines: Vec<&str> = text.lines().collect();
+    for (i, line) in lines.iter().enumerate() {
+        let Some(call) = line.trim_start().strip_prefix("; sinuprep: ") else {
+            continue;
+        };
+        let inside = &call[call.find('(').expect("call") + 1..call.rfind(')').expect("call")];
+        let without_head: String = inside
+            .split(',')
+            .enumerate()
+            .map(|(i, a)| if i == 1 { "0" } else { a })
+            .collect::<Vec<_>>()
+            .join(",");
+        let Some(mut v) = numbers(&without_head) else {
+            continue;
+        };
+        if v.len() == 19 {
+            v.remove(13);
+        }
+        if v[2] == 1.0 || v[15] == 1.0 {
+            continue; // recalculation only, or additive: depends on the active rotation
+        }
+        let [a, b, c] = axes(v[3] as u32);
+        let [t1, t2, t3] = [v[7], v[8], v[9]];
+        let expected = if v[0] == 1.0 {
+            elemental(a, t1) * elemental(b, t2) * elemental(c, t3)
+        } else {
+            elemental(c, t3) * elemental(b, t2) * elemental(a, t1)
+        };
+        let next = lines[i + 1];
+        let actual = if let Some(start) = next.find("CYCLE800(") {
+            let args: Vec<&str> = next[start + 9..next.rfind(')').expect("call")]
+                .split(',')
+                .collect();
+            let mode: u32 = args[3].trim().parse().expect("mode");
+            let angle = |k: usize| args[k].trim().parse::<f64>().expect("angle");
+            let [p, q, r] = axes(mode);
+            elemental(p, angle(7)) * elemental(q, angle(8)) * elemental(r, angle(9))
+        } else {
+            // Frames: the AROT blocks that follow, in order (intrinsic).
+            let mut product = Matrix3::identity();
+            for block in lines[i + 1..].iter().take(8) {
+                if let Some(rest) = block.trim_start().strip_prefix("AROT ") {
+                    let (axis, angle) = rest.split_once('=').expect("AROT axis=angle");
+                    let axis = "XYZ".find(axis.trim()).expect("axis");
+                    product *= elemental(axis, angle.trim().parse().expect("angle"));
+                }
+            }
+            product
+        };
+        let difference = (expected - actual).abs().max();
+        // 6 decimals move an angle by at most 5e-7 degrees: about 1e-8 in the matrix.
+        assert!(
+            difference < 1e-7,
+            "{name}: line {}: swivel differs from CYCLE600 by {difference:e}",
+            i + 2
+        );
+    }
+}
+
+// ---- samples and the outside corpus ---------------------------------------
+
+fn rewrite_bytes(source: &[u8], heads: Option<&Heads>) -> Vec<u8> {
+    let program = parse(source);
+    let analysis = analyze(&program, &Supplied::default(), heads);
+    let rewritten = rewrite(&program, &analysis, &Options::default());
+    apply(source, &rewritten.edits)
+}
+
+#[test]
+fn samples_and_corpus_rewrite_idempotently_and_keep_every_other_byte() {
+    let heads_source =
+        std::fs::read(support::repo().join("samples/HEAD_DEF.SPF")).expect("HEAD_DEF");
+    let heads = Heads::read("HEAD_DEF.SPF".into(), &heads_source);
+    let mut files = support::files_below(&support::repo().join("samples"));
+    files.extend(support::corpus_files());
+    for path in files {
+        let source = std::fs::read(&path).expect("readable");
+        let once = rewrite_bytes(&source, Some(&heads));
+        let twice = rewrite_bytes(&once, Some(&heads));
+        let name = path.display().to_string();
+        assert_eq!(once, twice, "{name}: not idempotent");
+        if !contains(&source, b"CYCLE600") {
+            assert_eq!(once, source, "{name}: changed without a CYCLE600");
+        }
+        assert!(
+            parse(&once).diagnostics.len() <= parse(&source).diagnostics.len(),
+            "{name}: syntax error added"
+        );
+        check_swivels_independently(&name, &once);
+    }
+}
+
+#[test]
+fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-in-place-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let good = dir.join("GOOD.MPF");
+    let original = b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n";
+    std::fs::write(&good, original).expect("write");
+    let heads = support::repo().join("samples/HEAD_DEF.SPF");
+    let heads = heads.to_string_lossy();
+    let output = sinuprep(
+        &[
+            "rewrite",
+            "--in-place",
+            good.to_str().expect("utf-8"),
+            "--heads",
+            &heads,
+        ],
+        b"",
+    );
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let rewritten = std::fs::read(&good).expect("read");
+    assert!(contains(&rewritten, b"CYCLE800(0,\"UFK600\",0,39,"));
+    assert_eq!(
+        std::fs::read(dir.join("GOOD.MPF.bak")).expect("backup"),
+        original
+    );
+
+    let bad = dir.join("BAD.MPF");
+    let refused =
+        b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R20, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
+    std::fs::write(&bad, refused).expect("write");
+    let output = sinuprep(
+        &[
+            "rewrite",
+            "--in-place",
+            bad.to_str().expect("utf-8"),
+            "--heads",
+            &heads,
+        ],
+        b"",
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(
+        std::fs::read(&bad).expect("read"),
+        refused,
+        "a file with errors is not touched"
+    );
+    assert!(!dir.join("BAD.MPF.bak").exists());
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .expect("dir")
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "no temporary file is left behind");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_mode_exits_1_when_something_would_change() {
+    let changes = sinuprep(&["rewrite", "--check", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_eq!(changes.status.code(), Some(1));
+    assert!(changes.stdout.is_empty());
+    let nothing = sinuprep(&["rewrite", "--check", "-"], b"N10 G0 X0\n");
+    assert_eq!(nothing.status.code(), Some(0));
+}
