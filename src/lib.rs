@@ -14,9 +14,11 @@
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
 //! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra;
 //!   knows nothing of syntax.
+//! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
+//! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`cli`]: the command line; the only place that prints.
 //!
-//! The semantic, emit and lint layers are still to come (see the README).
+//! The lint layer (rules beyond syntax) is still to come (see the README).
 
 pub mod cli;
 pub mod diagnostic;

@@ -223,9 +223,8 @@ fn check_swivels_independently(name: &str, output: &[u8]) {
 // ---- samples and the outside corpus ---------------------------------------
 
 fn rewrite_bytes(source: &[u8], heads: Option<&Heads>) -> Vec<u8> {
-    let program = parse(source);
-    let analysis = analyze(&program, &Supplied::default(), heads);
-    let rewritten = rewrite(&program, &analysis, &Options::default());
+    let analysis = analyze(source, &Supplied::default(), heads);
+    let rewritten = rewrite(source, &analysis, &Options::default());
     apply(source, &rewritten.edits)
 }
 
@@ -322,4 +321,72 @@ fn check_mode_exits_1_when_something_would_change() {
     assert!(changes.stdout.is_empty());
     let nothing = sinuprep(&["rewrite", "--check", "-"], b"N10 G0 X0\n");
     assert_eq!(nothing.status.code(), Some(0));
+}
+
+// ---- random programs -------------------------------------------------------
+
+const SNIPPETS: &[&str] = &[
+    "IF R1>0",
+    "IF R50>0",
+    "ELSE",
+    "ENDIF",
+    "WHILE R2<3",
+    "ENDWHILE",
+    "FOR R3=0 TO 2",
+    "ENDFOR",
+    "LOOP",
+    "ENDLOOP",
+    "REPEAT",
+    "UNTIL R4>1",
+    "GOTOF L1",
+    "GOTOB L1",
+    "GOTO L2",
+    "IF R1==1 GOTOF L2",
+    "L1:",
+    "L2: R1=1",
+    "GOTOS",
+    "CASE R1 OF 1 GOTOF L1 2 GOTOB L2 DEFAULT GOTOF L2",
+    "R1=R1+1",
+    "R1=30",
+    "R2=45.5",
+    "R4=$AA_MW[X]",
+    "CYCLE998(100105,9000,6,1,1,0,,10,0.5,103,2,60,,,,,1,0,1,)",
+    "R5=_OVR[16]",
+    "DEF REAL ANG=10",
+    "CYCLE800()",
+    "CYCLE800(0,\"UFK600\",0,57,0,0,0,R1,0,30,0,0,0,-1)",
+    "CYCLE800(0,\"UFK600\",1,39,0,0,0,10,20,30,0,0,0,1)",
+    "CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, R1, R2, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)",
+    "CYCLE600(1, \"UFK600\", 0, 39, 1, 2, 3, R1, 90, R5, 0, 0, 5, 1, 27, 1, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 10, 20, 30, 0, 0, 0, 0, 55, 1, 1, 1)",
+    "CYCLE600(0, \"NOHEAD\", 0, 58, 0, 0, 0, ASIN(2), 20, 30, 0, 0, 0, 1, 39, 0, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 57)",
+    "MSG(\"x\" << _CYC600_2)",
+    "N10 X=_CYC600_3 Y=-_CYC600_4",
+    "SUBPROG",
+    "M30",
+    "CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45,",
+    "IF (",
+];
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn random_programs_never_panic_and_rewrite_idempotently(
+        picks in proptest::collection::vec(0..SNIPPETS.len(), 0..40),
+        inline in proptest::bool::ANY,
+    ) {
+        let source: String = picks.iter().map(|&i| format!("{}\n", SNIPPETS[i])).collect();
+        let source = source.as_bytes();
+        let heads = Heads::read("HEAD_DEF.SPF".into(), b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n");
+        let options = Options { inline_results: inline, ..Options::default() };
+        let run = |bytes: &[u8]| {
+            let analysis = analyze(bytes, &Supplied::default(), Some(&heads));
+            apply(bytes, &rewrite(bytes, &analysis, &options).edits)
+        };
+        let once = run(source);
+        proptest::prop_assert_eq!(&run(&once), &once, "not idempotent");
+        proptest::prop_assert!(parse(&once).diagnostics.len() <= parse(source).diagnostics.len());
+    }
 }

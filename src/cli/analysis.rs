@@ -56,10 +56,19 @@ pub fn run(
 ) -> Result<Analyzed, CliError> {
     let supplied = supplied(args)?;
     let heads = heads(path, args.heads.as_deref())?;
-    let program = parse(&file.bytes);
-    let analysis = analyze(&program, &supplied, heads.as_ref());
-    let rewrite = rewrite(&program, &analysis, options);
-    let mut diagnostics = program.diagnostics.clone();
+    // A program that never names CYCLE600 has nothing to rewrite: it needs
+    // only the streaming syntax pass, not the whole tree in memory.
+    if !mentions_cycle600(&file.bytes) {
+        let diagnostics = crate::syntax::diagnostics(&file.bytes);
+        return Ok(Analyzed {
+            analysis: Analysis::default(),
+            rewrite: Rewrite::default(),
+            diagnostics,
+        });
+    }
+    let analysis = analyze(&file.bytes, &supplied, heads.as_ref());
+    let rewrite = rewrite(&file.bytes, &analysis, options);
+    let mut diagnostics = crate::syntax::diagnostics(&file.bytes);
     if heads.is_none() && !analysis.calls.is_empty() {
         diagnostics.push(
             Diagnostic::new(
@@ -80,6 +89,12 @@ pub fn run(
         rewrite,
         diagnostics,
     })
+}
+
+/// Whether `CYCLE600` (any case) occurs anywhere in the bytes.
+fn mentions_cycle600(bytes: &[u8]) -> bool {
+    memchr::memmem::find_iter(bytes, b"600")
+        .any(|at| at >= 5 && bytes[at - 5..at].eq_ignore_ascii_case(b"CYCLE"))
 }
 
 /// `--set` values and the `--values` file, as keys of the walk.

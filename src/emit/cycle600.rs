@@ -15,7 +15,6 @@ use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
 use crate::span::Span;
 use crate::syntax::lines::dominant_ending;
-use crate::syntax::Program;
 
 /// How a rotating CYCLE600 (`_SW_REC=0`) is written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum, serde::Deserialize)]
@@ -62,8 +61,7 @@ pub struct Rewrite {
     pub refused: usize,
 }
 
-pub fn rewrite(program: &Program, analysis: &Analysis, options: &Options) -> Rewrite {
-    let source = program.source;
+pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite {
     let eol = dominant_ending(source).as_bytes();
     let mut out = Rewrite::default();
     for site in &analysis.calls {
@@ -75,8 +73,7 @@ pub fn rewrite(program: &Program, analysis: &Analysis, options: &Options) -> Rew
         match (&site.evaluation, refused) {
             (Some(evaluation), false) => match code(evaluation, options, site.statement) {
                 Ok(blocks) => {
-                    out.edits
-                        .extend(edits(program, site, &blocks, options, eol));
+                    out.edits.extend(edits(source, site, &blocks, options, eol));
                     out.rewritten += 1;
                 }
                 Err(problem) => {
@@ -183,15 +180,13 @@ pub fn code(
 }
 
 fn edits(
-    program: &Program,
+    source: &[u8],
     site: &CallSite,
     blocks: &[String],
     options: &Options,
     eol: &[u8],
 ) -> Vec<Edit> {
-    let source = program.source;
-    let line = &program.lines[site.line];
-    let content = line.raw.content;
+    let content = site.content;
     let indent_len = content
         .of(source)
         .iter()

@@ -25,13 +25,15 @@ use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
     TypeKind, Variable, WordValue,
 };
-use crate::syntax::Program;
+use crate::syntax::Lines;
 
 /// One CYCLE600 call met on the walk.
 #[derive(Debug)]
 pub struct CallSite {
     /// 0-based index of the line.
     pub line: usize,
+    /// The line's content (without its terminator).
+    pub content: Span,
     /// The call statement.
     pub statement: Span,
     pub bound: Option<Bound>,
@@ -53,18 +55,20 @@ pub struct Analysis {
     pub result_reads: Vec<ResultRead>,
 }
 
-pub fn analyze(program: &Program, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+/// Walks the program in `source`, parsing each line as it is reached.
+pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+    let lines = Lines::new(source);
     let mut walker = Walker {
-        program,
-        source: program.source,
+        structure: Structure::build(&lines),
+        lines: &lines,
+        source,
         supplied,
         heads,
-        structure: Structure::build(program),
         pending: HashMap::new(),
         analysis: Analysis::default(),
     };
     let mut env = Env::default();
-    walker.walk(0, program.lines.len(), &mut env);
+    walker.walk(0, lines.len(), &mut env);
     walker
         .analysis
         .calls
@@ -80,7 +84,7 @@ struct Written {
 }
 
 struct Walker<'a> {
-    program: &'a Program<'a>,
+    lines: &'a Lines<'a>,
     source: &'a [u8],
     supplied: &'a Supplied,
     heads: Option<&'a Heads>,
@@ -101,8 +105,8 @@ enum Control<'a> {
 }
 
 impl<'a> Walker<'a> {
-    fn block(&self, line: usize) -> Option<&'a Block> {
-        match &self.program.lines[line].kind {
+    fn block(&self, line: usize) -> Option<Block> {
+        match self.lines.parse(line).kind {
             LineKind::Block(block) => Some(block),
             _ => None,
         }
@@ -116,10 +120,10 @@ impl<'a> Walker<'a> {
                 pc += 1;
                 continue;
             };
-            match control(block) {
+            match control(&block) {
                 Control::IfBlock(condition) => {
                     if let Some(&(else_line, end_line)) = self.structure.ends.get(&pc) {
-                        self.visit_expressions(block, env);
+                        self.visit_expressions(&block, env);
                         let then_end = else_line.unwrap_or(end_line);
                         match self.truth(condition, env, pc) {
                             Some(true) => self.walk(pc + 1, then_end, env),
@@ -156,7 +160,7 @@ impl<'a> Walker<'a> {
                         };
                         let written = self.written(pc, end_line + 1);
                         forget(&written, env, &origin);
-                        self.visit(pc, block, env);
+                        self.visit(pc, &block, env);
                         self.walk(pc + 1, end_line, env);
                         if !runs_once {
                             forget(&written, env, &origin);
@@ -174,8 +178,8 @@ impl<'a> Walker<'a> {
                 }
                 Control::None => {}
             }
-            self.visit(pc, block, env);
-            pc = match self.jump(pc, block, env, end) {
+            self.visit(pc, &block, env);
+            pc = match self.jump(pc, &block, env, end) {
                 Some(target) => target,
                 None => pc + 1,
             };
@@ -290,7 +294,7 @@ impl<'a> Walker<'a> {
     /// What lines `start..end` may write.
     fn written(&self, start: usize, end: usize) -> Written {
         let mut written = Written::default();
-        for line in start..end.min(self.program.lines.len()) {
+        for line in start..end.min(self.lines.len()) {
             let Some(block) = self.block(line) else {
                 continue;
             };
@@ -485,6 +489,7 @@ impl<'a> Walker<'a> {
         let line = pc + 1;
         let mut site = CallSite {
             line: pc,
+            content: self.lines.raw[pc].content,
             statement: statement.span,
             bound: None,
             evaluation: None,
@@ -834,8 +839,8 @@ enum Opener {
 }
 
 impl Structure {
-    fn build(program: &Program) -> Structure {
-        let source = program.source;
+    fn build(lines: &Lines) -> Structure {
+        let source = lines.source;
         let mut structure = Structure {
             ends: HashMap::new(),
             else_ends: HashMap::new(),
@@ -843,15 +848,23 @@ impl Structure {
             loop_starts: HashMap::new(),
         };
         let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
-        for (line, block) in program
-            .lines
-            .iter()
-            .enumerate()
-            .filter_map(|(i, l)| match &l.kind {
-                LineKind::Block(b) => Some((i, b)),
-                _ => None,
-            })
-        {
+        // Jumps, resolved once every label is known.
+        let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
+        for line in 0..lines.len() {
+            let LineKind::Block(block) = lines.parse(line).kind else {
+                continue;
+            };
+            let block = &block;
+            for statement in &block.statements {
+                match &statement.kind {
+                    StatementKind::Goto(goto) => jumps.push((line, goto.clone())),
+                    StatementKind::Case(case) => {
+                        let gotos = case.branches.iter().map(|(_, g)| g).chain(&case.default);
+                        jumps.extend(gotos.map(|g| (line, g.clone())));
+                    }
+                    _ => {}
+                }
+            }
             if let Some(label) = block.label {
                 structure
                     .labels
@@ -923,37 +936,15 @@ impl Structure {
             }
         }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
-        for (line, block) in program
-            .lines
-            .iter()
-            .enumerate()
-            .filter_map(|(i, l)| match &l.kind {
-                LineKind::Block(b) => Some((i, b)),
+        for (line, goto) in jumps {
+            let target = match (&goto.kind, &goto.target) {
+                (crate::syntax::tree::GotoKind::Start, _) => Some(0),
+                (kind, Some(target)) => structure.resolve(source, target, *kind, line),
                 _ => None,
-            })
-        {
-            for statement in &block.statements {
-                let gotos: Vec<&crate::syntax::tree::Goto> = match &statement.kind {
-                    StatementKind::Goto(goto) => vec![goto],
-                    StatementKind::Case(case) => case
-                        .branches
-                        .iter()
-                        .map(|(_, g)| g)
-                        .chain(&case.default)
-                        .collect(),
-                    _ => continue,
-                };
-                for goto in gotos {
-                    let target = match (&goto.kind, &goto.target) {
-                        (crate::syntax::tree::GotoKind::Start, _) => Some(0),
-                        (kind, Some(target)) => structure.resolve(source, target, *kind, line),
-                        _ => None,
-                    };
-                    if let Some(target) = target.filter(|&t| t <= line) {
-                        let last = structure.loop_starts.entry(target).or_insert(line);
-                        *last = (*last).max(line);
-                    }
-                }
+            };
+            if let Some(target) = target.filter(|&t| t <= line) {
+                let last = structure.loop_starts.entry(target).or_insert(line);
+                *last = (*last).max(line);
             }
         }
         structure

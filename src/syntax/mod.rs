@@ -61,6 +61,37 @@ pub fn parse(source: &[u8]) -> Program<'_> {
     }
 }
 
+/// A program's lines, each parsed when asked for: memory holds the line
+/// positions only, never the whole tree, however large the program.
+pub struct Lines<'src> {
+    pub source: &'src [u8],
+    pub raw: Vec<RawLine>,
+}
+
+impl<'src> Lines<'src> {
+    pub fn new(source: &'src [u8]) -> Self {
+        Self {
+            source,
+            raw: raw_lines(source).collect(),
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.raw.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.raw.is_empty()
+    }
+
+    /// The tree of line `index` (0-based).
+    pub fn parse(&self, index: usize) -> Line {
+        let raw = self.raw[index];
+        let (kind, _) = parse_line_kind(raw.content.of(self.source), raw.content.start);
+        Line { raw, kind }
+    }
+}
+
 /// The syntax diagnostics of a program, without keeping its tree: each line
 /// is parsed and dropped, so memory holds one line's tree at a time.
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
