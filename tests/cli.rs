@@ -1,73 +1,50 @@
 //! The built binary: exit codes, stdin, each output format, `convert`.
 
 use std::io::Write;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
-fn sinuprep(args: &[&str], stdin: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin)
-        .expect("write stdin");
-    child.wait_with_output().expect("binary ends")
-}
+mod support;
 
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
+use support::{assert_exit, run, stdout};
 
 #[test]
 fn check_of_clean_samples_exits_0() {
-    let output = sinuprep(&["check", "samples"], b"");
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let output = run(&["check", "samples"], b"");
+    assert_exit(&output, 0);
     assert!(output.stdout.is_empty());
 }
 
 #[test]
 fn check_json_of_samples_follows_the_schema() {
-    let output = sinuprep(&["check", "--format", "json", "samples/"], b"");
-    assert_eq!(output.status.code(), Some(0));
+    let output = run(&["check", "--format", "json", "samples/"], b"");
+    assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
 }
 
 #[test]
 fn check_reports_errors_with_exit_1_in_every_format() {
     let broken = b"N10 G1 X10\nN20 MSG(\"open\nN30 X=(1+2\n";
-    let short = sinuprep(&["check", "--format", "short", "-"], broken);
-    assert_eq!(short.status.code(), Some(1));
+    let short = run(&["check", "--format", "short", "-"], broken);
+    assert_exit(&short, 1);
     insta::assert_snapshot!("short", stdout(&short));
-    let json = sinuprep(&["check", "--format", "json", "-"], broken);
-    assert_eq!(json.status.code(), Some(1));
+    let json = run(&["check", "--format", "json", "-"], broken);
+    assert_exit(&json, 1);
     insta::assert_snapshot!("json", stdout(&json));
-    let human = sinuprep(&["check", "-"], broken);
-    assert_eq!(human.status.code(), Some(1));
+    let human = run(&["check", "-"], broken);
+    assert_exit(&human, 1);
     insta::assert_snapshot!("human", stdout(&human));
 }
 
 #[test]
 fn check_of_a_missing_file_exits_2_and_names_it() {
-    let output = sinuprep(&["check", "no/such/file.mpf"], b"");
-    assert_eq!(output.status.code(), Some(2));
+    let output = run(&["check", "no/such/file.mpf"], b"");
+    assert_exit(&output, 2);
     assert!(String::from_utf8_lossy(&output.stderr).contains("no/such/file.mpf"));
 }
 
 #[test]
 fn check_takes_named_files_whatever_their_extension() {
-    let output = sinuprep(
+    let output = run(
         &[
             "check",
             "--format",
@@ -77,20 +54,20 @@ fn check_takes_named_files_whatever_their_extension() {
         ],
         b"",
     );
-    assert_eq!(output.status.code(), Some(1));
+    assert_exit(&output, 1);
     assert!(stdout(&output).contains("bad_number.mpf:1:6: error[S003]"));
 }
 
 #[test]
 fn rewrite_gives_every_byte_back_when_there_is_nothing_to_rewrite() {
     let input = b"N10 G1 X1\r\n\xe4\xf6 broken ( \"\rN20 X2";
-    let output = sinuprep(&["rewrite", "-"], input);
+    let output = run(&["rewrite", "-"], input);
     // The syntax errors are reported (exit 1), and not a byte is lost.
-    assert_eq!(output.status.code(), Some(1));
+    assert_exit(&output, 1);
     assert_eq!(output.stdout, input);
     let clean = b"N10 G1 X1\r\nN20 X2";
-    let output = sinuprep(&["rewrite", "-"], clean);
-    assert_eq!(output.status.code(), Some(0));
+    let output = run(&["rewrite", "-"], clean);
+    assert_exit(&output, 0);
     assert_eq!(output.stdout, clean);
 }
 
@@ -101,13 +78,8 @@ fn rewrite_of_the_paper_example_replaces_only_the_cycle600_blocks() {
         "/samples/PAPER_EXAMPLE3.MPF"
     ))
     .expect("sample");
-    let output = sinuprep(&["rewrite", "samples/PAPER_EXAMPLE3.MPF"], b"");
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let output = run(&["rewrite", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_exit(&output, 0);
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(text.contains("N120 _CYC600_1=\"UFK600\" _CYC600_2=37.792346 _CYC600_3=20.704811 _CYC600_4=49.106605 _CYC600_5=1 _CYC600_6=39\n"));
     let original = String::from_utf8_lossy(&sample);
@@ -120,13 +92,13 @@ fn rewrite_of_the_paper_example_replaces_only_the_cycle600_blocks() {
 
 #[test]
 fn rewrite_of_a_directory_is_a_tool_error() {
-    let output = sinuprep(&["rewrite", "samples"], b"");
-    assert_eq!(output.status.code(), Some(2));
+    let output = run(&["rewrite", "samples"], b"");
+    assert_exit(&output, 2);
 }
 
 #[test]
 fn convert_prints_the_papers_angles() {
-    let output = sinuprep(
+    let output = run(
         &[
             "convert",
             "30",
@@ -139,19 +111,19 @@ fn convert_prints_the_papers_angles() {
         ],
         b"",
     );
-    assert_eq!(output.status.code(), Some(0));
+    assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
 }
 
 #[test]
 fn convert_json_has_full_precision() {
-    let output = sinuprep(
+    let output = run(
         &[
             "convert", "30", "45", "60", "--from", "e:57", "--to", "e:39", "--json",
         ],
         b"",
     );
-    assert_eq!(output.status.code(), Some(0));
+    assert_exit(&output, 0);
     let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
     assert_eq!(value["sequence"], "extrinsic:ZXY");
     assert_eq!(value["code"], 39);
@@ -172,18 +144,13 @@ fn convert_json_has_full_precision() {
 
 #[test]
 fn convert_accepts_negative_angles_and_warns_at_gimbal_lock() {
-    let output = sinuprep(
+    let output = run(
         &[
             "convert", "-16.28", "90", "10", "--from", "i:ZYX", "--to", "i:ZYX",
         ],
         b"",
     );
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
 }
 
@@ -202,11 +169,11 @@ fn convert_refuses_bad_input_with_exit_2() {
             "convert", "1", "inf", "3", "--from", "i:XYZ", "--to", "i:XYZ",
         ],
     ] {
-        let output = sinuprep(&args, b"");
+        let output = run(&args, b"");
         assert_eq!(output.status.code(), Some(2), "{args:?}");
         assert!(!output.stderr.is_empty());
     }
-    let output = sinuprep(
+    let output = run(
         &["convert", "1", "2", "3", "--from", "x:ZYX", "--to", "i:XYZ"],
         b"",
     );
@@ -239,19 +206,14 @@ fn a_closed_pipe_is_not_a_failure() {
 
 #[test]
 fn eval_shows_parameters_provenance_and_results() {
-    let output = sinuprep(&["eval", "samples/PAPER_EXAMPLE3.MPF"], b"");
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let output = run(&["eval", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
 }
 
 #[test]
 fn eval_json_of_a_probe_program_with_supplied_values() {
-    let output = sinuprep(
+    let output = run(
         &[
             "eval",
             "samples/PROBE_ALIGN.MPF",
@@ -263,12 +225,7 @@ fn eval_json_of_a_probe_program_with_supplied_values() {
         ],
         b"",
     );
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_exit(&output, 0);
     let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
     let call = &value["calls"][0];
     assert_eq!(call["arguments"][7]["name"], "_ANG_1");
@@ -299,14 +256,14 @@ fn malformed_supplied_values_are_tool_errors() {
             "samples/PAPER_EXAMPLE3.MPF",
         ],
     ] {
-        let output = sinuprep(&args, b"");
+        let output = run(&args, b"");
         assert_eq!(output.status.code(), Some(2), "{args:?}");
         assert!(
             output.stdout.is_empty(),
             "nothing is written when the tool fails"
         );
     }
-    let output = sinuprep(
+    let output = run(
         &["rewrite", "samples/PROBE_ALIGN.MPF", "--set", "R10=R11+1"],
         b"",
     );

@@ -7,32 +7,13 @@
 
 mod support;
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+use support::{assert_exit, run};
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Options};
 use sinuprep::semantic::{analyze, Heads, Supplied};
 use sinuprep::syntax::parse;
-
-fn sinuprep(args: &[&str], stdin: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin)
-        .expect("write stdin");
-    child.wait_with_output().expect("binary ends")
-}
 
 /// The arguments a fixture asks for on its first line.
 fn fixture_args(source: &[u8]) -> Vec<String> {
@@ -66,10 +47,10 @@ fn rewrites() {
             "short",
         ];
         args.extend(extra.iter().map(String::as_str));
-        let output = sinuprep(&args, b"");
+        let output = run(&args, b"");
         let mut diff_args = args.clone();
         diff_args.push("--diff");
-        let diff = sinuprep(&diff_args, b"");
+        let diff = run(&diff_args, b"");
 
         assert_invariants(&relative, &source, &output.stdout, &args);
         let snapshot = format!(
@@ -87,7 +68,7 @@ fn assert_invariants(name: &str, source: &[u8], output: &[u8], args: &[&str]) {
     // Rewriting the output again changes nothing.
     let mut again_args: Vec<&str> = args.to_vec();
     again_args[1] = "-";
-    let again = sinuprep(&again_args, output);
+    let again = run(&again_args, output);
     assert_eq!(
         again.stdout, output,
         "{name}: a second rewrite changed the output"
@@ -261,7 +242,7 @@ fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
     std::fs::write(&good, original).expect("write");
     let heads = support::repo().join("samples/HEAD_DEF.SPF");
     let heads = heads.to_string_lossy();
-    let output = sinuprep(
+    let output = run(
         &[
             "rewrite",
             "--in-place",
@@ -271,12 +252,7 @@ fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
         ],
         b"",
     );
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_exit(&output, 0);
     let rewritten = std::fs::read(&good).expect("read");
     assert!(contains(&rewritten, b"CYCLE800(0,\"UFK600\",0,39,"));
     assert_eq!(
@@ -288,7 +264,7 @@ fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
     let refused =
         b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R20, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
     std::fs::write(&bad, refused).expect("write");
-    let output = sinuprep(
+    let output = run(
         &[
             "rewrite",
             "--in-place",
@@ -298,7 +274,7 @@ fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
         ],
         b"",
     );
-    assert_eq!(output.status.code(), Some(1));
+    assert_exit(&output, 1);
     assert_eq!(
         std::fs::read(&bad).expect("read"),
         refused,
@@ -316,11 +292,11 @@ fn rewriting_in_place_keeps_a_backup_and_refuses_on_errors() {
 
 #[test]
 fn check_mode_exits_1_when_something_would_change() {
-    let changes = sinuprep(&["rewrite", "--check", "samples/PAPER_EXAMPLE3.MPF"], b"");
-    assert_eq!(changes.status.code(), Some(1));
+    let changes = run(&["rewrite", "--check", "samples/PAPER_EXAMPLE3.MPF"], b"");
+    assert_exit(&changes, 1);
     assert!(changes.stdout.is_empty());
-    let nothing = sinuprep(&["rewrite", "--check", "-"], b"N10 G0 X0\n");
-    assert_eq!(nothing.status.code(), Some(0));
+    let nothing = run(&["rewrite", "--check", "-"], b"N10 G0 X0\n");
+    assert_exit(&nothing, 0);
 }
 
 // ---- random programs -------------------------------------------------------
