@@ -71,9 +71,24 @@ pub struct AnalysisArgs {
     /// Decimals of emitted numbers (trailing zeros trimmed, never an exponent).
     #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(0..=15))]
     pub precision: u8,
+    /// Compute calls whose angles (or translations) are measured at run time on the
+    /// control, in native arithmetic, instead of refusing them.
+    #[arg(long)]
+    pub emit_runtime: bool,
+    /// With --emit-runtime, keep the intermediate values in R parameters from R N upward
+    /// (instead of local variables declared with DEF).
+    #[arg(long, value_name = "N")]
+    pub runtime_r: Option<u32>,
     /// How diagnostics are printed on stderr.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
+}
+
+impl AnalysisArgs {
+    /// `--emit-runtime`, with `--runtime-r N` implying it.
+    pub fn runtime(&self) -> Option<Option<u32>> {
+        (self.emit_runtime || self.runtime_r.is_some()).then_some(self.runtime_r)
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

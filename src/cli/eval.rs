@@ -18,6 +18,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let options = Options {
         form: args.analysis.emit,
         precision: usize::from(args.analysis.precision),
+        runtime: args.analysis.runtime(),
         ..Options::default()
     };
     let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;

@@ -17,6 +17,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         precision: usize::from(args.analysis.precision),
         keep_original: !args.no_original,
         inline_results: args.inline_results,
+        runtime: args.analysis.runtime(),
     };
     let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;
     analyzed.report(&file, args.analysis.message_format);

@@ -8,7 +8,7 @@
 
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::number::format;
-use crate::emit::Edit;
+use crate::emit::{runtime, Edit};
 use crate::rotation::Kind;
 use crate::semantic::cycle600::Evaluation;
 use crate::semantic::value::Value;
@@ -38,6 +38,9 @@ pub struct Options {
     pub keep_original: bool,
     /// Replace later reads of `_CYC600_n` by their values.
     pub inline_results: bool,
+    /// Compute calls whose angles are measured at run time on the control;
+    /// `Some(Some(n))` keeps the intermediate values in R parameters from Rn.
+    pub runtime: Option<Option<u32>>,
 }
 
 impl Default for Options {
@@ -47,6 +50,7 @@ impl Default for Options {
             precision: 6,
             keep_original: true,
             inline_results: false,
+            runtime: None,
         }
     }
 }
@@ -64,14 +68,16 @@ pub struct Rewrite {
 pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite {
     let eol = dominant_ending(source).as_bytes();
     let mut out = Rewrite::default();
+    let mut names = runtime::Names::new(options.runtime.flatten());
+    let mut at_run_time: Vec<(&CallSite, Vec<String>)> = Vec::new();
     for site in &analysis.calls {
         let refused = site
             .diagnostics
             .iter()
             .any(|d| d.severity == Severity::Error);
-        out.diagnostics.extend(site.diagnostics.iter().cloned());
-        match (&site.evaluation, refused) {
-            (Some(evaluation), false) => match code(evaluation, options, site.statement) {
+        if let (Some(evaluation), false) = (&site.evaluation, refused) {
+            out.diagnostics.extend(site.diagnostics.iter().cloned());
+            match code(evaluation, options, site.statement) {
                 Ok(blocks) => {
                     out.edits.extend(edits(source, site, &blocks, options, eol));
                     out.rewritten += 1;
@@ -80,8 +86,66 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
                     out.diagnostics.push(problem);
                     out.refused += 1;
                 }
-            },
-            _ => out.refused += 1,
+            }
+            continue;
+        }
+        if let (Some(_), Some(parameters)) = (options.runtime, &site.runtime) {
+            match runtime::code(
+                parameters,
+                &site.active,
+                site.needs_stopre,
+                options,
+                &mut names,
+                site.statement,
+            ) {
+                Ok(blocks) => {
+                    at_run_time.push((site, blocks));
+                    continue;
+                }
+                Err(problem) => out.diagnostics.push(problem),
+            }
+        }
+        out.diagnostics.extend(site.diagnostics.iter().cloned());
+        out.refused += 1;
+    }
+    if !at_run_time.is_empty() {
+        match runtime::collision(source, &names) {
+            Some(problem) => {
+                out.diagnostics.push(problem);
+                for (site, _) in &at_run_time {
+                    out.diagnostics.extend(site.diagnostics.iter().cloned());
+                    out.refused += 1;
+                }
+            }
+            None => {
+                let locals = names.locals();
+                if !locals.is_empty() {
+                    let mut declarations = Vec::new();
+                    for chunk in locals.chunks(8) {
+                        declarations
+                            .extend_from_slice(format!("DEF REAL {}", chunk.join(", ")).as_bytes());
+                        declarations.extend_from_slice(eol);
+                    }
+                    out.edits
+                        .push(Edit::insert(runtime::def_insertion(source), declarations));
+                }
+                for (site, blocks) in &at_run_time {
+                    // The unknown-argument errors are answered by the run-time code.
+                    out.diagnostics.extend(
+                        site.diagnostics
+                            .iter()
+                            .filter(|d| d.code != "C605")
+                            .cloned(),
+                    );
+                    out.diagnostics.push(
+                        Diagnostic::new("C613", "cycle600-computed-at-run-time", Severity::Info, site.statement)
+                            .message("values known only at run time: the conversion is computed on the control in native arithmetic")
+                            .label("computed at run time"),
+                    );
+                    out.edits.extend(edits(source, site, blocks, options, eol));
+                    out.rewritten += 1;
+                }
+            }
         }
     }
     if options.inline_results {

@@ -7,6 +7,7 @@
 pub mod cycle600;
 pub mod diff;
 pub mod number;
+pub mod runtime;
 
 use crate::span::Span;
 

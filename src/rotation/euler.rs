@@ -129,15 +129,20 @@ fn decompose_intrinsic(sequence: Sequence, m: &Matrix3<f64>, zero: GimbalZero) -
 
     // Middle angle, and the first angle's (sin, cos) pair scaled by |cos b|
     // (Tait-Bryan) or |sin b| (proper Euler).
-    let (b, first_pair) = if proper {
+    // `conditioning` is |sin b| (proper Euler) or |cos b| (Tait-Bryan), read
+    // from the matrix as the generated run-time code reads it.
+    let (b, conditioning, first_pair) = if proper {
         let sin_b = norm(m[(i, j)], m[(i, k)]);
-        (sin_b.atan2(m[(i, i)]), (m[(j, i)], -s * m[(k, i)]))
+        (sin_b.atan2(m[(i, i)]), sin_b, (m[(j, i)], -s * m[(k, i)]))
     } else {
         let cos_b = norm(m[(i, i)], m[(i, j)]);
-        ((s * m[(i, k)]).atan2(cos_b), (-s * m[(j, k)], m[(k, k)]))
+        (
+            (s * m[(i, k)]).atan2(cos_b),
+            cos_b,
+            (-s * m[(j, k)], m[(k, k)]),
+        )
     };
-    let conditioning = if proper { b.sin() } else { b.cos() };
-    let gimbal_lock = conditioning.abs() < GIMBAL_TOLERANCE;
+    let gimbal_lock = conditioning < GIMBAL_TOLERANCE;
 
     // Row j of R_i(a)ᵀ · R equals row j of the third elemental rotation, which
     // gives the third angle exactly for whatever first angle was chosen.

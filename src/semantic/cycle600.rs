@@ -434,3 +434,77 @@ pub fn evaluate_parameters(
         warnings,
     ))
 }
+
+/// A coordinate of a call: known offline, or an expression only the control
+/// can evaluate (a measured angle, say).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Operand {
+    Known(f64),
+    /// The argument as written.
+    Runtime(String),
+}
+
+/// The parameters of a call whose angles or translations are known only at
+/// run time; everything else (codes, flags, head) is known and checked.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RuntimeParameters {
+    pub head: String,
+    pub recalculate_only: bool,
+    pub input: Sequence,
+    pub output: Sequence,
+    pub additive: bool,
+    pub inverse: bool,
+    pub retract: bool,
+    /// `_POS_X`.. `_POS_Z`, `_ANG_1`.. `_ANG_3`, `_POS_X_R`.. `_POS_Z_R`.
+    pub coordinates: [Operand; 9],
+}
+
+/// `Some` when the only unknown arguments are coordinates whose expressions
+/// read variables (not `ASIN(2)`-like errors): the call can be computed on
+/// the control.
+pub fn runtime_parameters(bound: &Bound, heads: Option<&Heads>) -> Option<RuntimeParameters> {
+    let coordinates = 4..13;
+    let runtime = |i: usize| matches!(bound.arguments[i].value, Err(Unknown::Variables(_)));
+    if !coordinates.clone().any(runtime) {
+        return None;
+    }
+    // Check the rest as usual, with the run-time coordinates standing in as 0.
+    let mut standing_in = bound.clone();
+    for i in coordinates.clone().filter(|&i| runtime(i)) {
+        standing_in.arguments[i].value = Ok(Value::Number(0.0));
+    }
+    let (parameters, problems) = check(&standing_in, heads);
+    if problems.iter().any(|d| d.severity == Severity::Error) {
+        return None;
+    }
+    let p = parameters?;
+    let known = [
+        p.before.x,
+        p.before.y,
+        p.before.z,
+        p.angles[0],
+        p.angles[1],
+        p.angles[2],
+        p.after.x,
+        p.after.y,
+        p.after.z,
+    ];
+    let coordinates: [Operand; 9] = std::array::from_fn(|n| {
+        let argument = &bound.arguments[4 + n];
+        if runtime(4 + n) {
+            Operand::Runtime(argument.text.clone())
+        } else {
+            Operand::Known(known[n])
+        }
+    });
+    Some(RuntimeParameters {
+        head: p.head,
+        recalculate_only: p.recalculate_only,
+        input: p.input,
+        output: p.output,
+        additive: p.additive,
+        inverse: p.inverse,
+        retract: p.retract,
+        coordinates,
+    })
+}

@@ -98,6 +98,14 @@ impl Env {
         self.vars.insert(key, binding);
     }
 
+    /// A known value of `key` (as built by [`crate::semantic::eval::key`]).
+    pub fn value(&self, key: &str) -> Option<&Value> {
+        match self.vars.get(key) {
+            Some(Binding::Known { value, .. }) => Some(value),
+            _ => None,
+        }
+    }
+
     pub fn binding(&self, key: &str) -> Option<&Binding> {
         self.vars.get(key)
     }

@@ -38,6 +38,14 @@ pub struct CallSite {
     pub statement: Span,
     pub bound: Option<Bound>,
     pub evaluation: Option<Evaluation>,
+    /// The rotation active when the walk reached the call.
+    pub active: Active,
+    /// For a call whose angles or translations are known only at run time:
+    /// everything else, for computing it on the control.
+    pub runtime: Option<cycle600::RuntimeParameters>,
+    /// A value the call reads is measured in the main run and no STOPRE
+    /// stands between the measurement and the call.
+    pub needs_stopre: bool,
     /// Refusals (errors) and warnings about this call.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -57,6 +65,12 @@ pub struct Analysis {
 
 /// Walks the program in `source`, parsing each line as it is reached.
 pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+    run(source, supplied, heads).0
+}
+
+/// The walk, and the state it ends in: what the program leaves in its
+/// variables when run offline.
+pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
     let lines = Lines::new(source);
     let mut walker = Walker {
         structure: Structure::build(&lines),
@@ -73,7 +87,7 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
         .analysis
         .calls
         .sort_by_key(|c| (c.line, c.statement.start));
-    walker.analysis
+    (walker.analysis, env)
 }
 
 /// Names a region writes, for forgetting them.
@@ -493,13 +507,20 @@ impl<'a> Walker<'a> {
             statement: statement.span,
             bound: None,
             evaluation: None,
+            active: env.active.clone(),
+            runtime: None,
+            needs_stopre: false,
             diagnostics: Vec::new(),
         };
         let scope = env.scope(self.supplied, line);
         match cycle600::bind(self.source, call, &scope) {
             Err(problem) => site.diagnostics.push(problem),
             Ok(bound) => {
+                site.needs_stopre = self.needs_stopre(&bound, pc);
                 let (parameters, problems) = cycle600::check(&bound, self.heads);
+                if parameters.is_none() {
+                    site.runtime = cycle600::runtime_parameters(&bound, self.heads);
+                }
                 site.diagnostics.extend(problems);
                 site.bound = Some(bound);
                 if let Some(parameters) = parameters {
@@ -552,6 +573,25 @@ impl<'a> Walker<'a> {
             }
         }
         self.analysis.calls.push(site);
+    }
+
+    /// Whether a measured value the call reads lacks a STOPRE since its measurement.
+    fn needs_stopre(&self, bound: &Bound, pc: usize) -> bool {
+        bound
+            .arguments
+            .iter()
+            .any(|argument| match &argument.value {
+                Err(Unknown::Variables(vars)) => vars.iter().any(|(_, origin)| match origin {
+                    // `line` is 1-based: the measurement is at index line - 1.
+                    Origin::Measured { line, .. } => !self
+                        .structure
+                        .stopre_lines
+                        .iter()
+                        .any(|&s| s + 1 > *line && s < pc),
+                    _ => false,
+                }),
+                _ => false,
+            })
     }
 
     /// The rotation after a CYCLE800 (axis by axis, intrinsic; `_ST` ones
@@ -764,7 +804,7 @@ const BUILTINS: &[&str] = &[
 ];
 
 /// Every expression directly in a statement, for collecting reads.
-fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Expr)) {
+pub(crate) fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Expr)) {
     match kind {
         StatementKind::Word(word) => {
             if let WordValue::Expr(expr) = &word.value {
@@ -795,7 +835,7 @@ fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Ex
 }
 
 /// Variables read in `expr` (iteratively: trees may be deep).
-fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
+pub(crate) fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
     let mut stack = vec![expr];
     while let Some(expr) = stack.pop() {
         match &expr.kind {
@@ -827,6 +867,8 @@ struct Structure {
     labels: HashMap<String, Vec<usize>>,
     /// First line of a region a backward jump repeats -> its last line.
     loop_starts: HashMap<usize, usize>,
+    /// Lines with a STOPRE, in order.
+    stopre_lines: Vec<usize>,
 }
 
 #[derive(PartialEq)]
@@ -846,6 +888,7 @@ impl Structure {
             else_ends: HashMap::new(),
             labels: HashMap::new(),
             loop_starts: HashMap::new(),
+            stopre_lines: Vec::new(),
         };
         let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
         // Jumps, resolved once every label is known.
@@ -857,6 +900,9 @@ impl Structure {
             let block = &block;
             for statement in &block.statements {
                 match &statement.kind {
+                    StatementKind::Command(name) if name.is(source, "STOPRE") => {
+                        structure.stopre_lines.push(line)
+                    }
                     StatementKind::Goto(goto) => jumps.push((line, goto.clone())),
                     StatementKind::Case(case) => {
                         let gotos = case.branches.iter().map(|(_, g)| g).chain(&case.default);
