@@ -16,13 +16,13 @@
 //!   knows nothing of syntax.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
+//! - [`lint`]: the rules of `check`, one file each, and suppression comments.
 //! - [`cli`]: the command line; the only place that prints.
-//!
-//! The lint layer (rules beyond syntax) is still to come (see the README).
 
 pub mod cli;
 pub mod diagnostic;
 pub mod emit;
+pub mod lint;
 pub mod rotation;
 pub mod semantic;
 pub mod span;

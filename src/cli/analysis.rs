@@ -1,11 +1,11 @@
-//! What `rewrite` and `eval` share: measured values from the user, HEAD_DEF,
-//! the walk, and the rewrite of the CYCLE600 calls.
-
-use std::path::{Path, PathBuf};
+//! What `check`, `rewrite` and `eval` share: measured values from the user,
+//! HEAD_DEF, settings from sinuprep.toml, the walk, and the rewrite.
 
 use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
 
-use crate::cli::args::{AnalysisArgs, MessageFormat};
+use crate::cli::args::{AnalysisArgs, InputArgs, MessageFormat};
+use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::SourceFile;
 use crate::cli::render::{human, short, FileReport};
@@ -13,10 +13,67 @@ use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::cycle600::{rewrite, Options, Rewrite};
 use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, variable_key};
+use crate::semantic::value::Value;
 use crate::semantic::{analyze, Analysis, Heads, Supplied};
 use crate::span::Span;
 use crate::syntax::parse;
 use crate::syntax::tree::{LineKind, StatementKind};
+
+/// Measured values and accessory definitions for one program, from the
+/// command line first and sinuprep.toml second.
+pub struct Inputs {
+    pub supplied: Supplied,
+    pub heads: Option<Heads>,
+}
+
+impl Inputs {
+    pub fn load(args: &InputArgs, config: &Config, program: &Path) -> Result<Inputs, CliError> {
+        let mut supplied = Supplied::default();
+        let values = args.values.clone().or_else(|| config.values.as_ref().map(|v| config.resolve(v)));
+        if let Some(path) = &values {
+            let bytes = std::fs::read(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+            let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values { path: path.clone(), line, why })?;
+            for (key, value, line) in assignments {
+                supplied.insert(key, value, format!("{}:{line}", path.display()));
+            }
+        }
+        for text in &args.set {
+            let assignments = assignments(text.as_bytes()).map_err(|(_, why)| CliError::Set { text: text.clone(), why })?;
+            if assignments.len() != 1 {
+                return Err(CliError::Set { text: text.clone(), why: "give exactly one assignment".into() });
+            }
+            for (key, value, _) in assignments {
+                supplied.insert(key, value, format!("--set {text}"));
+            }
+        }
+        let heads_path = args.heads.clone().or_else(|| config.heads.as_ref().map(|h| config.resolve(h))).or_else(|| beside(program));
+        let heads = match heads_path {
+            Some(path) => {
+                let bytes = std::fs::read(&path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+                Some(Heads::read(path.display().to_string(), &bytes))
+            }
+            None => None,
+        };
+        Ok(Inputs { supplied, heads })
+    }
+}
+
+/// The rewrite's options: the command line, then sinuprep.toml, then defaults.
+pub fn options(args: &AnalysisArgs, config: &Config) -> Options {
+    let runtime = if args.emit_runtime || args.runtime_r.is_some() {
+        Some(args.runtime_r)
+    } else if config.emit_runtime == Some(true) || config.runtime_r.is_some() {
+        Some(config.runtime_r)
+    } else {
+        None
+    };
+    Options {
+        form: args.emit.or(config.emit).unwrap_or_default(),
+        precision: usize::from(args.precision.or(config.precision).unwrap_or(6)),
+        runtime,
+        ..Options::default()
+    }
+}
 
 pub struct Analyzed {
     pub analysis: Analysis,
@@ -27,18 +84,12 @@ pub struct Analyzed {
 
 impl Analyzed {
     pub fn has_errors(&self) -> bool {
-        self.diagnostics
-            .iter()
-            .any(|d| d.severity == Severity::Error)
+        self.diagnostics.iter().any(|d| d.severity == Severity::Error)
     }
 
     /// Prints the diagnostics on stderr, in the format asked for.
     pub fn report(&self, file: &SourceFile, format: MessageFormat) {
-        let report = FileReport {
-            name: &file.name,
-            source: &file.bytes,
-            diagnostics: &self.diagnostics,
-        };
+        let report = FileReport { name: &file.name, source: &file.bytes, diagnostics: &self.diagnostics };
         let mut text = String::new();
         match format {
             MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
@@ -48,166 +99,67 @@ impl Analyzed {
     }
 }
 
-pub fn run(
-    file: &SourceFile,
-    path: &Path,
-    args: &AnalysisArgs,
-    options: &Options,
-) -> Result<Analyzed, CliError> {
-    let supplied = supplied(args)?;
-    let heads = heads(path, args.heads.as_deref())?;
+pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
     // A program that never names CYCLE600 has nothing to rewrite: it needs
     // only the streaming syntax pass, not the whole tree in memory.
-    if !mentions_cycle600(&file.bytes) {
+    if !crate::semantic::mentions_cycle600(&file.bytes) {
         let diagnostics = crate::syntax::diagnostics(&file.bytes);
-        return Ok(Analyzed {
-            analysis: Analysis::default(),
-            rewrite: Rewrite::default(),
-            diagnostics,
-        });
+        return Analyzed { analysis: Analysis::default(), rewrite: Rewrite::default(), diagnostics };
     }
-    let analysis = analyze(&file.bytes, &supplied, heads.as_ref());
+    let analysis = analyze(&file.bytes, &inputs.supplied, inputs.heads.as_ref());
     let rewrite = rewrite(&file.bytes, &analysis, options);
     let mut diagnostics = crate::syntax::diagnostics(&file.bytes);
-    if heads.is_none() && !analysis.calls.is_empty() {
+    if inputs.heads.is_none() && !analysis.calls.is_empty() {
         diagnostics.push(
-            Diagnostic::new(
-                "C610",
-                "head-def-missing",
-                Severity::Warning,
-                Span::new(0, 0),
-            )
-            .message("head names were not checked: no HEAD_DEF.SPF next to the program")
-            .label("accessories unchecked")
-            .help("give the accessory definitions with --heads HEAD_DEF.SPF"),
+            Diagnostic::new("C610", "head-def-missing", Severity::Warning, Span::new(0, 0))
+                .message("head names were not checked: no HEAD_DEF.SPF next to the program")
+                .label("accessories unchecked")
+                .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml"),
         );
     }
     diagnostics.extend(rewrite.diagnostics.iter().cloned());
     diagnostics.sort_by_key(|d| (d.span.start, d.code));
-    Ok(Analyzed {
-        analysis,
-        rewrite,
-        diagnostics,
-    })
-}
-
-/// Whether `CYCLE600` (any case) occurs anywhere in the bytes.
-fn mentions_cycle600(bytes: &[u8]) -> bool {
-    memchr::memmem::find_iter(bytes, b"600")
-        .any(|at| at >= 5 && bytes[at - 5..at].eq_ignore_ascii_case(b"CYCLE"))
-}
-
-/// `--set` values and the `--values` file, as keys of the walk.
-fn supplied(args: &AnalysisArgs) -> Result<Supplied, CliError> {
-    let mut supplied = Supplied::default();
-    for text in &args.set {
-        let assignments = assignments(text.as_bytes()).map_err(|(_, why)| CliError::Set {
-            text: text.clone(),
-            why,
-        })?;
-        if assignments.len() != 1 {
-            return Err(CliError::Set {
-                text: text.clone(),
-                why: "give exactly one assignment".into(),
-            });
-        }
-        for (key, value, _) in assignments {
-            supplied.insert(key, value, format!("--set {text}"));
-        }
-    }
-    if let Some(path) = &args.values {
-        let bytes = std::fs::read(path).map_err(|source| CliError::Read {
-            path: path.clone(),
-            source,
-        })?;
-        let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values {
-            path: path.clone(),
-            line,
-            why,
-        })?;
-        for (key, value, line) in assignments {
-            supplied.insert(key, value, format!("{}:{line}", path.display()));
-        }
-    }
-    Ok(supplied)
+    Analyzed { analysis, rewrite, diagnostics }
 }
 
 /// A supplied value: its variable's key, the value, the line it was given on.
-type Assignment = (String, crate::semantic::value::Value, usize);
+type Assignment = (String, Value, usize);
 
 /// Constant assignments read by the project's own parser.
 fn assignments(bytes: &[u8]) -> Result<Vec<Assignment>, (usize, String)> {
     let program = parse(bytes);
     if let Some(error) = program.diagnostics.first() {
-        let line = program
-            .lines
-            .iter()
-            .position(|l| l.raw.full().end > error.span.start)
-            .unwrap_or(0)
-            + 1;
+        let line = program.lines.iter().position(|l| l.raw.full().end > error.span.start).unwrap_or(0) + 1;
         return Err((line, error.message.clone()));
     }
     let env = Env::default();
     let empty = Supplied::default();
     let mut out = Vec::new();
     for (index, line) in program.lines.iter().enumerate() {
-        let LineKind::Block(block) = &line.kind else {
-            continue;
-        };
+        let LineKind::Block(block) = &line.kind else { continue };
         for statement in &block.statements {
             let StatementKind::Assign(assign) = &statement.kind else {
-                return Err((
-                    index + 1,
-                    format!(
-                        "`{}` is not an assignment",
-                        String::from_utf8_lossy(statement.span.of(bytes))
-                    ),
-                ));
+                return Err((index + 1, format!("`{}` is not an assignment", String::from_utf8_lossy(statement.span.of(bytes)))));
             };
             let scope = env.scope(&empty, index + 1);
-            let key = variable_key(bytes, &assign.target, &scope)
-                .map_err(|why| (index + 1, why.to_string()))?;
-            let value = evaluate(bytes, &assign.value, &scope)
-                .map_err(|why| (index + 1, format!("the value must be a constant: {why}")))?;
+            let key = variable_key(bytes, &assign.target, &scope).map_err(|why| (index + 1, why.to_string()))?;
+            let value = evaluate(bytes, &assign.value, &scope).map_err(|why| (index + 1, format!("the value must be a constant: {why}")))?;
             out.push((key, value, index + 1));
         }
     }
     Ok(out)
 }
 
-/// `--heads FILE`, or a HEAD_DEF.SPF (any case) beside the program.
-fn heads(program: &Path, explicit: Option<&Path>) -> Result<Option<Heads>, CliError> {
-    let path = match explicit {
-        Some(path) => Some(path.to_path_buf()),
-        None => beside(program),
-    };
-    let Some(path) = path else { return Ok(None) };
-    let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
-        path: path.clone(),
-        source,
-    })?;
-    Ok(Some(Heads::read(path.display().to_string(), &bytes)))
-}
-
+/// A HEAD_DEF.SPF (any case) beside the program (in the current directory for stdin).
 fn beside(program: &Path) -> Option<PathBuf> {
     let dir = if program == Path::new("-") {
         PathBuf::from(".")
     } else {
-        program.parent().map(|p| {
-            if p.as_os_str().is_empty() {
-                PathBuf::from(".")
-            } else {
-                p.to_path_buf()
-            }
-        })?
+        program.parent().map(|p| if p.as_os_str().is_empty() { PathBuf::from(".") } else { p.to_path_buf() })?
     };
     std::fs::read_dir(dir)
         .ok()?
         .filter_map(|e| e.ok())
         .map(|e| e.path())
-        .find(|p| {
-            p.file_name()
-                .and_then(|n| n.to_str())
-                .is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF"))
-        })
+        .find(|p| p.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF")))
 }

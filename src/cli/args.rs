@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use crate::cli::config::SeverityName;
 use crate::emit::cycle600::Form;
 use crate::rotation::Sequence;
 
@@ -28,6 +29,8 @@ pub enum Command {
     /// Show how each CYCLE600 call evaluates: parameters, provenance, matrix,
     /// angles, results and the code a rewrite emits.
     Eval(EvalArgs),
+    /// Print a rule's documentation (`sinuprep rule N001`), or list every rule (`--all`).
+    Rule(RuleArgs),
     /// Convert three rotation angles from one sequence to another.
     #[command(allow_negative_numbers = true)]
     Convert(ConvertArgs),
@@ -41,6 +44,50 @@ pub struct CheckArgs {
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
+    /// Report only these rules (codes or prefixes, comma-separated: `N,C6,S`).
+    #[arg(long, value_delimiter = ',', value_name = "CODES")]
+    pub select: Vec<String>,
+    /// Do not report these rules (codes or prefixes, comma-separated).
+    #[arg(long, value_delimiter = ',', value_name = "CODES")]
+    pub ignore: Vec<String>,
+    /// Report only findings of this severity or higher.
+    #[arg(long, value_enum, value_name = "SEVERITY")]
+    pub severity_min: Option<SeverityName>,
+    /// Exit 1 on warnings too.
+    #[arg(long)]
+    pub deny_warnings: bool,
+    /// The name of the program read from stdin, for paths in reports, HEAD_DEF and sinuprep.toml lookup.
+    #[arg(long, value_name = "NAME")]
+    pub stdin_filename: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: InputArgs,
+}
+
+/// What every command that evaluates programs reads beside them.
+#[derive(Debug, clap::Args)]
+pub struct InputArgs {
+    /// A measured value, as an NC assignment: `--set R10=0.215`, `--set _OVR[16]=-0.113` (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<String>,
+    /// A file of measured values, one NC assignment per line (`R10=0.215`, `;` comments).
+    #[arg(long, value_name = "FILE")]
+    pub values: Option<PathBuf>,
+    /// The HEAD_DEF subprogram defining the accessories (default: HEAD_DEF.SPF next to the program, any case).
+    #[arg(long, value_name = "FILE")]
+    pub heads: Option<PathBuf>,
+    /// The settings file (default: the nearest sinuprep.toml from the program's directory upward).
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct RuleArgs {
+    /// The rule's code, as `N001` or `C605`.
+    #[arg(required_unless_present = "all")]
+    pub code: Option<String>,
+    /// List every rule: code, name, severity.
+    #[arg(long, conflicts_with = "code")]
+    pub all: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -51,26 +98,23 @@ pub enum Format {
     Short,
     /// One JSON document (schema in the README).
     Json,
+    /// GitHub Actions workflow commands (`::error file=...::message`).
+    Github,
+    /// SARIF 2.1.0, for code-scanning tools.
+    Sarif,
 }
 
 /// What the offline evaluation needs beyond the program.
 #[derive(Debug, clap::Args)]
 pub struct AnalysisArgs {
-    /// A measured value, as an NC assignment: `--set R10=0.215`, `--set _OVR[16]=-0.113` (repeatable).
-    #[arg(long = "set", value_name = "NAME=VALUE")]
-    pub set: Vec<String>,
-    /// A file of measured values, one NC assignment per line (`R10=0.215`, `;` comments).
-    #[arg(long, value_name = "FILE")]
-    pub values: Option<PathBuf>,
-    /// The HEAD_DEF subprogram defining the accessories (default: HEAD_DEF.SPF next to the program, any case).
-    #[arg(long, value_name = "FILE")]
-    pub heads: Option<PathBuf>,
-    /// How a rotating CYCLE600 (_SW_REC=0) is written.
-    #[arg(long, value_enum, default_value_t = Form::Cycle800)]
-    pub emit: Form,
-    /// Decimals of emitted numbers (trailing zeros trimmed, never an exponent).
-    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(0..=15))]
-    pub precision: u8,
+    #[command(flatten)]
+    pub input: InputArgs,
+    /// How a rotating CYCLE600 (_SW_REC=0) is written [default: cycle800].
+    #[arg(long, value_enum)]
+    pub emit: Option<Form>,
+    /// Decimals of emitted numbers, trailing zeros trimmed, never an exponent [default: 6].
+    #[arg(long, value_parser = clap::value_parser!(u8).range(0..=15))]
+    pub precision: Option<u8>,
     /// Compute calls whose angles (or translations) are measured at run time on the
     /// control, in native arithmetic, instead of refusing them.
     #[arg(long)]
@@ -82,13 +126,6 @@ pub struct AnalysisArgs {
     /// How diagnostics are printed on stderr.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
-}
-
-impl AnalysisArgs {
-    /// `--emit-runtime`, with `--runtime-r N` implying it.
-    pub fn runtime(&self) -> Option<Option<u32>> {
-        (self.emit_runtime || self.runtime_r.is_some()).then_some(self.runtime_r)
-    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -22,6 +22,14 @@ pub enum CliError {
     )]
     IsDirectory { path: PathBuf },
 
+    #[error("{path}: {why}")]
+    #[diagnostic(code(sinuprep::config), help("the keys are select, ignore, severity-min, deny-warnings, emit, precision, heads, values, emit-runtime, runtime-r"))]
+    Config { path: PathBuf, why: String },
+
+    #[error("no rule has the code `{0}`")]
+    #[diagnostic(code(sinuprep::rule), help("`sinuprep rule --all` lists every rule"))]
+    UnknownRule(String),
+
     #[error("`--set {text}`: {why}")]
     #[diagnostic(code(sinuprep::set), help("write one NC assignment with a constant value, as `--set R10=0.215` or `--set _OVR[16]=-0.113`"))]
     Set { text: String, why: String },

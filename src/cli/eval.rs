@@ -1,7 +1,8 @@
 //! `sinuprep eval`: for each CYCLE600 call, what it evaluates to and why, so
 //! a user can check the numbers before the program goes to the control.
 
-use crate::cli::analysis;
+use crate::cli::analysis::{self, Inputs};
+use crate::cli::config::Config;
 use crate::cli::args::EvalArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
@@ -15,13 +16,10 @@ use crate::span::LineIndex;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
-    let options = Options {
-        form: args.analysis.emit,
-        precision: usize::from(args.analysis.precision),
-        runtime: args.analysis.runtime(),
-        ..Options::default()
-    };
-    let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;
+    let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
+    let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
+    let options = analysis::options(&args.analysis, &config);
+    let analyzed = analysis::run(&file, &inputs, &options);
     let index = LineIndex::new(&file.bytes);
     let text = if args.json {
         let calls: Vec<serde_json::Value> = analyzed

@@ -3,6 +3,7 @@
 mod analysis;
 pub mod args;
 mod check;
+pub mod config;
 mod convert;
 pub mod error;
 mod eval;
@@ -10,6 +11,7 @@ mod input;
 mod output;
 pub mod render;
 mod rewrite;
+mod rule;
 
 pub use args::Args;
 pub use error::CliError;
@@ -37,6 +39,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Check(check) => check::run(check),
         args::Command::Rewrite(rewrite) => rewrite::run(rewrite),
         args::Command::Eval(eval) => eval::run(eval),
+        args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),
     }
 }

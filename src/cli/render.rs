@@ -210,3 +210,97 @@ pub fn json(reports: &[FileReport]) -> String {
     text.push('\n');
     text
 }
+
+/// GitHub Actions workflow commands: one `::error file=...::message` line
+/// each, which the runner shows as annotations on the changed files.
+pub fn github(report: &FileReport, out: &mut String) {
+    let index = LineIndex::new(report.source);
+    for d in report.diagnostics {
+        let start = index.position(d.span.start);
+        let end = index.position(d.span.end);
+        let level = match d.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "notice",
+        };
+        out.push_str(&format!(
+            "::{level} file={},line={},col={},endLine={},endColumn={},title={}::{}\n",
+            escape_property(report.name),
+            start.row,
+            start.column,
+            end.row,
+            end.column,
+            escape_property(&format!("{} {}", d.code, d.name)),
+            escape_data(&d.message)
+        ));
+    }
+}
+
+/// Workflow-command data: `%`, CR and LF are percent-encoded.
+fn escape_data(text: &str) -> String {
+    text.replace('%', "%25").replace('\r', "%0D").replace('\n', "%0A")
+}
+
+/// Workflow-command properties: also `:` and `,`.
+fn escape_property(text: &str) -> String {
+    escape_data(text).replace(':', "%3A").replace(',', "%2C")
+}
+
+/// SARIF 2.1.0: one run, the rules that were found, one result each.
+pub fn sarif(reports: &[FileReport]) -> String {
+    let mut codes: Vec<&str> = reports.iter().flat_map(|r| r.diagnostics.iter().map(|d| d.code)).collect();
+    codes.sort_unstable();
+    codes.dedup();
+    let rules: Vec<serde_json::Value> = codes
+        .iter()
+        .filter_map(|code| crate::lint::rule(code))
+        .map(|info| {
+            let summary = info.docs.lines().nth(1).unwrap_or_default();
+            serde_json::json!({
+                "id": info.code,
+                "name": info.name,
+                "shortDescription": { "text": summary },
+                "fullDescription": { "text": info.docs },
+                "defaultConfiguration": { "level": level(info.severity) },
+            })
+        })
+        .collect();
+    let mut results = Vec::new();
+    for report in reports {
+        let index = LineIndex::new(report.source);
+        for d in report.diagnostics {
+            let (start, end) = (index.position(d.span.start), index.position(d.span.end));
+            results.push(serde_json::json!({
+                "ruleId": d.code,
+                "level": level(d.severity),
+                "message": { "text": match &d.help { Some(help) => format!("{} ({help})", d.message), None => d.message.clone() } },
+                "locations": [{
+                    "physicalLocation": {
+                        "artifactLocation": { "uri": report.name.replace('\\', "/") },
+                        "region": { "startLine": start.row, "startColumn": start.column, "endLine": end.row, "endColumn": end.column, "byteOffset": d.span.start, "byteLength": d.span.len() }
+                    }
+                }],
+            }));
+        }
+    }
+    let document = serde_json::json!({
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [{
+            "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
+            "columnKind": "unicodeCodePoints",
+            "results": results,
+        }],
+    });
+    let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
+    text.push('\n');
+    text
+}
+
+fn level(severity: Severity) -> &'static str {
+    match severity {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Info => "note",
+    }
+}

@@ -1,7 +1,8 @@
 //! `sinuprep rewrite`: CYCLE600 calls become native code; every other byte
 //! stays. A call that cannot be evaluated stays as it was, with a diagnostic.
 
-use crate::cli::analysis;
+use crate::cli::analysis::{self, Inputs};
+use crate::cli::config::Config;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
@@ -12,14 +13,10 @@ use crate::emit::{apply, diff};
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
-    let options = Options {
-        form: args.analysis.emit,
-        precision: usize::from(args.analysis.precision),
-        keep_original: !args.no_original,
-        inline_results: args.inline_results,
-        runtime: args.analysis.runtime(),
-    };
-    let analyzed = analysis::run(&file, &args.path, &args.analysis, &options)?;
+    let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
+    let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
+    let options = Options { keep_original: !args.no_original, inline_results: args.inline_results, ..analysis::options(&args.analysis, &config) };
+    let analyzed = analysis::run(&file, &inputs, &options);
     analyzed.report(&file, args.analysis.message_format);
 
     let edits = &analyzed.rewrite.edits;

@@ -355,7 +355,7 @@ fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
                 .collect();
             let help = match measured.first() {
                 Some(name) => format!(
-                    "the value is measured on the machine: give it with `--set {name}=<value>` or in a `--values` file (one `{name}=<value>` per line)"
+                    "the value is measured on the machine: give it with `--set {name}=<value>` or in a `--values` file (one `{name}=<value>` per line), or let the control compute the conversion with `rewrite --emit-runtime`"
                 ),
                 None => {
                     let first = &vars[0].0;

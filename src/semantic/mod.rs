@@ -15,3 +15,10 @@ pub mod walk;
 pub use env::Supplied;
 pub use head_def::Heads;
 pub use walk::{analyze, Analysis, CallSite};
+
+/// Whether `CYCLE600` (any case) occurs anywhere in the bytes: a program
+/// without it needs no walk.
+pub fn mentions_cycle600(bytes: &[u8]) -> bool {
+    memchr::memmem::find_iter(bytes, b"600")
+        .any(|at| at >= 5 && bytes[at - 5..at].eq_ignore_ascii_case(b"CYCLE"))
+}

@@ -374,32 +374,29 @@ pub enum ProgramKind {
     Subprogram,
 }
 
-impl Program<'_> {
-    /// `.SPF`, a `%_N_…_SPF` header or a `PROC` line make a subprogram.
-    pub fn kind(&self, file_name: Option<&str>) -> ProgramKind {
-        if let Some(name) = file_name {
-            let upper = name.to_ascii_uppercase();
-            if upper.ends_with(".SPF") {
-                return ProgramKind::Subprogram;
-            }
-            if upper.ends_with(".MPF") {
-                return ProgramKind::Main;
-            }
+/// What kind of program a file holds: by its extension (`.SPF`, `.MPF`), else
+/// by a `%_N_..._SPF` header or a PROC line among its first blocks.
+pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
+    if let Some(name) = file_name {
+        let upper = name.to_ascii_uppercase();
+        if upper.ends_with(".SPF") {
+            return ProgramKind::Subprogram;
         }
-        let is_sub = self.lines.iter().any(|line| match &line.kind {
-            LineKind::Header { name } => {
-                name.of(self.source).to_ascii_uppercase().ends_with(b"_SPF")
-            }
-            LineKind::Block(block) => block
-                .statements
-                .iter()
-                .any(|s| matches!(s.kind, StatementKind::Proc(_))),
-            LineKind::Path { .. } => false,
-        });
-        if is_sub {
-            ProgramKind::Subprogram
-        } else {
-            ProgramKind::Main
+        if upper.ends_with(".MPF") {
+            return ProgramKind::Main;
         }
     }
+    let mut parser = LineParser::default();
+    for raw in raw_lines(source).take(200) {
+        let (line, _) = parser.parse_line(source, raw);
+        let is_sub = match &line.kind {
+            LineKind::Header { name } => name.of(source).to_ascii_uppercase().ends_with(b"_SPF"),
+            LineKind::Block(block) => block.statements.iter().any(|s| matches!(s.kind, StatementKind::Proc(_))),
+            LineKind::Path { .. } => false,
+        };
+        if is_sub {
+            return ProgramKind::Subprogram;
+        }
+    }
+    ProgramKind::Main
 }

@@ -1,0 +1,104 @@
+//! `sinuprep.toml`: the project's settings, found in the file's directory or
+//! its parents (or given with `--config`). Command-line options win over it.
+//! Unknown keys are errors that name the key.
+
+use std::path::{Path, PathBuf};
+
+use crate::cli::error::CliError;
+use crate::diagnostic::Severity;
+use crate::emit::cycle600::Form;
+
+pub const FILE_NAME: &str = "sinuprep.toml";
+
+#[derive(Debug, Default, Clone, serde::Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct Config {
+    /// Rule codes or prefixes to report (all when absent).
+    pub select: Option<Vec<String>>,
+    /// Rule codes or prefixes not to report.
+    pub ignore: Option<Vec<String>>,
+    pub severity_min: Option<SeverityName>,
+    pub deny_warnings: Option<bool>,
+    /// Default `--emit` form of `rewrite`.
+    pub emit: Option<Form>,
+    pub precision: Option<u8>,
+    /// HEAD_DEF path, relative to the configuration file.
+    pub heads: Option<PathBuf>,
+    /// Measured values file, relative to the configuration file.
+    pub values: Option<PathBuf>,
+    pub emit_runtime: Option<bool>,
+    pub runtime_r: Option<u32>,
+    /// Where the file was read from (not a key).
+    #[serde(skip)]
+    pub path: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum SeverityName {
+    Info,
+    Warning,
+    Error,
+}
+
+impl From<SeverityName> for Severity {
+    fn from(name: SeverityName) -> Severity {
+        match name {
+            SeverityName::Info => Severity::Info,
+            SeverityName::Warning => Severity::Warning,
+            SeverityName::Error => Severity::Error,
+        }
+    }
+}
+
+impl Config {
+    /// `--config FILE`, or the nearest `sinuprep.toml` from `start` upward.
+    pub fn find(explicit: Option<&Path>, start: &Path) -> Result<Config, CliError> {
+        let path = match explicit {
+            Some(path) => Some(path.to_path_buf()),
+            None => nearest(start),
+        };
+        match path {
+            Some(path) => Config::read(&path),
+            None => Ok(Config::default()),
+        }
+    }
+
+    pub fn read(path: &Path) -> Result<Config, CliError> {
+        let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
+        let mut config: Config = toml::from_str(&text).map_err(|error| CliError::Config { path: path.to_path_buf(), why: error.message().to_string() })?;
+        config.path = Some(path.to_path_buf());
+        Ok(config)
+    }
+
+    /// A path written in the file, taken relative to the file's directory.
+    pub fn resolve(&self, path: &Path) -> PathBuf {
+        match self.path.as_ref().and_then(|p| p.parent()) {
+            Some(dir) if path.is_relative() => dir.join(path),
+            _ => path.to_path_buf(),
+        }
+    }
+}
+
+fn nearest(start: &Path) -> Option<PathBuf> {
+    let start = if start.is_dir() { start.to_path_buf() } else { start.parent().map(Path::to_path_buf).unwrap_or_default() };
+    let absolute = std::fs::canonicalize(if start.as_os_str().is_empty() { Path::new(".") } else { &start }).ok()?;
+    absolute.ancestors().map(|dir| dir.join(FILE_NAME)).find(|candidate| candidate.is_file())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_key_reads_and_unknown_keys_are_named() {
+        let config: Config = toml::from_str(
+            "select = [\"N\", \"C6\"]\nignore = [\"N014\"]\nseverity-min = \"warning\"\ndeny-warnings = true\nemit = \"frames\"\nprecision = 4\nheads = \"HEAD_DEF.SPF\"\nvalues = \"probe.values\"\nemit-runtime = true\nruntime-r = 100\n",
+        )
+        .expect("valid");
+        assert_eq!(config.emit, Some(Form::Frames));
+        assert_eq!(config.severity_min, Some(SeverityName::Warning));
+        let error = toml::from_str::<Config>("selct = [\"N\"]").expect_err("unknown key");
+        assert!(error.message().contains("selct"), "{}", error.message());
+    }
+}

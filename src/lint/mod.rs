@@ -1,0 +1,131 @@
+//! The linter: syntax errors, CYCLE600 findings from the walk, and the
+//! general NC rules, each rule in its own file under `rules/`.
+//!
+//! One streaming pass parses each line once and hands it to every selected
+//! rule; the CYCLE600 walk runs only for programs that mention CYCLE600. It
+//! reports diagnostics; printing them is the CLI's job.
+
+pub mod rule;
+pub mod rules;
+pub mod suppression;
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{FileContext, RuleInfo};
+use crate::lint::suppression::Suppressions;
+use crate::semantic::{analyze, Heads, Supplied};
+use crate::span::{LineIndex, Span};
+use crate::syntax::lines::raw_lines;
+use crate::syntax::tree::LineKind;
+use crate::syntax::{LineParser, ProgramKind};
+
+/// Which findings to report.
+#[derive(Clone, Debug)]
+pub struct Selection {
+    /// Codes or code prefixes (`N`, `C6`, `N005`); empty selects all.
+    pub select: Vec<String>,
+    pub ignore: Vec<String>,
+    pub severity_min: Severity,
+}
+
+impl Default for Selection {
+    fn default() -> Self {
+        Self {
+            select: Vec::new(),
+            ignore: Vec::new(),
+            severity_min: Severity::Info,
+        }
+    }
+}
+
+impl Selection {
+    pub fn enables(&self, code: &str) -> bool {
+        let matches = |list: &[String]| list.iter().any(|p| code.starts_with(p.as_str()));
+        (self.select.is_empty() || matches(&self.select)) && !matches(&self.ignore)
+    }
+}
+
+/// The documentation of `code`, if it is one.
+pub fn rule(code: &str) -> Option<&'static RuleInfo> {
+    rules::all()
+        .into_iter()
+        .map(|r| r.info)
+        .find(|info| info.code.eq_ignore_ascii_case(code))
+}
+
+/// Everything `check` reports for one program, in source order.
+pub fn check(
+    source: &[u8],
+    name: &str,
+    kind: ProgramKind,
+    selection: &Selection,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+) -> Vec<Diagnostic> {
+    let file = FileContext { source, name, kind };
+    let mut checkers: Vec<_> = rules::all()
+        .into_iter()
+        .filter(|r| selection.enables(r.info.code))
+        .filter_map(|r| r.checker.map(|make| make()))
+        .collect();
+    let mut found = Vec::new();
+    let mut suppressions = Suppressions::default();
+    let mut parser = LineParser::default();
+    for (row, raw) in raw_lines(source).enumerate() {
+        let (line, syntax) = parser.parse_line(source, raw);
+        found.extend(syntax);
+        if let LineKind::Block(block) = &line.kind {
+            if let Some(comment) = block.comment {
+                suppressions.read(source, row, comment);
+            }
+        }
+        for checker in &mut checkers {
+            checker.line(&file, row, &line, &mut found);
+        }
+    }
+    for checker in &mut checkers {
+        checker.finish(&file, &mut found);
+    }
+    found.extend(cycle600_findings(source, supplied, heads));
+
+    let index = LineIndex::new(source);
+    let mut kept: Vec<Diagnostic> = found
+        .into_iter()
+        .filter(|d| selection.enables(d.code) && d.severity >= selection.severity_min)
+        .filter(|d| !suppressions.covers(d, index.position(d.span.start).row - 1))
+        .collect();
+    if selection.enables("N099") && Severity::Info >= selection.severity_min {
+        kept.extend(suppressions.unused());
+    }
+    kept.sort_by_key(|d| (d.span.start, d.code));
+    kept
+}
+
+/// The CYCLE600 walk's findings, as `check` reports them: an argument only
+/// the machine knows is information here (the rewrite can compute it on the
+/// control), not an error.
+fn cycle600_findings(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
+    if !crate::semantic::mentions_cycle600(source) {
+        return Vec::new();
+    }
+    let analysis = analyze(source, supplied, heads);
+    let mut out: Vec<Diagnostic> = analysis
+        .calls
+        .iter()
+        .flat_map(|site| site.diagnostics.iter().cloned())
+        .collect();
+    for diagnostic in &mut out {
+        if diagnostic.code == "C605" {
+            diagnostic.severity = Severity::Info;
+        }
+    }
+    if heads.is_none() && !analysis.calls.is_empty() {
+        out.push(
+            rules::head_def_missing::RULE
+                .at(Span::new(0, 0))
+                .message("head names were not checked: no HEAD_DEF.SPF next to the program")
+                .label("accessories unchecked")
+                .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml"),
+        );
+    }
+    out
+}

@@ -1,0 +1,56 @@
+//! N014 `block-numbers-backwards`: Finds a block number lower than the one before it.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::syntax::tree::{Line, LineKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N014",
+    name: "block-numbers-backwards",
+    severity: Severity::Info,
+    docs: r#"## What it does
+Finds a block number lower than the one before it.
+
+## Why it matters
+Block numbers are not executed in order, but a jump to a block number searches in a direction,
+and readers expect them to grow: a number going backwards often marks blocks pasted from
+elsewhere.
+
+## Example
+```
+N100 G0 X0
+N40 G1 X10
+```
+
+## Fix
+Renumber the blocks."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    previous: Option<u64>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        let Some(number) = block.number.as_ref().filter(|n| !n.main) else {
+            return;
+        };
+        let Ok(value) = String::from_utf8_lossy(number.digits.of(file.source)).parse::<u64>()
+        else {
+            return;
+        };
+        if let Some(previous) = self.previous.filter(|&p| value < p) {
+            out.push(
+                RULE.at(number.span)
+                    .message(format!("block number N{value} after N{previous}"))
+                    .label("goes backwards")
+                    .help("renumber the blocks in ascending order"),
+            );
+        }
+        self.previous = Some(value);
+    }
+}

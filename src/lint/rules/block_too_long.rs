@@ -1,0 +1,53 @@
+//! N008 `block-too-long`: Finds blocks longer than 512 characters (comment included).
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::span::Span;
+use crate::syntax::tree::Line;
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N008",
+    name: "block-too-long",
+    severity: Severity::Warning,
+    docs: r#"## What it does
+Finds blocks longer than 512 characters (comment included).
+
+## Why it matters
+512 characters is the block length commonly quoted for the control (not confirmed in a Siemens
+manual available here); a longer block is refused when the program is loaded or run.
+
+## Example
+A CAM post that writes a whole point list into one MSG or one expression.
+
+## Fix
+Split the block: several assignments on separate blocks, shorter comments."#,
+};
+
+#[derive(Default)]
+pub struct Checker;
+
+/// Characters, not bytes: a Latin-1 byte and a UTF-8 sequence are one each.
+const LIMIT: usize = 512;
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+        let content = line.raw.content;
+        if content.len() <= LIMIT {
+            return;
+        }
+        let characters = match std::str::from_utf8(content.of(file.source)) {
+            Ok(text) => text.chars().count(),
+            Err(_) => content.len(),
+        };
+        if characters > LIMIT {
+            out.push(
+                RULE.at(Span::new(content.start, content.end))
+                    .message(format!(
+                        "block of {characters} characters, longer than the control's {LIMIT}"
+                    ))
+                    .label("too long")
+                    .help("split it into several blocks"),
+            );
+        }
+    }
+}

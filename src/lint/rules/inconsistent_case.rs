@@ -1,0 +1,70 @@
+//! N015 `inconsistent-case`: Finds a variable written with other capitals than in its definition.
+
+use std::collections::HashMap;
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rules::support::*;
+use crate::syntax::tree::{Line, LineKind, StatementKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N015",
+    name: "inconsistent-case",
+    severity: Severity::Info,
+    docs: r#"## What it does
+Finds a variable written with other capitals than in its definition.
+
+## Why it matters
+The control ignores case, so the program works; but readers and search tools do not, and two
+spellings of one name often hide a typo that happens to match.
+
+## Example
+```
+DEF REAL lAYER_HEIGHT
+N10 LAYER_HEIGHT=2.5
+```
+
+## Fix
+Write the name as it is defined."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    spelling: HashMap<String, String>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        for statement in &block.statements {
+            if let StatementKind::Def(def) = &statement.kind {
+                for d in &def.variables {
+                    let text = String::from_utf8_lossy(d.name.span.of(file.source)).into_owned();
+                    self.spelling
+                        .entry(text.to_ascii_uppercase())
+                        .or_insert(text);
+                }
+                continue;
+            }
+            let mut used: Vec<&crate::syntax::tree::Variable> = reads(statement);
+            if let StatementKind::Assign(assign) = &statement.kind {
+                used.push(&assign.target);
+            }
+            for variable in used {
+                let text = String::from_utf8_lossy(variable.name.span.of(file.source));
+                if let Some(defined) = self.spelling.get(&text.to_ascii_uppercase()) {
+                    if *defined != text {
+                        out.push(
+                            RULE.at(variable.name.span)
+                                .message(format!("`{text}` is defined as `{defined}`"))
+                                .label("other capitals")
+                                .help(format!("write `{defined}`")),
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

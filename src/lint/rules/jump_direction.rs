@@ -1,0 +1,77 @@
+//! N002 `jump-direction`: Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rules::support::*;
+use crate::span::Span;
+use crate::syntax::tree::{GotoKind, Line, LineKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N002",
+    name: "jump-direction",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
+
+## Why it matters
+GOTOF searches forward only and GOTOB backward only: the control does not find the label and
+stops with alarm 14080, although the label is right there.
+
+## Example
+```
+N10 START: R1=R1+1
+N20 GOTOF START    ; START is behind
+```
+
+## Fix
+Use GOTOB (or GOTO, which searches both ways), or move the label."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    labels: Vec<(String, usize)>,
+    jumps: Vec<(String, Span, usize, GotoKind)>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        self.labels.extend(
+            labels(file.source, block)
+                .into_iter()
+                .map(|(l, _)| (l, row)),
+        );
+        for goto in gotos(block) {
+            if let Some((name, span)) = target(file.source, goto) {
+                self.jumps.push((name, span, row, goto.kind));
+            }
+        }
+    }
+
+    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
+        for (name, span, row, kind) in &self.jumps {
+            let rows: Vec<usize> = self
+                .labels
+                .iter()
+                .filter(|(l, _)| l == name)
+                .map(|(_, r)| *r)
+                .collect();
+            let (wrong, right, keyword) = match kind {
+                GotoKind::Forward => ("before", rows.iter().any(|r| r > row), "GOTOB"),
+                GotoKind::Backward => ("after", rows.iter().any(|r| r <= row), "GOTOF"),
+                _ => continue,
+            };
+            if rows.is_empty() || right {
+                continue;
+            }
+            out.push(
+                RULE.at(*span)
+                    .message(format!("`{name}` stands only {wrong} this jump, so the search in its direction cannot find it"))
+                    .label(format!("only {wrong} the jump"))
+                    .help(format!("jump with {keyword} or GOTO (which searches both ways), or move the label")),
+            );
+        }
+    }
+}

@@ -1,0 +1,79 @@
+//! N013 `main-run-read-without-stopre`: Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rules::support::*;
+use crate::syntax::tree::{Line, LineKind, StatementKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N013",
+    name: "main-run-read-without-stopre",
+    severity: Severity::Warning,
+    docs: r#"## What it does
+Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
+no STOPRE since the last motion or call.
+
+## Why it matters
+The control prepares blocks ahead of the main run. Reading a main-run value forces an implicit
+preprocessing stop, but relying on it hides the intent, and a value read in the wrong place (for
+instance a measured one before the measurement has run) is stale.
+
+## Example
+```
+N10 G1 Z=IC(2)
+N20 R1=$AA_IW[Z]
+```
+
+## Fix
+Write STOPRE in its own block before the read."#,
+};
+
+pub struct Checker {
+    stopped: bool,
+}
+
+impl Default for Checker {
+    fn default() -> Self {
+        Self { stopped: true }
+    }
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        // Synchronized actions read main-run values in the main run: that is their purpose.
+        if block
+            .statements
+            .iter()
+            .any(|s| matches!(s.kind, StatementKind::SyncCondition { .. }))
+        {
+            return;
+        }
+        for statement in &block.statements {
+            if matches!(&statement.kind, StatementKind::Command(n) if n.is(file.source, "STOPRE")) {
+                self.stopped = true;
+                continue;
+            }
+            for variable in reads(statement) {
+                let name = upper(file.source, variable.name.span);
+                if name.starts_with("$A") && !self.stopped {
+                    out.push(
+                        RULE.at(variable.span)
+                            .message(format!("`{name}` is a main-run value, read without STOPRE since the last motion"))
+                            .label("read during preprocessing")
+                            .help("write STOPRE in its own block before this one"),
+                    );
+                    self.stopped = true;
+                }
+            }
+            if matches!(
+                statement.kind,
+                StatementKind::Word(_) | StatementKind::Call(_) | StatementKind::Command(_)
+            ) {
+                self.stopped = false;
+            }
+        }
+    }
+}

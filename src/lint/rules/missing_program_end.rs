@@ -1,0 +1,80 @@
+//! N010 `missing-program-end`: Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::span::Span;
+use crate::syntax::tree::{Line, LineKind, StatementKind, WordValue};
+use crate::syntax::ProgramKind;
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N010",
+    name: "missing-program-end",
+    severity: Severity::Warning,
+    docs: r#"## What it does
+Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
+block is not M17, RET (or M30/M2).
+
+## Why it matters
+Without an end, a main program stops with an alarm at its last block instead of ending, and a
+subprogram does not return to its caller as intended.
+
+## Example
+```
+N10 G0 X0
+N20 G1 X100 F500
+```
+
+## Fix
+End a main program with `M30` (or `M2`), a subprogram with `M17` or `RET`."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    last: Option<(Span, bool, bool)>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        if block.statements.is_empty() {
+            return;
+        }
+        let m = |values: &[f64]| {
+            block.statements.iter().any(|s| match &s.kind {
+                StatementKind::Word(word) => {
+                    word.address.is(file.source, "M")
+                        && matches!(&word.value, WordValue::Number(n) if values.contains(&n.value))
+                }
+                _ => false,
+            })
+        };
+        let ret = block
+            .statements
+            .iter()
+            .any(|s| matches!(&s.kind, StatementKind::Command(n) if n.is(file.source, "RET")));
+        let span = Span::new(line.raw.content.start, line.raw.content.end);
+        self.last = Some((span, m(&[30.0, 2.0]), m(&[17.0]) || ret));
+    }
+
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let Some((span, ends_main, returns)) = self.last else {
+            return;
+        };
+        let (ok, what, fix) = match file.kind {
+            ProgramKind::Main => (ends_main, "main program", "end it with M30 (or M2)"),
+            ProgramKind::Subprogram => {
+                (returns || ends_main, "subprogram", "end it with M17 or RET")
+            }
+        };
+        if !ok {
+            out.push(
+                RULE.at(span)
+                    .message(format!("the {what} does not end with its end command"))
+                    .label("last block")
+                    .help(fix),
+            );
+        }
+    }
+}

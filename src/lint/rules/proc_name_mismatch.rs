@@ -1,0 +1,68 @@
+//! N017 `proc-name-mismatch`: Finds a PROC whose name differs from its file's name.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rules::support::*;
+use crate::syntax::tree::{Line, LineKind, StatementKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N017",
+    name: "proc-name-mismatch",
+    severity: Severity::Warning,
+    docs: r#"## What it does
+Finds a PROC whose name differs from its file's name.
+
+## Why it matters
+The control calls a subprogram by its file name; a PROC header with another name is refused or
+called under a name nobody reads in the source.
+
+## Example
+File `ALIGN.SPF`:
+```
+PROC ALIGN_HEAD(REAL _A) SAVE
+```
+
+## Fix
+Rename the PROC or the file so that both match."#,
+};
+
+#[derive(Default)]
+pub struct Checker;
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        for statement in &block.statements {
+            let StatementKind::Proc(proc) = &statement.kind else {
+                continue;
+            };
+            let Some(stem) = std::path::Path::new(file.name)
+                .file_stem()
+                .and_then(|s| s.to_str())
+            else {
+                continue;
+            };
+            if file.name == "<stdin>" {
+                continue;
+            }
+            let name = upper(file.source, proc.name.span);
+            let stem = stem.to_ascii_uppercase();
+            let stem = stem
+                .strip_prefix("_N_")
+                .map(|s| s.trim_end_matches("_SPF"))
+                .unwrap_or(&stem);
+            if name != stem {
+                out.push(
+                    RULE.at(proc.name.span)
+                        .message(format!("PROC `{name}` is in a file named `{stem}`"))
+                        .label("differs from the file name")
+                        .help(format!(
+                            "rename the PROC to `{stem}`, or the file to `{name}.SPF`"
+                        )),
+                );
+            }
+        }
+    }
+}

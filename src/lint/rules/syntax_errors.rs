@@ -1,0 +1,165 @@
+//! Syntax errors (`S...`), found by the parser (`syntax`); this file
+//! documents them for `sinuprep rule`.
+
+use crate::diagnostic::Severity;
+use crate::lint::rule::RuleInfo;
+
+pub static UNCLOSED_STRING: RuleInfo = RuleInfo {
+    code: "S001",
+    name: "unclosed-string",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a `"` without its closing `"` on the same line.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N20 MSG("probe done
+```
+
+## Fix
+Add the closing quote; strings cannot span lines."#,
+};
+
+pub static UNBALANCED_BRACKET: RuleInfo = RuleInfo {
+    code: "S002",
+    name: "unbalanced-bracket",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a `(` or `[` not closed on its line, or a `)`/`]` with nothing to close.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N120 CYCLE600 (0, "UFK600", 1, 57, 0, 0, 0, 30, 45, 60, 0,
+```
+
+## Fix
+Add the missing bracket; join a call broken over two lines."#,
+};
+
+pub static INVALID_NUMBER: RuleInfo = RuleInfo {
+    code: "S003",
+    name: "invalid-number",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a malformed number: two decimal points, `EX` without digits, a bad `'H..'`/`'B..'`, beyond REAL's range.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N10 X1.2.3
+```
+
+## Fix
+Write the number as the manual does: `1.5`, `1.5EX3`, `'H1F'`, `'B101'`."#,
+};
+
+pub static UNKNOWN_CHARACTER: RuleInfo = RuleInfo {
+    code: "S004",
+    name: "unknown-character",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a character with no meaning outside comments and strings.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N10 R1=2^3
+```
+
+## Fix
+Remove it (Sinumerik has no `^`: use POT), or put it in a comment."#,
+};
+
+pub static UNEXPECTED_TOKEN: RuleInfo = RuleInfo {
+    code: "S005",
+    name: "unexpected-token",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports something else than the statement needs at this place (the message says what).
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N30 DEF WORD X
+```
+
+## Fix
+Correct the statement."#,
+};
+
+pub static MISSING_VALUE: RuleInfo = RuleInfo {
+    code: "S006",
+    name: "missing-value",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports an address letter without a value.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N10 G1 X Y10
+```
+
+## Fix
+Write `X0`, not `X`, or `X=expression`."#,
+};
+
+pub static CONTINUED_BLOCK: RuleInfo = RuleInfo {
+    code: "S007",
+    name: "continued-block",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a line that continues a call left open on the line before.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+0, 0, 0, 1, 39, 0, 0, 0)
+```
+
+## Fix
+Join the line to the one before: a block is one line."#,
+};
+
+pub static NESTING_TOO_DEEP: RuleInfo = RuleInfo {
+    code: "S008",
+    name: "nesting-too-deep",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports an expression deeper than 256 levels of parentheses and operators.
+
+## Why it matters
+The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
+the next line as usual.
+
+## Example
+```
+N10 R1=((((((...))))))
+```
+
+## Fix
+Split it into several assignments."#,
+};

@@ -1,0 +1,64 @@
+//! N012 `traori-at-end`: Finds a program that switches on TRAORI and ends with it still active.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::span::Span;
+use crate::syntax::tree::{Line, LineKind, StatementKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N012",
+    name: "traori-at-end",
+    severity: Severity::Warning,
+    docs: r#"## What it does
+Finds a program that switches on TRAORI and ends with it still active.
+
+## Why it matters
+The next program starts with the 5-axis transformation on (unless machine data resets it), so its
+coordinates mean something else than its author assumed.
+
+## Example
+```
+N10 TRAORI
+N20 G1 X10 A3=0 B3=0 C3=1
+N30 M30
+```
+
+## Fix
+Switch it off with TRAFOOF before the end."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    active: Option<Span>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        for statement in &block.statements {
+            let name = match &statement.kind {
+                StatementKind::Command(name) => name,
+                StatementKind::Call(call) => &call.name,
+                _ => continue,
+            };
+            if name.is(file.source, "TRAORI") {
+                self.active = Some(statement.span);
+            } else if name.is(file.source, "TRAFOOF") {
+                self.active = None;
+            }
+        }
+    }
+
+    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
+        if let Some(span) = self.active {
+            out.push(
+                RULE.at(span)
+                    .message("TRAORI is still active when the program ends")
+                    .label("switched on here, never off")
+                    .help("add TRAFOOF before the program end"),
+            );
+        }
+    }
+}

@@ -1,0 +1,86 @@
+//! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
+
+use std::collections::HashSet;
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rules::support::*;
+use crate::semantic::head_def::distance;
+use crate::span::Span;
+use crate::syntax::tree::{GotoKind, Line, LineKind};
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N001",
+    name: "undefined-label",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
+
+## Why it matters
+The control stops with alarm 14080 ("jump destination not found") when the jump is taken; GOTOC
+suppresses the alarm and simply goes on, which hides the mistake (reported as a warning).
+
+## Example
+```
+N10 GOTOF ENDE
+N20 ENDE: M30      ; label is ENDE, the jump says ENDE... in another file it says END
+```
+
+## Fix
+Correct the label's spelling (the help suggests the nearest existing label) or add the label."#,
+};
+
+#[derive(Default)]
+pub struct Checker {
+    labels: HashSet<String>,
+    jumps: Vec<(String, Span, bool)>,
+}
+
+impl Check for Checker {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
+        let LineKind::Block(block) = &line.kind else {
+            return;
+        };
+        self.labels
+            .extend(labels(file.source, block).into_iter().map(|(l, _)| l));
+        for goto in gotos(block) {
+            if let Some((name, span)) = target(file.source, goto) {
+                self.jumps
+                    .push((name, span, goto.kind == GotoKind::Conditional));
+            }
+        }
+    }
+
+    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
+        for (name, span, tolerant) in &self.jumps {
+            if self.labels.contains(name) {
+                continue;
+            }
+            let nearest = self
+                .labels
+                .iter()
+                .filter(|l| !l.starts_with('N') || !l[1..].bytes().all(|b| b.is_ascii_digit()))
+                .map(|l| (distance(l, name), l))
+                .filter(|(d, _)| *d <= 2)
+                .min();
+            let help = match nearest {
+                Some((_, label)) => format!("did you mean `{label}`? Otherwise add the label `{name}:` where the jump should land"),
+                None => format!("add the label `{name}:` where the jump should land, or correct the jump"),
+            };
+            let mut diagnostic = RULE
+                .at(*span)
+                .message(format!(
+                    "jump to `{name}`, which is not a label or block number of this program"
+                ))
+                .label("no such label")
+                .help(help);
+            if *tolerant {
+                diagnostic.severity = Severity::Warning;
+                diagnostic
+                    .message
+                    .push_str(" (GOTOC goes on without an alarm)");
+            }
+            out.push(diagnostic);
+        }
+    }
+}

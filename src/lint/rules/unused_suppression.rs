@@ -1,0 +1,25 @@
+//! N099 `unused-suppression`: found while applying `; sinuprep: ignore`
+//! comments (`lint::suppression`); this file documents it.
+
+use crate::diagnostic::Severity;
+use crate::lint::rule::RuleInfo;
+
+pub static RULE: RuleInfo = RuleInfo {
+    code: "N099",
+    name: "unused-suppression",
+    severity: Severity::Info,
+    docs: r#"## What it does
+Reports a `; sinuprep: ignore CODE` or `; sinuprep: ignore-file CODE` comment that suppresses
+nothing.
+
+## Why it matters
+A stale suppression hides the next real finding of that rule on the block, and misleads readers.
+
+## Example
+```
+N10 G0 X0 ; sinuprep: ignore N005
+```
+
+## Fix
+Remove the suppression (or the code from its list)."#,
+};
