@@ -29,27 +29,50 @@ pub struct Inputs {
 impl Inputs {
     pub fn load(args: &InputArgs, config: &Config, program: &Path) -> Result<Inputs, CliError> {
         let mut supplied = Supplied::default();
-        let values = args.values.clone().or_else(|| config.values.as_ref().map(|v| config.resolve(v)));
+        let values = args
+            .values
+            .clone()
+            .or_else(|| config.values.as_ref().map(|v| config.resolve(v)));
         if let Some(path) = &values {
-            let bytes = std::fs::read(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
-            let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values { path: path.clone(), line, why })?;
+            let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+                path: path.clone(),
+                source,
+            })?;
+            let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values {
+                path: path.clone(),
+                line,
+                why,
+            })?;
             for (key, value, line) in assignments {
                 supplied.insert(key, value, format!("{}:{line}", path.display()));
             }
         }
         for text in &args.set {
-            let assignments = assignments(text.as_bytes()).map_err(|(_, why)| CliError::Set { text: text.clone(), why })?;
+            let assignments = assignments(text.as_bytes()).map_err(|(_, why)| CliError::Set {
+                text: text.clone(),
+                why,
+            })?;
             if assignments.len() != 1 {
-                return Err(CliError::Set { text: text.clone(), why: "give exactly one assignment".into() });
+                return Err(CliError::Set {
+                    text: text.clone(),
+                    why: "give exactly one assignment".into(),
+                });
             }
             for (key, value, _) in assignments {
                 supplied.insert(key, value, format!("--set {text}"));
             }
         }
-        let heads_path = args.heads.clone().or_else(|| config.heads.as_ref().map(|h| config.resolve(h))).or_else(|| beside(program));
+        let heads_path = args
+            .heads
+            .clone()
+            .or_else(|| config.heads.as_ref().map(|h| config.resolve(h)))
+            .or_else(|| beside(program));
         let heads = match heads_path {
             Some(path) => {
-                let bytes = std::fs::read(&path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+                let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
+                    path: path.clone(),
+                    source,
+                })?;
                 Some(Heads::read(path.display().to_string(), &bytes))
             }
             None => None,
@@ -84,12 +107,18 @@ pub struct Analyzed {
 
 impl Analyzed {
     pub fn has_errors(&self) -> bool {
-        self.diagnostics.iter().any(|d| d.severity == Severity::Error)
+        self.diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Error)
     }
 
     /// Prints the diagnostics on stderr, in the format asked for.
     pub fn report(&self, file: &SourceFile, format: MessageFormat) {
-        let report = FileReport { name: &file.name, source: &file.bytes, diagnostics: &self.diagnostics };
+        let report = FileReport {
+            name: &file.name,
+            source: &file.bytes,
+            diagnostics: &self.diagnostics,
+        };
         let mut text = String::new();
         match format {
             MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
@@ -104,7 +133,11 @@ pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
     // only the streaming syntax pass, not the whole tree in memory.
     if !crate::semantic::mentions_cycle600(&file.bytes) {
         let diagnostics = crate::syntax::diagnostics(&file.bytes);
-        return Analyzed { analysis: Analysis::default(), rewrite: Rewrite::default(), diagnostics };
+        return Analyzed {
+            analysis: Analysis::default(),
+            rewrite: Rewrite::default(),
+            diagnostics,
+        };
     }
     let analysis = analyze(&file.bytes, &inputs.supplied, inputs.heads.as_ref());
     let rewrite = rewrite(&file.bytes, &analysis, options);
@@ -119,7 +152,11 @@ pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
     }
     diagnostics.extend(rewrite.diagnostics.iter().cloned());
     diagnostics.sort_by_key(|d| (d.span.start, d.code));
-    Analyzed { analysis, rewrite, diagnostics }
+    Analyzed {
+        analysis,
+        rewrite,
+        diagnostics,
+    }
 }
 
 /// A supplied value: its variable's key, the value, the line it was given on.
@@ -129,21 +166,36 @@ type Assignment = (String, Value, usize);
 fn assignments(bytes: &[u8]) -> Result<Vec<Assignment>, (usize, String)> {
     let program = parse(bytes);
     if let Some(error) = program.diagnostics.first() {
-        let line = program.lines.iter().position(|l| l.raw.full().end > error.span.start).unwrap_or(0) + 1;
+        let line = program
+            .lines
+            .iter()
+            .position(|l| l.raw.full().end > error.span.start)
+            .unwrap_or(0)
+            + 1;
         return Err((line, error.message.clone()));
     }
     let env = Env::default();
     let empty = Supplied::default();
     let mut out = Vec::new();
     for (index, line) in program.lines.iter().enumerate() {
-        let LineKind::Block(block) = &line.kind else { continue };
+        let LineKind::Block(block) = &line.kind else {
+            continue;
+        };
         for statement in &block.statements {
             let StatementKind::Assign(assign) = &statement.kind else {
-                return Err((index + 1, format!("`{}` is not an assignment", String::from_utf8_lossy(statement.span.of(bytes)))));
+                return Err((
+                    index + 1,
+                    format!(
+                        "`{}` is not an assignment",
+                        String::from_utf8_lossy(statement.span.of(bytes))
+                    ),
+                ));
             };
             let scope = env.scope(&empty, index + 1);
-            let key = variable_key(bytes, &assign.target, &scope).map_err(|why| (index + 1, why.to_string()))?;
-            let value = evaluate(bytes, &assign.value, &scope).map_err(|why| (index + 1, format!("the value must be a constant: {why}")))?;
+            let key = variable_key(bytes, &assign.target, &scope)
+                .map_err(|why| (index + 1, why.to_string()))?;
+            let value = evaluate(bytes, &assign.value, &scope)
+                .map_err(|why| (index + 1, format!("the value must be a constant: {why}")))?;
             out.push((key, value, index + 1));
         }
     }
@@ -155,11 +207,21 @@ fn beside(program: &Path) -> Option<PathBuf> {
     let dir = if program == Path::new("-") {
         PathBuf::from(".")
     } else {
-        program.parent().map(|p| if p.as_os_str().is_empty() { PathBuf::from(".") } else { p.to_path_buf() })?
+        program.parent().map(|p| {
+            if p.as_os_str().is_empty() {
+                PathBuf::from(".")
+            } else {
+                p.to_path_buf()
+            }
+        })?
     };
     std::fs::read_dir(dir)
         .ok()?
         .filter_map(|e| e.ok())
         .map(|e| e.path())
-        .find(|p| p.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF")))
+        .find(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF"))
+        })
 }

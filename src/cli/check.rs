@@ -26,9 +26,12 @@ struct Checked {
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths);
-    let results: Vec<Mutex<Option<Result<Checked, CliError>>>> = paths.iter().map(|_| Mutex::new(None)).collect();
+    let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
+        paths.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(1, |n| n.get()).min(paths.len().max(1));
+    let workers = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(paths.len().max(1));
     std::thread::scope(|scope| {
         for _ in 0..workers {
             scope.spawn(|| loop {
@@ -36,7 +39,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                 let Some(path) = paths.get(index) else { break };
                 let outcome = match path {
                     Ok(path) => check_file(path, args),
-                    Err(error) => Err(CliError::Read { path: PathBuf::new(), source: std::io::Error::other(error.to_string()) }),
+                    Err(error) => Err(CliError::Read {
+                        path: PathBuf::new(),
+                        source: std::io::Error::other(error.to_string()),
+                    }),
                 };
                 if let Ok(mut slot) = results[index].lock() {
                     *slot = Some(outcome);
@@ -59,7 +65,11 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     }
     let reports: Vec<FileReport> = checked
         .iter()
-        .map(|c| FileReport { name: &c.file.name, source: &c.file.bytes, diagnostics: &c.diagnostics })
+        .map(|c| FileReport {
+            name: &c.file.name,
+            source: &c.file.bytes,
+            diagnostics: &c.diagnostics,
+        })
         .collect();
     let mut out = String::new();
     match args.format {
@@ -75,7 +85,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     write_stdout(out.as_bytes())?;
 
     let fails = checked.iter().any(|c| {
-        c.diagnostics.iter().any(|d| d.severity == Severity::Error || (c.deny_warnings && d.severity == Severity::Warning))
+        c.diagnostics.iter().any(|d| {
+            d.severity == Severity::Error || (c.deny_warnings && d.severity == Severity::Warning)
+        })
     });
     Ok(if failed {
         ExitStatus::Error
@@ -96,17 +108,39 @@ fn check_file(path: &Path, args: &CheckArgs) -> Result<Checked, CliError> {
         }
         _ => path.to_path_buf(),
     };
-    let lookup = if named == Path::new("-") { PathBuf::from(".") } else { named.clone() };
+    let lookup = if named == Path::new("-") {
+        PathBuf::from(".")
+    } else {
+        named.clone()
+    };
     let config = Config::find(args.input.config.as_deref(), &lookup)?;
     let inputs = Inputs::load(&args.input, &config, &named)?;
     let mut ignore = args.ignore.clone();
     ignore.extend(config.ignore.clone().unwrap_or_default());
     let selection = Selection {
-        select: if args.select.is_empty() { config.select.clone().unwrap_or_default() } else { args.select.clone() },
+        select: if args.select.is_empty() {
+            config.select.clone().unwrap_or_default()
+        } else {
+            args.select.clone()
+        },
         ignore,
-        severity_min: args.severity_min.or(config.severity_min).map_or(Severity::Info, Severity::from),
+        severity_min: args
+            .severity_min
+            .or(config.severity_min)
+            .map_or(Severity::Info, Severity::from),
     };
     let kind = program_kind(Some(&file.name), &file.bytes);
-    let diagnostics = lint::check(&file.bytes, &file.name, kind, &selection, &inputs.supplied, inputs.heads.as_ref());
-    Ok(Checked { file, diagnostics, deny_warnings: args.deny_warnings || config.deny_warnings == Some(true) })
+    let diagnostics = lint::check(
+        &file.bytes,
+        &file.name,
+        kind,
+        &selection,
+        &inputs.supplied,
+        inputs.heads.as_ref(),
+    );
+    Ok(Checked {
+        file,
+        diagnostics,
+        deny_warnings: args.deny_warnings || config.deny_warnings == Some(true),
+    })
 }

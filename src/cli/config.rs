@@ -65,8 +65,14 @@ impl Config {
     }
 
     pub fn read(path: &Path) -> Result<Config, CliError> {
-        let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
-        let mut config: Config = toml::from_str(&text).map_err(|error| CliError::Config { path: path.to_path_buf(), why: error.message().to_string() })?;
+        let text = std::fs::read_to_string(path).map_err(|source| CliError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let mut config: Config = toml::from_str(&text).map_err(|error| CliError::Config {
+            path: path.to_path_buf(),
+            why: error.message().to_string(),
+        })?;
         config.path = Some(path.to_path_buf());
         Ok(config)
     }
@@ -81,9 +87,21 @@ impl Config {
 }
 
 fn nearest(start: &Path) -> Option<PathBuf> {
-    let start = if start.is_dir() { start.to_path_buf() } else { start.parent().map(Path::to_path_buf).unwrap_or_default() };
-    let absolute = std::fs::canonicalize(if start.as_os_str().is_empty() { Path::new(".") } else { &start }).ok()?;
-    absolute.ancestors().map(|dir| dir.join(FILE_NAME)).find(|candidate| candidate.is_file())
+    let start = if start.is_dir() {
+        start.to_path_buf()
+    } else {
+        start.parent().map(Path::to_path_buf).unwrap_or_default()
+    };
+    let absolute = std::fs::canonicalize(if start.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        &start
+    })
+    .ok()?;
+    absolute
+        .ancestors()
+        .map(|dir| dir.join(FILE_NAME))
+        .find(|candidate| candidate.is_file())
 }
 
 #[cfg(test)]

@@ -2,8 +2,8 @@
 //! a user can check the numbers before the program goes to the control.
 
 use crate::cli::analysis::{self, Inputs};
-use crate::cli::config::Config;
 use crate::cli::args::EvalArgs;
+use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
 use crate::cli::{write_stdout, ExitStatus};

@@ -238,7 +238,9 @@ pub fn github(report: &FileReport, out: &mut String) {
 
 /// Workflow-command data: `%`, CR and LF are percent-encoded.
 fn escape_data(text: &str) -> String {
-    text.replace('%', "%25").replace('\r', "%0D").replace('\n', "%0A")
+    text.replace('%', "%25")
+        .replace('\r', "%0D")
+        .replace('\n', "%0A")
 }
 
 /// Workflow-command properties: also `:` and `,`.
@@ -248,7 +250,10 @@ fn escape_property(text: &str) -> String {
 
 /// SARIF 2.1.0: one run, the rules that were found, one result each.
 pub fn sarif(reports: &[FileReport]) -> String {
-    let mut codes: Vec<&str> = reports.iter().flat_map(|r| r.diagnostics.iter().map(|d| d.code)).collect();
+    let mut codes: Vec<&str> = reports
+        .iter()
+        .flat_map(|r| r.diagnostics.iter().map(|d| d.code))
+        .collect();
     codes.sort_unstable();
     codes.dedup();
     let rules: Vec<serde_json::Value> = codes

@@ -2,8 +2,8 @@
 //! stays. A call that cannot be evaluated stays as it was, with a diagnostic.
 
 use crate::cli::analysis::{self, Inputs};
-use crate::cli::config::Config;
 use crate::cli::args::RewriteArgs;
+use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
 use crate::cli::output::write_atomically;
@@ -15,7 +15,11 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
     let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
     let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
-    let options = Options { keep_original: !args.no_original, inline_results: args.inline_results, ..analysis::options(&args.analysis, &config) };
+    let options = Options {
+        keep_original: !args.no_original,
+        inline_results: args.inline_results,
+        ..analysis::options(&args.analysis, &config)
+    };
     let analyzed = analysis::run(&file, &inputs, &options);
     analyzed.report(&file, args.analysis.message_format);
 

@@ -9,11 +9,24 @@ pub fn run(args: &RuleArgs) -> Result<ExitStatus, CliError> {
     let text = match &args.code {
         Some(code) if !args.all => {
             let info = lint::rule(code).ok_or_else(|| CliError::UnknownRule(code.clone()))?;
-            format!("# {} {} ({})\n\n{}\n", info.code, info.name, info.severity.as_str(), info.docs)
+            format!(
+                "# {} {} ({})\n\n{}\n",
+                info.code,
+                info.name,
+                info.severity.as_str(),
+                info.docs
+            )
         }
         _ => lint::rules::all()
             .iter()
-            .map(|r| format!("{:<5} {:<44} {}\n", r.info.code, r.info.name, r.info.severity.as_str()))
+            .map(|r| {
+                format!(
+                    "{:<5} {:<44} {}\n",
+                    r.info.code,
+                    r.info.name,
+                    r.info.severity.as_str()
+                )
+            })
             .collect(),
     };
     write_stdout(text.as_bytes())?;

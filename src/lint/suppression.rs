@@ -53,7 +53,7 @@ impl Suppressions {
     pub fn covers(&mut self, diagnostic: &Diagnostic, row: usize) -> bool {
         let mut covered = false;
         for suppression in &mut self.list {
-            if suppression.code == diagnostic.code && suppression.row.is_none_or(|r| r == row) {
+            if suppression.code == diagnostic.code && suppression.row.map_or(true, |r| r == row) {
                 suppression.used = true;
                 covered = true;
             }

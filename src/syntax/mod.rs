@@ -391,7 +391,10 @@ pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
         let (line, _) = parser.parse_line(source, raw);
         let is_sub = match &line.kind {
             LineKind::Header { name } => name.of(source).to_ascii_uppercase().ends_with(b"_SPF"),
-            LineKind::Block(block) => block.statements.iter().any(|s| matches!(s.kind, StatementKind::Proc(_))),
+            LineKind::Block(block) => block
+                .statements
+                .iter()
+                .any(|s| matches!(s.kind, StatementKind::Proc(_))),
             LineKind::Path { .. } => false,
         };
         if is_sub {

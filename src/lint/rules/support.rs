@@ -68,22 +68,19 @@ pub fn reads(statement: &Statement) -> Vec<&Variable> {
     for_each_expression(&statement.kind, &mut |expr| {
         collect_variables(expr, &mut out)
     });
-    match &statement.kind {
-        StatementKind::Def(def) => {
-            for declarator in &def.variables {
-                if let Some(Initializer::Expr(expr)) = &declarator.init {
-                    collect_variables(expr, &mut out);
-                }
-                for dimension in declarator
-                    .dimensions
-                    .iter()
-                    .filter_map(|d| d.value.as_ref())
-                {
-                    collect_variables(dimension, &mut out);
-                }
+    if let StatementKind::Def(def) = &statement.kind {
+        for declarator in &def.variables {
+            if let Some(Initializer::Expr(expr)) = &declarator.init {
+                collect_variables(expr, &mut out);
+            }
+            for dimension in declarator
+                .dimensions
+                .iter()
+                .filter_map(|d| d.value.as_ref())
+            {
+                collect_variables(dimension, &mut out);
             }
         }
-        _ => {}
     }
     out
 }
