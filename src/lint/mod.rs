@@ -94,7 +94,7 @@ pub fn check(
         .filter(|d| !suppressions.covers(d, index.position(d.span.start).row - 1))
         .collect();
     if selection.enables("N099") && Severity::Info >= selection.severity_min {
-        kept.extend(suppressions.unused());
+        kept.extend(suppressions.unused(|code| selection.enables(code)));
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
     kept

@@ -1,0 +1,222 @@
+//! Every rule on a fixture that triggers it and one that must not
+//! (`tests/fixtures/lint/<CODE>_trigger|clean.*`), rendered as users see it;
+//! the rule catalogue; configuration, suppression and every output format.
+
+mod support;
+
+use std::path::Path;
+
+use sinuprep::cli::render::{human, short, FileReport};
+use sinuprep::lint::{self, Selection};
+use sinuprep::semantic::{Heads, Supplied};
+use sinuprep::syntax::program_kind;
+use support::{assert_exit, run, stdout};
+
+fn sample_heads() -> Heads {
+    let source = std::fs::read(support::repo().join("samples/HEAD_DEF.SPF")).expect("HEAD_DEF");
+    Heads::read("HEAD_DEF.SPF".into(), &source)
+}
+
+fn lint_fixture(path: &Path) {
+    let source = std::fs::read(path).expect("fixture");
+    let name = path.file_name().and_then(|n| n.to_str()).expect("name");
+    let code = name.split('_').next().expect("code");
+    let triggers = name.contains("_trigger");
+    let heads = (!(code == "C610" && triggers)).then(sample_heads);
+    // N099 is about the other rules' suppressions: it needs them enabled.
+    let select = if code == "N099" {
+        Vec::new()
+    } else {
+        vec![code.to_string()]
+    };
+    let selection = Selection {
+        select,
+        ..Selection::default()
+    };
+    let diagnostics = lint::check(
+        &source,
+        name,
+        program_kind(Some(name), &source),
+        &selection,
+        &Supplied::default(),
+        heads.as_ref(),
+    );
+    let fired = diagnostics.iter().any(|d| d.code == code);
+    let diagnostics: Vec<_> = diagnostics.into_iter().filter(|d| d.code == code).collect();
+    assert_eq!(fired, triggers, "{name}: {diagnostics:#?}");
+    let report = FileReport {
+        name,
+        source: &source,
+        diagnostics: &diagnostics,
+    };
+    let mut text = String::new();
+    short(&report, &mut text);
+    text.push('\n');
+    human(&report, false, &mut text);
+    insta::assert_snapshot!("lint", text);
+}
+
+#[test]
+fn each_rule_fires_on_its_trigger_and_not_on_its_clean_fixture() {
+    insta::glob!("fixtures/lint/*", lint_fixture);
+}
+
+#[test]
+fn every_rule_is_documented_and_has_fixtures() {
+    let fixtures: Vec<String> = support::files_below(&support::repo().join("tests/fixtures/lint"))
+        .iter()
+        .filter_map(|p| p.file_name().and_then(|n| n.to_str()).map(String::from))
+        .collect();
+    let mut codes = Vec::new();
+    for rule in lint::rules::all() {
+        let info = rule.info;
+        for section in [
+            "## What it does",
+            "## Why it matters",
+            "## Example",
+            "## Fix",
+        ] {
+            assert!(info.docs.contains(section), "{} lacks {section}", info.code);
+        }
+        assert!(
+            info.name
+                .chars()
+                .all(|c| c.is_ascii_lowercase() || c == '-' || c.is_ascii_digit()),
+            "{}",
+            info.name
+        );
+        codes.push(info.code);
+        // Rules of the rewrite only (C611-C613) are tested by tests/rewrite.rs, syntax codes by tests/diagnostics.rs.
+        let elsewhere = info.code.starts_with('S') || ["C611", "C612", "C613"].contains(&info.code);
+        if !elsewhere {
+            for kind in ["trigger", "clean"] {
+                assert!(
+                    fixtures
+                        .iter()
+                        .any(|f| f.starts_with(&format!("{}_{kind}", info.code))),
+                    "{} has no {kind} fixture",
+                    info.code
+                );
+            }
+        }
+    }
+    let mut sorted = codes.clone();
+    sorted.dedup();
+    assert_eq!(sorted.len(), codes.len(), "codes are unique");
+}
+
+#[test]
+fn rule_command_prints_documentation_and_the_list() {
+    let one = run(&["rule", "n001"], b"");
+    assert_exit(&one, 0);
+    insta::assert_snapshot!("rule_n001", stdout(&one));
+    let all = run(&["rule", "--all"], b"");
+    assert_exit(&all, 0);
+    insta::assert_snapshot!("rule_all", stdout(&all));
+    assert_exit(&run(&["rule", "X999"], b""), 2);
+}
+
+const FINDINGS: &[u8] = b"N20 X1\nN10 X=UNDEFINED_NAME\n";
+
+#[test]
+fn every_output_format_is_locked() {
+    for format in ["short", "json", "github", "sarif"] {
+        let output = run(
+            &[
+                "check",
+                "--format",
+                format,
+                "--stdin-filename",
+                "PART.MPF",
+                "-",
+            ],
+            FINDINGS,
+        );
+        assert_exit(&output, 0);
+        insta::assert_snapshot!(format!("format_{format}"), stdout(&output));
+    }
+    let sarif: serde_json::Value =
+        serde_json::from_slice(&run(&["check", "--format", "sarif", "-"], FINDINGS).stdout)
+            .expect("json");
+    assert_eq!(sarif["version"], "2.1.0");
+    assert_eq!(
+        sarif["runs"][0]["results"].as_array().map(Vec::len),
+        Some(3)
+    );
+}
+
+#[test]
+fn selection_severity_and_deny_warnings_set_the_exit_status() {
+    // Findings: N005 (warning), N010 (warning), N014 (info); no error.
+    assert_exit(&run(&["check", "-"], FINDINGS), 0);
+    assert_exit(&run(&["check", "--deny-warnings", "-"], FINDINGS), 1);
+    assert_exit(
+        &run(
+            &["check", "--deny-warnings", "--ignore", "N005,N010", "-"],
+            FINDINGS,
+        ),
+        0,
+    );
+    let only = run(
+        &["check", "--format", "short", "--select", "N014", "-"],
+        FINDINGS,
+    );
+    assert_eq!(stdout(&only).lines().count(), 1);
+    let quiet = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--severity-min",
+            "warning",
+            "-",
+        ],
+        FINDINGS,
+    );
+    assert!(!stdout(&quiet).contains("info["));
+}
+
+#[test]
+fn configuration_is_found_upward_and_unknown_keys_are_named() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-config-{}", std::process::id()));
+    let nested = dir.join("programs/part");
+    std::fs::create_dir_all(&nested).expect("dirs");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "ignore = [\"N014\"]\ndeny-warnings = true\n",
+    )
+    .expect("config");
+    let program = nested.join("PART.MPF");
+    std::fs::write(&program, FINDINGS).expect("program");
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            program.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    assert_exit(&output, 1);
+    assert!(!stdout(&output).contains("N014"), "{}", stdout(&output));
+    // --stdin-filename finds the same configuration.
+    let stdin_name = program.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--stdin-filename",
+            stdin_name,
+            "-",
+        ],
+        FINDINGS,
+    );
+    assert_exit(&output, 1);
+    assert!(stdout(&output).starts_with(stdin_name));
+    std::fs::write(dir.join("sinuprep.toml"), "selct = [\"N\"]\n").expect("config");
+    let output = run(&["check", program.to_str().expect("utf-8")], b"");
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("selct"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
