@@ -836,6 +836,12 @@ pub(crate) fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn F
 
 /// Variables read in `expr` (iteratively: trees may be deep).
 pub(crate) fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
+    // Most expressions are a number or one variable: no stack for those.
+    match &expr.kind {
+        ExprKind::Number(_) | ExprKind::String => return,
+        ExprKind::Variable(variable) if variable.indices.is_empty() => return out.push(variable),
+        _ => {}
+    }
     let mut stack = vec![expr];
     while let Some(expr) = stack.pop() {
         match &expr.kind {

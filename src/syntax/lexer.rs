@@ -236,6 +236,11 @@ fn parse_decimal(input: Input) -> PResult<Number> {
 
 /// The value of `mantissa` × 10^`exponent`, both ASCII digits (already checked).
 fn decimal_value(mantissa: &[u8], exponent: Option<&[u8]>) -> f64 {
+    if exponent.is_none() {
+        if let Some(value) = exact_decimal(mantissa) {
+            return value;
+        }
+    }
     let mut text = String::with_capacity(mantissa.len() + 8);
     text.extend(mantissa.iter().map(|&b| b as char));
     if text.ends_with('.') {
@@ -248,6 +253,38 @@ fn decimal_value(mantissa: &[u8], exponent: Option<&[u8]>) -> f64 {
     // Only digits, one '.', and 'e' with an optional sign reach here, so the
     // parse cannot fail; an exponent beyond i32 parses to inf or 0.
     text.parse().unwrap_or(f64::NAN)
+}
+
+/// Powers of ten that f64 holds exactly.
+const EXACT_POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// The value of `123.456`-style digits when it can be computed exactly: a
+/// mantissa of at most 15 significant digits is an exact integer, 10^k for
+/// k <= 22 is exact, and one IEEE division is correctly rounded (Clinger's
+/// fast path). CNC numbers nearly always qualify; others take the general parser.
+fn exact_decimal(digits: &[u8]) -> Option<f64> {
+    let mut mantissa: u64 = 0;
+    let mut significant = 0;
+    let mut decimals = 0;
+    let mut after_point = false;
+    for &byte in digits {
+        if byte == b'.' {
+            after_point = true;
+            continue;
+        }
+        if mantissa != 0 || byte != b'0' {
+            significant += 1;
+        }
+        if significant > 15 {
+            return None;
+        }
+        mantissa = mantissa * 10 + u64::from(byte - b'0');
+        decimals += usize::from(after_point);
+    }
+    Some(mantissa as f64 / *EXACT_POWERS_OF_TEN.get(decimals)?)
 }
 
 fn parse_radix_number(input: Input) -> PResult<Number> {
@@ -338,6 +375,36 @@ mod tests {
         assert_eq!(number("10ex-5"), 1e-4);
         assert_eq!(number("'H1F'"), 31.0);
         assert_eq!(number("'b101'"), 5.0);
+    }
+
+    #[test]
+    fn the_exact_fast_path_agrees_with_the_general_parser() {
+        for text in [
+            "0",
+            "1.",
+            ".5",
+            "12.25",
+            "498.375",
+            "-0.009",
+            "0.1",
+            "0.000000000000000000001",
+            "123456789012345",
+            "1234567890123456",
+            "3.141592653589793",
+            "0.30000000000000004",
+            "00012.5000",
+        ] {
+            let digits = text.trim_start_matches('-');
+            let expected: f64 = format!(
+                "{}{}",
+                if digits.starts_with('.') { "0" } else { "" },
+                digits
+            )
+            .trim_end_matches('.')
+            .parse()
+            .expect("valid");
+            assert_eq!(decimal_value(digits.as_bytes(), None), expected, "{text}");
+        }
     }
 
     #[test]

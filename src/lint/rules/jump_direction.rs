@@ -30,7 +30,8 @@ Use GOTOB (or GOTO, which searches both ways), or move the label."#,
 #[derive(Default)]
 pub struct Checker {
     labels: Vec<(String, usize)>,
-    jumps: Vec<(String, Span, usize, GotoKind)>,
+    numbers: Vec<(u64, usize)>,
+    jumps: Vec<(Target, Span, usize, GotoKind)>,
 }
 
 impl Check for Checker {
@@ -38,26 +39,36 @@ impl Check for Checker {
         let LineKind::Block(block) = &line.kind else {
             return;
         };
-        self.labels.extend(
-            labels(file.source, block)
-                .into_iter()
-                .map(|(l, _)| (l, row)),
-        );
+        self.labels
+            .extend(label(file.source, block).map(|(l, _)| (l, row)));
+        self.numbers
+            .extend(block_number(file.source, block).map(|n| (n, row)));
         for goto in gotos(block) {
-            if let Some((name, span)) = target(file.source, goto) {
-                self.jumps.push((name, span, row, goto.kind));
+            if let Some((target, span)) = target(file.source, goto) {
+                self.jumps.push((target, span, row, goto.kind));
             }
         }
     }
 
     fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for (name, span, row, kind) in &self.jumps {
-            let rows: Vec<usize> = self
-                .labels
-                .iter()
-                .filter(|(l, _)| l == name)
-                .map(|(_, r)| *r)
-                .collect();
+        self.numbers.sort_unstable();
+        for (target, span, row, kind) in &self.jumps {
+            let rows: Vec<usize> = match target {
+                Target::Label(name) => self
+                    .labels
+                    .iter()
+                    .filter(|(l, _)| l == name)
+                    .map(|(_, r)| *r)
+                    .collect(),
+                Target::Number(n) => {
+                    let first = self.numbers.partition_point(|(m, _)| m < n);
+                    self.numbers[first..]
+                        .iter()
+                        .take_while(|(m, _)| m == n)
+                        .map(|(_, r)| *r)
+                        .collect()
+                }
+            };
             let (wrong, right, keyword) = match kind {
                 GotoKind::Forward => ("before", rows.iter().any(|r| r > row), "GOTOB"),
                 GotoKind::Backward => ("after", rows.iter().any(|r| r <= row), "GOTOF"),
@@ -68,7 +79,7 @@ impl Check for Checker {
             }
             out.push(
                 RULE.at(*span)
-                    .message(format!("`{name}` stands only {wrong} this jump, so the search in its direction cannot find it"))
+                    .message(format!("`{target}` stands only {wrong} this jump, so the search in its direction cannot find it"))
                     .label(format!("only {wrong} the jump"))
                     .help(format!("jump with {keyword} or GOTO (which searches both ways), or move the label")),
             );

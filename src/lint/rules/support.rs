@@ -12,21 +12,35 @@ pub fn upper(source: &[u8], span: Span) -> String {
     String::from_utf8_lossy(span.of(source)).to_ascii_uppercase()
 }
 
-/// Labels a block defines: its `NAME:` label and its block number (`N100`).
-pub fn labels(source: &[u8], block: &Block) -> Vec<(String, Span)> {
-    let mut out = Vec::new();
-    if let Some(label) = block.label {
-        out.push((upper(source, label.span), label.span));
-    }
-    if let Some(number) = &block.number {
-        if !number.main {
-            let digits = String::from_utf8_lossy(number.digits.of(source))
-                .trim_start_matches('0')
-                .to_string();
-            out.push((format!("N{digits}"), number.span));
+/// Where a jump can land: a named label, or a block number (kept as a
+/// number: a CAM program has millions of them, and no jump needs their text).
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Target {
+    Label(String),
+    Number(u64),
+}
+
+impl std::fmt::Display for Target {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Target::Label(name) => f.write_str(name),
+            Target::Number(n) => write!(f, "N{n}"),
         }
     }
-    out
+}
+
+/// The block's label (upper case), if it has one.
+pub fn label(source: &[u8], block: &Block) -> Option<(String, Span)> {
+    block.label.map(|l| (upper(source, l.span), l.span))
+}
+
+/// The block's number (`N100`; not the main block number `:100`), if it has one.
+pub fn block_number(source: &[u8], block: &Block) -> Option<u64> {
+    let number = block.number.as_ref().filter(|n| !n.main)?;
+    std::str::from_utf8(number.digits.of(source))
+        .ok()?
+        .parse()
+        .ok()
 }
 
 /// Every jump of a block (GOTO statements and CASE branches).
@@ -44,20 +58,21 @@ pub fn gotos(block: &Block) -> Vec<&Goto> {
     out
 }
 
-/// The label a jump names, as `labels` spells it; `None` for computed targets.
-pub fn target(source: &[u8], goto: &Goto) -> Option<(String, Span)> {
+/// Where a jump goes; `None` for computed targets.
+pub fn target(source: &[u8], goto: &Goto) -> Option<(Target, Span)> {
     match goto.target.as_ref()? {
         GotoTarget::Label(name) => {
             let text = upper(source, name.span);
-            let text = match text.strip_prefix('N') {
-                Some(d) if !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()) => {
-                    format!("N{}", d.trim_start_matches('0'))
-                }
-                _ => text,
-            };
-            Some((text, name.span))
+            let number = text
+                .strip_prefix('N')
+                .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                .and_then(|d| d.parse().ok());
+            Some((
+                number.map_or(Target::Label(text), Target::Number),
+                name.span,
+            ))
         }
-        GotoTarget::Number(number) => Some((format!("N{}", number.value as u64), number.span)),
+        GotoTarget::Number(number) => Some((Target::Number(number.value as u64), number.span)),
         GotoTarget::Computed(_) => None,
     }
 }

@@ -33,7 +33,8 @@ Correct the label's spelling (the help suggests the nearest existing label) or a
 #[derive(Default)]
 pub struct Checker {
     labels: HashSet<String>,
-    jumps: Vec<(String, Span, bool)>,
+    numbers: Vec<u64>,
+    jumps: Vec<(Target, Span, bool)>,
 }
 
 impl Check for Checker {
@@ -42,35 +43,41 @@ impl Check for Checker {
             return;
         };
         self.labels
-            .extend(labels(file.source, block).into_iter().map(|(l, _)| l));
+            .extend(label(file.source, block).map(|(l, _)| l));
+        self.numbers.extend(block_number(file.source, block));
         for goto in gotos(block) {
-            if let Some((name, span)) = target(file.source, goto) {
+            if let Some((target, span)) = target(file.source, goto) {
                 self.jumps
-                    .push((name, span, goto.kind == GotoKind::Conditional));
+                    .push((target, span, goto.kind == GotoKind::Conditional));
             }
         }
     }
 
     fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for (name, span, tolerant) in &self.jumps {
-            if self.labels.contains(name) {
+        self.numbers.sort_unstable();
+        for (target, span, tolerant) in &self.jumps {
+            let exists = match target {
+                Target::Label(name) => self.labels.contains(name),
+                Target::Number(n) => self.numbers.binary_search(n).is_ok(),
+            };
+            if exists {
                 continue;
             }
+            let wanted = target.to_string();
             let nearest = self
                 .labels
                 .iter()
-                .filter(|l| !l.starts_with('N') || !l[1..].bytes().all(|b| b.is_ascii_digit()))
-                .map(|l| (distance(l, name), l))
+                .map(|l| (distance(l, &wanted), l))
                 .filter(|(d, _)| *d <= 2)
                 .min();
             let help = match nearest {
-                Some((_, label)) => format!("did you mean `{label}`? Otherwise add the label `{name}:` where the jump should land"),
-                None => format!("add the label `{name}:` where the jump should land, or correct the jump"),
+                Some((_, label)) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
+                None => format!("add the label `{wanted}:` where the jump should land, or correct the jump"),
             };
             let mut diagnostic = RULE
                 .at(*span)
                 .message(format!(
-                    "jump to `{name}`, which is not a label or block number of this program"
+                    "jump to `{wanted}`, which is not a label or block number of this program"
                 ))
                 .label("no such label")
                 .help(help);
