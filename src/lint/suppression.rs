@@ -21,31 +21,58 @@ pub struct Suppressions {
 
 impl Suppressions {
     /// Reads the suppressions of a comment on line `row` at `comment`.
+    /// Works on the bytes: a comment may hold any bytes (Latin-1, garbage),
+    /// and the spans must be the source's own offsets.
     pub fn read(&mut self, source: &[u8], row: usize, comment: Span) {
-        let text = String::from_utf8_lossy(comment.of(source));
-        let Some(at) = text.find("sinuprep:") else {
+        let text = comment.of(source);
+        let Some(at) = memchr::memmem::find(text, b"sinuprep:") else {
             return;
         };
-        let rest = text[at + "sinuprep:".len()..].trim_start();
-        let (row, codes) = if let Some(codes) = rest.strip_prefix("ignore-file") {
-            (None, codes)
-        } else if let Some(codes) = rest.strip_prefix("ignore") {
-            (Some(row), codes)
+        let mut position = at + b"sinuprep:".len();
+        let skip_blanks = |position: &mut usize| {
+            while text
+                .get(*position)
+                .is_some_and(|b| *b == b' ' || *b == b'\t')
+            {
+                *position += 1;
+            }
+        };
+        skip_blanks(&mut position);
+        let rest = &text[position..];
+        let row = if rest.starts_with(b"ignore-file") {
+            position += b"ignore-file".len();
+            None
+        } else if rest.starts_with(b"ignore") {
+            position += b"ignore".len();
+            Some(row)
         } else {
             return;
         };
-        for code in codes
-            .split([',', ' ', '\t'])
-            .map(str::trim)
-            .filter(|c| !c.is_empty())
-        {
-            let offset = comment.start + at + text[at..].find(code).unwrap_or(0);
+        // Codes: ASCII letters and digits, separated by commas and blanks.
+        loop {
+            while text
+                .get(position)
+                .is_some_and(|b| matches!(b, b' ' | b'\t' | b','))
+            {
+                position += 1;
+            }
+            let length = text[position..]
+                .iter()
+                .take_while(|b| b.is_ascii_alphanumeric())
+                .count();
+            if length == 0 {
+                return;
+            }
+            let code =
+                String::from_utf8_lossy(&text[position..position + length]).to_ascii_uppercase();
+            let start = comment.start + position;
             self.list.push(Suppression {
                 row,
-                code: code.to_ascii_uppercase(),
-                span: Span::new(offset, offset + code.len()),
+                code,
+                span: Span::new(start, start + length),
                 used: false,
             });
+            position += length;
         }
     }
 

@@ -80,6 +80,7 @@ pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analys
         heads,
         pending: HashMap::new(),
         analysis: Analysis::default(),
+        depth: 0,
     };
     let mut env = Env::default();
     walker.walk(0, lines.len(), &mut env);
@@ -91,7 +92,7 @@ pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analys
 }
 
 /// Names a region writes, for forgetting them.
-#[derive(Default)]
+#[derive(Default, Clone)]
 struct Written {
     names: Vec<String>,
     rotation: bool,
@@ -106,7 +107,14 @@ struct Walker<'a> {
     /// Line -> what jumps that may skip to it have jumped over.
     pending: HashMap<usize, Vec<(Written, Origin)>>,
     analysis: Analysis,
+    /// How many blocks the walk is inside; bounded, so that no program can
+    /// exhaust the stack.
+    depth: usize,
 }
+
+/// Blocks nested deeper than this are not walked into: what they write
+/// becomes unknown, and CYCLE600 calls inside them stay as they are.
+pub const MAX_NESTING: usize = 512;
 
 enum Control<'a> {
     IfBlock(&'a Expr),
@@ -127,6 +135,24 @@ impl<'a> Walker<'a> {
     }
 
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
+        if self.depth >= MAX_NESTING {
+            let written = self.written(start, end);
+            forget(
+                &written,
+                env,
+                &Origin::ControlFlow {
+                    line: start + 1,
+                    what: "block nested too deep to follow",
+                },
+            );
+            return;
+        }
+        self.depth += 1;
+        self.walk_region(start, end, env);
+        self.depth -= 1;
+    }
+
+    fn walk_region(&mut self, start: usize, end: usize, env: &mut Env) {
         let mut pc = start;
         while pc < end {
             self.enter(pc, env);
@@ -306,52 +332,15 @@ impl<'a> Walker<'a> {
     }
 
     /// What lines `start..end` may write.
+    /// What lines `start..end` may write: the union of the per-line
+    /// summaries the structure pass recorded (only lines that write are there).
     fn written(&self, start: usize, end: usize) -> Written {
+        let writes = &self.structure.writes;
+        let first = writes.partition_point(|(line, _)| *line < start);
         let mut written = Written::default();
-        for line in start..end.min(self.lines.len()) {
-            let Some(block) = self.block(line) else {
-                continue;
-            };
-            for statement in &block.statements {
-                match &statement.kind {
-                    StatementKind::Assign(assign) => {
-                        let name = upper(assign.target.name.text(self.source));
-                        written.names.push(if assign.target.indices.is_empty() {
-                            key(&name, &[])
-                        } else {
-                            name
-                        });
-                    }
-                    StatementKind::Def(def) => {
-                        written.names.extend(
-                            def.variables
-                                .iter()
-                                .map(|d| upper(d.name.text(self.source))),
-                        );
-                    }
-                    StatementKind::For { variable, .. } => written
-                        .names
-                        .push(key(&upper(variable.text(self.source)), &[])),
-                    StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
-                        let name = upper(name.text(self.source));
-                        match call_kind(&name) {
-                            CallKind::Cycle600 => {
-                                written
-                                    .names
-                                    .extend((1..=6).map(|n| format!("_CYC600_{n}")));
-                                written.rotation = true;
-                            }
-                            CallKind::Cycle800 => written.rotation = true,
-                            CallKind::Measuring => written
-                                .names
-                                .extend(["_OVR".to_string(), "_OVI".to_string()]),
-                            CallKind::Builtin => {}
-                            CallKind::Subprogram => written.names.push("R".to_string()),
-                        }
-                    }
-                    _ => {}
-                }
-            }
+        for (_, line) in writes[first..].iter().take_while(|(line, _)| *line < end) {
+            written.names.extend(line.names.iter().cloned());
+            written.rotation |= line.rotation;
         }
         written
     }
@@ -663,6 +652,48 @@ impl<'a> Walker<'a> {
     }
 }
 
+/// What one block may write: variables, arrays a measuring cycle fills, R
+/// parameters a subprogram may change, the swivel rotation.
+fn block_writes(source: &[u8], block: &Block) -> Written {
+    let mut written = Written::default();
+    for statement in &block.statements {
+        match &statement.kind {
+            StatementKind::Assign(assign) => {
+                let name = upper(assign.target.name.text(source));
+                written.names.push(if assign.target.indices.is_empty() {
+                    key(&name, &[])
+                } else {
+                    name
+                });
+            }
+            StatementKind::Def(def) => written
+                .names
+                .extend(def.variables.iter().map(|d| upper(d.name.text(source)))),
+            StatementKind::For { variable, .. } => {
+                written.names.push(key(&upper(variable.text(source)), &[]))
+            }
+            StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
+                match call_kind(&upper(name.text(source))) {
+                    CallKind::Cycle600 => {
+                        written
+                            .names
+                            .extend((1..=6).map(|n| format!("_CYC600_{n}")));
+                        written.rotation = true;
+                    }
+                    CallKind::Cycle800 => written.rotation = true,
+                    CallKind::Measuring => written
+                        .names
+                        .extend(["_OVR".to_string(), "_OVI".to_string()]),
+                    CallKind::Builtin => {}
+                    CallKind::Subprogram => written.names.push("R".to_string()),
+                }
+            }
+            _ => {}
+        }
+    }
+    written
+}
+
 fn forget(written: &Written, env: &mut Env, origin: &Origin) {
     for name in &written.names {
         env.forget(name, origin.clone());
@@ -875,6 +906,8 @@ struct Structure {
     loop_starts: HashMap<usize, usize>,
     /// Lines with a STOPRE, in order.
     stopre_lines: Vec<usize>,
+    /// What each line that writes anything writes, in line order.
+    writes: Vec<(usize, Written)>,
 }
 
 #[derive(PartialEq)]
@@ -895,6 +928,7 @@ impl Structure {
             labels: HashMap::new(),
             loop_starts: HashMap::new(),
             stopre_lines: Vec::new(),
+            writes: Vec::new(),
         };
         let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
         // Jumps, resolved once every label is known.
@@ -904,6 +938,10 @@ impl Structure {
                 continue;
             };
             let block = &block;
+            let writes = block_writes(source, block);
+            if !writes.names.is_empty() || writes.rotation {
+                structure.writes.push((line, writes));
+            }
             for statement in &block.statements {
                 match &statement.kind {
                     StatementKind::Command(name) if name.is(source, "STOPRE") => {

@@ -1,0 +1,50 @@
+//! Rewriting never panics; its output parses with no new syntax error;
+//! rewriting it again changes nothing; and every line of the input that does
+//! not mention CYCLE600 is still there, in order.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use sinuprep::emit::apply;
+use sinuprep::emit::cycle600::{rewrite, Options};
+use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::syntax::parse;
+
+fn run(source: &[u8], heads: &Heads, options: &Options) -> Vec<u8> {
+    let analysis = analyze(source, &Supplied::default(), Some(heads));
+    apply(source, &rewrite(source, &analysis, options).edits)
+}
+
+fuzz_target!(|data: &[u8]| {
+    let heads = Heads::read(
+        "HEAD_DEF".into(),
+        b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
+    );
+    for options in [
+        Options::default(),
+        Options {
+            runtime: Some(None),
+            inline_results: true,
+            ..Options::default()
+        },
+    ] {
+        let once = run(data, &heads, &options);
+        assert!(
+            parse(&once).diagnostics.len() <= parse(data).diagnostics.len(),
+            "syntax error added"
+        );
+        assert!(run(&once, &heads, &options) == once, "not idempotent");
+        let mut rest: &[u8] = &once;
+        for line in data.split(|&b| b == b'\n') {
+            let mentions = line.windows(8).any(|w| w.eq_ignore_ascii_case(b"CYCLE600"));
+            let inline = line.windows(8).any(|w| w.eq_ignore_ascii_case(b"_CYC600_"));
+            if mentions || inline {
+                continue;
+            }
+            match rest.windows(line.len().max(1)).position(|w| w == line) {
+                Some(at) => rest = &rest[at + line.len()..],
+                None if line.is_empty() => {}
+                None => panic!("line lost: {:?}", String::from_utf8_lossy(line)),
+            }
+        }
+    }
+});

@@ -1,0 +1,251 @@
+//! Hostile input: each must give a clear diagnostic or a plain result, in
+//! bounded time and memory, and never a panic or a lost byte.
+
+mod support;
+
+use sinuprep::emit::apply;
+use sinuprep::emit::cycle600::{rewrite, Options};
+use sinuprep::lint::{self, Selection};
+use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::syntax::{parse, program_kind};
+use support::{assert_exit, run};
+
+/// Everything the tool does with a program: parse, print, lint, rewrite.
+fn survive(name: &str, source: &[u8]) -> Vec<&'static str> {
+    let program = parse(source);
+    assert!(program.print() == source, "{name}: bytes lost");
+    let heads = Heads::read(
+        "HEAD_DEF".into(),
+        b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
+    );
+    let findings = lint::check(
+        source,
+        name,
+        program_kind(Some(name), source),
+        &Selection::default(),
+        &Supplied::default(),
+        Some(&heads),
+    );
+    for finding in &findings {
+        assert!(
+            finding.span.end <= source.len(),
+            "{name}: {} outside the input",
+            finding.code
+        );
+    }
+    let analysis = analyze(source, &Supplied::default(), Some(&heads));
+    let output = apply(
+        source,
+        &rewrite(source, &analysis, &Options::default()).edits,
+    );
+    assert!(
+        parse(&output).diagnostics.len() <= program.diagnostics.len(),
+        "{name}: rewrite added a syntax error"
+    );
+    let mut codes: Vec<&'static str> = findings.iter().map(|d| d.code).collect();
+    codes.sort_unstable();
+    codes.dedup();
+    codes
+}
+
+const CALL: &str = "CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
+
+#[test]
+fn a_million_arguments() {
+    let source = format!("R1=SET({}1)\n", "1,".repeat(1_000_000));
+    survive("million arguments", source.as_bytes());
+    let call = format!("CYCLE600({}0)\n", "0,".repeat(1_000_000));
+    assert!(survive("million CYCLE600 arguments", call.as_bytes()).contains(&"C601"));
+}
+
+#[test]
+fn a_hundred_thousand_nested_blocks_around_a_cycle600() {
+    let depth = 100_000;
+    let source = format!(
+        "{}{CALL}{}M30\n",
+        "IF R1>0\n".repeat(depth),
+        "ENDIF\n".repeat(depth)
+    );
+    survive("nested IF", source.as_bytes());
+    let source = format!(
+        "{}{CALL}{}M30\n",
+        "WHILE R1>0\n".repeat(depth),
+        "ENDWHILE\n".repeat(depth)
+    );
+    survive("nested WHILE", source.as_bytes());
+    let source = format!(
+        "R1=1\n{}{CALL}{}M30\n",
+        "IF R1>0\n".repeat(depth),
+        "ENDIF\n".repeat(depth)
+    );
+    survive("nested known IF", source.as_bytes());
+}
+
+#[test]
+fn a_hundred_thousand_nested_parentheses() {
+    let source = format!("R1={}1{}\n", "(".repeat(100_000), ")".repeat(100_000));
+    assert!(survive("nested parentheses", source.as_bytes()).contains(&"S008"));
+}
+
+#[test]
+fn numbers_beyond_any_range() {
+    let huge = format!("R1=1{}\n", "0".repeat(10_000));
+    assert!(survive("10,000 digits", huge.as_bytes()).contains(&"S003"));
+    let tiny = format!("R1=0.{}1\nM30\n", "0".repeat(10_000));
+    // A value too small for a REAL is 0, not an error (the block is too long, though).
+    assert_eq!(survive("10,000 decimals", tiny.as_bytes()), ["N008"]);
+    assert!(survive("exponent", b"R1=1EX99999\n").contains(&"S003"));
+}
+
+#[test]
+fn expressions_without_a_value_in_cycle600_arguments() {
+    for angle in [
+        "ASIN(2)", "0/0", "SQRT(-1)", "LN(0)", "1/0", "ACOS(-2)", "\"TEXT\"",
+    ] {
+        let source = format!("CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, {angle}, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n");
+        assert!(
+            survive(angle, source.as_bytes()).contains(&"C609"),
+            "{angle}"
+        );
+    }
+}
+
+#[test]
+fn control_bytes_invalid_utf8_and_nothing_at_all() {
+    survive("NUL", b"N10 X1\0\x01\x02 Y2\nM30\n");
+    survive("invalid UTF-8", b"N10 X1 ; \xff\xfe\n\xc3\x28 X2\nM30\n");
+    survive("empty", b"");
+    survive("only line ends", b"\r\n\r\n\n\r");
+}
+
+#[test]
+fn loops_the_evaluator_could_follow_forever() {
+    let endless = format!("R1=0\nLOOP\nR1=R1+1\n{CALL}ENDLOOP\nM30\n");
+    survive("LOOP", endless.as_bytes());
+    let while_true = format!("WHILE 1\n{CALL}ENDWHILE\nM30\n");
+    survive("WHILE 1", while_true.as_bytes());
+    let gotob = format!("L1: R1=R1+1\n{CALL}GOTOB L1\nM30\n");
+    survive("GOTOB loop", gotob.as_bytes());
+    let gotos = format!("R1=R1+1\n{CALL}GOTOS\n");
+    survive("GOTOS", gotos.as_bytes());
+}
+
+#[test]
+fn the_cli_on_empty_input_and_on_a_directory() {
+    let empty = run(&["rewrite", "-"], b"");
+    assert_exit(&empty, 0);
+    assert!(empty.stdout.is_empty());
+    assert_exit(&run(&["check", "--format", "short", "-"], b""), 0);
+    assert_exit(&run(&["rewrite", "samples"], b""), 2);
+    assert_exit(&run(&["eval", "samples"], b""), 2);
+}
+
+/// A large program with a CYCLE600, so that an in-place rewrite has work to do.
+fn large_program() -> Vec<u8> {
+    let mut source =
+        b"N5 CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n"
+            .to_vec();
+    for n in 0..100_000 {
+        source.extend_from_slice(
+            format!("N{} G1 X{}.125 Y-{}.5 Z3.25\n", 10 + n, n % 997, n % 89).as_bytes(),
+        );
+    }
+    source.extend_from_slice(b"M30\n");
+    source
+}
+
+#[test]
+fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-kill-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let original = large_program();
+    let heads = support::repo().join("samples/HEAD_DEF.SPF");
+    let path = dir.join("BIG.MPF");
+    let rewrite = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(["rewrite", "--in-place", "--no-backup", "--heads"])
+            .arg(&heads)
+            .arg(&path)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("runs")
+    };
+    // How long a whole run takes here, to kill it at points spread over it,
+    // up to the very end (the write and the rename).
+    std::fs::write(&path, &original).expect("write");
+    let started = std::time::Instant::now();
+    assert!(rewrite().wait().expect("ends").success());
+    let whole = started.elapsed();
+    let (mut untouched, mut replaced) = (0, 0);
+    for percent in [2u32, 25, 50, 75, 90, 100, 110, 200, 300] {
+        std::fs::write(&path, &original).expect("write");
+        let mut child = rewrite();
+        std::thread::sleep(whole * percent / 100);
+        let _ = child.kill();
+        let _ = child.wait();
+        let now = std::fs::read(&path).expect("the file is still there");
+        let rewritten = now.starts_with(b"; sinuprep: CYCLE600")
+            && now.ends_with(b"M30\n")
+            && now.len() > original.len();
+        assert!(now == original || rewritten, "killed at {percent}%: the file is neither the original nor the whole rewrite ({} bytes)", now.len());
+        if now == original {
+            untouched += 1
+        } else {
+            replaced += 1
+        }
+    }
+    eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite");
+    // The early kills cannot have finished, the late ones must have: the test
+    // saw both sides of the write.
+    assert!(
+        untouched > 0 && replaced > 0,
+        "{untouched} untouched, {replaced} replaced"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_read_only_file_is_a_clear_error_and_stays_untouched() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-ro-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("RO.MPF");
+    let original =
+        b"N10 CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n";
+    std::fs::write(&path, original).expect("write");
+    let mut permissions = std::fs::metadata(&path).expect("metadata").permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(&path, permissions).expect("read-only");
+    let heads = support::repo().join("samples/HEAD_DEF.SPF");
+    let output = run(
+        &[
+            "rewrite",
+            "--in-place",
+            "--heads",
+            heads.to_str().expect("utf-8"),
+            path.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("read-only"));
+    assert_eq!(std::fs::read(&path).expect("read"), original);
+    let leftovers = std::fs::read_dir(&dir).expect("dir").count();
+    assert_eq!(leftovers, 1, "no temporary file or backup left");
+    let mut permissions = std::fs::metadata(&path).expect("metadata").permissions();
+    #[allow(clippy::permissions_set_readonly_false)]
+    permissions.set_readonly(false);
+    let _ = std::fs::set_permissions(&path, permissions);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Inputs the fuzzers found crashes with, kept so they stay fixed.
+#[test]
+fn fuzzer_findings_stay_fixed() {
+    for path in support::files_below(&support::repo().join("tests/fixtures/regressions")) {
+        survive(
+            &path.display().to_string(),
+            &std::fs::read(&path).expect("readable"),
+        );
+    }
+}
