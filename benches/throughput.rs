@@ -1,0 +1,173 @@
+//! Whole-program throughput of the release binary: generates its inputs (a
+//! 5-axis CAM program, the outside corpus replicated, the same program with
+//! CYCLE600 calls scattered through it), runs `check` and `rewrite` on each,
+//! and prints MB/s, blocks/s and peak memory, with `wc -l` as the floor.
+//!
+//! `cargo bench --bench throughput` (size in MB: `SINUPREP_BENCH_MB`, default
+//! 100). Peak memory comes from `/usr/bin/time -f %M`; nothing is asserted.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+fn main() {
+    let megabytes: usize = std::env::var("SINUPREP_BENCH_MB")
+        .ok()
+        .and_then(|m| m.parse().ok())
+        .unwrap_or(100);
+    let size = megabytes * 1_000_000;
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let status = Command::new("cargo")
+        .args(["build", "--release", "--quiet"])
+        .current_dir(&root)
+        .status();
+    assert!(status.is_ok_and(|s| s.success()), "release build failed");
+    let binary = root.join("target/release/sinuprep");
+    let dir = std::env::temp_dir().join("sinuprep-bench");
+    std::fs::create_dir_all(&dir).expect("bench directory");
+
+    let cam = dir.join("CAM_5AXIS.MPF");
+    std::fs::write(&cam, cam_program(size, 0)).expect("write");
+    let with_cycle600 = dir.join("CAM_CYCLE600.MPF");
+    std::fs::write(&with_cycle600, cam_program(size, 10_000)).expect("write");
+    let corpus = dir.join("CORPUS.MPF");
+    std::fs::write(&corpus, replicated_corpus(&root, size)).expect("write");
+    let heads = root.join("samples/HEAD_DEF.SPF");
+    let heads = heads.to_str().expect("utf-8");
+
+    println!(
+        "{:<44} {:>9} {:>10} {:>12} {:>10}",
+        "run", "seconds", "MB/s", "blocks/s", "peak MiB"
+    );
+    for input in [&cam, &corpus, &with_cycle600] {
+        let bytes = std::fs::metadata(input).map(|m| m.len()).unwrap_or(0) as f64;
+        let blocks = std::fs::read(input)
+            .map(|b| b.iter().filter(|&&c| c == b'\n').count())
+            .unwrap_or(0) as f64;
+        let name = input.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        let path = input.to_str().expect("utf-8");
+        let output = dir.join("out.mpf");
+        let runs: [(String, Vec<&str>); 3] = [
+            (format!("wc -l {name}"), vec!["wc", "-l", path]),
+            (
+                format!("check {name}"),
+                vec![
+                    binary.to_str().expect("utf-8"),
+                    "check",
+                    "--format",
+                    "short",
+                    "--heads",
+                    heads,
+                    path,
+                ],
+            ),
+            (
+                format!("rewrite {name}"),
+                vec![
+                    binary.to_str().expect("utf-8"),
+                    "rewrite",
+                    "--heads",
+                    heads,
+                    "-o",
+                    output.to_str().expect("utf-8"),
+                    path,
+                ],
+            ),
+        ];
+        for (label, command) in runs {
+            let (seconds, peak) = measure(&command);
+            println!(
+                "{label:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1}",
+                bytes / seconds / 1e6,
+                blocks / seconds,
+                peak as f64 / 1024.0
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Best of three runs: wall seconds, and peak resident memory in KiB.
+fn measure(command: &[&str]) -> (f64, u64) {
+    let mut best = (f64::INFINITY, 0);
+    for _ in 0..3 {
+        let started = Instant::now();
+        let output = Command::new("/usr/bin/time")
+            .arg("-f")
+            .arg("%M")
+            .args(command)
+            .output()
+            .expect("/usr/bin/time runs");
+        let seconds = started.elapsed().as_secs_f64();
+        let peak = String::from_utf8_lossy(&output.stderr)
+            .lines()
+            .last()
+            .and_then(|l| l.trim().parse().ok())
+            .unwrap_or(0);
+        if seconds < best.0 {
+            best = (seconds, peak);
+        }
+    }
+    best
+}
+
+/// `N.. G1 X.. Y.. Z.. B.. C..` with an occasional feed, after a header with
+/// DEF, TRAORI and a cycle; a CYCLE600 every `every` blocks when not 0.
+fn cam_program(size: usize, every: usize) -> Vec<u8> {
+    let mut out = b"; generated 5-axis program\nDEF REAL _X_HOME, _Z_HOME\nN10 G17 G54 G90 G71\nN20 T=\"BALL_D6\" M6\nN30 TRAORI\nN40 CYCLE832(0.01,1,1)\n".to_vec();
+    let mut state: u64 = 0x2545F4914F6CDD1D;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % 1_000_000) as f64 / 1000.0
+    };
+    let mut n = 50u64;
+    while out.len() < size {
+        n += 10;
+        let feed = if n % 970 == 0 { " F2000." } else { "" };
+        let line = format!(
+            "N{n} G1 X{:.3} Y{:.3} Z{:.3} B{:.3} C{:.3}{feed}\n",
+            next() - 500.0,
+            next() - 500.0,
+            next() / 5.0 - 100.0,
+            next() / 5.5 - 90.0,
+            next() / 2.7 - 180.0
+        );
+        out.extend_from_slice(line.as_bytes());
+        if every != 0 && n % (every as u64 * 10) == 0 {
+            out.extend_from_slice(b"CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 1.5, -0.5, 30, 0, 0, 0, 1, 39, 0, 0, 0)\n");
+        }
+    }
+    out.extend_from_slice(b"TRAFOOF\nM30\n");
+    out
+}
+
+/// The real programs of the outside corpus, one after another until `size`.
+fn replicated_corpus(root: &Path, size: usize) -> Vec<u8> {
+    let dir = std::env::var_os("SINUPREP_CORPUS")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root.join("../shared/corpus"));
+    let mut files = Vec::new();
+    let mut stack = vec![dir];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().map_or(true, |e| e != "md") {
+                files.extend(std::fs::read(&path));
+            }
+        }
+    }
+    let mut out = Vec::with_capacity(size);
+    while !files.is_empty() && out.len() < size {
+        for file in &files {
+            out.extend_from_slice(file);
+            if !out.ends_with(b"\n") {
+                out.push(b'\n');
+            }
+        }
+    }
+    out
+}
