@@ -1,12 +1,14 @@
 //! Rewriting never panics; its output parses with no new syntax error;
 //! rewriting it again changes nothing; and every line of the input that does
-//! not mention CYCLE600 is still there, in order.
+//! not mention CYCLE600 is still there, in order (lines as the tool splits
+//! them: LF, CRLF, or a lone CR).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Options};
 use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::syntax::lines::raw_lines;
 use sinuprep::syntax::parse;
 
 fn run(source: &[u8], heads: &Heads, options: &Options) -> Vec<u8> {
@@ -33,16 +35,17 @@ fuzz_target!(|data: &[u8]| {
             "syntax error added"
         );
         assert!(run(&once, &heads, &options) == once, "not idempotent");
-        let mut rest: &[u8] = &once;
-        for line in data.split(|&b| b == b'\n') {
+        // Lines as the tool sees them: LF, CRLF and a lone CR all end one.
+        let output_lines: Vec<&[u8]> = raw_lines(&once).map(|l| l.content.of(&once)).collect();
+        let mut at = 0;
+        for line in raw_lines(data).map(|l| l.content.of(data)) {
             let mentions = line.windows(8).any(|w| w.eq_ignore_ascii_case(b"CYCLE600"));
             let inline = line.windows(8).any(|w| w.eq_ignore_ascii_case(b"_CYC600_"));
             if mentions || inline {
                 continue;
             }
-            match rest.windows(line.len().max(1)).position(|w| w == line) {
-                Some(at) => rest = &rest[at + line.len()..],
-                None if line.is_empty() => {}
+            match output_lines[at..].iter().position(|o| *o == line) {
+                Some(found) => at += found + 1,
                 None => panic!("line lost: {:?}", String::from_utf8_lossy(line)),
             }
         }
