@@ -249,3 +249,39 @@ fn fuzzer_findings_stay_fixed() {
         );
     }
 }
+
+/// Found by fuzzing: a recalculation-only CYCLE600 whose results are known
+/// only at run time must not make the active rotation unknown, or a second
+/// rewrite (where it is gone) would evaluate more than the first.
+#[test]
+fn rewriting_regressions_again_changes_nothing() {
+    let heads = Heads::read(
+        "HEAD_DEF".into(),
+        b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
+    );
+    for path in support::files_below(&support::repo().join("tests/fixtures/regressions")) {
+        let source = std::fs::read(&path).expect("readable");
+        for options in [
+            Options::default(),
+            Options {
+                runtime: Some(None),
+                inline_results: true,
+                ..Options::default()
+            },
+        ] {
+            let run = |bytes: &[u8]| {
+                apply(
+                    bytes,
+                    &rewrite(
+                        bytes,
+                        &analyze(bytes, &Supplied::default(), Some(&heads)),
+                        &options,
+                    )
+                    .edits,
+                )
+            };
+            let once = run(&source);
+            assert!(run(&once) == once, "{}: not idempotent", path.display());
+        }
+    }
+}

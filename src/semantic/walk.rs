@@ -549,8 +549,14 @@ impl<'a> Walker<'a> {
                 for n in 1..=6 {
                     env.forget(&format!("_CYC600_{n}"), origin.clone());
                 }
+                // A call that only recalculates (_SW_REC=1) never swivels, even
+                // when its results are unknown: the active rotation stays.
+                let recalculates = site
+                    .bound
+                    .as_ref()
+                    .is_some_and(|b| b.arguments[2].value == Ok(Value::Number(1.0)));
                 let why = match &site.evaluation {
-                    Some(e) if e.parameters.recalculate_only => None,
+                    _ if recalculates => None,
                     Some(_) => Some(format!(
                         "the CYCLE600 on line {line} adds to a rotation unknown offline"
                     )),
