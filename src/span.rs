@@ -66,6 +66,8 @@ pub struct LineIndex<'a> {
 
 impl<'a> LineIndex<'a> {
     pub fn new(source: &'a [u8]) -> Self {
+        // The same line ends as `syntax::lines` (LF, CRLF, lone CR), written
+        // again because `span` sits below `syntax` and may not depend on it.
         let mut line_starts = vec![0];
         let mut at = 0;
         while let Some(found) = memchr::memchr2(b'\n', b'\r', &source[at..]) {

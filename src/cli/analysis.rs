@@ -15,7 +15,6 @@ use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, variable_key};
 use crate::semantic::value::Value;
 use crate::semantic::{analyze, Analysis, Heads, Supplied};
-use crate::span::Span;
 use crate::syntax::parse;
 use crate::syntax::tree::{LineKind, StatementKind};
 
@@ -143,12 +142,7 @@ pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
     let rewrite = rewrite(&file.bytes, &analysis, options);
     let mut diagnostics = crate::syntax::diagnostics(&file.bytes);
     if inputs.heads.is_none() && !analysis.calls.is_empty() {
-        diagnostics.push(
-            Diagnostic::new("C610", "head-def-missing", Severity::Warning, Span::new(0, 0))
-                .message("head names were not checked: no HEAD_DEF.SPF next to the program")
-                .label("accessories unchecked")
-                .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml"),
-        );
+        diagnostics.push(crate::semantic::head_def::not_found());
     }
     diagnostics.extend(rewrite.diagnostics.iter().cloned());
     diagnostics.sort_by_key(|d| (d.span.start, d.code));

@@ -10,7 +10,7 @@ use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::number::format;
 use crate::emit::{runtime, Edit};
 use crate::rotation::Kind;
-use crate::semantic::cycle600::Evaluation;
+use crate::semantic::cycle600::{no_cycle800_form, Evaluation};
 use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
 use crate::span::Span;
@@ -201,12 +201,7 @@ pub fn code(
     match options.form {
         Form::Cycle800 => {
             if sequence.is_proper_euler() {
-                return Err(
-                    Diagnostic::new("C611", "cycle600-no-cycle800-form", Severity::Error, span)
-                        .message(format!("CYCLE800 swivels axis by axis in the six Tait-Bryan orders only; {} is a proper Euler sequence", p.output))
-                        .label("no CYCLE800 _MODE for this order")
-                        .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)"),
-                );
+                return Err(no_cycle800_form(p.output, span));
             }
             let st = u8::from(evaluation.additive_on_control);
             let dir = if p.inverse { 1 } else { -1 };

@@ -18,7 +18,9 @@ use crate::emit::cycle600::{Form, Options};
 use crate::emit::number::format;
 use crate::rotation::euler::{sin_cos_degrees, GIMBAL_TOLERANCE};
 use crate::rotation::{self, Axis, Kind};
-use crate::semantic::cycle600::{Operand, RuntimeParameters};
+use crate::semantic::cycle600::{
+    additive_onto_unknown, no_cycle800_form, Operand, RuntimeParameters,
+};
 use crate::semantic::env::Active;
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
@@ -278,20 +280,22 @@ pub fn code(
             }
             None if p.input.kind == Kind::Intrinsic => (own, true),
             None => {
-                return Err(Diagnostic::new("C608", "cycle600-additive-extrinsic-unknown-active", Severity::Error, span)
-                    .message("an additive extrinsic rotation needs the active rotation, which is unknown offline")
-                    .label("additive about the machine axes")
-                    .help("make the earlier swivel known offline, or give the total rotation with _ROT_AD=0"));
+                return Err(additive_onto_unknown(
+                    span,
+                    "an additive extrinsic rotation",
+                    "",
+                ));
             }
         }
     } else {
         (own, false)
     };
     if p.recalculate_only && additive_on_control {
-        return Err(Diagnostic::new("C608", "cycle600-additive-extrinsic-unknown-active", Severity::Error, span)
-            .message("the results of an additive recalculation need the active rotation, which is unknown offline")
-            .label("additive onto an unknown rotation")
-            .help("make the earlier swivel known offline"));
+        return Err(additive_onto_unknown(
+            span,
+            "the result of an additive recalculation",
+            "",
+        ));
     }
 
     // The output read back as intrinsic angles (an extrinsic output is the
@@ -301,10 +305,7 @@ pub fn code(
         Kind::Extrinsic => (p.output.reversed(), true),
     };
     if !p.recalculate_only && options.form == Form::Cycle800 && sequence.is_proper_euler() {
-        return Err(Diagnostic::new("C611", "cycle600-no-cycle800-form", Severity::Error, span)
-            .message(format!("CYCLE800 swivels axis by axis in the six Tait-Bryan orders only; {} is a proper Euler sequence", p.output))
-            .label("no CYCLE800 _MODE for this order")
-            .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)"));
+        return Err(no_cycle800_form(p.output, span));
     }
     let angles = decompose(&mut code, &target, sequence, zero_first, options.precision);
 

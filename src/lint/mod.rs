@@ -13,7 +13,7 @@ use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{FileContext, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze, Heads, Supplied};
-use crate::span::{LineIndex, Span};
+use crate::span::LineIndex;
 use crate::syntax::lines::raw_lines;
 use crate::syntax::tree::LineKind;
 use crate::syntax::{LineParser, ProgramKind};
@@ -119,13 +119,7 @@ fn cycle600_findings(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) 
         }
     }
     if heads.is_none() && !analysis.calls.is_empty() {
-        out.push(
-            rules::head_def_missing::RULE
-                .at(Span::new(0, 0))
-                .message("head names were not checked: no HEAD_DEF.SPF next to the program")
-                .label("accessories unchecked")
-                .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml"),
-        );
+        out.push(crate::semantic::head_def::not_found());
     }
     out
 }

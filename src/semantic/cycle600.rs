@@ -329,6 +329,35 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
     (parameters, warnings)
 }
 
+/// C608: `what` (an additive extrinsic rotation, an additive
+/// recalculation) needs the active rotation, which is unknown offline.
+pub fn additive_onto_unknown(span: Span, what: &str, why: &str) -> Diagnostic {
+    let why = if why.is_empty() {
+        String::new()
+    } else {
+        format!(": {why}")
+    };
+    diagnostic(
+        "C608",
+        "cycle600-additive-extrinsic-unknown-active",
+        Severity::Error,
+        span,
+    )
+    .message(format!(
+        "{what} needs the active rotation, which is unknown offline{why}"
+    ))
+    .label("additive onto an unknown rotation")
+    .help("make the earlier swivel known offline, or give the total rotation with _ROT_AD=0")
+}
+
+/// C611: a proper Euler output has no CYCLE800 `_MODE`.
+pub fn no_cycle800_form(output: Sequence, span: Span) -> Diagnostic {
+    diagnostic("C611", "cycle600-no-cycle800-form", Severity::Error, span)
+        .message(format!("CYCLE800 swivels axis by axis in the six Tait-Bryan orders only; {output} is a proper Euler sequence"))
+        .label("no CYCLE800 _MODE for this order")
+        .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)")
+}
+
 fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
     match why {
         Unknown::Invalid(reason) => diagnostic(
@@ -399,10 +428,11 @@ pub fn evaluate_parameters(
                     Active::Unknown { why } => why.clone(),
                     _ => String::new(),
                 };
-                return Err(diagnostic("C608", "cycle600-additive-extrinsic-unknown-active", Severity::Error, call_span)
-                    .message(format!("an additive extrinsic rotation needs the active rotation, which is unknown offline: {why}"))
-                    .label("additive about the machine axes")
-                    .help("make the earlier swivel known offline, or give the total rotation with _ROT_AD=0"));
+                return Err(additive_onto_unknown(
+                    call_span,
+                    "an additive extrinsic rotation",
+                    &why,
+                ));
             }
         }
     } else {

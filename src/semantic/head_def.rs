@@ -95,6 +95,19 @@ impl Heads {
     }
 }
 
+/// C610: no HEAD_DEF was found, so head names were not checked.
+pub fn not_found() -> Diagnostic {
+    Diagnostic::new(
+        "C610",
+        "head-def-missing",
+        Severity::Warning,
+        Span::new(0, 0),
+    )
+    .message("head names were not checked: no HEAD_DEF.SPF next to the program")
+    .label("accessories unchecked")
+    .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml")
+}
+
 /// Levenshtein distance, for did-you-mean.
 pub fn distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
