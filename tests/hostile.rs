@@ -250,9 +250,10 @@ fn fuzzer_findings_stay_fixed() {
     }
 }
 
-/// Found by fuzzing: a recalculation-only CYCLE600 whose results are known
-/// only at run time must not make the active rotation unknown, or a second
-/// rewrite (where it is gone) would evaluate more than the first.
+/// Found by fuzzing: a recalculation-only CYCLE600 must not make the active
+/// rotation unknown (not when its results are known only at run time, not
+/// when a loop or a backward jump repeats it), or a second rewrite, where the
+/// call is gone, would evaluate more than the first.
 #[test]
 fn rewriting_regressions_again_changes_nothing() {
     let heads = Heads::read(

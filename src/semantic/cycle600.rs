@@ -489,6 +489,29 @@ pub struct RuntimeParameters {
     pub coordinates: [Operand; 9],
 }
 
+impl RuntimeParameters {
+    /// The parameters as far as the rotation goes, when only translations are
+    /// known at run time (they stand in as 0): a rotation never depends on them.
+    pub fn rotation_parameters(&self) -> Option<Parameters> {
+        let known = |n: usize| match self.coordinates[n] {
+            Operand::Known(value) => Some(value),
+            Operand::Runtime(_) => None,
+        };
+        Some(Parameters {
+            head: self.head.clone(),
+            recalculate_only: self.recalculate_only,
+            input: self.input,
+            before: Vector3::zeros(),
+            angles: [known(3)?, known(4)?, known(5)?],
+            after: Vector3::zeros(),
+            output: self.output,
+            additive: self.additive,
+            inverse: self.inverse,
+            retract: self.retract,
+        })
+    }
+}
+
 /// `Some` when the only unknown arguments are coordinates whose expressions
 /// read variables (not `ASIN(2)`-like errors): the call can be computed on
 /// the control.

@@ -11,7 +11,7 @@
 //! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
 //! subprogram does beyond possibly changing R parameters.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use crate::diagnostic::Diagnostic;
 use crate::rotation::{self, Kind, Sequence};
@@ -70,32 +70,65 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
 
 /// The walk, and the state it ends in: what the program leaves in its
 /// variables when run offline.
+///
+/// Before the walk meets a CYCLE600 inside a loop it must assume that the call
+/// swivels; when the call turns out to only recalculate (`_SW_REC=1`), the
+/// walk is repeated knowing that. Rewriting such a call removes it, so a
+/// second rewrite would see what the repeated walk sees: the repetition is what
+/// makes the rewrite idempotent. Each repetition learns one more line, so
+/// there are at most as many as there are CYCLE600 calls.
 pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
     let lines = Lines::new(source);
-    let mut walker = Walker {
-        structure: Structure::build(&lines),
-        lines: &lines,
-        source,
-        supplied,
-        heads,
-        pending: HashMap::new(),
-        analysis: Analysis::default(),
-        depth: 0,
-    };
-    let mut env = Env::default();
-    walker.walk(0, lines.len(), &mut env);
-    walker
-        .analysis
-        .calls
-        .sort_by_key(|c| (c.line, c.statement.start));
-    (walker.analysis, env)
+    let structure = Structure::build(&lines);
+    let mut recalculating = HashSet::new();
+    loop {
+        let mut walker = Walker {
+            structure: &structure,
+            lines: &lines,
+            source,
+            supplied,
+            heads,
+            pending: HashMap::new(),
+            analysis: Analysis::default(),
+            depth: 0,
+            recalculating: &recalculating,
+            assumed_swivel: HashSet::new(),
+        };
+        let mut env = Env::default();
+        walker.walk(0, lines.len(), &mut env);
+        let learned: Vec<usize> = walker
+            .analysis
+            .calls
+            .iter()
+            .filter(|c| c.recalculates() && walker.assumed_swivel.contains(&c.line))
+            .map(|c| c.line)
+            .collect();
+        if learned.is_empty() {
+            let mut analysis = walker.analysis;
+            analysis.calls.sort_by_key(|c| (c.line, c.statement.start));
+            return (analysis, env);
+        }
+        recalculating.extend(learned);
+    }
+}
+
+impl CallSite {
+    /// The call only recalculates (`_SW_REC=1`): it never swivels.
+    fn recalculates(&self) -> bool {
+        self.bound
+            .as_ref()
+            .is_some_and(|b| b.arguments[2].value == Ok(Value::Number(1.0)))
+    }
 }
 
 /// Names a region writes, for forgetting them.
 #[derive(Default, Clone)]
 struct Written {
     names: Vec<String>,
+    /// A CYCLE800 (or another call that certainly swivels) is there.
     rotation: bool,
+    /// Lines of CYCLE600 calls: they swivel unless they only recalculate.
+    cycle600_lines: Vec<usize>,
 }
 
 struct Walker<'a> {
@@ -103,13 +136,17 @@ struct Walker<'a> {
     source: &'a [u8],
     supplied: &'a Supplied,
     heads: Option<&'a Heads>,
-    structure: Structure,
+    structure: &'a Structure,
     /// Line -> what jumps that may skip to it have jumped over.
     pending: HashMap<usize, Vec<(Written, Origin)>>,
     analysis: Analysis,
     /// How many blocks the walk is inside; bounded, so that no program can
     /// exhaust the stack.
     depth: usize,
+    /// CYCLE600 lines an earlier walk found to only recalculate.
+    recalculating: &'a HashSet<usize>,
+    /// CYCLE600 lines a forget treated as swivelling.
+    assumed_swivel: HashSet<usize>,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
@@ -137,7 +174,7 @@ impl<'a> Walker<'a> {
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
         if self.depth >= MAX_NESTING {
             let written = self.written(start, end);
-            forget(
+            self.forget(
                 &written,
                 env,
                 &Origin::ControlFlow {
@@ -199,11 +236,11 @@ impl<'a> Walker<'a> {
                             what: "loop",
                         };
                         let written = self.written(pc, end_line + 1);
-                        forget(&written, env, &origin);
+                        self.forget(&written, env, &origin);
                         self.visit(pc, &block, env);
                         self.walk(pc + 1, end_line, env);
                         if !runs_once {
-                            forget(&written, env, &origin);
+                            self.forget(&written, env, &origin);
                         }
                         pc = end_line + 1;
                         continue;
@@ -230,7 +267,7 @@ impl<'a> Walker<'a> {
     fn enter(&mut self, line: usize, env: &mut Env) {
         if let Some(&last) = self.structure.loop_starts.get(&line) {
             let written = self.written(line, last + 1);
-            forget(
+            self.forget(
                 &written,
                 env,
                 &Origin::ControlFlow {
@@ -241,7 +278,7 @@ impl<'a> Walker<'a> {
         }
         if let Some(skipped) = self.pending.remove(&line) {
             for (written, origin) in &skipped {
-                forget(written, env, origin);
+                self.forget(written, env, origin);
             }
         }
     }
@@ -341,8 +378,29 @@ impl<'a> Walker<'a> {
         for (_, line) in writes[first..].iter().take_while(|(line, _)| *line < end) {
             written.names.extend(line.names.iter().cloned());
             written.rotation |= line.rotation;
+            written.cycle600_lines.extend(&line.cycle600_lines);
         }
         written
+    }
+
+    /// Makes unknown what a region writes: its variables, and the active
+    /// rotation if anything in it may swivel.
+    fn forget(&mut self, written: &Written, env: &mut Env, origin: &Origin) {
+        for name in &written.names {
+            env.forget(name, origin.clone());
+        }
+        let swivels: Vec<usize> = written
+            .cycle600_lines
+            .iter()
+            .filter(|line| !self.recalculating.contains(line))
+            .copied()
+            .collect();
+        if written.rotation || !swivels.is_empty() {
+            self.assumed_swivel.extend(swivels);
+            env.active = Active::Unknown {
+                why: origin.to_string(),
+            };
+        }
     }
 
     fn visit(&mut self, pc: usize, block: &Block, env: &mut Env) {
@@ -550,21 +608,32 @@ impl<'a> Walker<'a> {
                     env.forget(&format!("_CYC600_{n}"), origin.clone());
                 }
                 // A call that only recalculates (_SW_REC=1) never swivels, even
-                // when its results are unknown: the active rotation stays.
-                let recalculates = site
-                    .bound
+                // when its results are unknown: the active rotation stays. One
+                // whose translations alone are measured swivels to a rotation
+                // known offline: a rotation never depends on translations.
+                let rotation_known = site
+                    .runtime
                     .as_ref()
-                    .is_some_and(|b| b.arguments[2].value == Ok(Value::Number(1.0)));
-                let why = match &site.evaluation {
-                    _ if recalculates => None,
-                    Some(_) => Some(format!(
-                        "the CYCLE600 on line {line} adds to a rotation unknown offline"
-                    )),
-                    None => Some(format!("the CYCLE600 on line {line} is not known offline")),
+                    .and_then(|runtime| runtime.rotation_parameters())
+                    .and_then(|p| {
+                        cycle600::evaluate_parameters(p, &env.active, site.statement).ok()
+                    })
+                    .filter(|(evaluation, _)| !evaluation.additive_on_control);
+                env.active = match (&site.evaluation, rotation_known) {
+                    _ if site.recalculates() => env.active.clone(),
+                    (None, Some((evaluation, _))) => Active::Known {
+                        rotation: evaluation.target,
+                        line,
+                    },
+                    (Some(_), _) => Active::Unknown {
+                        why: format!(
+                            "the CYCLE600 on line {line} adds to a rotation unknown offline"
+                        ),
+                    },
+                    (None, None) => Active::Unknown {
+                        why: format!("the CYCLE600 on line {line} is not known offline"),
+                    },
                 };
-                if let Some(why) = why {
-                    env.active = Active::Unknown { why };
-                }
             }
         }
         self.analysis.calls.push(site);
@@ -660,7 +729,7 @@ impl<'a> Walker<'a> {
 
 /// What one block may write: variables, arrays a measuring cycle fills, R
 /// parameters a subprogram may change, the swivel rotation.
-fn block_writes(source: &[u8], block: &Block) -> Written {
+fn block_writes(source: &[u8], block: &Block, line: usize) -> Written {
     let mut written = Written::default();
     for statement in &block.statements {
         match &statement.kind {
@@ -684,7 +753,7 @@ fn block_writes(source: &[u8], block: &Block) -> Written {
                         written
                             .names
                             .extend((1..=6).map(|n| format!("_CYC600_{n}")));
-                        written.rotation = true;
+                        written.cycle600_lines.push(line);
                     }
                     CallKind::Cycle800 => written.rotation = true,
                     CallKind::Measuring => written
@@ -698,17 +767,6 @@ fn block_writes(source: &[u8], block: &Block) -> Written {
         }
     }
     written
-}
-
-fn forget(written: &Written, env: &mut Env, origin: &Origin) {
-    for name in &written.names {
-        env.forget(name, origin.clone());
-    }
-    if written.rotation {
-        env.active = Active::Unknown {
-            why: origin.to_string(),
-        };
-    }
 }
 
 fn upper(text: &[u8]) -> String {
@@ -944,8 +1002,8 @@ impl Structure {
                 continue;
             };
             let block = &block;
-            let writes = block_writes(source, block);
-            if !writes.names.is_empty() || writes.rotation {
+            let writes = block_writes(source, block, line);
+            if !writes.names.is_empty() || writes.rotation || !writes.cycle600_lines.is_empty() {
                 structure.writes.push((line, writes));
             }
             for statement in &block.statements {
