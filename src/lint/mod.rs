@@ -10,7 +10,7 @@ pub mod rules;
 pub mod suppression;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{FileContext, RuleInfo};
+use crate::lint::rule::{FileContext, LineView, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze, Heads, Supplied};
 use crate::span::LineIndex;
@@ -78,8 +78,9 @@ pub fn check(
                 suppressions.read(source, row, comment);
             }
         }
+        let view = LineView::new(&line);
         for checker in &mut checkers {
-            checker.line(&file, row, &line, &mut found);
+            checker.line(&file, row, &view, &mut found);
         }
     }
     for checker in &mut checkers {

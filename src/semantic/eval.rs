@@ -373,7 +373,7 @@ mod tests {
     }
 
     fn eval(text: &str) -> Result<Value, Unknown> {
-        let (_, expr) = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect("parses");
+        let (_, expr) = parse_expr(Input::new(text.as_bytes(), 0)).expect("parses");
         evaluate(text.as_bytes(), &expr, &Vars)
     }
 

@@ -54,6 +54,10 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
             }
             Some(_) => match parse_statement(input) {
                 Ok((rest, statement)) => {
+                    if block.statements.is_empty() {
+                        // A CAM block has about seven words: allocate once.
+                        block.statements.reserve(8);
+                    }
                     block.statements.push(statement);
                     input = rest;
                 }

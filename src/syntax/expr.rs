@@ -48,7 +48,7 @@ const MULTIPLICATIVE: u8 = 10;
 /// The binary operator after optional blanks, its level and the input after it.
 fn peek_binary_operator(input: Input) -> Option<(BinaryOp, u8, Input)> {
     let at = parse_blank(input);
-    let bytes = *at.fragment();
+    let bytes = at.fragment();
     let two = bytes.get(..2);
     let symbol = match two {
         Some(b"==") => Some((BinaryOp::Eq, COMPARISON, 2)),
@@ -367,7 +367,7 @@ mod tests {
     use super::*;
 
     fn shape(text: &str) -> String {
-        let (rest, expr) = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect("parses");
+        let (rest, expr) = parse_expr(Input::new(text.as_bytes(), 0)).expect("parses");
         assert!(
             rest.fragment().is_empty(),
             "left over: {:?}",
@@ -416,7 +416,7 @@ mod tests {
 
     #[test]
     fn empty_arguments_are_kept() {
-        let (_, expr) = parse_expr(Input::new_extra(b"SET(0,,,9,)", 0)).expect("parses");
+        let (_, expr) = parse_expr(Input::new(b"SET(0,,,9,)", 0)).expect("parses");
         let ExprKind::Call(call) = expr.kind else {
             panic!("not a call")
         };
@@ -432,7 +432,7 @@ mod tests {
     #[test]
     fn long_operator_chains_are_refused_not_overflowed() {
         let text = "1".to_string() + &"+1".repeat(100_000);
-        let error = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect_err("too deep");
+        let error = parse_expr(Input::new(text.as_bytes(), 0)).expect_err("too deep");
         assert!(matches!(
             error,
             nom::Err::Failure(SyntaxError {
@@ -441,13 +441,13 @@ mod tests {
             })
         ));
         let fine = "1".to_string() + &"+1".repeat(200);
-        assert!(parse_expr(Input::new_extra(fine.as_bytes(), 0)).is_ok());
+        assert!(parse_expr(Input::new(fine.as_bytes(), 0)).is_ok());
     }
 
     #[test]
     fn deep_nesting_is_refused_not_overflowed() {
         let text = "(".repeat(100_000) + "1" + &")".repeat(100_000);
-        let error = parse_expr(Input::new_extra(text.as_bytes(), 0)).expect_err("too deep");
+        let error = parse_expr(Input::new(text.as_bytes(), 0)).expect_err("too deep");
         assert!(matches!(
             error,
             nom::Err::Failure(SyntaxError {

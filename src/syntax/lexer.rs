@@ -1,19 +1,17 @@
 //! Token recognizers written with nom: blanks, names, numbers, strings.
 //!
-//! They work on bytes (files are often Latin-1) through `nom_locate`, whose
-//! `extra` carries the absolute offset of the line, so every token gets a file
-//! span without allocating. They do not decide what a token means.
+//! They work on bytes (files are often Latin-1) through [`Input`], which
+//! carries the file offset, so every token gets a file span without
+//! allocating. They do not decide what a token means.
 
 use nom::bytes::complete::{take_while, take_while1};
 use nom::error::{ErrorKind, ParseError};
 use nom::{Err, IResult, Input as _, Parser};
-use nom_locate::LocatedSpan;
 
 use crate::span::Span;
 use crate::syntax::tree::{Name, Number, NumberKind};
 
-/// A line's bytes; `extra` is the file offset where the line starts.
-pub type Input<'a> = LocatedSpan<&'a [u8], usize>;
+pub use crate::syntax::input::Input;
 
 pub type PResult<'a, T> = IResult<Input<'a>, T, SyntaxError>;
 
@@ -78,7 +76,7 @@ impl<'a> ParseError<Input<'a>> for SyntaxError {
 
 /// The absolute file offset of `input`.
 pub fn offset(input: &Input) -> usize {
-    input.extra + input.location_offset()
+    input.offset()
 }
 
 /// The span from `start` up to (not including) where `end` begins.
@@ -170,7 +168,7 @@ pub fn parse_number(input: Input) -> PResult<Number> {
 
 fn parse_decimal(input: Input) -> PResult<Number> {
     let start = input;
-    let bytes = *input.fragment();
+    let bytes = input.fragment();
     let mut len = bytes.iter().take_while(|b| b.is_ascii_digit()).count();
     let integer_digits = len;
     let mut fraction_digits = 0;
@@ -289,7 +287,7 @@ fn exact_decimal(digits: &[u8]) -> Option<f64> {
 
 fn parse_radix_number(input: Input) -> PResult<Number> {
     let start = input;
-    let bytes = *input.fragment();
+    let bytes = input.fragment();
     let (kind, radix) = match bytes.get(1).map(u8::to_ascii_uppercase) {
         Some(b'H') => (NumberKind::Hex, 16),
         Some(b'B') => (NumberKind::Binary, 2),
@@ -357,7 +355,7 @@ mod tests {
     use super::*;
 
     fn input(text: &str) -> Input<'_> {
-        Input::new_extra(text.as_bytes(), 0)
+        Input::new(text.as_bytes(), 0)
     }
 
     fn number(text: &str) -> f64 {
@@ -421,7 +419,7 @@ mod tests {
     fn names_and_keywords() {
         let (rest, name) = parse_name(input("$AA_IW[Z]")).expect("name");
         assert_eq!(name.span, Span::new(0, 6));
-        assert_eq!(*rest.fragment(), b"[Z]");
+        assert_eq!(rest.fragment(), b"[Z]");
         assert!(keyword("GOTOF")(input("gotof x")).is_ok());
         assert!(keyword("GOTO")(input("GOTOF x")).is_err());
     }

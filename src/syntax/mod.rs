@@ -8,6 +8,7 @@
 
 pub mod block;
 pub mod expr;
+pub mod input;
 pub mod lexer;
 pub mod lines;
 pub mod tree;
@@ -159,7 +160,7 @@ fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxErro
             None,
         );
     }
-    let (block, error) = block::parse_block(Input::new_extra(content, start));
+    let (block, error) = block::parse_block(Input::new(content, start));
     (LineKind::Block(block), error)
 }
 

@@ -1,8 +1,7 @@
 //! N014 `block-numbers-backwards`: Finds a block number lower than the one before it.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
-use crate::syntax::tree::{Line, LineKind};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N014",
@@ -32,8 +31,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         let Some(number) = block.number.as_ref().filter(|n| !n.main) else {

@@ -1,9 +1,8 @@
 //! N008 `block-too-long`: Finds blocks longer than 512 characters (comment included).
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::span::Span;
-use crate::syntax::tree::Line;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N008",
@@ -30,7 +29,7 @@ pub struct Checker;
 const LIMIT: usize = 512;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
         let content = line.raw.content;
         if content.len() <= LIMIT {
             return;

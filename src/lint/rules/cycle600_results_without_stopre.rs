@@ -1,9 +1,9 @@
 //! C614 `cycle600-results-without-stopre`: Finds a read of `_CYC600_1` .. `_CYC600_6` after a CYCLE600 call with no STOPRE between them.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C614",
@@ -33,11 +33,11 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
-        for statement in &block.statements {
+        for (index, statement) in block.statements.iter().enumerate() {
             match &statement.kind {
                 StatementKind::Command(n) if n.is(file.source, "STOPRE") => self.pending = None,
                 StatementKind::Call(call) if call.name.is(file.source, "CYCLE600") => {
@@ -47,7 +47,7 @@ impl Check for Checker {
                     let Some(call_row) = self.pending else {
                         continue;
                     };
-                    for variable in reads(statement) {
+                    for variable in line.reads(index) {
                         if upper(file.source, variable.name.span).starts_with("_CYC600_") {
                             out.push(
                                 RULE.at(variable.span)

@@ -1,9 +1,9 @@
 //! N009 `cycle800-arguments`: Checks CYCLE800 calls: between 14 and 16 arguments (or none, to deselect), and a literal `_MODE`
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::rotation::{Kind, Sequence};
-use crate::syntax::tree::{ExprKind, Line, LineKind, StatementKind};
+use crate::syntax::tree::{ExprKind, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N009",
@@ -30,8 +30,8 @@ Write the 14 classic (or 16 extended) parameters; for axis by axis use 57, 45, 5
 pub struct Checker;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         for statement in &block.statements {

@@ -1,9 +1,9 @@
 //! C615 `cycle800-fed-extrinsic`: Finds a CYCLE800 whose angles are `_CYC600_2` .. `_CYC600_4` from a CYCLE600 that computed
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{ExprKind, Line, LineKind, StatementKind};
+use crate::syntax::tree::{ExprKind, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C615",
@@ -48,8 +48,8 @@ fn literal_inexout(call: &crate::syntax::tree::Call) -> Option<f64> {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         for statement in &block.statements {

@@ -1,8 +1,8 @@
 //! N006 `def-after-executable`: Finds a DEF after the first executable block of a program or subprogram.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N006",
@@ -31,8 +31,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, _file: &FileContext, row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, _file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         for statement in &block.statements {

@@ -3,9 +3,8 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{Line, LineKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N003",
@@ -34,8 +33,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         let Some(label) = block.label else { return };

@@ -1,9 +1,9 @@
 //! N011 `identifier-too-long`: Finds variable, label and procedure names longer than 31 characters.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::span::Span;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N011",
@@ -31,8 +31,8 @@ pub struct Checker;
 const LIMIT: usize = 31;
 
 impl Check for Checker {
-    fn line(&mut self, _file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, _file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         let mut names: Vec<Span> = block.label.iter().map(|l| l.span).collect();

@@ -3,9 +3,8 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
-use crate::lint::rules::support::*;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N015",
@@ -34,11 +33,11 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
-        for statement in &block.statements {
+        for (index, statement) in block.statements.iter().enumerate() {
             if let StatementKind::Def(def) = &statement.kind {
                 for d in &def.variables {
                     let text = String::from_utf8_lossy(d.name.span.of(file.source)).into_owned();
@@ -48,7 +47,7 @@ impl Check for Checker {
                 }
                 continue;
             }
-            let mut used: Vec<&crate::syntax::tree::Variable> = reads(statement);
+            let mut used: Vec<&crate::syntax::tree::Variable> = line.reads(index).collect();
             if let StatementKind::Assign(assign) = &statement.kind {
                 used.push(&assign.target);
             }

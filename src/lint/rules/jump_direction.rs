@@ -1,10 +1,10 @@
 //! N002 `jump-direction`: Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
 use crate::span::Span;
-use crate::syntax::tree::{GotoKind, Line, LineKind};
+use crate::syntax::tree::GotoKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N002",
@@ -35,8 +35,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         self.labels

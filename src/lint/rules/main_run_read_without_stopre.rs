@@ -1,9 +1,9 @@
 //! N013 `main-run-read-without-stopre`: Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N013",
@@ -39,8 +39,8 @@ impl Default for Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         // Synchronized actions read main-run values in the main run: that is their purpose.
@@ -51,12 +51,12 @@ impl Check for Checker {
         {
             return;
         }
-        for statement in &block.statements {
+        for (index, statement) in block.statements.iter().enumerate() {
             if matches!(&statement.kind, StatementKind::Command(n) if n.is(file.source, "STOPRE")) {
                 self.stopped = true;
                 continue;
             }
-            for variable in reads(statement) {
+            for variable in line.reads(index) {
                 let name = upper(file.source, variable.name.span);
                 if name.starts_with("$A") && !self.stopped {
                     out.push(

@@ -1,9 +1,9 @@
 //! N010 `missing-program-end`: Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::span::Span;
-use crate::syntax::tree::{Line, LineKind, StatementKind, WordValue};
+use crate::syntax::tree::{StatementKind, WordValue};
 use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -34,8 +34,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         if block.statements.is_empty() {

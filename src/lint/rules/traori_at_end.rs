@@ -1,9 +1,9 @@
 //! N012 `traori-at-end`: Finds a program that switches on TRAORI and ends with it still active.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::span::Span;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N012",
@@ -33,8 +33,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         for statement in &block.statements {

@@ -3,11 +3,11 @@
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
 use crate::semantic::head_def::distance;
 use crate::span::Span;
-use crate::syntax::tree::{GotoKind, Line, LineKind};
+use crate::syntax::tree::GotoKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N001",
@@ -38,8 +38,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
         self.labels

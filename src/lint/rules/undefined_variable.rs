@@ -3,9 +3,9 @@
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N005",
@@ -36,12 +36,12 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
-        for statement in &block.statements {
-            for variable in reads(statement) {
+        for (index, statement) in block.statements.iter().enumerate() {
+            for variable in line.reads(index) {
                 let name = upper(file.source, variable.name.span);
                 if is_user_name(&name)
                     && !self.defined.contains(&name)

@@ -3,10 +3,10 @@
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
 use crate::span::Span;
-use crate::syntax::tree::{Line, LineKind, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N016",
@@ -37,11 +37,11 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &Line, _out: &mut Vec<Diagnostic>) {
-        let LineKind::Block(block) = &line.kind else {
+    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block else {
             return;
         };
-        for statement in &block.statements {
+        for (index, statement) in block.statements.iter().enumerate() {
             if let StatementKind::Def(def) = &statement.kind {
                 if def.scope.is_none() {
                     self.defined.extend(
@@ -52,8 +52,7 @@ impl Check for Checker {
                 }
             }
             self.read.extend(
-                reads(statement)
-                    .into_iter()
+                line.reads(index)
                     .map(|v| upper(file.source, v.name.span)),
             );
         }
