@@ -29,27 +29,33 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
         paths.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .min(paths.len().max(1));
-    std::thread::scope(|scope| {
-        for _ in 0..workers {
-            scope.spawn(|| loop {
-                let index = next.fetch_add(1, Ordering::Relaxed);
-                let Some(path) = paths.get(index) else { break };
-                let outcome = match path {
-                    Ok(path) => check_file(path, args),
-                    Err(error) => Err(CliError::Read {
-                        path: PathBuf::new(),
-                        source: std::io::Error::other(error.to_string()),
-                    }),
-                };
-                if let Ok(mut slot) = results[index].lock() {
-                    *slot = Some(outcome);
-                }
-            });
+    let work = || loop {
+        let index = next.fetch_add(1, Ordering::Relaxed);
+        let Some(path) = paths.get(index) else { break };
+        let outcome = match path {
+            Ok(path) => check_file(path, args),
+            Err(error) => Err(CliError::Read {
+                path: PathBuf::new(),
+                source: std::io::Error::other(error.to_string()),
+            }),
+        };
+        if let Ok(mut slot) = results[index].lock() {
+            *slot = Some(outcome);
         }
-    });
+    };
+    if paths.len() <= 1 {
+        // The editor-on-save case: no thread to start, no cgroup files to read.
+        work();
+    } else {
+        let workers = std::thread::available_parallelism()
+            .map_or(1, |n| n.get())
+            .min(paths.len());
+        std::thread::scope(|scope| {
+            for _ in 0..workers {
+                scope.spawn(work);
+            }
+        });
+    }
 
     let mut failed = false;
     let mut checked = Vec::new();

@@ -206,7 +206,7 @@ fn parse_keyword_statement<'a>(
         Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))))
     };
     match word {
-        b"DEF" | b"REDEF" => Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(d)))),
+        b"DEF" | b"REDEF" => Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d))))),
         b"PROC" => Some(parse_proc(after).map(|(r, p)| (r, StatementKind::Proc(p)))),
         b"EXTERN" => Some(parse_extern(after)),
         b"DEFINE" => Some(parse_define(after)),
@@ -221,7 +221,7 @@ fn parse_keyword_statement<'a>(
         b"ENDLOOP" => simple(StatementKind::EndLoop),
         b"REPEAT" | b"REPEATB" => Some(parse_repeat(after)),
         b"UNTIL" => expr(|condition| StatementKind::Until { condition }),
-        b"CASE" => Some(parse_case(after).map(|(r, c)| (r, StatementKind::Case(c)))),
+        b"CASE" => Some(parse_case(after).map(|(r, c)| (r, StatementKind::Case(Box::new(c))))),
         b"GOTO" | b"GOTOF" | b"GOTOB" | b"GOTOC" | b"GOTOS" => {
             Some(parse_goto(start).map(|(r, g)| (r, StatementKind::Goto(g))))
         }
@@ -701,8 +701,8 @@ pub fn parse_for(input: Input) -> PResult<StatementKind> {
         rest,
         StatementKind::For {
             variable,
-            start,
-            end,
+            start: Box::new(start),
+            end: Box::new(end),
         },
     ))
 }

@@ -169,18 +169,25 @@ pub fn parse_number(input: Input) -> PResult<Number> {
 fn parse_decimal(input: Input) -> PResult<Number> {
     let start = input;
     let bytes = input.fragment();
-    let mut len = bytes.iter().take_while(|b| b.is_ascii_digit()).count();
-    let integer_digits = len;
-    let mut fraction_digits = 0;
-    if bytes.get(len) == Some(&b'.') {
+    // One pass over digits and point, keeping the value while it is exact.
+    let mut len = 0;
+    let mut point = None;
+    let mut mantissa: u64 = 0;
+    let mut significant = 0;
+    while let Some(&byte) = bytes.get(len) {
+        match byte {
+            b'0'..=b'9' => {
+                significant += usize::from(mantissa != 0 || byte != b'0');
+                mantissa = mantissa
+                    .wrapping_mul(10)
+                    .wrapping_add(u64::from(byte - b'0'));
+            }
+            b'.' if point.is_none() => point = Some(len),
+            _ => break,
+        }
         len += 1;
-        fraction_digits = bytes[len..]
-            .iter()
-            .take_while(|b| b.is_ascii_digit())
-            .count();
-        len += fraction_digits;
     }
-    if integer_digits + fraction_digits == 0 {
+    if len == usize::from(point.is_some()) {
         return SyntaxError::at(&input, SyntaxErrorKind::Expected("a number"));
     }
     let mantissa_len = len;
@@ -211,7 +218,11 @@ fn parse_decimal(input: Input) -> PResult<Number> {
             SyntaxErrorKind::InvalidNumber("a number has at most one decimal point"),
         );
     }
-    let value = decimal_value(&bytes[..mantissa_len], exponent);
+    let decimals = point.map_or(0, |p| mantissa_len - p - 1);
+    let value = match exact_decimal(mantissa, significant, decimals) {
+        Some(value) if exponent.is_none() => value,
+        _ => decimal_value(&bytes[..mantissa_len], exponent),
+    };
     let (rest, _) = input.take_split(len);
     let span = span_between(&start, &rest);
     if !value.is_finite() {
@@ -232,13 +243,9 @@ fn parse_decimal(input: Input) -> PResult<Number> {
     ))
 }
 
-/// The value of `mantissa` × 10^`exponent`, both ASCII digits (already checked).
+/// The value of digits (one `.` allowed) and an optional `EX` exponent, by
+/// the standard library's correctly rounded parser.
 fn decimal_value(mantissa: &[u8], exponent: Option<&[u8]>) -> f64 {
-    if exponent.is_none() {
-        if let Some(value) = exact_decimal(mantissa) {
-            return value;
-        }
-    }
     let mut text = String::with_capacity(mantissa.len() + 8);
     text.extend(mantissa.iter().map(|&b| b as char));
     if text.ends_with('.') {
@@ -259,28 +266,13 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// The value of `123.456`-style digits when it can be computed exactly: a
-/// mantissa of at most 15 significant digits is an exact integer, 10^k for
-/// k <= 22 is exact, and one IEEE division is correctly rounded (Clinger's
-/// fast path). CNC numbers nearly always qualify; others take the general parser.
-fn exact_decimal(digits: &[u8]) -> Option<f64> {
-    let mut mantissa: u64 = 0;
-    let mut significant = 0;
-    let mut decimals = 0;
-    let mut after_point = false;
-    for &byte in digits {
-        if byte == b'.' {
-            after_point = true;
-            continue;
-        }
-        if mantissa != 0 || byte != b'0' {
-            significant += 1;
-        }
-        if significant > 15 {
-            return None;
-        }
-        mantissa = mantissa * 10 + u64::from(byte - b'0');
-        decimals += usize::from(after_point);
+/// `mantissa / 10^decimals` when it can be computed exactly: a mantissa of at
+/// most 15 significant digits is an exact integer, 10^k for k <= 22 is exact,
+/// and one IEEE division is correctly rounded (Clinger's fast path). CNC
+/// numbers nearly always qualify; others take the general parser.
+fn exact_decimal(mantissa: u64, significant: usize, decimals: usize) -> Option<f64> {
+    if significant > 15 {
+        return None;
     }
     Some(mantissa as f64 / *EXACT_POWERS_OF_TEN.get(decimals)?)
 }
@@ -401,7 +393,28 @@ mod tests {
             .trim_end_matches('.')
             .parse()
             .expect("valid");
+            assert_eq!(number(digits), expected, "{text}");
             assert_eq!(decimal_value(digits.as_bytes(), None), expected, "{text}");
+        }
+    }
+
+    proptest::proptest! {
+        /// Every digit string, with or without a point, reads as the
+        /// standard library reads it.
+        #[test]
+        fn numbers_read_as_the_standard_library_reads_them(
+            integer in "[0-9]{0,20}",
+            fraction in proptest::option::of("[0-9]{0,25}"),
+        ) {
+            let text = match &fraction {
+                Some(fraction) => format!("{integer}.{fraction}"),
+                None => integer.clone(),
+            };
+            proptest::prop_assume!(text != "." && !text.is_empty());
+            // Leading and (after a point) trailing zeros change nothing.
+            let padding = if fraction.is_some() { "0" } else { "" };
+            let expected: f64 = format!("0{text}{padding}").parse().expect("valid");
+            proptest::prop_assert_eq!(number(&text), expected);
         }
     }
 

@@ -96,7 +96,10 @@ pub enum StatementKind {
     Command(Name),
     /// `TRANS`, `AROT`, ... : the address words after it in the block are its values.
     Frame(FrameStatement),
-    Def(Def),
+    // Boxed, as are the other rare large statements, so that a statement
+    // stays small: CAM blocks of address words are moved and stored by the
+    // million.
+    Def(Box<Def>),
     Proc(Proc),
     /// `EXTERN NAME(REAL, VAR BOOL)`: the declaration is kept as written.
     Extern {
@@ -120,8 +123,8 @@ pub enum StatementKind {
     EndWhile,
     For {
         variable: Name,
-        start: Expr,
-        end: Expr,
+        start: Box<Expr>,
+        end: Box<Expr>,
     },
     EndFor,
     Loop,
@@ -133,7 +136,7 @@ pub enum StatementKind {
     Until {
         condition: Expr,
     },
-    Case(Case),
+    Case(Box<Case>),
     Goto(Goto),
     /// `CALL`, `PCALL`, `MCALL`, `EXTCALL` with what follows kept as written.
     IndirectCall {
