@@ -4,7 +4,7 @@
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
-use crate::syntax::tree::{Block, Line, LineKind, Variable};
+use crate::syntax::tree::{Block, Line, LineKind, StatementKind, Variable, Word, WordValue};
 use crate::syntax::ProgramKind;
 
 /// A rule's identity and documentation.
@@ -41,6 +41,10 @@ pub struct LineView<'l> {
     pub raw: RawLine,
     /// The block, when the line is one.
     pub block: Option<&'l Block>,
+    /// Every statement is an address word with a number (`G1 X-12.5`): the
+    /// line defines, reads, calls and jumps nowhere. Most blocks of a CAM
+    /// program are such, and most rules have nothing to do there.
+    pub plain: bool,
     /// (statement index, variable read), in statement order.
     reads: Vec<(usize, &'l Variable)>,
 }
@@ -52,7 +56,16 @@ impl<'l> LineView<'l> {
             _ => None,
         };
         let mut reads = Vec::new();
+        let mut plain = true;
         for (index, statement) in block.iter().flat_map(|b| b.statements.iter().enumerate()) {
+            if let StatementKind::Word(Word {
+                value: WordValue::Number(_),
+                ..
+            }) = statement.kind
+            {
+                continue;
+            }
+            plain = false;
             reads.extend(
                 crate::lint::rules::support::reads(statement)
                     .into_iter()
@@ -62,6 +75,7 @@ impl<'l> LineView<'l> {
         Self {
             raw: line.raw,
             block,
+            plain,
             reads,
         }
     }

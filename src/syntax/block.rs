@@ -44,8 +44,17 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
         block.label = Some(label);
         input = parse_blank(rest);
     }
+    if !matches!(peek(&parse_blank(input)), None | Some(b';')) {
+        // A CAM block has about seven words: allocate once.
+        block.statements.reserve(8);
+    }
     loop {
         input = parse_blank(input);
+        if let Some((rest, statement)) = plain_word(input) {
+            block.statements.push(statement);
+            input = rest;
+            continue;
+        }
         match peek(&input) {
             None => return (block, None),
             Some(b';') => {
@@ -54,10 +63,6 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
             }
             Some(_) => match parse_statement(input) {
                 Ok((rest, statement)) => {
-                    if block.statements.is_empty() {
-                        // A CAM block has about seven words: allocate once.
-                        block.statements.reserve(8);
-                    }
                     block.statements.push(statement);
                     input = rest;
                 }
@@ -338,6 +343,45 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
             value: WordValue::Number(number),
         }),
     ))
+}
+
+/// The word most blocks are made of, `X-12.5` or `G1`, read without the
+/// general machinery; `None` for anything else (`X1=5`, `X=R1`, `X'H1F'`),
+/// which [`parse_word`] reads into the same tree.
+fn plain_word(input: Input) -> Option<(Input, Statement)> {
+    let bytes = input.fragment();
+    let letter = *bytes.first()?;
+    let signed = matches!(bytes.get(1), Some(b'-' | b'+'));
+    let number_start = 1 + usize::from(signed);
+    if !letter.is_ascii_alphabetic()
+        || !matches!(bytes.get(number_start), Some(b'0'..=b'9' | b'.'))
+    {
+        return None;
+    }
+    let (rest, mut number) = parse_number(input.take_from(number_start)).ok()?;
+    // An extension (`X1 =5`), a broken exponent or a second point: the
+    // general path, which knows what to say.
+    if matches!(peek(&rest), Some(b'E' | b'e' | b'.'))
+        || peek(&parse_blank(rest)) == Some(b'=')
+    {
+        return None;
+    }
+    let after_letter = input.take_from(1);
+    number.span = span_between(&after_letter, &rest);
+    if bytes[1] == b'-' {
+        number.value = -number.value;
+    }
+    let statement = Statement {
+        span: span_between(&input, &rest),
+        kind: StatementKind::Word(Word {
+            address: Name {
+                span: span_between(&input, &after_letter),
+            },
+            extension: None,
+            value: WordValue::Number(number),
+        }),
+    };
+    Some((rest, statement))
 }
 
 /// `assignment := variable blank '=' blank expr` ;
@@ -892,4 +936,35 @@ fn target_len(bytes: &[u8]) -> usize {
 fn unclosed_quote(bytes: &[u8]) -> Option<usize> {
     let quotes: Vec<usize> = memchr::memchr_iter(b'"', bytes).collect();
     (quotes.len() % 2 == 1).then(|| quotes[quotes.len() - 1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    proptest::proptest! {
+        /// The shortcut reads a word exactly as the general path does, or
+        /// leaves it to the general path.
+        #[test]
+        fn plain_words_read_as_the_general_path_reads_them(
+            text in "[A-Za-z][-+]?[0-9.]{0,12}([eE][xX]?[-+]?[0-9]{0,3})?[ =.;A-Z]{0,3}[0-9]{0,2}",
+        ) {
+            let input = Input::new(text.as_bytes(), 40);
+            if let Some((rest, statement)) = plain_word(input) {
+                let (general_rest, general) = parse_statement(input).expect("the general path reads it");
+                proptest::prop_assert_eq!(rest, general_rest);
+                proptest::prop_assert_eq!(statement, general);
+            }
+        }
+    }
+
+    #[test]
+    fn the_shortcut_takes_cam_words_and_leaves_the_rest() {
+        for word in ["X-12.5", "G1", "F.02", "Y+3", "N440G01", "C-.5 Y1", "X1.5EX3"] {
+            assert!(plain_word(Input::new(word.as_bytes(), 0)).is_some(), "{word}");
+        }
+        for word in ["X1=5", "X1 = 5", "X=R1", "X1.5E", "R1=2", "X.", "X-", "AB1", "X'H1F'"] {
+            assert!(plain_word(Input::new(word.as_bytes(), 0)).is_none(), "{word}");
+        }
+    }
 }

@@ -30,7 +30,6 @@ Use GOTOB (or GOTO, which searches both ways), or move the label."#,
 #[derive(Default)]
 pub struct Checker {
     labels: Vec<(String, usize)>,
-    numbers: Vec<(u64, usize)>,
     jumps: Vec<(Target, Span, usize, GotoKind)>,
 }
 
@@ -41,8 +40,9 @@ impl Check for Checker {
         };
         self.labels
             .extend(label(file.source, block).map(|(l, _)| (l, row)));
-        self.numbers
-            .extend(block_number(file.source, block).map(|n| (n, row)));
+        if line.plain {
+            return;
+        }
         for goto in gotos(block) {
             if let Some((target, span)) = target(file.source, goto) {
                 self.jumps.push((target, span, row, goto.kind));
@@ -50,8 +50,12 @@ impl Check for Checker {
         }
     }
 
-    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        self.numbers.sort_unstable();
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let mut numbers = Vec::new();
+        if self.jumps.iter().any(|(t, ..)| matches!(t, Target::Number(_))) {
+            numbers = block_numbers(file.source);
+            numbers.sort_unstable();
+        }
         for (target, span, row, kind) in &self.jumps {
             let rows: Vec<usize> = match target {
                 Target::Label(name) => self
@@ -61,8 +65,8 @@ impl Check for Checker {
                     .map(|(_, r)| *r)
                     .collect(),
                 Target::Number(n) => {
-                    let first = self.numbers.partition_point(|(m, _)| m < n);
-                    self.numbers[first..]
+                    let first = numbers.partition_point(|(m, _)| m < n);
+                    numbers[first..]
                         .iter()
                         .take_while(|(m, _)| m == n)
                         .map(|(_, r)| *r)

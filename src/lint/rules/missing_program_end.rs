@@ -3,8 +3,9 @@
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::span::Span;
-use crate::syntax::tree::{StatementKind, WordValue};
-use crate::syntax::ProgramKind;
+use crate::syntax::lines::RawLine;
+use crate::syntax::tree::{LineKind, StatementKind, WordValue};
+use crate::syntax::{LineParser, ProgramKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N010",
@@ -28,19 +29,28 @@ N20 G1 X100 F500
 End a main program with `M30` (or `M2`), a subprogram with `M17` or `RET`."#,
 };
 
+/// Remembers only where the last block is; `finish` reads it again, so that
+/// the millions of blocks before it cost nothing.
 #[derive(Default)]
 pub struct Checker {
-    last: Option<(Span, bool, bool)>,
+    last: Option<RawLine>,
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block else {
+    fn line(&mut self, _file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+        if line.block.is_some_and(|block| !block.statements.is_empty()) {
+            self.last = Some(line.raw);
+        }
+    }
+
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let Some(raw) = self.last else {
             return;
         };
-        if block.statements.is_empty() {
+        let (line, _) = LineParser::default().parse_line(file.source, raw);
+        let LineKind::Block(block) = &line.kind else {
             return;
-        }
+        };
         let m = |values: &[f64]| {
             block.statements.iter().any(|s| match &s.kind {
                 StatementKind::Word(word) => {
@@ -54,14 +64,8 @@ impl Check for Checker {
             .statements
             .iter()
             .any(|s| matches!(&s.kind, StatementKind::Command(n) if n.is(file.source, "RET")));
-        let span = Span::new(line.raw.content.start, line.raw.content.end);
-        self.last = Some((span, m(&[30.0, 2.0]), m(&[17.0]) || ret));
-    }
-
-    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let Some((span, ends_main, returns)) = self.last else {
-            return;
-        };
+        let (ends_main, returns) = (m(&[30.0, 2.0]), m(&[17.0]) || ret);
+        let span = Span::new(raw.content.start, raw.content.end);
         let (ok, what, fix) = match file.kind {
             ProgramKind::Main => (ends_main, "main program", "end it with M30 (or M2)"),
             ProgramKind::Subprogram => {

@@ -3,6 +3,9 @@
 
 use crate::semantic::walk::{collect_variables, for_each_expression};
 use crate::span::Span;
+use crate::syntax::block::{parse_block_number, parse_skip};
+use crate::syntax::lexer::{parse_blank, Input};
+use crate::syntax::lines::raw_lines;
 use crate::syntax::tree::{
     Block, Goto, GotoTarget, Initializer, Statement, StatementKind, Variable,
 };
@@ -34,13 +37,24 @@ pub fn label(source: &[u8], block: &Block) -> Option<(String, Span)> {
     block.label.map(|l| (upper(source, l.span), l.span))
 }
 
-/// The block's number (`N100`; not the main block number `:100`), if it has one.
-pub fn block_number(source: &[u8], block: &Block) -> Option<u64> {
-    let number = block.number.as_ref().filter(|n| !n.main)?;
-    std::str::from_utf8(number.digits.of(source))
-        .ok()?
-        .parse()
-        .ok()
+/// Every block number (`N100`; not the main block number `:100`) with its
+/// row, in row order. The jump rules read them only when a jump names one:
+/// keeping millions of them for the rare program that jumps to one cost more
+/// memory than the rest of `check`.
+pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
+    raw_lines(source)
+        .enumerate()
+        .filter_map(|(row, raw)| {
+            let start = parse_blank(Input::new(raw.content.of(source), raw.content.start));
+            let start = parse_skip(start).map_or(start, |(rest, _)| parse_blank(rest));
+            let (_, number) = parse_block_number(start).ok()?;
+            let digits = number.digits.of(source);
+            let value = digits.iter().try_fold(0u64, |value, &digit| {
+                value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
+            });
+            value.filter(|_| !number.main).map(|value| (value, row))
+        })
+        .collect()
 }
 
 /// Every jump of a block (GOTO statements and CASE branches).

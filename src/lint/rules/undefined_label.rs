@@ -33,7 +33,6 @@ Correct the label's spelling (the help suggests the nearest existing label) or a
 #[derive(Default)]
 pub struct Checker {
     labels: HashSet<String>,
-    numbers: Vec<u64>,
     jumps: Vec<(Target, Span, bool)>,
 }
 
@@ -44,7 +43,9 @@ impl Check for Checker {
         };
         self.labels
             .extend(label(file.source, block).map(|(l, _)| l));
-        self.numbers.extend(block_number(file.source, block));
+        if line.plain {
+            return;
+        }
         for goto in gotos(block) {
             if let Some((target, span)) = target(file.source, goto) {
                 self.jumps
@@ -53,12 +54,18 @@ impl Check for Checker {
         }
     }
 
-    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        self.numbers.sort_unstable();
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let mut numbers = Vec::new();
+        if self.jumps.iter().any(|(t, ..)| matches!(t, Target::Number(_))) {
+            numbers = block_numbers(file.source);
+            numbers.sort_unstable();
+        }
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
                 Target::Label(name) => self.labels.contains(name),
-                Target::Number(n) => self.numbers.binary_search(n).is_ok(),
+                Target::Number(n) => numbers
+                    .binary_search_by(|(m, _)| m.cmp(n))
+                    .is_ok(),
             };
             if exists {
                 continue;

@@ -37,7 +37,7 @@ pub struct Checker {
 
 impl Check for Checker {
     fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block else {
+        let Some(block) = line.block.filter(|_| !line.plain) else {
             return;
         };
         for (index, statement) in block.statements.iter().enumerate() {
