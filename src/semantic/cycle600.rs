@@ -358,6 +358,16 @@ pub fn no_cycle800_form(output: Sequence, span: Span) -> Diagnostic {
         .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)")
 }
 
+/// Statements after the call in its block (`CYCLE600(...) X5`): the rewrite
+/// puts blocks where the call stood, and what followed it would run between
+/// them or end up inside their comments.
+pub fn shares_block(after: Span) -> Diagnostic {
+    diagnostic("C616", "cycle600-shares-block", Severity::Error, after)
+        .message("statements follow the CYCLE600 call in its block")
+        .label("after the call")
+        .help("move them to a block of their own: a cycle call stands alone in its block")
+}
+
 fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
     match why {
         Unknown::Invalid(reason) => diagnostic(

@@ -21,6 +21,7 @@ use crate::semantic::eval::{evaluate, key, variable_key};
 use crate::semantic::head_def::Heads;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
+use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
     TypeKind, Variable, WordValue,
@@ -559,6 +560,14 @@ impl<'a> Walker<'a> {
             needs_stopre: false,
             diagnostics: Vec::new(),
         };
+        let rest = Span::new(statement.span.end, site.content.end).of(self.source);
+        let blank = rest.iter().take_while(|&&b| is_blank(b)).count();
+        if rest.get(blank).is_some_and(|&b| b != b';') {
+            let start = statement.span.end + blank;
+            let end = statement.span.end + rest.trim_ascii_end().len();
+            site.diagnostics
+                .push(cycle600::shares_block(Span::new(start, end)));
+        }
         let scope = env.scope(self.supplied, line);
         match cycle600::bind(self.source, call, &scope) {
             Err(problem) => site.diagnostics.push(problem),

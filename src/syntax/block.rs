@@ -211,7 +211,9 @@ fn parse_keyword_statement<'a>(
         Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))))
     };
     match word {
-        b"DEF" | b"REDEF" => Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d))))),
+        b"DEF" | b"REDEF" => {
+            Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d)))))
+        }
         b"PROC" => Some(parse_proc(after).map(|(r, p)| (r, StatementKind::Proc(p)))),
         b"EXTERN" => Some(parse_extern(after)),
         b"DEFINE" => Some(parse_define(after)),
@@ -353,17 +355,14 @@ fn plain_word(input: Input) -> Option<(Input, Statement)> {
     let letter = *bytes.first()?;
     let signed = matches!(bytes.get(1), Some(b'-' | b'+'));
     let number_start = 1 + usize::from(signed);
-    if !letter.is_ascii_alphabetic()
-        || !matches!(bytes.get(number_start), Some(b'0'..=b'9' | b'.'))
+    if !letter.is_ascii_alphabetic() || !matches!(bytes.get(number_start), Some(b'0'..=b'9' | b'.'))
     {
         return None;
     }
     let (rest, mut number) = parse_number(input.take_from(number_start)).ok()?;
     // An extension (`X1 =5`), a broken exponent or a second point: the
     // general path, which knows what to say.
-    if matches!(peek(&rest), Some(b'E' | b'e' | b'.'))
-        || peek(&parse_blank(rest)) == Some(b'=')
-    {
+    if matches!(peek(&rest), Some(b'E' | b'e' | b'.')) || peek(&parse_blank(rest)) == Some(b'=') {
         return None;
     }
     let after_letter = input.take_from(1);
@@ -960,11 +959,21 @@ mod tests {
 
     #[test]
     fn the_shortcut_takes_cam_words_and_leaves_the_rest() {
-        for word in ["X-12.5", "G1", "F.02", "Y+3", "N440G01", "C-.5 Y1", "X1.5EX3"] {
-            assert!(plain_word(Input::new(word.as_bytes(), 0)).is_some(), "{word}");
+        for word in [
+            "X-12.5", "G1", "F.02", "Y+3", "N440G01", "C-.5 Y1", "X1.5EX3",
+        ] {
+            assert!(
+                plain_word(Input::new(word.as_bytes(), 0)).is_some(),
+                "{word}"
+            );
         }
-        for word in ["X1=5", "X1 = 5", "X=R1", "X1.5E", "R1=2", "X.", "X-", "AB1", "X'H1F'"] {
-            assert!(plain_word(Input::new(word.as_bytes(), 0)).is_none(), "{word}");
+        for word in [
+            "X1=5", "X1 = 5", "X=R1", "X1.5E", "R1=2", "X.", "X-", "AB1", "X'H1F'",
+        ] {
+            assert!(
+                plain_word(Input::new(word.as_bytes(), 0)).is_none(),
+                "{word}"
+            );
         }
     }
 }

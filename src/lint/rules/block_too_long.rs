@@ -29,7 +29,13 @@ pub struct Checker;
 const LIMIT: usize = 512;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
         let content = line.raw.content;
         if content.len() <= LIMIT {
             return;

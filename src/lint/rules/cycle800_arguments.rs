@@ -30,7 +30,13 @@ Write the 14 classic (or 16 extended) parameters; for axis by axis use 57, 45, 5
 pub struct Checker;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block else {
             return;
         };

@@ -31,7 +31,13 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, _file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        _file: &FileContext,
+        row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block else {
             return;
         };

@@ -34,7 +34,13 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block else {
             return;
         };
@@ -52,7 +58,11 @@ impl Check for Checker {
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         let mut numbers = Vec::new();
-        if self.jumps.iter().any(|(t, ..)| matches!(t, Target::Number(_))) {
+        if self
+            .jumps
+            .iter()
+            .any(|(t, ..)| matches!(t, Target::Number(_)))
+        {
             numbers = block_numbers(file.source);
             numbers.sort_unstable();
         }

@@ -37,7 +37,13 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, _file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        _file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
         if line.block.is_some_and(|block| !block.statements.is_empty()) {
             self.last = Some(line.raw);
         }

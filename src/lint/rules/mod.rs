@@ -13,6 +13,7 @@ pub mod cycle600_invalid_sequence_code;
 pub mod cycle600_no_cycle800_form;
 pub mod cycle600_reserved_not_zero;
 pub mod cycle600_results_without_stopre;
+pub mod cycle600_shares_block;
 pub mod cycle600_unknown_argument;
 pub mod cycle600_unknown_head;
 pub mod cycle800_arguments;
@@ -213,6 +214,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &cycle800_fed_extrinsic::RULE,
             checker: Some(checker::<cycle800_fed_extrinsic::Checker>),
+        },
+        Rule {
+            info: &cycle600_shares_block::RULE,
+            checker: None,
         },
     ];
     rules.sort_by_key(|r| r.info.code);

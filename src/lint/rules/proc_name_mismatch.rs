@@ -30,7 +30,13 @@ Rename the PROC or the file so that both match."#,
 pub struct Checker;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block else {
             return;
         };

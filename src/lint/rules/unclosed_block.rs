@@ -52,7 +52,13 @@ fn opener(block: &crate::syntax::tree::Block) -> Option<(&'static str, &'static 
 }
 
 impl Check for Checker {
-    fn line(&mut self, _file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        _file: &FileContext,
+        row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block.filter(|_| !line.plain) else {
             return;
         };

@@ -37,7 +37,13 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block else {
             return;
         };
@@ -56,16 +62,18 @@ impl Check for Checker {
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         let mut numbers = Vec::new();
-        if self.jumps.iter().any(|(t, ..)| matches!(t, Target::Number(_))) {
+        if self
+            .jumps
+            .iter()
+            .any(|(t, ..)| matches!(t, Target::Number(_)))
+        {
             numbers = block_numbers(file.source);
             numbers.sort_unstable();
         }
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
                 Target::Label(name) => self.labels.contains(name),
-                Target::Number(n) => numbers
-                    .binary_search_by(|(m, _)| m.cmp(n))
-                    .is_ok(),
+                Target::Number(n) => numbers.binary_search_by(|(m, _)| m.cmp(n)).is_ok(),
             };
             if exists {
                 continue;

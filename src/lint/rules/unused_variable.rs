@@ -37,7 +37,13 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, _row: usize, line: &LineView, _out: &mut Vec<Diagnostic>) {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
         let Some(block) = line.block.filter(|_| !line.plain) else {
             return;
         };
@@ -51,10 +57,8 @@ impl Check for Checker {
                     );
                 }
             }
-            self.read.extend(
-                line.reads(index)
-                    .map(|v| upper(file.source, v.name.span)),
-            );
+            self.read
+                .extend(line.reads(index).map(|v| upper(file.source, v.name.span)));
         }
     }
 
