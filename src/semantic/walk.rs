@@ -11,6 +11,7 @@
 //! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
 //! subprogram does beyond possibly changing R parameters.
 
+use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
 use crate::diagnostic::Diagnostic;
@@ -22,6 +23,7 @@ use crate::semantic::head_def::Heads;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
 use crate::syntax::lexer::is_blank;
+use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
     TypeKind, Variable, WordValue,
@@ -194,6 +196,11 @@ impl<'a> Walker<'a> {
         let mut pc = start;
         while pc < end {
             self.enter(pc, env);
+            // Motion blocks change nothing the walk tracks: no need to parse them.
+            if self.lines.is_plain(pc) {
+                pc += 1;
+                continue;
+            }
             let Some(block) = self.block(pc) else {
                 pc += 1;
                 continue;
@@ -973,8 +980,11 @@ struct Structure {
     ends: HashMap<usize, (Option<usize>, usize)>,
     /// ELSE line -> ENDIF line.
     else_ends: HashMap<usize, usize>,
-    /// Label (and `N<number>`) -> lines where it stands.
+    /// Label -> lines where it stands.
     labels: HashMap<String, Vec<usize>>,
+    /// (block number, line), sorted; read only when a jump names a block
+    /// number, since a CAM program has millions of them.
+    numbers: Vec<(u64, usize)>,
     /// First line of a region a backward jump repeats -> its last line.
     loop_starts: HashMap<usize, usize>,
     /// Lines with a STOPRE, in order.
@@ -999,6 +1009,7 @@ impl Structure {
             ends: HashMap::new(),
             else_ends: HashMap::new(),
             labels: HashMap::new(),
+            numbers: Vec::new(),
             loop_starts: HashMap::new(),
             stopre_lines: Vec::new(),
             writes: Vec::new(),
@@ -1007,6 +1018,9 @@ impl Structure {
         // Jumps, resolved once every label is known.
         let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
         for line in 0..lines.len() {
+            if lines.is_plain(line) {
+                continue;
+            }
             let LineKind::Block(block) = lines.parse(line).kind else {
                 continue;
             };
@@ -1034,18 +1048,6 @@ impl Structure {
                     .entry(upper(label.text(source)))
                     .or_default()
                     .push(line);
-            }
-            if let Some(number) = &block.number {
-                if !number.main {
-                    let digits = String::from_utf8_lossy(number.digits.of(source))
-                        .trim_start_matches('0')
-                        .to_string();
-                    structure
-                        .labels
-                        .entry(format!("N{digits}"))
-                        .or_default()
-                        .push(line);
-                }
             }
             let close =
                 |stack: &mut Vec<(Opener, usize, Option<usize>)>,
@@ -1098,6 +1100,14 @@ impl Structure {
                 structure.else_ends.insert(else_line, end);
             }
         }
+        if jumps.iter().any(|(_, goto)| {
+            goto.target
+                .as_ref()
+                .is_some_and(|t| block_number(source, t).is_some())
+        }) {
+            structure.numbers = block_numbers(source);
+            structure.numbers.sort_unstable();
+        }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
         for (line, goto) in jumps {
             let target = match (&goto.kind, &goto.target) {
@@ -1122,23 +1132,19 @@ impl Structure {
         from: usize,
     ) -> Option<usize> {
         use crate::syntax::tree::GotoKind;
-        let name = match target {
-            GotoTarget::Label(name) => {
-                let text = upper(name.text(source));
-                // `N0100` and `N100` are the same block number.
-                match text.strip_prefix('N') {
-                    Some(digits)
-                        if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) =>
-                    {
-                        format!("N{}", digits.trim_start_matches('0'))
-                    }
-                    _ => text,
-                }
+        let lines: Cow<[usize]> = match (block_number(source, target), target) {
+            (Some(number), _) => {
+                let first = self.numbers.partition_point(|&(n, _)| n < number);
+                let numbered = self.numbers[first..]
+                    .iter()
+                    .take_while(|&&(n, _)| n == number);
+                Cow::Owned(numbered.map(|&(_, line)| line).collect())
             }
-            GotoTarget::Number(number) => format!("N{}", number.value as u64),
-            GotoTarget::Computed(_) => return None,
+            (None, GotoTarget::Label(name)) => {
+                Cow::Borrowed(self.labels.get(&upper(name.text(source)))?)
+            }
+            (None, _) => return None,
         };
-        let lines = self.labels.get(&name)?;
         let forward = lines.iter().copied().find(|&l| l > from);
         let backward = lines.iter().copied().rev().find(|&l| l <= from);
         match kind {
@@ -1147,6 +1153,27 @@ impl Structure {
             GotoKind::Both | GotoKind::Conditional => forward.or(backward),
             GotoKind::Start => Some(0),
         }
+    }
+}
+
+/// The block number a jump names: `GOTOF N100`, `GOTOF N0100` (the same
+/// block), or a computed number.
+fn block_number(source: &[u8], target: &GotoTarget) -> Option<u64> {
+    match target {
+        GotoTarget::Label(name) => {
+            let digits = match name.text(source) {
+                [b'N' | b'n', digits @ ..] => digits,
+                _ => return None,
+            };
+            if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+                return None;
+            }
+            digits.iter().try_fold(0u64, |value, &digit| {
+                value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
+            })
+        }
+        GotoTarget::Number(number) => Some(number.value as u64),
+        GotoTarget::Computed(_) => None,
     }
 }
 

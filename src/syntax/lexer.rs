@@ -94,7 +94,7 @@ pub fn peek_at(input: &Input, n: usize) -> Option<u8> {
 
 /// Blanks separate words: space, tab, `&` and other non-printing bytes, which
 /// the control treats like a blank (Siemens PM, "Character set").
-pub fn is_blank(byte: u8) -> bool {
+pub const fn is_blank(byte: u8) -> bool {
     matches!(byte, b' ' | b'\t' | b'&' | 0x7f) || (byte < 0x20 && byte != b'\n' && byte != b'\r')
 }
 

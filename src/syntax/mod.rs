@@ -11,6 +11,7 @@ pub mod expr;
 pub mod input;
 pub mod lexer;
 pub mod lines;
+pub mod plain;
 pub mod tree;
 
 use crate::diagnostic::{Diagnostic, Severity};
@@ -67,14 +68,18 @@ pub fn parse(source: &[u8]) -> Program<'_> {
 pub struct Lines<'src> {
     pub source: &'src [u8],
     pub raw: Vec<RawLine>,
+    /// Per line: [`plain::is_plain`], asked by every pass over the lines.
+    plain: Vec<bool>,
 }
 
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
-        Self {
-            source,
-            raw: raw_lines(source).collect(),
-        }
+        let raw: Vec<RawLine> = raw_lines(source).collect();
+        let plain = raw
+            .iter()
+            .map(|line| plain::is_plain(line.content.of(source)))
+            .collect();
+        Self { source, raw, plain }
     }
 
     pub fn len(&self) -> usize {
@@ -83,6 +88,11 @@ impl<'src> Lines<'src> {
 
     pub fn is_empty(&self) -> bool {
         self.raw.is_empty()
+    }
+
+    /// Line `index` holds only address words with numbers (see [`plain::is_plain`]).
+    pub fn is_plain(&self, index: usize) -> bool {
+        self.plain[index]
     }
 
     /// The tree of line `index` (0-based).
@@ -98,7 +108,14 @@ impl<'src> Lines<'src> {
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
     raw_lines(source)
-        .filter_map(|raw| parser.parse_line(source, raw).1)
+        .filter_map(|raw| {
+            // A plain line has no error to find.
+            if plain::is_plain(raw.content.of(source)) {
+                parser.pass_plain_line();
+                return None;
+            }
+            parser.parse_line(source, raw).1
+        })
         .collect()
 }
 
@@ -117,6 +134,12 @@ struct OpenCall {
 }
 
 impl LineParser {
+    /// Steps over a line [`plain::is_plain`] accepts, as parsing it would.
+    pub fn pass_plain_line(&mut self) {
+        self.row += 1;
+        self.open_call = None;
+    }
+
     pub fn parse_line(&mut self, source: &[u8], raw: RawLine) -> (Line, Option<Diagnostic>) {
         self.row += 1;
         let content = raw.content.of(source);

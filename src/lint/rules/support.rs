@@ -3,9 +3,7 @@
 
 use crate::semantic::walk::{collect_variables, for_each_expression};
 use crate::span::Span;
-use crate::syntax::block::{parse_block_number, parse_skip};
-use crate::syntax::lexer::{parse_blank, Input};
-use crate::syntax::lines::raw_lines;
+pub use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
     Block, Goto, GotoTarget, Initializer, Statement, StatementKind, Variable,
 };
@@ -35,26 +33,6 @@ impl std::fmt::Display for Target {
 /// The block's label (upper case), if it has one.
 pub fn label(source: &[u8], block: &Block) -> Option<(String, Span)> {
     block.label.map(|l| (upper(source, l.span), l.span))
-}
-
-/// Every block number (`N100`; not the main block number `:100`) with its
-/// row, in row order. The jump rules read them only when a jump names one:
-/// keeping millions of them for the rare program that jumps to one cost more
-/// memory than the rest of `check`.
-pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
-    raw_lines(source)
-        .enumerate()
-        .filter_map(|(row, raw)| {
-            let start = parse_blank(Input::new(raw.content.of(source), raw.content.start));
-            let start = parse_skip(start).map_or(start, |(rest, _)| parse_blank(rest));
-            let (_, number) = parse_block_number(start).ok()?;
-            let digits = number.digits.of(source);
-            let value = digits.iter().try_fold(0u64, |value, &digit| {
-                value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
-            });
-            value.filter(|_| !number.main).map(|value| (value, row))
-        })
-        .collect()
 }
 
 /// Every jump of a block (GOTO statements and CASE branches).

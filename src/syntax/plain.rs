@@ -1,0 +1,166 @@
+//! Facts about lines that do not need their tree: whether a line is nothing
+//! but address words with numbers (the millions of motion blocks of a CAM
+//! program), and every block number of a file.
+//!
+//! The CYCLE600 walk and the jump rules use them to skip the parser where the
+//! tree could not tell them anything.
+
+use crate::syntax::block::{parse_block_number, parse_skip};
+use crate::syntax::lexer::{is_blank, parse_blank, Input};
+use crate::syntax::lines::raw_lines;
+
+/// The line's content (before any `;` comment) is nothing but address words
+/// with plain decimal numbers, `N10 G1 Y.5 F2000.`: it parses without
+/// error into such words (property-tested), so it assigns, calls, jumps and
+/// reads nothing. Strict and conservative: `false` means "parse it to know".
+pub fn is_plain(content: &[u8]) -> bool {
+    let class = |at: usize| {
+        content
+            .get(at)
+            .map_or(Class::End, |&b| CLASS[usize::from(b)])
+    };
+    let mut at = 0;
+    loop {
+        while class(at) == Class::Blank {
+            at += 1;
+        }
+        match class(at) {
+            Class::End | Class::Comment => return true,
+            Class::Letter => at += 1,
+            _ => return false,
+        }
+        if class(at) == Class::Sign {
+            at += 1;
+        }
+        let (start, mut digits, mut points) = (at, 0, 0);
+        loop {
+            match class(at) {
+                Class::Digit => digits += 1,
+                Class::Point => points += 1,
+                _ => break,
+            }
+            at += 1;
+        }
+        // A number needs a digit, has one point at most, and is no longer
+        // than machine positions get (`1` with 400 zeros is too large for a
+        // REAL: the parser says so).
+        if digits == 0 || points > 1 || at - start > 24 {
+            return false;
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Class {
+    End,
+    Letter,
+    Digit,
+    Point,
+    Sign,
+    Blank,
+    Comment,
+    Other,
+}
+
+/// Each byte's class, looked up rather than tested: this runs on every line.
+static CLASS: [Class; 256] = {
+    let mut table = [Class::Other; 256];
+    let mut byte = 0;
+    while byte < 256 {
+        let b = byte as u8;
+        table[byte] = if b.is_ascii_alphabetic() {
+            Class::Letter
+        } else if b.is_ascii_digit() {
+            Class::Digit
+        } else if b == b'.' {
+            Class::Point
+        } else if b == b'-' || b == b'+' {
+            Class::Sign
+        } else if b == b';' {
+            Class::Comment
+        } else if is_blank(b) {
+            Class::Blank
+        } else {
+            Class::Other
+        };
+        byte += 1;
+    }
+    table
+};
+
+/// Every block number (`N100`; not the main block number `:100`) with its
+/// 0-based line, in line order. Numbers beyond `u64` are left out.
+pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
+    raw_lines(source)
+        .enumerate()
+        .filter_map(|(line, raw)| {
+            let start = parse_blank(Input::new(raw.content.of(source), raw.content.start));
+            let start = parse_skip(start).map_or(start, |(rest, _)| parse_blank(rest));
+            let (_, number) = parse_block_number(start).ok()?;
+            let value = number
+                .digits
+                .of(source)
+                .iter()
+                .try_fold(0u64, |value, &digit| {
+                    value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
+                });
+            value.filter(|_| !number.main).map(|value| (value, line))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::tree::{LineKind, StatementKind, WordValue};
+    use crate::syntax::Lines;
+
+    #[test]
+    fn plain_lines_are_address_words_with_numbers() {
+        for plain in [
+            "N10 G1 X-12.5 Y.5",
+            "X1 Y2 ; TRAORI",
+            "",
+            "  N20",
+            "G01X498.375Y82.325",
+        ] {
+            assert!(is_plain(plain.as_bytes()), "{plain}");
+        }
+        for not in [
+            "TRAORI", "R1=5", "X=R1", "GOTOF L1", "X 5", "X", "L1: X5", "/1 X5", "X1EX3", "T\"A\"",
+        ] {
+            assert!(!is_plain(not.as_bytes()), "{not}");
+        }
+    }
+
+    proptest::proptest! {
+        // Plain lines are a small share of random ones: many cases.
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(4000))]
+
+        /// What `is_plain` calls plain parses without a diagnostic into
+        /// address words with numbers only.
+        #[test]
+        fn a_plain_line_parses_into_number_words(text in proptest::prop_oneof![
+            "[NGXYZEx0-9 .;+=:(-]{0,40}",
+            "([NGXYZEx][-+]?[0-9.]{0,5} ?){0,8}(;[A-Z=]{0,3})?",
+        ]) {
+            if is_plain(text.as_bytes()) {
+                proptest::prop_assert!(crate::syntax::diagnostics(text.as_bytes()).is_empty());
+                let lines = Lines::new(text.as_bytes());
+                for index in 0..lines.len() {
+                    let LineKind::Block(block) = lines.parse(index).kind else {
+                        continue;
+                    };
+                    proptest::prop_assert!(block.label.is_none() && block.unparsed.is_none());
+                    for statement in &block.statements {
+                        let number_word = matches!(
+                            &statement.kind,
+                            StatementKind::Word(word) if matches!(word.value, WordValue::Number(_))
+                        );
+                        proptest::prop_assert!(number_word, "{:?}", statement);
+                    }
+                }
+            }
+        }
+    }
+}
