@@ -89,7 +89,15 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
             }
             continue;
         }
-        if let (Some(_), Some(parameters)) = (options.runtime, &site.runtime) {
+        // What the run-time code answers is the unknown arguments (C605); any
+        // other error still refuses the call.
+        let refused_at_run_time = site
+            .diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Error && d.code != "C605");
+        if let (Some(_), Some(parameters), false) =
+            (options.runtime, &site.runtime, refused_at_run_time)
+        {
             match runtime::code(
                 parameters,
                 &site.active,

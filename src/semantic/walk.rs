@@ -74,16 +74,17 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// The walk, and the state it ends in: what the program leaves in its
 /// variables when run offline.
 ///
-/// Before the walk meets a CYCLE600 inside a loop it must assume that the call
-/// swivels; when the call turns out to only recalculate (`_SW_REC=1`), the
-/// walk is repeated knowing that. Rewriting such a call removes it, so a
-/// second rewrite would see what the repeated walk sees: the repetition is what
-/// makes the rewrite idempotent. Each repetition learns one more line, so
-/// there are at most as many as there are CYCLE600 calls.
+/// Before the walk meets a CYCLE600 inside a loop it must assume the call may
+/// swivel and may write its results; when the call turns out to do one of
+/// them only (`_SW_REC` known), the walk is repeated knowing that. Rewriting
+/// the call leaves code that does just that one thing, so a second rewrite
+/// sees what the repeated walk sees: the repetition is what makes the
+/// rewrite idempotent. Each repetition learns one more line, so there are at
+/// most as many as there are CYCLE600 calls.
 pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
     let lines = Lines::new(source);
     let structure = Structure::build(&lines);
-    let mut recalculating = HashSet::new();
+    let mut modes = HashMap::new();
     loop {
         let mut walker = Walker {
             structure: &structure,
@@ -94,33 +95,44 @@ pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analys
             pending: HashMap::new(),
             analysis: Analysis::default(),
             depth: 0,
-            recalculating: &recalculating,
-            assumed_swivel: HashSet::new(),
+            modes: &modes,
+            assumed: HashSet::new(),
         };
         let mut env = Env::default();
         walker.walk(0, lines.len(), &mut env);
-        let learned: Vec<usize> = walker
+        let learned: Vec<(usize, Mode)> = walker
             .analysis
             .calls
             .iter()
-            .filter(|c| c.recalculates() && walker.assumed_swivel.contains(&c.line))
-            .map(|c| c.line)
+            .filter(|c| walker.assumed.contains(&c.line))
+            .filter_map(|c| Some((c.line, c.mode()?)))
             .collect();
         if learned.is_empty() {
             let mut analysis = walker.analysis;
             analysis.calls.sort_by_key(|c| (c.line, c.statement.start));
             return (analysis, env);
         }
-        recalculating.extend(learned);
+        modes.extend(learned);
     }
 }
 
+/// What a CYCLE600 call does, by its `_SW_REC`.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Mode {
+    /// `_SW_REC=1`: results to `_CYC600_1..6`, nothing moves.
+    Recalculate,
+    /// `_SW_REC=0`: a swivel.
+    Swivel,
+}
+
 impl CallSite {
-    /// The call only recalculates (`_SW_REC=1`): it never swivels.
-    fn recalculates(&self) -> bool {
-        self.bound
-            .as_ref()
-            .is_some_and(|b| b.arguments[2].value == Ok(Value::Number(1.0)))
+    /// What the call does, when its `_SW_REC` is known.
+    fn mode(&self) -> Option<Mode> {
+        match self.bound.as_ref()?.arguments[2].value {
+            Ok(Value::Number(flag)) if flag == 1.0 => Some(Mode::Recalculate),
+            Ok(Value::Number(flag)) if flag == 0.0 => Some(Mode::Swivel),
+            _ => None,
+        }
     }
 }
 
@@ -130,7 +142,7 @@ struct Written {
     names: Vec<String>,
     /// A CYCLE800 (or another call that certainly swivels) is there.
     rotation: bool,
-    /// Lines of CYCLE600 calls: they swivel unless they only recalculate.
+    /// Lines of CYCLE600 calls: they swivel or write their results.
     cycle600_lines: Vec<usize>,
 }
 
@@ -146,10 +158,10 @@ struct Walker<'a> {
     /// How many blocks the walk is inside; bounded, so that no program can
     /// exhaust the stack.
     depth: usize,
-    /// CYCLE600 lines an earlier walk found to only recalculate.
-    recalculating: &'a HashSet<usize>,
-    /// CYCLE600 lines a forget treated as swivelling.
-    assumed_swivel: HashSet<usize>,
+    /// What the CYCLE600 calls on these lines do, as an earlier walk found.
+    modes: &'a HashMap<usize, Mode>,
+    /// CYCLE600 lines a forget had to assume both things of.
+    assumed: HashSet<usize>,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
@@ -391,20 +403,30 @@ impl<'a> Walker<'a> {
         written
     }
 
-    /// Makes unknown what a region writes: its variables, and the active
-    /// rotation if anything in it may swivel.
+    /// Makes unknown what a region writes: its variables, the active rotation
+    /// if anything in it may swivel, and `_CYC600_1..6` if a CYCLE600 in it may
+    /// recalculate.
     fn forget(&mut self, written: &Written, env: &mut Env, origin: &Origin) {
         for name in &written.names {
             env.forget(name, origin.clone());
         }
-        let swivels: Vec<usize> = written
-            .cycle600_lines
-            .iter()
-            .filter(|line| !self.recalculating.contains(line))
-            .copied()
-            .collect();
-        if written.rotation || !swivels.is_empty() {
-            self.assumed_swivel.extend(swivels);
+        let (mut swivels, mut recalculates) = (written.rotation, false);
+        for line in &written.cycle600_lines {
+            match self.modes.get(line) {
+                Some(Mode::Swivel) => swivels = true,
+                Some(Mode::Recalculate) => recalculates = true,
+                None => {
+                    self.assumed.insert(*line);
+                    (swivels, recalculates) = (true, true);
+                }
+            }
+        }
+        if recalculates {
+            for n in 1..=6 {
+                env.forget(&format!("_CYC600_{n}"), origin.clone());
+            }
+        }
+        if swivels {
             env.active = Active::Unknown {
                 why: origin.to_string(),
             };
@@ -597,62 +619,88 @@ impl<'a> Walker<'a> {
                 }
             }
         }
-        match &site.evaluation {
-            Some(evaluation) if !evaluation.additive_on_control => {
+        self.results(&site, env);
+        env.active = self.rotation_after(&site, env);
+        self.analysis.calls.push(site);
+    }
+
+    /// What the call leaves in `_CYC600_1..6`. The spec documents them as the
+    /// results of a recalculation (`_SW_REC=1`); a swivel is rewritten into a
+    /// native swivel that writes none, so it is taken to leave them as they
+    /// were (a second rewrite must see what the first saw).
+    fn results(&self, site: &CallSite, env: &mut Env) {
+        let line = site.line + 1;
+        if site.mode() == Some(Mode::Swivel) {
+            return;
+        }
+        let known = |env: &mut Env, n: usize, value: Value| {
+            let origin = Origin::Cycle600 { line };
+            env.set(format!("_CYC600_{n}"), Binding::Known { value, origin });
+        };
+        let unknown = |env: &mut Env, n: usize, why: &str| {
+            let origin = Origin::Unevaluable {
+                line,
+                why: why.into(),
+            };
+            env.forget(&format!("_CYC600_{n}"), origin);
+        };
+        match (&site.evaluation, &site.runtime) {
+            (Some(evaluation), _) if evaluation.parameters.recalculate_only => {
                 for (n, value) in evaluation.gud().into_iter().enumerate() {
-                    env.set(
-                        format!("_CYC600_{}", n + 1),
-                        Binding::Known {
-                            value,
-                            origin: Origin::Cycle600 { line },
-                        },
-                    );
+                    known(env, n + 1, value);
                 }
-                if !evaluation.parameters.recalculate_only {
-                    env.active = Active::Known {
-                        rotation: evaluation.target,
-                        line,
-                    };
+            }
+            // Computed on the control: the angles only, the rest is known.
+            (None, Some(runtime)) if runtime.recalculate_only => {
+                known(env, 1, Value::Text(runtime.head.clone()));
+                for n in 2..=4 {
+                    unknown(env, n, "the CYCLE600 there computes it at run time");
                 }
+                known(env, 5, Value::Number(1.0));
+                known(env, 6, Value::Number(runtime.output.code() as f64));
             }
             _ => {
-                let origin = Origin::Unevaluable {
-                    line,
-                    why: "the CYCLE600 there is not evaluated offline".into(),
-                };
                 for n in 1..=6 {
-                    env.forget(&format!("_CYC600_{n}"), origin.clone());
+                    unknown(env, n, "the CYCLE600 there is not evaluated offline");
                 }
-                // A call that only recalculates (_SW_REC=1) never swivels, even
-                // when its results are unknown: the active rotation stays. One
-                // whose translations alone are measured swivels to a rotation
-                // known offline: a rotation never depends on translations.
-                let rotation_known = site
-                    .runtime
-                    .as_ref()
-                    .and_then(|runtime| runtime.rotation_parameters())
-                    .and_then(|p| {
-                        cycle600::evaluate_parameters(p, &env.active, site.statement).ok()
-                    })
-                    .filter(|(evaluation, _)| !evaluation.additive_on_control);
-                env.active = match (&site.evaluation, rotation_known) {
-                    _ if site.recalculates() => env.active.clone(),
-                    (None, Some((evaluation, _))) => Active::Known {
+            }
+        }
+    }
+
+    /// The rotation active after the call.
+    fn rotation_after(&self, site: &CallSite, env: &Env) -> Active {
+        let line = site.line + 1;
+        // A call that only recalculates never swivels, even when its results
+        // are unknown.
+        if site.mode() == Some(Mode::Recalculate) {
+            return env.active.clone();
+        }
+        match &site.evaluation {
+            Some(evaluation) if !evaluation.additive_on_control => Active::Known {
+                rotation: evaluation.target,
+                line,
+            },
+            Some(_) => Active::Unknown {
+                why: format!("the CYCLE600 on line {line} adds to a rotation unknown offline"),
+            },
+            // One whose translations alone are measured swivels to a rotation
+            // known offline: a rotation never depends on translations.
+            None => site
+                .runtime
+                .as_ref()
+                .and_then(|runtime| runtime.rotation_parameters())
+                .and_then(|p| cycle600::evaluate_parameters(p, &env.active, site.statement).ok())
+                .filter(|(evaluation, _)| !evaluation.additive_on_control)
+                .map_or_else(
+                    || Active::Unknown {
+                        why: format!("the CYCLE600 on line {line} is not known offline"),
+                    },
+                    |(evaluation, _)| Active::Known {
                         rotation: evaluation.target,
                         line,
                     },
-                    (Some(_), _) => Active::Unknown {
-                        why: format!(
-                            "the CYCLE600 on line {line} adds to a rotation unknown offline"
-                        ),
-                    },
-                    (None, None) => Active::Unknown {
-                        why: format!("the CYCLE600 on line {line} is not known offline"),
-                    },
-                };
-            }
+                ),
         }
-        self.analysis.calls.push(site);
     }
 
     /// Whether a measured value the call reads lacks a STOPRE since its measurement.
@@ -765,12 +813,7 @@ fn block_writes(source: &[u8], block: &Block, line: usize) -> Written {
             }
             StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
                 match call_kind(&upper(name.text(source))) {
-                    CallKind::Cycle600 => {
-                        written
-                            .names
-                            .extend((1..=6).map(|n| format!("_CYC600_{n}")));
-                        written.cycle600_lines.push(line);
-                    }
+                    CallKind::Cycle600 => written.cycle600_lines.push(line),
                     CallKind::Cycle800 => written.rotation = true,
                     CallKind::Measuring => written
                         .names
