@@ -129,8 +129,8 @@ impl CallSite {
     /// What the call does, when its `_SW_REC` is known.
     fn mode(&self) -> Option<Mode> {
         match self.bound.as_ref()?.arguments[2].value {
-            Ok(Value::Number(flag)) if flag == 1.0 => Some(Mode::Recalculate),
-            Ok(Value::Number(flag)) if flag == 0.0 => Some(Mode::Swivel),
+            Ok(Value::Number(1.0)) => Some(Mode::Recalculate),
+            Ok(Value::Number(0.0)) => Some(Mode::Swivel),
             _ => None,
         }
     }
