@@ -128,14 +128,22 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
             None => {
                 let locals = names.locals();
                 if !locals.is_empty() {
+                    let at = runtime::def_insertion(source);
+                    // The DEF lines end as the line before them does: a lone CR
+                    // in front of that line's LF would join them into one CRLF.
+                    let eol = match &source[..at] {
+                        [.., b'\r', b'\n'] => b"\r\n".as_slice(),
+                        [.., b'\n'] => b"\n",
+                        [.., b'\r'] => b"\r",
+                        _ => eol,
+                    };
                     let mut declarations = Vec::new();
                     for chunk in locals.chunks(8) {
                         declarations
                             .extend_from_slice(format!("DEF REAL {}", chunk.join(", ")).as_bytes());
                         declarations.extend_from_slice(eol);
                     }
-                    out.edits
-                        .push(Edit::insert(runtime::def_insertion(source), declarations));
+                    out.edits.push(Edit::insert(at, declarations));
                 }
                 for (site, blocks) in &at_run_time {
                     // The unknown-argument errors are answered by the run-time code.

@@ -61,7 +61,7 @@ pub fn check(
     supplied: &Supplied,
     heads: Option<&Heads>,
 ) -> Vec<Diagnostic> {
-    let file = FileContext { source, name, kind };
+    let file = FileContext::new(source, name, kind);
     let mut checkers: Vec<_> = rules::all()
         .into_iter()
         .filter(|r| selection.enables(r.info.code))

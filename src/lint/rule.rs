@@ -1,6 +1,8 @@
 //! What a lint rule is: its metadata, and the checker that sees the program
 //! one line at a time.
 
+use std::cell::OnceCell;
+
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
@@ -32,6 +34,30 @@ pub struct FileContext<'a> {
     /// The file's name as given (`<stdin>` or `--stdin-filename`).
     pub name: &'a str,
     pub kind: ProgramKind,
+    block_numbers: OnceCell<Vec<(u64, usize)>>,
+}
+
+impl<'a> FileContext<'a> {
+    pub fn new(source: &'a [u8], name: &'a str, kind: ProgramKind) -> Self {
+        Self {
+            source,
+            name,
+            kind,
+            block_numbers: OnceCell::new(),
+        }
+    }
+
+    /// Every block number with its row, sorted by number; read from the file
+    /// on first use (the jump rules need them only when a jump names one,
+    /// and keeping millions of them as lines go by would cost more memory
+    /// than the rest of `check`).
+    pub fn block_numbers(&self) -> &[(u64, usize)] {
+        self.block_numbers.get_or_init(|| {
+            let mut numbers = crate::syntax::plain::block_numbers(self.source);
+            numbers.sort_unstable();
+            numbers
+        })
+    }
 }
 
 /// One line as the rules see it. What each statement reads is collected

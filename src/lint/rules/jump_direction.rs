@@ -1,5 +1,7 @@
 //! N002 `jump-direction`: Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
 
+use std::collections::HashMap;
+
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
@@ -29,7 +31,8 @@ Use GOTOB (or GOTO, which searches both ways), or move the label."#,
 
 #[derive(Default)]
 pub struct Checker {
-    labels: Vec<(String, usize)>,
+    /// Label -> rows where it stands.
+    labels: HashMap<String, Vec<usize>>,
     jumps: Vec<(Target, Span, usize, GotoKind)>,
 }
 
@@ -44,8 +47,9 @@ impl Check for Checker {
         let Some(block) = line.block else {
             return;
         };
-        self.labels
-            .extend(label(file.source, block).map(|(l, _)| (l, row)));
+        if let Some((name, _)) = label(file.source, block) {
+            self.labels.entry(name).or_default().push(row);
+        }
         if line.plain {
             return;
         }
@@ -57,23 +61,18 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let mut numbers = Vec::new();
-        if self
+        let names_a_number = self
             .jumps
             .iter()
-            .any(|(t, ..)| matches!(t, Target::Number(_)))
-        {
-            numbers = block_numbers(file.source);
-            numbers.sort_unstable();
-        }
+            .any(|(t, ..)| matches!(t, Target::Number(_)));
+        let numbers = if names_a_number {
+            file.block_numbers()
+        } else {
+            &[]
+        };
         for (target, span, row, kind) in &self.jumps {
             let rows: Vec<usize> = match target {
-                Target::Label(name) => self
-                    .labels
-                    .iter()
-                    .filter(|(l, _)| l == name)
-                    .map(|(_, r)| *r)
-                    .collect(),
+                Target::Label(name) => self.labels.get(name).cloned().unwrap_or_default(),
                 Target::Number(n) => {
                     let first = numbers.partition_point(|(m, _)| m < n);
                     numbers[first..]

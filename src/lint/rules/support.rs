@@ -3,7 +3,6 @@
 
 use crate::semantic::walk::{collect_variables, for_each_expression};
 use crate::span::Span;
-pub use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
     Block, Goto, GotoTarget, Initializer, Statement, StatementKind, Variable,
 };

@@ -61,15 +61,15 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let mut numbers = Vec::new();
-        if self
+        let names_a_number = self
             .jumps
             .iter()
-            .any(|(t, ..)| matches!(t, Target::Number(_)))
-        {
-            numbers = block_numbers(file.source);
-            numbers.sort_unstable();
-        }
+            .any(|(t, ..)| matches!(t, Target::Number(_)));
+        let numbers = if names_a_number {
+            file.block_numbers()
+        } else {
+            &[]
+        };
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
                 Target::Label(name) => self.labels.contains(name),
