@@ -79,8 +79,8 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// them only (`_SW_REC` known), the walk is repeated knowing that. Rewriting
 /// the call leaves code that does just that one thing, so a second rewrite
 /// sees what the repeated walk sees: the repetition is what makes the
-/// rewrite idempotent. Each repetition learns one more line, so there are at
-/// most as many as there are CYCLE600 calls.
+/// rewrite idempotent. Each repetition learns at least one more line, so there
+/// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
     let lines = Lines::new(source);
     let structure = Structure::build(&lines);
