@@ -23,7 +23,7 @@ use crate::semantic::head_def::Heads;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
 use crate::syntax::lexer::is_blank;
-use crate::syntax::plain::block_numbers;
+use crate::syntax::plain::{block_numbers, digits_value};
 use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
     TypeKind, Variable, WordValue,
@@ -1208,12 +1208,10 @@ fn block_number(source: &[u8], target: &GotoTarget) -> Option<u64> {
                 [b'N' | b'n', digits @ ..] => digits,
                 _ => return None,
             };
-            if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+            if digits.is_empty() {
                 return None;
             }
-            digits.iter().try_fold(0u64, |value, &digit| {
-                value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
-            })
+            digits_value(digits)
         }
         GotoTarget::Number(number) => Some(number.value as u64),
         GotoTarget::Computed(_) => None,

@@ -97,16 +97,18 @@ pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
             let start = parse_blank(Input::new(raw.content.of(source), raw.content.start));
             let start = parse_skip(start).map_or(start, |(rest, _)| parse_blank(rest));
             let (_, number) = parse_block_number(start).ok()?;
-            let value = number
-                .digits
-                .of(source)
-                .iter()
-                .try_fold(0u64, |value, &digit| {
-                    value.checked_mul(10)?.checked_add(u64::from(digit - b'0'))
-                });
-            value.filter(|_| !number.main).map(|value| (value, line))
+            let value = digits_value(number.digits.of(source))?;
+            (!number.main).then_some((value, line))
         })
         .collect()
+}
+
+/// The value of ASCII digits, `None` beyond `u64` (or for anything else).
+pub fn digits_value(digits: &[u8]) -> Option<u64> {
+    digits.iter().try_fold(0u64, |value, &digit| {
+        let digit = (digit as char).to_digit(10)?;
+        value.checked_mul(10)?.checked_add(u64::from(digit))
+    })
 }
 
 #[cfg(test)]
