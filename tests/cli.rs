@@ -60,6 +60,30 @@ fn check_takes_named_files_whatever_their_extension() {
     assert!(stdout(&output).contains("bad_number.mpf:1:6: error[S003]"));
 }
 
+/// The report for people shows each finding's own lines, far into a file
+/// too, and names the same line and column as the short format (CRLF and
+/// Latin-1 here).
+#[test]
+fn human_reports_show_the_right_lines_far_into_a_file() {
+    let mut program: Vec<u8> = (1..=5000)
+        .flat_map(|n| format!("N{} X1\r\n", n * 10).into_bytes())
+        .collect();
+    program.extend_from_slice(b"GOTOF NOWHERE\r\nX\xe4\r\nM30\r\n");
+    let short = stdout(&run(&["check", "--format", "short", "-"], &program));
+    assert!(short.contains(":5001:7: error[N001]") && short.contains(":5002:2: error[S004]"));
+    let human = stdout(&run(&["check", "-"], &program));
+    for expected in [
+        ":5001:7]",
+        " 5000 \u{2502} N50000 X1",
+        " 5001 \u{2502} GOTOF NOWHERE",
+        ":5002:2]",
+        " 5002 \u{2502} X\u{e4}",
+        " 5003 \u{2502} M30",
+    ] {
+        assert!(human.contains(expected), "{expected:?} not in\n{human}");
+    }
+}
+
 #[test]
 fn rewrite_gives_every_byte_back_when_there_is_nothing_to_rewrite() {
     let input = b"N10 G1 X1\r\n\xe4\xf6 broken ( \"\rN20 X2";

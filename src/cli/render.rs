@@ -3,10 +3,13 @@
 
 use std::fmt;
 
-use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource, SourceCode};
+use miette::{
+    GraphicalReportHandler, GraphicalTheme, LabeledSpan, MietteError, MietteSpanContents,
+    SourceCode, SourceSpan, SpanContents,
+};
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::span::{LineIndex, Position};
+use crate::span::{LineIndex, Position, Span};
 
 /// One file's diagnostics, ready to render.
 pub struct FileReport<'a> {
@@ -36,8 +39,7 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
     if report.diagnostics.is_empty() {
         return;
     }
-    let text = TextSource::new(report.source);
-    let named = NamedSource::new(report.name, text.text.clone());
+    let index = LineIndex::new(report.source);
     let theme = if colour {
         GraphicalTheme::unicode()
     } else {
@@ -47,8 +49,7 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
     for diagnostic in report.diagnostics {
         let shown = Shown {
             diagnostic,
-            source: &named,
-            text: &text,
+            window: Window::around(report, &index, diagnostic.span),
         };
         // Rendering into a String cannot fail.
         let _ = handler.render_report(out, &shown);
@@ -56,48 +57,105 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
     }
 }
 
-/// The source as text for miette. A file that is not UTF-8 is read as
-/// Latin-1 (one byte, one character), and spans are moved to match.
-struct TextSource {
+/// The lines miette shows for one diagnostic (its own and one either side),
+/// as text: a file that is not UTF-8 is read as Latin-1 (one byte, one
+/// character). Handing miette the whole file made it count lines from the
+/// start for every diagnostic, and copied the file twice.
+struct Window {
+    name: String,
     text: String,
+    /// Where the window starts in the file, and on which line (0-based).
+    start: usize,
+    first_row: usize,
     latin1: bool,
-    source: Vec<u8>,
+    bytes: Vec<u8>,
 }
 
-impl TextSource {
-    fn new(source: &[u8]) -> Self {
-        match std::str::from_utf8(source) {
-            Ok(text) => Self {
-                text: text.to_string(),
-                latin1: false,
-                source: Vec::new(),
-            },
-            Err(_) => Self {
-                text: source.iter().map(|&b| b as char).collect(),
-                latin1: true,
-                source: source.to_vec(),
-            },
+impl Window {
+    fn around(report: &FileReport, index: &LineIndex, span: Span) -> Self {
+        let source = report.source;
+        let span_start = span.start.min(source.len());
+        let span_end = span.end.clamp(span_start, source.len());
+        let own_line = line_start(source, span_start);
+        let start = line_start(source, previous_line_end(source, own_line));
+        let end = line_end(source, next_line(source, line_end(source, span_end)));
+        let bytes = &source[start..end];
+        let (text, latin1) = match std::str::from_utf8(bytes) {
+            Ok(text) if index.is_utf8() => (text.to_string(), false),
+            _ => (bytes.iter().map(|&b| b as char).collect(), true),
+        };
+        Self {
+            name: report.name.to_string(),
+            text,
+            start,
+            first_row: index.position(start).row - 1,
+            latin1,
+            bytes: bytes.to_vec(),
         }
     }
 
-    /// A byte offset of the source as a byte offset of `text`.
+    /// A byte offset of the file as an offset into `text`.
     fn offset(&self, offset: usize) -> usize {
+        let inside = offset.clamp(self.start, self.start + self.bytes.len()) - self.start;
         if self.latin1 {
-            offset
-                + self.source[..offset.min(self.source.len())]
-                    .iter()
-                    .filter(|&&b| b >= 0x80)
-                    .count()
+            inside + self.bytes[..inside].iter().filter(|&&b| b >= 0x80).count()
         } else {
-            offset
+            inside
         }
+    }
+}
+
+impl SourceCode for Window {
+    fn read_span<'a>(
+        &'a self,
+        span: &SourceSpan,
+        before: usize,
+        after: usize,
+    ) -> Result<Box<dyn SpanContents<'a> + 'a>, MietteError> {
+        let inner = self.text.read_span(span, before, after)?;
+        Ok(Box::new(MietteSpanContents::new_named(
+            self.name.clone(),
+            inner.data(),
+            *inner.span(),
+            inner.line() + self.first_row,
+            inner.column(),
+            inner.line_count(),
+        )))
+    }
+}
+
+/// Where the line holding `at` starts (a line ends at LF, CRLF or a lone CR).
+fn line_start(source: &[u8], at: usize) -> usize {
+    memchr::memrchr2(b'\n', b'\r', &source[..at]).map_or(0, |end| end + 1)
+}
+
+/// Where the line before the one starting at `start` ends, before its
+/// terminator (`start` itself on the first line).
+fn previous_line_end(source: &[u8], start: usize) -> usize {
+    match &source[..start] {
+        [.., b'\r', b'\n'] => start - 2,
+        [.., _] => start - 1,
+        [] => start,
+    }
+}
+
+/// Where the line holding `at` ends, before its terminator.
+fn line_end(source: &[u8], at: usize) -> usize {
+    memchr::memchr2(b'\n', b'\r', &source[at..]).map_or(source.len(), |end| at + end)
+}
+
+/// The start of the line after the terminator at `at` (or `at` at the end).
+fn next_line(source: &[u8], at: usize) -> usize {
+    match &source[at..] {
+        [b'\r', b'\n', ..] => at + 2,
+        [_, ..] => at + 1,
+        [] => at,
     }
 }
 
 struct Shown<'a> {
     diagnostic: &'a Diagnostic,
-    source: &'a NamedSource<String>,
-    text: &'a TextSource,
+    window: Window,
 }
 
 impl fmt::Debug for Shown<'_> {
@@ -138,13 +196,13 @@ impl miette::Diagnostic for Shown<'_> {
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
-        Some(self.source)
+        Some(&self.window)
     }
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
         let span = self.diagnostic.span;
-        let start = self.text.offset(span.start);
-        let len = self.text.offset(span.end) - start;
+        let start = self.window.offset(span.start);
+        let len = self.window.offset(span.end) - start;
         Some(Box::new(std::iter::once(LabeledSpan::new(
             Some(self.diagnostic.label.clone()),
             start,
