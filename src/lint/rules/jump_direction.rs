@@ -61,19 +61,12 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let names_a_number = self
-            .jumps
-            .iter()
-            .any(|(t, ..)| matches!(t, Target::Number(_)));
-        let numbers = if names_a_number {
-            file.block_numbers()
-        } else {
-            &[]
-        };
         for (target, span, row, kind) in &self.jumps {
             let rows: Vec<usize> = match target {
                 Target::Label(name) => self.labels.get(name).cloned().unwrap_or_default(),
                 Target::Number(n) => {
+                    // Read from the file on first use: most programs never jump to one.
+                    let numbers = file.block_numbers();
                     let first = numbers.partition_point(|(m, _)| m < n);
                     numbers[first..]
                         .iter()

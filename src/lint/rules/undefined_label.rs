@@ -61,19 +61,14 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let names_a_number = self
-            .jumps
-            .iter()
-            .any(|(t, ..)| matches!(t, Target::Number(_)));
-        let numbers = if names_a_number {
-            file.block_numbers()
-        } else {
-            &[]
-        };
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
                 Target::Label(name) => self.labels.contains(name),
-                Target::Number(n) => numbers.binary_search_by(|(m, _)| m.cmp(n)).is_ok(),
+                // Read from the file on first use: most programs never jump to one.
+                Target::Number(n) => file
+                    .block_numbers()
+                    .binary_search_by(|(m, _)| m.cmp(n))
+                    .is_ok(),
             };
             if exists {
                 continue;
