@@ -23,7 +23,7 @@ use crate::semantic::head_def::Heads;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
 use crate::syntax::lexer::is_blank;
-use crate::syntax::plain::{block_numbers, digits_value};
+use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
     TypeKind, Variable, WordValue,
@@ -1146,7 +1146,7 @@ impl Structure {
         if jumps.iter().any(|(_, goto)| {
             goto.target
                 .as_ref()
-                .is_some_and(|t| block_number(source, t).is_some())
+                .is_some_and(|t| t.block_number(source).is_some())
         }) {
             structure.numbers = block_numbers(source);
             structure.numbers.sort_unstable();
@@ -1175,7 +1175,7 @@ impl Structure {
         from: usize,
     ) -> Option<usize> {
         use crate::syntax::tree::GotoKind;
-        let lines: Cow<[usize]> = match (block_number(source, target), target) {
+        let lines: Cow<[usize]> = match (target.block_number(source), target) {
             (Some(number), _) => {
                 let first = self.numbers.partition_point(|&(n, _)| n < number);
                 let numbered = self.numbers[first..]
@@ -1196,25 +1196,6 @@ impl Structure {
             GotoKind::Both | GotoKind::Conditional => forward.or(backward),
             GotoKind::Start => Some(0),
         }
-    }
-}
-
-/// The block number a jump names: `GOTOF N100`, `GOTOF N0100` (the same
-/// block), or a computed number.
-fn block_number(source: &[u8], target: &GotoTarget) -> Option<u64> {
-    match target {
-        GotoTarget::Label(name) => {
-            let digits = match name.text(source) {
-                [b'N' | b'n', digits @ ..] => digits,
-                _ => return None,
-            };
-            if digits.is_empty() {
-                return None;
-            }
-            digits_value(digits)
-        }
-        GotoTarget::Number(number) => Some(number.value as u64),
-        GotoTarget::Computed(_) => None,
     }
 }
 

@@ -340,6 +340,23 @@ pub enum GotoTarget {
     Computed(Expr),
 }
 
+impl GotoTarget {
+    /// The block number the jump names: `GOTOF N100`, `GOTOF N0100` (the
+    /// same block), `GOTOF 100`; `None` for a label or a computed target.
+    pub fn block_number(&self, source: &[u8]) -> Option<u64> {
+        match self {
+            GotoTarget::Label(name) => match name.text(source) {
+                [b'N' | b'n', digits @ ..] if !digits.is_empty() => {
+                    crate::syntax::plain::digits_value(digits)
+                }
+                _ => None,
+            },
+            GotoTarget::Number(number) => Some(number.value as u64),
+            GotoTarget::Computed(_) => None,
+        }
+    }
+}
+
 /// `CASE expr OF c1 GOTOF L1 c2 GOTOF L2 DEFAULT GOTOF LD`
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {

@@ -52,17 +52,12 @@ pub fn gotos(block: &Block) -> Vec<&Goto> {
 /// Where a jump goes; `None` for computed targets.
 pub fn target(source: &[u8], goto: &Goto) -> Option<(Target, Span)> {
     match goto.target.as_ref()? {
-        GotoTarget::Label(name) => {
-            let text = upper(source, name.span);
-            let number = text
-                .strip_prefix('N')
-                .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
-                .and_then(|d| d.parse().ok());
-            Some((
-                number.map_or(Target::Label(text), Target::Number),
-                name.span,
-            ))
-        }
+        target @ GotoTarget::Label(name) => Some((
+            target
+                .block_number(source)
+                .map_or_else(|| Target::Label(upper(source, name.span)), Target::Number),
+            name.span,
+        )),
         GotoTarget::Number(number) => Some((Target::Number(number.value as u64), number.span)),
         GotoTarget::Computed(_) => None,
     }
