@@ -1,13 +1,15 @@
 //! Conversions per second on one thread: build the matrix of three angles in
-//! one sequence and read it back in another (`sinuprep::rotation::convert`).
+//! one sequence and read it back in another, one call per conversion
+//! (`sinuprep::rotation::convert`) and many per call (`convert_all`).
 //!
 //! Run with `cargo bench --bench rotation`. A benchmark, not a test: it asserts
-//! nothing about time.
+//! nothing about time. `SINUPREP_BENCH_ROUNDS=20000` makes a run short enough
+//! for callgrind.
 
 use std::hint::black_box;
 use std::time::Instant;
 
-use sinuprep::rotation::{convert, Sequence};
+use sinuprep::rotation::{convert, convert_all, Sequence};
 
 fn main() {
     let sequences: Vec<Sequence> = Sequence::all().collect();
@@ -22,24 +24,55 @@ fn main() {
             ]
         })
         .collect();
-    let rounds = 2_000_000usize;
-    let mut checksum = 0.0;
-    // Warm up, then measure the best of five runs.
-    let mut best = f64::INFINITY;
-    for _ in 0..6 {
-        let start = Instant::now();
+    let rounds = std::env::var("SINUPREP_BENCH_ROUNDS")
+        .ok()
+        .and_then(|text| text.parse().ok())
+        .unwrap_or(2_000_000usize);
+
+    let one_by_one = best_of_five(|| {
+        let mut checksum = 0.0;
         for i in 0..rounds {
             let from = sequences[i % 24];
             let to = sequences[(i / 24) % 24];
             let conversion = convert(from, black_box(angles[i % angles.len()]), to);
             checksum += conversion.output.angles[0];
         }
+        checksum
+    });
+    report("convert", rounds, one_by_one);
+
+    // The same number of conversions, a slice of angles per sequence pair.
+    let batch = 1024;
+    let batches = rounds.div_ceil(batch);
+    let many = best_of_five(|| {
+        let mut checksum = 0.0;
+        for n in 0..batches {
+            let from = sequences[n % 24];
+            let to = sequences[(n / 24) % 24];
+            let start = (n * batch) % angles.len();
+            let slice = black_box(&angles[start..start + batch]);
+            checksum += convert_all(from, slice, to)[batch / 2].output.angles[0];
+        }
+        checksum
+    });
+    report("convert_all", batches * batch, many);
+}
+
+/// The best time of five runs after one warm-up run.
+fn best_of_five(mut run: impl FnMut() -> f64) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..6 {
+        let start = Instant::now();
+        black_box(run());
         best = best.min(start.elapsed().as_secs_f64());
     }
-    black_box(checksum);
+    best
+}
+
+fn report(what: &str, conversions: usize, seconds: f64) {
     println!(
-        "rotation convert: {:.1} million conversions/s on one thread ({:.1} ns each, {rounds} conversions, best of 5)",
-        rounds as f64 / best / 1e6,
-        best / rounds as f64 * 1e9
+        "rotation {what}: {:.1} million conversions/s on one thread ({:.1} ns each, {conversions} conversions, best of 5)",
+        conversions as f64 / seconds / 1e6,
+        seconds / conversions as f64 * 1e9
     );
 }

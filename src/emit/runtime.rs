@@ -16,7 +16,8 @@ use nalgebra::Matrix3;
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::cycle600::{Form, Options};
 use crate::emit::number::format;
-use crate::rotation::euler::{sin_cos_degrees, GIMBAL_TOLERANCE};
+use crate::rotation::euler::GIMBAL_TOLERANCE;
+use crate::rotation::trig::sin_cos_degrees;
 use crate::rotation::{self, Axis, Kind};
 use crate::semantic::cycle600::{
     additive_onto_unknown, no_cycle800_form, Operand, RuntimeParameters,

@@ -68,7 +68,7 @@ pub fn rotation_vector(rotation: &Rotation3<f64>) -> Vector3<f64> {
 pub fn from_axis_angle(axis: Vector3<f64>, degrees: f64) -> Rotation3<f64> {
     let unit = axis.normalize();
     let k = unit.cross_matrix();
-    let (s, c) = crate::rotation::euler::sin_cos_degrees(degrees);
+    let (s, c) = crate::rotation::trig::sin_cos_degrees(degrees);
     Rotation3::from_matrix_unchecked(nalgebra::Matrix3::identity() + k * s + k * k * (1.0 - c))
 }
 

@@ -7,10 +7,15 @@
 
 pub mod euler;
 pub mod frame;
+pub mod lanes;
 pub mod sequence;
+pub mod trig;
 
 pub use euler::{decompose, matrix, Angles, Decomposition};
+
+use euler::{decompose_lanes, matrix_lanes, rotation_of_lane};
 pub use frame::Frame;
+use lanes::Lanes;
 pub use sequence::{Axis, Kind, Sequence, SequenceError};
 
 use nalgebra::Rotation3;
@@ -29,4 +34,32 @@ pub fn convert(from: Sequence, angles: Angles, to: Sequence) -> Conversion {
         matrix,
         output: decompose(to, &matrix),
     }
+}
+
+/// [`convert`] of many angle triples, computed several side by side (see
+/// `lanes`): the same results, bit for bit, several times faster.
+pub fn convert_all(from: Sequence, angles: &[Angles], to: Sequence) -> Vec<Conversion> {
+    const LANES: usize = 8;
+    let mut conversions = Vec::with_capacity(angles.len());
+    for chunk in angles.chunks(LANES) {
+        // A short last chunk is padded with zero angles, computed and dropped.
+        let lane_angles = [0, 1, 2].map(|n| {
+            Lanes(std::array::from_fn::<f64, LANES, _>(|lane| {
+                chunk.get(lane).map_or(0.0, |angles| angles[n])
+            }))
+        });
+        let rows = matrix_lanes(from, lane_angles);
+        let outputs = decompose_lanes(to, &rows);
+        conversions.extend(
+            outputs
+                .iter()
+                .take(chunk.len())
+                .enumerate()
+                .map(|(lane, &output)| Conversion {
+                    matrix: rotation_of_lane(&rows, lane),
+                    output,
+                }),
+        );
+    }
+    conversions
 }

@@ -290,8 +290,8 @@ fn function(name: &str, args: &[Value]) -> Result<Value, Unknown> {
             arity(1)?;
             let x = numbers?[0];
             match name {
-                "SIN" => crate::rotation::euler::sin_cos_degrees(x).0,
-                "COS" => crate::rotation::euler::sin_cos_degrees(x).1,
+                "SIN" => crate::rotation::trig::sin_cos_degrees(x).0,
+                "COS" => crate::rotation::trig::sin_cos_degrees(x).1,
                 "TAN" => degrees(x).tan(),
                 "ASIN" => {
                     domain((-1.0..=1.0).contains(&x), &x.to_string())?;
