@@ -4,7 +4,8 @@
 //! and prints MB/s, blocks/s and peak memory, with `wc -l` as the floor.
 //!
 //! `cargo bench --bench throughput` (size in MB: `SINUPREP_BENCH_MB`, default
-//! 100). Peak memory comes from `/usr/bin/time -f %M`; nothing is asserted.
+//! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs). Peak memory comes from
+//! `/usr/bin/time -f %M`; nothing is asserted.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -84,7 +85,12 @@ fn main() {
             );
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
+    // SINUPREP_BENCH_KEEP=1 keeps the generated inputs for profiling.
+    if std::env::var_os("SINUPREP_BENCH_KEEP").is_none() {
+        let _ = std::fs::remove_dir_all(&dir);
+    } else {
+        println!("inputs kept in {}", dir.display());
+    }
 }
 
 /// Best of three runs: wall seconds, and peak resident memory in KiB.

@@ -3,6 +3,7 @@
 //! Spans are byte offsets so that every node of the tree can point back at the
 //! exact bytes it came from; nothing here knows about the NC language.
 
+use std::cell::OnceCell;
 use std::ops::Range;
 
 /// A half-open byte range `start..end` into the source.
@@ -62,47 +63,60 @@ pub struct LineIndex<'a> {
     source: &'a [u8],
     /// Where lines 0, STRIDE, 2 * STRIDE, ... start: a position is found from
     /// the nearest one by reading at most STRIDE lines. Every line start
-    /// would cost 8 bytes a line, 22 MB for a 100 MB CAM program.
-    checkpoints: Vec<usize>,
-    utf8: bool,
+    /// would cost 8 bytes a line, 22 MB for a 100 MB CAM program. Read on
+    /// the first question: a file without findings never needs them.
+    checkpoints: OnceCell<Vec<usize>>,
+    utf8: OnceCell<bool>,
 }
 
 const STRIDE: usize = 32;
 
 impl<'a> LineIndex<'a> {
     pub fn new(source: &'a [u8]) -> Self {
-        let mut checkpoints = vec![0];
-        let mut row = 0;
-        let mut at = 0;
-        while let Some(next) = next_line_start(source, at) {
-            row += 1;
-            if row % STRIDE == 0 {
-                checkpoints.push(next);
-            }
-            at = next;
-        }
         Self {
             source,
-            checkpoints,
-            utf8: std::str::from_utf8(source).is_ok(),
+            checkpoints: OnceCell::new(),
+            utf8: OnceCell::new(),
         }
     }
 
     pub fn is_utf8(&self) -> bool {
-        self.utf8
+        *self
+            .utf8
+            .get_or_init(|| std::str::from_utf8(self.source).is_ok())
+    }
+
+    fn checkpoints(&self) -> &[usize] {
+        self.checkpoints.get_or_init(|| {
+            let mut checkpoints = vec![0];
+            let mut row = 0;
+            // One search over the file: a search per line costs more to
+            // start than to run on a 50-byte line.
+            for end in memchr::memchr2_iter(b'\n', b'\r', self.source) {
+                if self.source[end] == b'\r' && self.source.get(end + 1) == Some(&b'\n') {
+                    continue; // the LF that follows ends this line
+                }
+                row += 1;
+                if row % STRIDE == 0 {
+                    checkpoints.push(end + 1);
+                }
+            }
+            checkpoints
+        })
     }
 
     pub fn position(&self, offset: usize) -> Position {
         let offset = offset.min(self.source.len());
-        let checkpoint = self.checkpoints.partition_point(|&start| start <= offset) - 1;
+        let checkpoints = self.checkpoints();
+        let checkpoint = checkpoints.partition_point(|&start| start <= offset) - 1;
         let mut row = checkpoint * STRIDE;
-        let mut line_start = self.checkpoints[checkpoint];
+        let mut line_start = checkpoints[checkpoint];
         while let Some(next) = next_line_start(self.source, line_start).filter(|&n| n <= offset) {
             row += 1;
             line_start = next;
         }
         let before = &self.source[line_start..offset];
-        let column = if self.utf8 {
+        let column = if self.is_utf8() {
             before.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
         } else {
             before.len()

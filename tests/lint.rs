@@ -220,3 +220,57 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
     assert!(String::from_utf8_lossy(&output.stderr).contains("selct"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `check` against `check_parsing_every_line`, all rules on.
+fn assert_shortcut_agrees(name: &str, source: &[u8]) {
+    let heads = sample_heads();
+    let kind = program_kind(Some(name), source);
+    let selection = Selection::default();
+    let supplied = Supplied::default();
+    let fast = lint::check(source, name, kind, &selection, &supplied, Some(&heads));
+    let reference =
+        lint::check_parsing_every_line(source, name, kind, &selection, &supplied, Some(&heads));
+    assert_eq!(fast, reference, "{name}");
+}
+
+/// Plain lines (`N10 G1 X5`) skip the parser and most rules: that must change
+/// no finding, on every fixture and every program of the outside corpus.
+#[test]
+fn skipping_plain_lines_changes_no_finding() {
+    let mut files = support::files_below(&support::repo().join("tests/fixtures"));
+    files.extend(support::corpus_files());
+    for path in &files {
+        let source = std::fs::read(path).expect("readable");
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        assert_shortcut_agrees(name, &source);
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
+
+    /// Random mixes of plain lines with the lines the plain-line rules watch
+    /// (block numbers, STOPRE and main-run reads, DEF, program ends, long
+    /// blocks, suppression comments).
+    #[test]
+    fn skipping_plain_lines_changes_no_finding_in_random_programs(
+        lines in proptest::collection::vec(proptest::prop_oneof![
+            "N[0-9]{1,4} G1 X[0-9.]{1,6} Y-[0-9]{1,3}",
+            "N[0-9]{1,3}",
+            "N[0-9]{1,2}\\.5 X1",
+            "X1 ; sinuprep: allow N0[0-9]{2}",
+            "; sinuprep: allow N014",
+            "STOPRE",
+            "R1=\\$AA_IM\\[X\\]",
+            "DEF REAL A[0-9]",
+            "M30",
+            "M17",
+            "N[0-9]{1,2} X1(0){600}",
+            " *",
+        ], 0..24),
+        ending in proptest::prop_oneof!["\n", "\r\n"],
+    ) {
+        let source = lines.join(&ending);
+        assert_shortcut_agrees("RANDOM.MPF", source.as_bytes());
+    }
+}

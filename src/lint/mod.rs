@@ -10,11 +10,12 @@ pub mod rules;
 pub mod suppression;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{FileContext, LineView, RuleInfo};
+use crate::lint::rule::{FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze, Heads, Supplied};
 use crate::span::LineIndex;
-use crate::syntax::lines::raw_lines;
+use crate::syntax::lines::{line_from, RawLine};
+use crate::syntax::plain::{self, PlainFacts};
 use crate::syntax::tree::LineKind;
 use crate::syntax::{LineParser, ProgramKind};
 
@@ -61,16 +62,71 @@ pub fn check(
     supplied: &Supplied,
     heads: Option<&Heads>,
 ) -> Vec<Diagnostic> {
+    check_lines(
+        source,
+        name,
+        kind,
+        selection,
+        supplied,
+        heads,
+        plain::scan_plain_line,
+    )
+}
+
+/// [`check`] building every line's tree, plain lines included: the reference
+/// the plain-line shortcut is tested against (`tests/lint.rs`).
+#[doc(hidden)]
+pub fn check_parsing_every_line(
+    source: &[u8],
+    name: &str,
+    kind: ProgramKind,
+    selection: &Selection,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+) -> Vec<Diagnostic> {
+    check_lines(source, name, kind, selection, supplied, heads, |_, _| None)
+}
+
+/// Reads the plain line at an offset, if it is one ([`plain::scan_plain_line`]).
+type PlainScanner = fn(&[u8], usize) -> Option<(RawLine, PlainFacts)>;
+
+fn check_lines(
+    source: &[u8],
+    name: &str,
+    kind: ProgramKind,
+    selection: &Selection,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+    scan_plain_line: PlainScanner,
+) -> Vec<Diagnostic> {
     let file = FileContext::new(source, name, kind);
     let mut checkers: Vec<_> = rules::all()
         .into_iter()
         .filter(|r| selection.enables(r.info.code))
         .filter_map(|r| r.checker.map(|make| make()))
         .collect();
+    let plain_watchers: Vec<usize> = (0..checkers.len())
+        .filter(|&n| checkers[n].sees_plain_lines())
+        .collect();
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
     let mut parser = LineParser::default();
-    for (row, raw) in raw_lines(source).enumerate() {
+    let (mut at, mut row) = (0, 0);
+    while at < source.len() {
+        if let Some((raw, facts)) = scan_plain_line(source, at) {
+            // No syntax error, and only a few rules care: no tree to build.
+            parser.pass_plain_line();
+            let line = PlainLine { raw, facts };
+            if let Some(comment) = facts.comment {
+                suppressions.read(source, row, comment);
+            }
+            for &n in &plain_watchers {
+                checkers[n].plain_line(&file, row, &line, &mut found);
+            }
+            (at, row) = (raw.full().end, row + 1);
+            continue;
+        }
+        let raw = line_from(source, at);
         let (line, syntax) = parser.parse_line(source, raw);
         found.extend(syntax);
         if let LineKind::Block(block) = &line.kind {
@@ -82,6 +138,7 @@ pub fn check(
         for checker in &mut checkers {
             checker.line(&file, row, &view, &mut found);
         }
+        (at, row) = (raw.full().end, row + 1);
     }
     for checker in &mut checkers {
         checker.finish(&file, &mut found);
@@ -92,7 +149,7 @@ pub fn check(
     let mut kept: Vec<Diagnostic> = found
         .into_iter()
         .filter(|d| selection.enables(d.code) && d.severity >= selection.severity_min)
-        .filter(|d| !suppressions.covers(d, index.position(d.span.start).row - 1))
+        .filter(|d| !suppressions.covers(d, || index.position(d.span.start).row - 1))
         .collect();
     if selection.enables("N099") && Severity::Info >= selection.severity_min {
         kept.extend(suppressions.unused(|code| selection.enables(code)));

@@ -6,6 +6,7 @@ use std::cell::OnceCell;
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
+use crate::syntax::plain::PlainFacts;
 use crate::syntax::tree::{Block, Line, LineKind, StatementKind, Variable, Word, WordValue};
 use crate::syntax::ProgramKind;
 
@@ -116,6 +117,14 @@ impl<'l> LineView<'l> {
     }
 }
 
+/// A line [`crate::syntax::plain::is_plain`] accepts (most lines of a CAM
+/// program), as the rules see it without a tree: its words are address
+/// letters with numbers, which define, read, call and jump nowhere.
+pub struct PlainLine {
+    pub raw: RawLine,
+    pub facts: PlainFacts,
+}
+
 /// A checker: fed every line in order, then told the file is over. Rules
 /// keep only what they must remember (labels, names, one state flag).
 pub trait Check {
@@ -124,6 +133,20 @@ pub trait Check {
         _file: &FileContext,
         _row: usize,
         _line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
+    }
+    /// Whether the rule learns anything from plain lines. Most do not, and
+    /// `check` then gives them neither [`Check::plain_line`] nor
+    /// [`Check::line`] for those lines: the parser never builds their tree.
+    fn sees_plain_lines(&self) -> bool {
+        false
+    }
+    fn plain_line(
+        &mut self,
+        _file: &FileContext,
+        _row: usize,
+        _line: &PlainLine,
         _out: &mut Vec<Diagnostic>,
     ) {
     }

@@ -76,8 +76,14 @@ impl Suppressions {
         }
     }
 
-    /// Whether `diagnostic` on line `row` is suppressed (and marks the suppression used).
-    pub fn covers(&mut self, diagnostic: &Diagnostic, row: usize) -> bool {
+    /// Whether a suppression covers `diagnostic` on its 0-based `row` (and
+    /// marks it used); the row is asked for only when a suppression names
+    /// the code, since finding rows costs a pass over the file.
+    pub fn covers(&mut self, diagnostic: &Diagnostic, row: impl FnOnce() -> usize) -> bool {
+        if !self.list.iter().any(|s| s.code == diagnostic.code) {
+            return false;
+        }
+        let row = row();
         let mut covered = false;
         for suppression in &mut self.list {
             if suppression.code == diagnostic.code && suppression.row.map_or(true, |r| r == row) {

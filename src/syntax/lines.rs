@@ -62,23 +62,30 @@ impl Iterator for RawLines<'_> {
         if start >= self.source.len() {
             return None;
         }
-        let (end, ending) = match memchr::memchr2(b'\n', b'\r', &self.source[start..]) {
-            None => (self.source.len(), LineEnding::None),
-            Some(found) => {
-                let end = start + found;
-                match (self.source[end], self.source.get(end + 1)) {
-                    (b'\n', _) => (end, LineEnding::Lf),
-                    (_, Some(b'\n')) => (end, LineEnding::CrLf),
-                    _ => (end, LineEnding::Cr),
-                }
-            }
-        };
-        let line = RawLine {
-            content: Span::new(start, end),
-            ending,
-        };
+        let line = line_from(self.source, start);
         self.at = line.full().end;
         Some(line)
+    }
+}
+
+/// The line that starts at `start` (which must be below `source.len()`).
+pub fn line_from(source: &[u8], start: usize) -> RawLine {
+    let end = memchr::memchr2(b'\n', b'\r', &source[start..]).map_or(source.len(), |n| start + n);
+    line_at(source, start, end)
+}
+
+/// The line from `start` whose content ends at `end`: at a CR, an LF or the
+/// end of `source`.
+pub fn line_at(source: &[u8], start: usize, end: usize) -> RawLine {
+    let ending = match (source.get(end), source.get(end + 1)) {
+        (None, _) => LineEnding::None,
+        (Some(b'\n'), _) => LineEnding::Lf,
+        (_, Some(b'\n')) => LineEnding::CrLf,
+        _ => LineEnding::Cr,
+    };
+    RawLine {
+        content: Span::new(start, end),
+        ending,
     }
 }
 

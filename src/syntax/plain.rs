@@ -5,37 +5,85 @@
 //! The CYCLE600 walk and the jump rules use them to skip the parser where the
 //! tree could not tell them anything.
 
+use crate::span::Span;
 use crate::syntax::block::{parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};
-use crate::syntax::lines::raw_lines;
+use crate::syntax::lines::{line_at, raw_lines, RawLine};
+use crate::syntax::tree::BlockNumber;
 
 /// The line's content (before any `;` comment) is nothing but address words
 /// with plain decimal numbers, `N10 G1 Y.5 F2000.`: it parses without
 /// error into such words (property-tested), so it assigns, calls, jumps and
 /// reads nothing. Strict and conservative: `false` means "parse it to know".
 pub fn is_plain(content: &[u8]) -> bool {
-    let class = |at: usize| {
-        content
-            .get(at)
-            .map_or(Class::End, |&b| CLASS[usize::from(b)])
+    scan_plain(content, 0).is_some()
+}
+
+/// What the rules ask of every line, read from a line [`is_plain`] accepts
+/// without building its tree (property-tested to agree with the tree).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlainFacts {
+    /// The block number it starts with (`N10`).
+    pub number: Option<BlockNumber>,
+    /// It holds at least one word besides the block number.
+    pub has_words: bool,
+    /// The comment, from its `;`.
+    pub comment: Option<Span>,
+}
+
+/// The [`PlainFacts`] of a line's content starting at `start` in the file, if
+/// [`is_plain`] accepts it.
+pub fn scan_plain(content: &[u8], start: usize) -> Option<PlainFacts> {
+    let (stop, mut facts) = scan_words(content, start)?;
+    if stop < content.len() {
+        facts.comment = Some(Span::new(start + stop, start + content.len()));
+    }
+    Some(facts)
+}
+
+/// The plain line starting at `start` in `source`, with its facts; `None`
+/// when the line is not plain. The pass that reads the words also finds the
+/// line's end, so a plain line costs one look at each byte.
+pub fn scan_plain_line(source: &[u8], start: usize) -> Option<(RawLine, PlainFacts)> {
+    let rest = &source[start..];
+    let (stop, mut facts) = scan_words(rest, start)?;
+    let mut end = stop;
+    if rest.get(stop) == Some(&b';') {
+        end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
+        facts.comment = Some(Span::new(start + stop, start + end));
+    }
+    Some((line_at(source, start, start + end), facts))
+}
+
+/// Reads address words up to a `;`, a line end or the end of `bytes`: where
+/// it stopped and what it found (no comment yet), or `None` at anything else.
+fn scan_words(bytes: &[u8], start: usize) -> Option<(usize, PlainFacts)> {
+    let class = |at: usize| bytes.get(at).map_or(Class::End, |&b| CLASS[usize::from(b)]);
+    let mut facts = PlainFacts {
+        number: None,
+        has_words: false,
+        comment: None,
     };
     let mut at = 0;
+    let mut first_word = true;
     loop {
         while class(at) == Class::Blank {
             at += 1;
         }
+        let letter = at;
         match class(at) {
-            Class::End | Class::Comment => return true,
+            Class::End | Class::Comment => return Some((at, facts)),
             Class::Letter => at += 1,
-            _ => return false,
+            _ => return None,
         }
-        if class(at) == Class::Sign {
+        let signed = class(at) == Class::Sign;
+        if signed {
             at += 1;
         }
-        let (start, mut digits, mut points) = (at, 0, 0);
+        let (digits_start, mut points) = (at, 0);
         loop {
             match class(at) {
-                Class::Digit => digits += 1,
+                Class::Digit => {}
                 Class::Point => points += 1,
                 _ => break,
             }
@@ -44,14 +92,27 @@ pub fn is_plain(content: &[u8]) -> bool {
         // A number needs a digit, has one point at most, and is no longer
         // than machine positions get (`1` with 400 zeros is too large for a
         // REAL: the parser says so).
-        if digits == 0 || points > 1 || at - start > 24 {
-            return false;
+        let length = at - digits_start;
+        if length == points || points > 1 || length > 24 {
+            return None;
         }
+        // The parser's block number: a first word N with digits alone.
+        if first_word && !signed && points == 0 && bytes[letter].eq_ignore_ascii_case(&b'N') {
+            facts.number = Some(BlockNumber {
+                span: Span::new(start + letter, start + at),
+                main: false,
+                digits: Span::new(start + digits_start, start + at),
+            });
+        } else {
+            facts.has_words = true;
+        }
+        first_word = false;
     }
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Class {
+    /// A line end (CR, LF) or the end of the bytes.
     End,
     Letter,
     Digit,
@@ -62,7 +123,7 @@ enum Class {
     Other,
 }
 
-/// Each byte's class, looked up rather than tested: this runs on every line.
+/// Each byte's class, looked up rather than tested: this runs on every byte.
 static CLASS: [Class; 256] = {
     let mut table = [Class::Other; 256];
     let mut byte = 0;
@@ -78,6 +139,8 @@ static CLASS: [Class; 256] = {
             Class::Sign
         } else if b == b';' {
             Class::Comment
+        } else if b == b'\n' || b == b'\r' {
+            Class::End
         } else if is_blank(b) {
             Class::Blank
         } else {
@@ -154,6 +217,12 @@ mod tests {
                         continue;
                     };
                     proptest::prop_assert!(block.label.is_none() && block.unparsed.is_none());
+                    let raw = lines.raw[index];
+                    let facts = scan_plain(raw.content.of(text.as_bytes()), raw.content.start)
+                        .expect("plain");
+                    proptest::prop_assert_eq!(facts.number, block.number);
+                    proptest::prop_assert_eq!(facts.has_words, !block.statements.is_empty());
+                    proptest::prop_assert_eq!(facts.comment, block.comment);
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,

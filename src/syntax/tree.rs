@@ -52,7 +52,7 @@ pub struct Skip {
 }
 
 /// `N10` or the main block number `:10`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlockNumber {
     pub span: Span,
     pub main: bool,

@@ -1,7 +1,9 @@
 //! N014 `block-numbers-backwards`: Finds a block number lower than the one before it.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
+use crate::syntax::plain::digits_value;
+use crate::syntax::tree::BlockNumber;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N014",
@@ -38,14 +40,37 @@ impl Check for Checker {
         line: &LineView,
         out: &mut Vec<Diagnostic>,
     ) {
-        let Some(block) = line.block else {
+        if let Some(block) = line.block {
+            self.number(file, block.number, out);
+        }
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &PlainLine,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        self.number(file, line.facts.number, out);
+    }
+}
+
+impl Checker {
+    fn number(
+        &mut self,
+        file: &FileContext,
+        number: Option<BlockNumber>,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        let Some(number) = number.filter(|n| !n.main) else {
             return;
         };
-        let Some(number) = block.number.as_ref().filter(|n| !n.main) else {
-            return;
-        };
-        let Ok(value) = String::from_utf8_lossy(number.digits.of(file.source)).parse::<u64>()
-        else {
+        let Some(value) = digits_value(number.digits.of(file.source)) else {
             return;
         };
         if let Some(previous) = self.previous.filter(|&p| value < p) {

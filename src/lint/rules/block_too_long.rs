@@ -1,7 +1,7 @@
 //! N008 `block-too-long`: Finds blocks longer than 512 characters (comment included).
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -36,23 +36,40 @@ impl Check for Checker {
         line: &LineView,
         out: &mut Vec<Diagnostic>,
     ) {
-        let content = line.raw.content;
-        if content.len() <= LIMIT {
-            return;
-        }
-        let characters = match std::str::from_utf8(content.of(file.source)) {
-            Ok(text) => text.chars().count(),
-            Err(_) => content.len(),
-        };
-        if characters > LIMIT {
-            out.push(
-                RULE.at(Span::new(content.start, content.end))
-                    .message(format!(
-                        "block of {characters} characters, longer than the control's {LIMIT}"
-                    ))
-                    .label("too long")
-                    .help("split it into several blocks"),
-            );
-        }
+        check_length(file, line.raw.content, out);
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &PlainLine,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        check_length(file, line.raw.content, out);
+    }
+}
+
+fn check_length(file: &FileContext, content: Span, out: &mut Vec<Diagnostic>) {
+    if content.len() <= LIMIT {
+        return;
+    }
+    let characters = match std::str::from_utf8(content.of(file.source)) {
+        Ok(text) => text.chars().count(),
+        Err(_) => content.len(),
+    };
+    if characters > LIMIT {
+        out.push(
+            RULE.at(Span::new(content.start, content.end))
+                .message(format!(
+                    "block of {characters} characters, longer than the control's {LIMIT}"
+                ))
+                .label("too long")
+                .help("split it into several blocks"),
+        );
     }
 }

@@ -1,7 +1,7 @@
 //! N006 `def-after-executable`: Finds a DEF after the first executable block of a program or subprogram.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -31,6 +31,23 @@ pub struct Checker {
 }
 
 impl Check for Checker {
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    /// Address words are executable.
+    fn plain_line(
+        &mut self,
+        _file: &FileContext,
+        row: usize,
+        line: &PlainLine,
+        _out: &mut Vec<Diagnostic>,
+    ) {
+        if line.facts.has_words {
+            self.first_executable.get_or_insert(row);
+        }
+    }
+
     fn line(
         &mut self,
         _file: &FileContext,

@@ -1,7 +1,7 @@
 //! N013 `main-run-read-without-stopre`: Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::rules::support::*;
 use crate::syntax::tree::StatementKind;
 
@@ -39,6 +39,24 @@ impl Default for Checker {
 }
 
 impl Check for Checker {
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    /// An address word is motion (or may be): values read after it need a
+    /// new STOPRE.
+    fn plain_line(
+        &mut self,
+        _file: &FileContext,
+        _row: usize,
+        line: &PlainLine,
+        _out: &mut Vec<Diagnostic>,
+    ) {
+        if line.facts.has_words {
+            self.stopped = false;
+        }
+    }
+
     fn line(
         &mut self,
         file: &FileContext,

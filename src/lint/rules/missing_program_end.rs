@@ -1,7 +1,7 @@
 //! N010 `missing-program-end`: Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{LineKind, StatementKind, WordValue};
@@ -45,6 +45,22 @@ impl Check for Checker {
         _out: &mut Vec<Diagnostic>,
     ) {
         if line.block.is_some_and(|block| !block.statements.is_empty()) {
+            self.last = Some(line.raw);
+        }
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_line(
+        &mut self,
+        _file: &FileContext,
+        _row: usize,
+        line: &PlainLine,
+        _out: &mut Vec<Diagnostic>,
+    ) {
+        if line.facts.has_words {
             self.last = Some(line.raw);
         }
     }
