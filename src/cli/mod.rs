@@ -27,8 +27,15 @@ pub enum ExitStatus {
 /// Writes data to stdout. A reader that went away (`sinuprep check | head`)
 /// ends the output but is not a failure: the command's status stands.
 pub(crate) fn write_stdout(bytes: &[u8]) -> Result<(), CliError> {
-    use std::io::Write;
-    match std::io::stdout().lock().write_all(bytes) {
+    write_stdout_with(|out| out.write_all(bytes))
+}
+
+/// Writes to standard output with `write`; a reader that stopped reading
+/// (`| head`) is not an error.
+pub(crate) fn write_stdout_with(
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> Result<(), CliError> {
+    match write(&mut std::io::stdout().lock()) {
         Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         result => Ok(result?),
     }

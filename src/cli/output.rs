@@ -6,10 +6,15 @@ use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
 
-/// Writes `bytes` to a temporary file beside `path`, syncs it, keeps the
-/// original's permissions, optionally copies the original to `<path>.bak`, and
-/// renames the temporary file over `path`. On any failure `path` is untouched.
-pub fn write_atomically(path: &Path, bytes: &[u8], backup: bool) -> Result<(), CliError> {
+/// Writes the file with `write` into a temporary file beside `path`, syncs
+/// it, keeps the original's permissions, optionally copies the original to
+/// `<path>.bak`, and renames the temporary file over `path`. On any failure
+/// `path` is untouched.
+pub fn write_atomically(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    backup: bool,
+) -> Result<(), CliError> {
     let fail = |source: std::io::Error| CliError::WriteFile {
         path: path.to_path_buf(),
         source,
@@ -28,7 +33,10 @@ pub fn write_atomically(path: &Path, bytes: &[u8], backup: bool) -> Result<(), C
             .write(true)
             .create_new(true)
             .open(&temporary)?;
-        file.write_all(bytes)?;
+        let mut buffered = std::io::BufWriter::new(&mut file);
+        write(&mut buffered)?;
+        buffered.flush()?;
+        drop(buffered);
         file.sync_all()?;
         if let Ok(metadata) = fs::metadata(path) {
             fs::set_permissions(&temporary, metadata.permissions())?;

@@ -7,9 +7,11 @@ use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
 use crate::cli::output::write_atomically;
-use crate::cli::{write_stdout, ExitStatus};
+use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::cycle600::Options;
-use crate::emit::{apply, diff};
+use std::io::Write;
+
+use crate::emit::{diff, write_applied};
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
@@ -39,7 +41,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         write_stdout(diff::unified(&file.name, &file.bytes, edits).as_bytes())?;
         return Ok(status(errors));
     }
-    let output = apply(&file.bytes, edits);
+    let output = |out: &mut dyn Write| write_applied(&file.bytes, edits, out);
     if args.in_place {
         if errors {
             eprintln!(
@@ -49,13 +51,13 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
             return Ok(ExitStatus::Failure);
         }
         if changed {
-            write_atomically(&args.path, &output, !args.no_backup)?;
+            write_atomically(&args.path, output, !args.no_backup)?;
         }
         return Ok(ExitStatus::Success);
     }
     match &args.output {
-        Some(path) => write_atomically(path, &output, false)?,
-        None => write_stdout(&output)?,
+        Some(path) => write_atomically(path, output, false)?,
+        None => write_stdout_with(output)?,
     }
     Ok(status(errors))
 }

@@ -9,6 +9,8 @@ pub mod diff;
 pub mod number;
 pub mod runtime;
 
+use std::io::{self, Write};
+
 use crate::span::Span;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -38,22 +40,32 @@ impl Edit {
 /// are a bug in an emitter, and the later one is dropped rather than
 /// producing a corrupt file.
 pub fn apply(source: &[u8], edits: &[Edit]) -> Vec<u8> {
-    let mut sorted: Vec<&Edit> = edits.iter().collect();
-    sorted.sort_by_key(|e| (e.span.start, e.span.end));
     let mut out =
         Vec::with_capacity(source.len() + edits.iter().map(|e| e.text.len()).sum::<usize>());
+    write_applied(source, edits, &mut out).expect("writing to memory cannot fail");
+    out
+}
+
+/// [`apply`], written piece by piece to `out`: the rewritten program is never
+/// held in memory beside the source.
+pub fn write_applied(
+    source: &[u8],
+    edits: &[Edit],
+    out: &mut (impl Write + ?Sized),
+) -> io::Result<()> {
+    let mut sorted: Vec<&Edit> = edits.iter().collect();
+    sorted.sort_by_key(|e| (e.span.start, e.span.end));
     let mut at = 0;
     for edit in sorted {
         if edit.span.start < at {
             debug_assert!(false, "overlapping edits at {:?}", edit.span);
             continue;
         }
-        out.extend_from_slice(&source[at..edit.span.start]);
-        out.extend_from_slice(&edit.text);
+        out.write_all(&source[at..edit.span.start])?;
+        out.write_all(&edit.text)?;
         at = edit.span.end;
     }
-    out.extend_from_slice(&source[at..]);
-    out
+    out.write_all(&source[at..])
 }
 
 #[cfg(test)]

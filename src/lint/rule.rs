@@ -53,11 +53,8 @@ impl<'a> FileContext<'a> {
     /// and keeping millions of them as lines go by would cost more memory
     /// than the rest of `check`).
     pub fn block_numbers(&self) -> &[(u64, usize)] {
-        self.block_numbers.get_or_init(|| {
-            let mut numbers = crate::syntax::plain::block_numbers(self.source);
-            numbers.sort_unstable();
-            numbers
-        })
+        self.block_numbers
+            .get_or_init(|| crate::syntax::plain::block_numbers(self.source))
     }
 }
 

@@ -1149,7 +1149,6 @@ impl Structure {
                 .is_some_and(|t| t.block_number(source).is_some())
         }) {
             structure.numbers = block_numbers(source);
-            structure.numbers.sort_unstable();
         }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
         for (line, goto) in jumps {

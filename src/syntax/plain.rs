@@ -8,7 +8,7 @@
 use crate::span::Span;
 use crate::syntax::block::{parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};
-use crate::syntax::lines::{line_at, raw_lines, RawLine};
+use crate::syntax::lines::{line_at, RawLine};
 use crate::syntax::tree::BlockNumber;
 
 /// The line's content (before any `;` comment) is nothing but address words
@@ -152,18 +152,37 @@ static CLASS: [Class; 256] = {
 };
 
 /// Every block number (`N100`; not the main block number `:100`) with its
-/// 0-based line, in line order. Numbers beyond `u64` are left out.
+/// 0-based line, sorted by number and then line. Numbers beyond `u64` are
+/// left out.
 pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
-    raw_lines(source)
-        .enumerate()
-        .filter_map(|(line, raw)| {
-            let start = parse_blank(Input::new(raw.content.of(source), raw.content.start));
-            let start = parse_skip(start).map_or(start, |(rest, _)| parse_blank(rest));
-            let (_, number) = parse_block_number(start).ok()?;
-            let value = digits_value(number.digits.of(source))?;
-            (!number.main).then_some((value, line))
-        })
-        .collect()
+    let mut numbers = Vec::new();
+    let mut read = |row: usize, start: usize, end: usize| {
+        let input = parse_blank(Input::new(&source[start..end], start));
+        let input = parse_skip(input).map_or(input, |(rest, _)| parse_blank(rest));
+        if let Ok((_, number)) = parse_block_number(input) {
+            if let Some(value) = digits_value(number.digits.of(source)).filter(|_| !number.main) {
+                numbers.push((value, row));
+            }
+        }
+    };
+    // One search over the file for the line ends (LF, CRLF, lone CR): a
+    // search per line costs more to start than to run on a 50-byte line.
+    let (mut row, mut start) = (0, 0);
+    for end in memchr::memchr2_iter(b'\n', b'\r', source) {
+        if end < start {
+            continue; // the LF of a CRLF
+        }
+        read(row, start, end);
+        let crlf = source[end] == b'\r' && source.get(end + 1) == Some(&b'\n');
+        (row, start) = (row + 1, end + 1 + usize::from(crlf));
+    }
+    if start < source.len() {
+        read(row, start, source.len());
+    }
+    // Stable, so rows stay in order; and fast on the ascending runs that
+    // block numbers come in.
+    numbers.sort_by_key(|&(number, _)| number);
+    numbers
 }
 
 /// The value of ASCII digits, `None` beyond `u64` (or for anything else).
@@ -195,6 +214,34 @@ mod tests {
             "TRAORI", "R1=5", "X=R1", "GOTOF L1", "X 5", "X", "L1: X5", "/1 X5", "X1EX3", "T\"A\"",
         ] {
             assert!(!is_plain(not.as_bytes()), "{not}");
+        }
+    }
+
+    proptest::proptest! {
+        /// The block numbers found without trees are the trees' own, sorted
+        /// by number and line, whatever the line endings.
+        #[test]
+        fn block_numbers_are_the_trees_numbers(
+            lines in proptest::collection::vec("( ?/[0-9]? ?)?(N[0-9]{1,3}|:[0-9]{1,2}|N9{20}|N1\\.5)?( X1)?", 0..12),
+            endings in proptest::collection::vec(proptest::prop_oneof!["\n", "\r\n", "\r"], 12),
+            last in "(N[0-9])?",
+        ) {
+            let mut text: String = lines.iter().zip(&endings).map(|(l, e)| format!("{l}{e}")).collect();
+            text.push_str(&last); // a last line without terminator
+            let source = text.as_bytes();
+            let lines = Lines::new(source);
+            let mut expected: Vec<(u64, usize)> = (0..lines.len())
+                .filter_map(|row| match lines.parse(row).kind {
+                    LineKind::Block(block) => block
+                        .number
+                        .filter(|n| !n.main)
+                        .and_then(|n| digits_value(n.digits.of(source)))
+                        .map(|value| (value, row)),
+                    _ => None,
+                })
+                .collect();
+            expected.sort_unstable();
+            proptest::prop_assert_eq!(block_numbers(source), expected);
         }
     }
 
