@@ -1,8 +1,9 @@
-//! Linting never panics, and every finding points inside the input.
+//! Linting never panics, every finding points inside the input, and the
+//! plain-line shortcut finds exactly what parsing every line finds.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sinuprep::lint::{check, Selection};
+use sinuprep::lint::{check, check_parsing_every_line, Selection};
 use sinuprep::semantic::{Heads, Supplied};
 use sinuprep::syntax::program_kind;
 
@@ -11,14 +12,12 @@ fuzz_target!(|data: &[u8]| {
         "HEAD_DEF".into(),
         b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
     );
-    let findings = check(
-        data,
-        "FUZZ.MPF",
-        program_kind(None, data),
-        &Selection::default(),
-        &Supplied::default(),
-        Some(&heads),
-    );
+    let kind = program_kind(None, data);
+    let (selection, supplied) = (Selection::default(), Supplied::default());
+    let findings = check(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
+    let reference =
+        check_parsing_every_line(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
+    assert_eq!(findings, reference);
     for finding in &findings {
         assert!(
             finding.span.start <= finding.span.end && finding.span.end <= data.len(),

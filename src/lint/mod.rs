@@ -14,8 +14,7 @@ use crate::lint::rule::{FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze, Heads, Supplied};
 use crate::span::LineIndex;
-use crate::syntax::lines::{line_from, RawLine};
-use crate::syntax::plain::{self, PlainFacts};
+use crate::syntax::plain::{self, scanned_lines_with, PlainScanner};
 use crate::syntax::tree::LineKind;
 use crate::syntax::{LineParser, ProgramKind};
 
@@ -87,9 +86,6 @@ pub fn check_parsing_every_line(
     check_lines(source, name, kind, selection, supplied, heads, |_, _| None)
 }
 
-/// Reads the plain line at an offset, if it is one ([`plain::scan_plain_line`]).
-type PlainScanner = fn(&[u8], usize) -> Option<(RawLine, PlainFacts)>;
-
 fn check_lines(
     source: &[u8],
     name: &str,
@@ -111,9 +107,8 @@ fn check_lines(
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
     let mut parser = LineParser::default();
-    let (mut at, mut row) = (0, 0);
-    while at < source.len() {
-        if let Some((raw, facts)) = scan_plain_line(source, at) {
+    for (row, (raw, facts)) in scanned_lines_with(source, scan_plain_line).enumerate() {
+        if let Some(facts) = facts {
             // No syntax error, and only a few rules care: no tree to build.
             parser.pass_plain_line();
             let line = PlainLine { raw, facts };
@@ -123,10 +118,8 @@ fn check_lines(
             for &n in &plain_watchers {
                 checkers[n].plain_line(&file, row, &line, &mut found);
             }
-            (at, row) = (raw.full().end, row + 1);
             continue;
         }
-        let raw = line_from(source, at);
         let (line, syntax) = parser.parse_line(source, raw);
         found.extend(syntax);
         if let LineKind::Block(block) = &line.kind {
@@ -138,7 +131,6 @@ fn check_lines(
         for checker in &mut checkers {
             checker.line(&file, row, &view, &mut found);
         }
-        (at, row) = (raw.full().end, row + 1);
     }
     for checker in &mut checkers {
         checker.finish(&file, &mut found);

@@ -285,6 +285,10 @@ impl<'a> Walker<'a> {
 
     /// Forget what loops and skipped regions write, on arriving at `line`.
     fn enter(&mut self, line: usize, env: &mut Env) {
+        // Most programs have neither: skip hashing every line number.
+        if self.structure.loop_starts.is_empty() && self.pending.is_empty() {
+            return;
+        }
         if let Some(&last) = self.structure.loop_starts.get(&line) {
             let written = self.written(line, last + 1);
             self.forget(

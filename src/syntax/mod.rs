@@ -74,11 +74,9 @@ pub struct Lines<'src> {
 
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
-        let raw: Vec<RawLine> = raw_lines(source).collect();
-        let plain = raw
-            .iter()
-            .map(|line| plain::is_plain(line.content.of(source)))
-            .collect();
+        let (raw, plain) = plain::scanned_lines(source)
+            .map(|(raw, facts)| (raw, facts.is_some()))
+            .unzip();
         Self { source, raw, plain }
     }
 
@@ -107,10 +105,10 @@ impl<'src> Lines<'src> {
 /// is parsed and dropped, so memory holds one line's tree at a time.
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
-    raw_lines(source)
-        .filter_map(|raw| {
+    plain::scanned_lines(source)
+        .filter_map(|(raw, facts)| {
             // A plain line has no error to find.
-            if plain::is_plain(raw.content.of(source)) {
+            if facts.is_some() {
                 parser.pass_plain_line();
                 return None;
             }

@@ -8,7 +8,7 @@
 use crate::span::Span;
 use crate::syntax::block::{parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};
-use crate::syntax::lines::{line_at, RawLine};
+use crate::syntax::lines::{line_at, line_from, RawLine};
 use crate::syntax::tree::BlockNumber;
 
 /// The line's content (before any `;` comment) is nothing but address words
@@ -53,6 +53,48 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<(RawLine, PlainFac
         facts.comment = Some(Span::new(start + stop, start + end));
     }
     Some((line_at(source, start, start + end), facts))
+}
+
+/// Reads the plain line at an offset, if it is one ([`scan_plain_line`]).
+pub type PlainScanner = fn(&[u8], usize) -> Option<(RawLine, PlainFacts)>;
+
+/// Every line of `source`, with its [`PlainFacts`] when it is plain: a plain
+/// line's words and its end are found in one pass, other lines' ends by a
+/// search.
+pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
+    scanned_lines_with(source, scan_plain_line)
+}
+
+/// [`scanned_lines`] with another scanner (`|_, _| None` takes no line for
+/// plain: the reference the shortcut is tested against).
+pub fn scanned_lines_with(source: &[u8], scan: PlainScanner) -> ScannedLines<'_> {
+    ScannedLines {
+        source,
+        at: 0,
+        scan,
+    }
+}
+
+pub struct ScannedLines<'a> {
+    source: &'a [u8],
+    at: usize,
+    scan: PlainScanner,
+}
+
+impl Iterator for ScannedLines<'_> {
+    type Item = (RawLine, Option<PlainFacts>);
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.at >= self.source.len() {
+            return None;
+        }
+        let (raw, facts) = match (self.scan)(self.source, self.at) {
+            Some((raw, facts)) => (raw, Some(facts)),
+            None => (line_from(self.source, self.at), None),
+        };
+        self.at = raw.full().end;
+        Some((raw, facts))
+    }
 }
 
 /// Reads address words up to a `;`, a line end or the end of `bytes`: where
