@@ -295,3 +295,49 @@ fn malformed_supplied_values_are_tool_errors() {
     );
     insta::assert_snapshot!(String::from_utf8_lossy(&output.stderr));
 }
+
+#[test]
+fn convert_reads_triples_from_stdin_and_matches_single_conversions() {
+    let input = b"30 45 60\n# comment\n\n-16.28, 90, 10\r\n200 -100 400 # beyond the ranges\n";
+    let args = ["convert", "--from", "e:XYZ", "--to", "i:ZXY"];
+    let text = run(&args, input);
+    assert_exit(&text, 0);
+    insta::assert_snapshot!(stdout(&text));
+    // The batch computes side by side; each line must be, to the last bit
+    // (compared as text: serde_json's parser may round), what a single
+    // conversion prints.
+    let json = run(&[&args[..], &["--json"]].concat(), input);
+    assert_exit(&json, 0);
+    let lines: Vec<String> = stdout(&json).lines().map(str::to_string).collect();
+    let triples = [
+        ["30", "45", "60"],
+        ["-16.28", "90", "10"],
+        ["200", "-100", "400"],
+    ];
+    assert_eq!(lines.len(), triples.len());
+    for (line, angles) in lines.iter().zip(triples) {
+        let single = run(
+            &[&args[..1], &angles[..], &args[1..], &["--json"]].concat(),
+            b"",
+        );
+        assert_eq!(stdout(&single).trim_end(), line);
+    }
+}
+
+#[test]
+fn convert_from_stdin_refuses_a_bad_line_without_partial_output() {
+    for (input, message) in [
+        (
+            &b"30 45 60\n1 2\n"[..],
+            "stdin:2:1: 2 numbers where three angles are expected",
+        ),
+        (&b"30 45 x\n"[..], "stdin:1:7: `x` is not a finite angle"),
+        (&b"1 2 inf\n"[..], "stdin:1:5: `inf` is not a finite angle"),
+    ] {
+        let output = run(&["convert", "--from", "e:XYZ", "--to", "i:ZXY"], input);
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty(), "partial output");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains(message), "{stderr}");
+    }
+}

@@ -31,7 +31,8 @@ pub enum Command {
     Eval(EvalArgs),
     /// Print a rule's documentation (`sinuprep rule N001`), or list every rule (`--all`).
     Rule(RuleArgs),
-    /// Convert three rotation angles from one sequence to another.
+    /// Convert rotation angles from one sequence to another (three given, or
+    /// one triple per line on stdin).
     #[command(allow_negative_numbers = true)]
     Convert(ConvertArgs),
 }
@@ -180,15 +181,12 @@ pub struct EvalArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct ConvertArgs {
-    /// Angle of the first rotation, degrees.
-    #[arg(value_parser = finite_angle)]
-    pub a1: f64,
-    /// Angle of the second rotation, degrees.
-    #[arg(value_parser = finite_angle)]
-    pub a2: f64,
-    /// Angle of the third rotation, degrees.
-    #[arg(value_parser = finite_angle)]
-    pub a3: f64,
+    /// The three angles, degrees, in the order the rotations are performed.
+    /// Without them, angle triples are read from stdin, one per line
+    /// (blanks or commas between the numbers), and one line is printed for
+    /// each: the output angles, or with --json one JSON object.
+    #[arg(value_parser = finite_angle, num_args = 3, value_names = ["A1", "A2", "A3"])]
+    pub angles: Option<Vec<f64>>,
     /// Input sequence: `intrinsic:ZXY`, `extrinsic:XYZ`, `i:ZXY`, `e:57`.
     #[arg(long)]
     pub from: Sequence,

@@ -1,19 +1,95 @@
-//! `sinuprep convert`: three angles from one rotation sequence to another.
+//! `sinuprep convert`: angles from one rotation sequence to another, three
+//! given on the command line or one triple per line on stdin.
+
+use std::io::Read;
 
 use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
-use crate::rotation::{convert, Conversion, Sequence};
+use crate::rotation::{convert, convert_all, Angles, Conversion, Sequence};
 
 pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
-    let conversion = convert(args.from, [args.a1, args.a2, args.a3], args.to);
-    let text = if args.json {
-        json(args.to, &conversion)
-    } else {
-        table(args.from, args.to, &conversion)
+    let text = match args.angles.as_deref() {
+        Some(&[a1, a2, a3]) => {
+            let conversion = convert(args.from, [a1, a2, a3], args.to);
+            if args.json {
+                json(args.to, &conversion)
+            } else {
+                table(args.from, args.to, &conversion)
+            }
+        }
+        _ => batch(args)?,
     };
     write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
+}
+
+/// Every triple of stdin, converted together (`convert_all`). The whole
+/// input is read and checked before anything is printed: a bad line stops
+/// the run without a partial output.
+fn batch(args: &ConvertArgs) -> Result<String, CliError> {
+    let mut input = Vec::new();
+    std::io::stdin()
+        .lock()
+        .read_to_end(&mut input)
+        .map_err(|source| CliError::Read {
+            path: "<stdin>".into(),
+            source,
+        })?;
+    let triples = read_triples(&String::from_utf8_lossy(&input))?;
+    let mut text = String::with_capacity(triples.len() * 64);
+    for conversion in convert_all(args.from, &triples, args.to) {
+        if args.json {
+            text.push_str(&json(args.to, &conversion));
+        } else {
+            // Shortest text that reads back as the same f64.
+            let [a, b, c] = conversion.output.angles;
+            let lock = if conversion.output.gimbal_lock {
+                " gimbal-lock"
+            } else {
+                ""
+            };
+            text.push_str(&format!("{a} {b} {c}{lock}\n"));
+        }
+    }
+    Ok(text)
+}
+
+/// One triple of finite angles per line; empty lines and `#` comments skipped.
+fn read_triples(text: &str) -> Result<Vec<Angles>, CliError> {
+    let mut triples = Vec::new();
+    for (row, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or_default();
+        let error = |column: usize, why: String| CliError::Angles {
+            line: row + 1,
+            column: column + 1,
+            why,
+        };
+        let mut numbers = Vec::with_capacity(3);
+        let mut at = 0;
+        for field in line.split(|c: char| c.is_whitespace() || c == ',') {
+            let column = at;
+            at += field.len() + 1;
+            if field.is_empty() {
+                continue;
+            }
+            match field.parse::<f64>() {
+                Ok(value) if value.is_finite() => numbers.push(value),
+                _ => return Err(error(column, format!("`{field}` is not a finite angle"))),
+            }
+        }
+        match numbers[..] {
+            [] => {}
+            [a, b, c] => triples.push([a, b, c]),
+            _ => {
+                return Err(error(
+                    0,
+                    format!("{} numbers where three angles are expected", numbers.len()),
+                ))
+            }
+        }
+    }
+    Ok(triples)
 }
 
 fn rows(conversion: &Conversion) -> [[f64; 3]; 3] {

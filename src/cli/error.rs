@@ -42,6 +42,14 @@ pub enum CliError {
         why: String,
     },
 
+    #[error("stdin:{line}:{column}: {why}")]
+    #[diagnostic(code(sinuprep::angles), help("give one triple of angles in degrees per line, separated by blanks or commas, as `30 45 -16.28`; empty lines and `#` comments are skipped"))]
+    Angles {
+        line: usize,
+        column: usize,
+        why: String,
+    },
+
     #[error("cannot write {path}: {source}")]
     #[diagnostic(code(sinuprep::write), help("check that the directory is writable and the disk not full; the original file is unchanged"))]
     WriteFile {
