@@ -14,7 +14,7 @@ use crate::lint::rule::{FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze, Heads, Supplied};
 use crate::span::LineIndex;
-use crate::syntax::plain::{self, scanned_lines_with, PlainScanner};
+use crate::syntax::plain::{self, scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
 use crate::syntax::{LineParser, ProgramKind};
 
@@ -107,19 +107,27 @@ fn check_lines(
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
     let mut parser = LineParser::default();
-    for (row, (raw, facts)) in scanned_lines_with(source, scan_plain_line).enumerate() {
-        if let Some(facts) = facts {
-            // No syntax error, and only a few rules care: no tree to build.
-            parser.pass_plain_line();
-            let line = PlainLine { raw, facts };
-            if let Some(comment) = facts.comment {
-                suppressions.read(source, row, comment);
+    for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
+        let raw = match line {
+            Scanned::Plain(plain) => {
+                // No syntax error, and only a few rules care: no tree to build.
+                parser.pass_plain_line();
+                if let Some(comment) = plain.comment {
+                    suppressions.read(source, row, comment);
+                }
+                if !plain_watchers.is_empty() {
+                    let line = PlainLine {
+                        raw: plain.raw,
+                        facts: plain::plain_facts(source, &plain),
+                    };
+                    for &n in &plain_watchers {
+                        checkers[n].plain_line(&file, row, &line, &mut found);
+                    }
+                }
+                continue;
             }
-            for &n in &plain_watchers {
-                checkers[n].plain_line(&file, row, &line, &mut found);
-            }
-            continue;
-        }
+            Scanned::Other(raw) => raw,
+        };
         let (line, syntax) = parser.parse_line(source, raw);
         found.extend(syntax);
         if let LineKind::Block(block) = &line.kind {

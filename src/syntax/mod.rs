@@ -75,7 +75,7 @@ pub struct Lines<'src> {
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
         let (raw, plain) = plain::scanned_lines(source)
-            .map(|(raw, facts)| (raw, facts.is_some()))
+            .map(|line| (line.raw(), matches!(line, plain::Scanned::Plain(_))))
             .unzip();
         Self { source, raw, plain }
     }
@@ -106,13 +106,13 @@ impl<'src> Lines<'src> {
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
     plain::scanned_lines(source)
-        .filter_map(|(raw, facts)| {
+        .filter_map(|line| match line {
             // A plain line has no error to find.
-            if facts.is_some() {
+            plain::Scanned::Plain(_) => {
                 parser.pass_plain_line();
-                return None;
+                None
             }
-            parser.parse_line(source, raw).1
+            plain::Scanned::Other(raw) => parser.parse_line(source, raw).1,
         })
         .collect()
 }

@@ -16,51 +16,101 @@ use crate::syntax::tree::BlockNumber;
 /// error into such words (property-tested), so it assigns, calls, jumps and
 /// reads nothing. Strict and conservative: `false` means "parse it to know".
 pub fn is_plain(content: &[u8]) -> bool {
-    scan_plain(content, 0).is_some()
+    scan_words(content).is_some()
 }
 
-/// What the rules ask of every line, read from a line [`is_plain`] accepts
-/// without building its tree (property-tested to agree with the tree).
+/// A line [`is_plain`] accepts, with its `;` comment if it has one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plain {
+    pub raw: RawLine,
+    pub comment: Option<Span>,
+}
+
+/// The plain line starting at `start` in `source`; `None` when the line is
+/// not plain. The pass that reads the words also finds the line's end, so a
+/// plain line costs one look at each byte.
+pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
+    let rest = &source[start..];
+    let stop = scan_words(rest)?;
+    if rest.get(stop) != Some(&b';') {
+        let raw = line_at(source, start, start + stop);
+        return Some(Plain { raw, comment: None });
+    }
+    let end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
+    Some(Plain {
+        raw: line_at(source, start, start + end),
+        comment: Some(Span::new(start + stop, start + end)),
+    })
+}
+
+/// What the rules ask of every line, read from a plain line without its
+/// tree (property-tested to agree with the tree).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlainFacts {
     /// The block number it starts with (`N10`).
     pub number: Option<BlockNumber>,
     /// It holds at least one word besides the block number.
     pub has_words: bool,
-    /// The comment, from its `;`.
-    pub comment: Option<Span>,
 }
 
-/// The [`PlainFacts`] of a line's content starting at `start` in the file, if
-/// [`is_plain`] accepts it.
-pub fn scan_plain(content: &[u8], start: usize) -> Option<PlainFacts> {
-    let (stop, mut facts) = scan_words(content, start)?;
-    if stop < content.len() {
-        facts.comment = Some(Span::new(start + stop, start + content.len()));
+/// The [`PlainFacts`] of a plain line: only its first word needs a look.
+pub fn plain_facts(source: &[u8], plain: &Plain) -> PlainFacts {
+    let start = plain.raw.content.start;
+    let end = plain.comment.map_or(plain.raw.content.end, |c| c.start);
+    let words = &source[start..end];
+    let letter = words.iter().take_while(|&&b| is_blank(b)).count();
+    let digits = words
+        .iter()
+        .skip(letter + 1)
+        .take_while(|b| b.is_ascii_digit())
+        .count();
+    let after = letter + 1 + digits;
+    // The parser's block number: a first word N with digits alone (a sign
+    // or a point makes it an address word).
+    let number = (words
+        .get(letter)
+        .is_some_and(|b| b.eq_ignore_ascii_case(&b'N'))
+        && digits > 0
+        && words.get(after) != Some(&b'.'))
+    .then(|| BlockNumber {
+        span: Span::new(start + letter, start + after),
+        main: false,
+        digits: Span::new(start + letter + 1, start + after),
+    });
+    // Every letter of a plain line starts a word.
+    let others = if number.is_some() {
+        &words[after..]
+    } else {
+        words
+    };
+    PlainFacts {
+        number,
+        has_words: others.iter().any(u8::is_ascii_alphabetic),
     }
-    Some(facts)
-}
-
-/// The plain line starting at `start` in `source`, with its facts; `None`
-/// when the line is not plain. The pass that reads the words also finds the
-/// line's end, so a plain line costs one look at each byte.
-pub fn scan_plain_line(source: &[u8], start: usize) -> Option<(RawLine, PlainFacts)> {
-    let rest = &source[start..];
-    let (stop, mut facts) = scan_words(rest, start)?;
-    let mut end = stop;
-    if rest.get(stop) == Some(&b';') {
-        end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
-        facts.comment = Some(Span::new(start + stop, start + end));
-    }
-    Some((line_at(source, start, start + end), facts))
 }
 
 /// Reads the plain line at an offset, if it is one ([`scan_plain_line`]).
-pub type PlainScanner = fn(&[u8], usize) -> Option<(RawLine, PlainFacts)>;
+pub type PlainScanner = fn(&[u8], usize) -> Option<Plain>;
 
-/// Every line of `source`, with its [`PlainFacts`] when it is plain: a plain
-/// line's words and its end are found in one pass, other lines' ends by a
-/// search.
+/// A line of [`scanned_lines`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Scanned {
+    Plain(Plain),
+    /// Not plain: parse it to know what it holds.
+    Other(RawLine),
+}
+
+impl Scanned {
+    pub fn raw(&self) -> RawLine {
+        match self {
+            Scanned::Plain(plain) => plain.raw,
+            Scanned::Other(raw) => *raw,
+        }
+    }
+}
+
+/// Every line of `source`, plain or not: a plain line's words and its end
+/// are found in one pass, other lines' ends by a search.
 pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
     scanned_lines_with(source, scan_plain_line)
 }
@@ -82,50 +132,42 @@ pub struct ScannedLines<'a> {
 }
 
 impl Iterator for ScannedLines<'_> {
-    type Item = (RawLine, Option<PlainFacts>);
+    type Item = Scanned;
 
-    fn next(&mut self) -> Option<Self::Item> {
+    fn next(&mut self) -> Option<Scanned> {
         if self.at >= self.source.len() {
             return None;
         }
-        let (raw, facts) = match (self.scan)(self.source, self.at) {
-            Some((raw, facts)) => (raw, Some(facts)),
-            None => (line_from(self.source, self.at), None),
+        let line = match (self.scan)(self.source, self.at) {
+            Some(plain) => Scanned::Plain(plain),
+            None => Scanned::Other(line_from(self.source, self.at)),
         };
-        self.at = raw.full().end;
-        Some((raw, facts))
+        self.at = line.raw().full().end;
+        Some(line)
     }
 }
 
 /// Reads address words up to a `;`, a line end or the end of `bytes`: where
-/// it stopped and what it found (no comment yet), or `None` at anything else.
-fn scan_words(bytes: &[u8], start: usize) -> Option<(usize, PlainFacts)> {
+/// it stopped, or `None` at anything else.
+fn scan_words(bytes: &[u8]) -> Option<usize> {
     let class = |at: usize| bytes.get(at).map_or(Class::End, |&b| CLASS[usize::from(b)]);
-    let mut facts = PlainFacts {
-        number: None,
-        has_words: false,
-        comment: None,
-    };
     let mut at = 0;
-    let mut first_word = true;
     loop {
         while class(at) == Class::Blank {
             at += 1;
         }
-        let letter = at;
         match class(at) {
-            Class::End | Class::Comment => return Some((at, facts)),
+            Class::End | Class::Comment => return Some(at),
             Class::Letter => at += 1,
             _ => return None,
         }
-        let signed = class(at) == Class::Sign;
-        if signed {
+        if class(at) == Class::Sign {
             at += 1;
         }
-        let (digits_start, mut points) = (at, 0);
+        let (start, mut digits, mut points) = (at, 0, 0);
         loop {
             match class(at) {
-                Class::Digit => {}
+                Class::Digit => digits += 1,
                 Class::Point => points += 1,
                 _ => break,
             }
@@ -134,21 +176,9 @@ fn scan_words(bytes: &[u8], start: usize) -> Option<(usize, PlainFacts)> {
         // A number needs a digit, has one point at most, and is no longer
         // than machine positions get (`1` with 400 zeros is too large for a
         // REAL: the parser says so).
-        let length = at - digits_start;
-        if length == points || points > 1 || length > 24 {
+        if digits == 0 || points > 1 || at - start > 24 {
             return None;
         }
-        // The parser's block number: a first word N with digits alone.
-        if first_word && !signed && points == 0 && bytes[letter].eq_ignore_ascii_case(&b'N') {
-            facts.number = Some(BlockNumber {
-                span: Span::new(start + letter, start + at),
-                main: false,
-                digits: Span::new(start + digits_start, start + at),
-            });
-        } else {
-            facts.has_words = true;
-        }
-        first_word = false;
     }
 }
 
@@ -306,12 +336,13 @@ mod tests {
                         continue;
                     };
                     proptest::prop_assert!(block.label.is_none() && block.unparsed.is_none());
-                    let raw = lines.raw[index];
-                    let facts = scan_plain(raw.content.of(text.as_bytes()), raw.content.start)
+                    let plain = scan_plain_line(text.as_bytes(), lines.raw[index].content.start)
                         .expect("plain");
+                    proptest::prop_assert_eq!(plain.raw, lines.raw[index]);
+                    proptest::prop_assert_eq!(plain.comment, block.comment);
+                    let facts = plain_facts(text.as_bytes(), &plain);
                     proptest::prop_assert_eq!(facts.number, block.number);
                     proptest::prop_assert_eq!(facts.has_words, !block.statements.is_empty());
-                    proptest::prop_assert_eq!(facts.comment, block.comment);
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,
