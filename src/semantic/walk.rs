@@ -584,7 +584,7 @@ impl<'a> Walker<'a> {
         let line = pc + 1;
         let mut site = CallSite {
             line: pc,
-            content: self.lines.raw[pc].content,
+            content: self.lines.raw(pc).content,
             statement: statement.span,
             bound: None,
             evaluation: None,

@@ -63,29 +63,38 @@ pub fn parse(source: &[u8]) -> Program<'_> {
     }
 }
 
-/// A program's lines, each parsed when asked for: memory holds the line
-/// positions only, never the whole tree, however large the program.
+/// A program's lines, each parsed when asked for: memory holds where each
+/// line starts and whether it is plain (9 bytes a line), never the whole
+/// tree, however large the program.
 pub struct Lines<'src> {
     pub source: &'src [u8],
-    pub raw: Vec<RawLine>,
+    /// Where each line starts, then the end of the source.
+    starts: Vec<usize>,
     /// Per line: [`plain::is_plain`], asked by every pass over the lines.
     plain: Vec<bool>,
 }
 
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
-        let (raw, plain) = plain::scanned_lines(source)
-            .map(|line| (line.raw(), matches!(line, plain::Scanned::Plain(_))))
-            .unzip();
-        Self { source, raw, plain }
+        let mut starts = vec![0];
+        let mut plain = Vec::new();
+        for line in plain::scanned_lines(source) {
+            starts.push(line.raw().full().end);
+            plain.push(matches!(line, plain::Scanned::Plain(_)));
+        }
+        Self {
+            source,
+            starts,
+            plain,
+        }
     }
 
     pub fn len(&self) -> usize {
-        self.raw.len()
+        self.plain.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.raw.is_empty()
+        self.plain.is_empty()
     }
 
     /// Line `index` holds only address words with numbers (see [`plain::is_plain`]).
@@ -93,9 +102,21 @@ impl<'src> Lines<'src> {
         self.plain[index]
     }
 
+    /// Line `index` (0-based): its content and ending, read again from where
+    /// it and the next line start.
+    pub fn raw(&self, index: usize) -> RawLine {
+        let (start, next) = (self.starts[index], self.starts[index + 1]);
+        let ending_length = match &self.source[start..next] {
+            [.., b'\r', b'\n'] => 2,
+            [.., b'\n' | b'\r'] => 1,
+            _ => 0,
+        };
+        lines::line_at(self.source, start, next - ending_length)
+    }
+
     /// The tree of line `index` (0-based).
     pub fn parse(&self, index: usize) -> Line {
-        let raw = self.raw[index];
+        let raw = self.raw(index);
         let (kind, _) = parse_line_kind(raw.content.of(self.source), raw.content.start);
         Line { raw, kind }
     }
@@ -424,4 +445,24 @@ pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
         }
     }
     ProgramKind::Main
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    proptest::proptest! {
+        /// The line table keeps line starts only; the lines it gives back
+        /// are the ones splitting the source gives, endings included.
+        #[test]
+        fn the_line_table_gives_back_every_line(text in "[aN1 ;\r\n]{0,60}") {
+            let source = text.as_bytes();
+            let lines = Lines::new(source);
+            let expected: Vec<RawLine> = raw_lines(source).collect();
+            proptest::prop_assert_eq!(lines.len(), expected.len());
+            for (index, raw) in expected.into_iter().enumerate() {
+                proptest::prop_assert_eq!(lines.raw(index), raw);
+            }
+        }
+    }
 }

@@ -336,9 +336,9 @@ mod tests {
                         continue;
                     };
                     proptest::prop_assert!(block.label.is_none() && block.unparsed.is_none());
-                    let plain = scan_plain_line(text.as_bytes(), lines.raw[index].content.start)
+                    let plain = scan_plain_line(text.as_bytes(), lines.raw(index).content.start)
                         .expect("plain");
-                    proptest::prop_assert_eq!(plain.raw, lines.raw[index]);
+                    proptest::prop_assert_eq!(plain.raw, lines.raw(index));
                     proptest::prop_assert_eq!(plain.comment, block.comment);
                     let facts = plain_facts(text.as_bytes(), &plain);
                     proptest::prop_assert_eq!(facts.number, block.number);
