@@ -1,7 +1,8 @@
 //! What a lint rule is: its metadata, and the checker that sees the program
 //! one line at a time.
 
-use std::cell::OnceCell;
+use std::cell::{OnceCell, RefCell};
+use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::Span;
@@ -35,6 +36,8 @@ pub struct FileContext<'a> {
     /// The file's name as given (`<stdin>` or `--stdin-filename`).
     pub name: &'a str,
     pub kind: ProgramKind,
+    /// Block numbers some jump names, announced during the line pass.
+    wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
 }
 
@@ -44,17 +47,25 @@ impl<'a> FileContext<'a> {
             source,
             name,
             kind,
+            wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
         }
     }
 
-    /// Every block number with its row, sorted by number; read from the file
-    /// on first use (the jump rules need them only when a jump names one,
-    /// and keeping millions of them as lines go by would cost more memory
-    /// than the rest of `check`).
+    /// Announces, during the line pass, a block number a jump names.
+    pub fn want_block_number(&self, number: u64) {
+        self.wanted_numbers.borrow_mut().insert(number);
+    }
+
+    /// Every block number some jump names (see [`Self::want_block_number`])
+    /// with its row, sorted by number; asked for once the line pass is over,
+    /// and read from the file then: most programs never jump to a number,
+    /// and keeping every number as lines go by would cost more memory than
+    /// the rest of `check`.
     pub fn block_numbers(&self) -> &[(u64, usize)] {
-        self.block_numbers
-            .get_or_init(|| crate::syntax::plain::block_numbers(self.source))
+        self.block_numbers.get_or_init(|| {
+            crate::syntax::plain::block_numbers(self.source, &self.wanted_numbers.borrow())
+        })
     }
 }
 

@@ -1147,12 +1147,12 @@ impl Structure {
                 structure.else_ends.insert(else_line, end);
             }
         }
-        if jumps.iter().any(|(_, goto)| {
-            goto.target
-                .as_ref()
-                .is_some_and(|t| t.block_number(source).is_some())
-        }) {
-            structure.numbers = block_numbers(source);
+        let wanted: HashSet<u64> = jumps
+            .iter()
+            .filter_map(|(_, goto)| goto.target.as_ref()?.block_number(source))
+            .collect();
+        if !wanted.is_empty() {
+            structure.numbers = block_numbers(source, &wanted);
         }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
         for (line, goto) in jumps {

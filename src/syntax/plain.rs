@@ -5,6 +5,8 @@
 //! The CYCLE600 walk and the jump rules use them to skip the parser where the
 //! tree could not tell them anything.
 
+use std::collections::HashSet;
+
 use crate::span::Span;
 use crate::syntax::block::{parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};
@@ -223,16 +225,16 @@ static CLASS: [Class; 256] = {
     table
 };
 
-/// Every block number (`N100`; not the main block number `:100`) with its
-/// 0-based line, sorted by number and then line. Numbers beyond `u64` are
-/// left out.
-pub fn block_numbers(source: &[u8]) -> Vec<(u64, usize)> {
+/// Every block number among `wanted` (`N100`; not the main block number
+/// `:100`) with its 0-based line, sorted by number and then line.
+pub fn block_numbers(source: &[u8], wanted: &HashSet<u64>) -> Vec<(u64, usize)> {
     let mut numbers = Vec::new();
     let mut read = |row: usize, start: usize, end: usize| {
         let input = parse_blank(Input::new(&source[start..end], start));
         let input = parse_skip(input).map_or(input, |(rest, _)| parse_blank(rest));
         if let Ok((_, number)) = parse_block_number(input) {
-            if let Some(value) = digits_value(number.digits.of(source)).filter(|_| !number.main) {
+            let value = digits_value(number.digits.of(source)).filter(|_| !number.main);
+            if let Some(value) = value.filter(|value| wanted.contains(value)) {
                 numbers.push((value, row));
             }
         }
@@ -313,7 +315,12 @@ mod tests {
                 })
                 .collect();
             expected.sort_unstable();
-            proptest::prop_assert_eq!(block_numbers(source), expected);
+            let all: HashSet<u64> = expected.iter().map(|&(value, _)| value).collect();
+            proptest::prop_assert_eq!(block_numbers(source, &all), expected.clone());
+            // Only the wanted ones.
+            let odd: HashSet<u64> = all.iter().copied().filter(|v| v % 2 == 1).collect();
+            expected.retain(|(value, _)| value % 2 == 1);
+            proptest::prop_assert_eq!(block_numbers(source, &odd), expected);
         }
     }
 

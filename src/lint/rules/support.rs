@@ -1,6 +1,7 @@
 //! Small helpers the rules share: what a block jumps to, which names an
 //! expression reads, whether a name is a user variable.
 
+use crate::lint::rule::FileContext;
 use crate::semantic::walk::{collect_variables, for_each_expression};
 use crate::span::Span;
 use crate::syntax::tree::{
@@ -49,18 +50,24 @@ pub fn gotos(block: &Block) -> Vec<&Goto> {
     out
 }
 
-/// Where a jump goes; `None` for computed targets.
-pub fn target(source: &[u8], goto: &Goto) -> Option<(Target, Span)> {
-    match goto.target.as_ref()? {
-        target @ GotoTarget::Label(name) => Some((
+/// Where a jump goes; `None` for computed targets. A block number is
+/// announced to the file, which reads only announced numbers' rows.
+pub fn target(file: &FileContext, goto: &Goto) -> Option<(Target, Span)> {
+    let source = file.source;
+    let (target, span) = match goto.target.as_ref()? {
+        target @ GotoTarget::Label(name) => (
             target
                 .block_number(source)
                 .map_or_else(|| Target::Label(upper(source, name.span)), Target::Number),
             name.span,
-        )),
-        GotoTarget::Number(number) => Some((Target::Number(number.value as u64), number.span)),
-        GotoTarget::Computed(_) => None,
+        ),
+        GotoTarget::Number(number) => (Target::Number(number.value as u64), number.span),
+        GotoTarget::Computed(_) => return None,
+    };
+    if let Target::Number(number) = target {
+        file.want_block_number(number);
     }
+    Some((target, span))
 }
 
 /// Variables a statement reads (DEF initialisers and indices included).

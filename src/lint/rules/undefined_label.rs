@@ -53,7 +53,7 @@ impl Check for Checker {
             return;
         }
         for goto in gotos(block) {
-            if let Some((target, span)) = target(file.source, goto) {
+            if let Some((target, span)) = target(file, goto) {
                 self.jumps
                     .push((target, span, goto.kind == GotoKind::Conditional));
             }
