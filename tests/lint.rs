@@ -221,15 +221,23 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// `check` against `check_parsing_every_line`, all rules on.
+/// `check` against `check` parsing every line, all rules on.
 fn assert_shortcut_agrees(name: &str, source: &[u8]) {
     let heads = sample_heads();
     let kind = program_kind(Some(name), source);
     let selection = Selection::default();
     let supplied = Supplied::default();
     let fast = lint::check(source, name, kind, &selection, &supplied, Some(&heads));
-    let reference =
-        lint::check_parsing_every_line(source, name, kind, &selection, &supplied, Some(&heads));
+    let every_line = sinuprep::syntax::plain::PARSE_EVERY_LINE;
+    let reference = lint::check_with(
+        every_line,
+        source,
+        name,
+        kind,
+        &selection,
+        &supplied,
+        Some(&heads),
+    );
     assert_eq!(fast, reference, "{name}");
 }
 

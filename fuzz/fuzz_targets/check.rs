@@ -3,8 +3,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sinuprep::lint::{check, check_parsing_every_line, Selection};
+use sinuprep::lint::{check, check_with, Selection};
 use sinuprep::semantic::{Heads, Supplied};
+use sinuprep::syntax::plain::PARSE_EVERY_LINE;
 use sinuprep::syntax::program_kind;
 
 fuzz_target!(|data: &[u8]| {
@@ -15,8 +16,16 @@ fuzz_target!(|data: &[u8]| {
     let kind = program_kind(None, data);
     let (selection, supplied) = (Selection::default(), Supplied::default());
     let findings = check(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
-    let reference =
-        check_parsing_every_line(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
+    let every_line = PARSE_EVERY_LINE;
+    let reference = check_with(
+        every_line,
+        data,
+        "FUZZ.MPF",
+        kind,
+        &selection,
+        &supplied,
+        Some(&heads),
+    );
     assert_eq!(findings, reference);
     for finding in &findings {
         assert!(

@@ -61,39 +61,22 @@ pub fn check(
     supplied: &Supplied,
     heads: Option<&Heads>,
 ) -> Vec<Diagnostic> {
-    check_lines(
-        source,
-        name,
-        kind,
-        selection,
-        supplied,
-        heads,
-        plain::scan_plain_line,
-    )
+    let scan = plain::scan_plain_line;
+    check_with(scan, source, name, kind, selection, supplied, heads)
 }
 
-/// [`check`] building every line's tree, plain lines included: the reference
-/// the plain-line shortcut is tested against (`tests/lint.rs`).
+/// [`check`] with the plain-line scanner given: [`plain::PARSE_EVERY_LINE`]
+/// builds every line's tree, the reference the shortcut is tested against
+/// (`tests/lint.rs`, the `check` fuzz target).
 #[doc(hidden)]
-pub fn check_parsing_every_line(
-    source: &[u8],
-    name: &str,
-    kind: ProgramKind,
-    selection: &Selection,
-    supplied: &Supplied,
-    heads: Option<&Heads>,
-) -> Vec<Diagnostic> {
-    check_lines(source, name, kind, selection, supplied, heads, |_, _| None)
-}
-
-fn check_lines(
-    source: &[u8],
-    name: &str,
-    kind: ProgramKind,
-    selection: &Selection,
-    supplied: &Supplied,
-    heads: Option<&Heads>,
+pub fn check_with(
     scan_plain_line: PlainScanner,
+    source: &[u8],
+    name: &str,
+    kind: ProgramKind,
+    selection: &Selection,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
 ) -> Vec<Diagnostic> {
     let file = FileContext::new(source, name, kind);
     let mut checkers: Vec<_> = rules::all()

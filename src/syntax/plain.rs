@@ -117,8 +117,11 @@ pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
     scanned_lines_with(source, scan_plain_line)
 }
 
-/// [`scanned_lines`] with another scanner (`|_, _| None` takes no line for
-/// plain: the reference the shortcut is tested against).
+/// A scanner that takes no line for plain: every line is parsed, the
+/// reference the plain-line shortcut is tested against.
+pub const PARSE_EVERY_LINE: PlainScanner = |_, _| None;
+
+/// [`scanned_lines`] with another scanner ([`PARSE_EVERY_LINE`]).
 pub fn scanned_lines_with(source: &[u8], scan: PlainScanner) -> ScannedLines<'_> {
     ScannedLines {
         source,
