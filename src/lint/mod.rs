@@ -1,9 +1,11 @@
 //! The linter: syntax errors, CYCLE600 findings from the walk, and the
 //! general NC rules, each rule in its own file under `rules/`.
 //!
-//! One streaming pass parses each line once and hands it to every selected
-//! rule; the CYCLE600 walk runs only for programs that mention CYCLE600. It
-//! reports diagnostics; printing them is the CLI's job.
+//! One pass over the lines: a plain line (address words with numbers, most
+//! of a CAM program) is read by a byte scan and shown only to the few rules
+//! that learn from it; every other line is parsed once and handed to every
+//! selected rule. The CYCLE600 walk runs only for programs that mention
+//! CYCLE600. It reports diagnostics; printing them is the CLI's job.
 
 pub mod rule;
 pub mod rules;

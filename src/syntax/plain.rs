@@ -1,9 +1,10 @@
 //! Facts about lines that do not need their tree: whether a line is nothing
 //! but address words with numbers (the millions of motion blocks of a CAM
-//! program), and every block number of a file.
+//! program), what the rules ask of such a line, and the block numbers a
+//! file's jumps name.
 //!
-//! The CYCLE600 walk and the jump rules use them to skip the parser where the
-//! tree could not tell them anything.
+//! `check`, the syntax pass and the CYCLE600 walk use them to skip the parser
+//! where the tree could not tell them anything.
 
 use std::collections::HashSet;
 
