@@ -1,7 +1,7 @@
 //! `sinuprep convert`: angles from one rotation sequence to another, three
 //! given on the command line or one triple per line on stdin.
 
-use std::io::Read;
+use std::io::{IsTerminal, Read};
 
 use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
@@ -28,6 +28,10 @@ pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
 /// input is read and checked before anything is printed: a bad line stops
 /// the run without a partial output.
 fn batch(args: &ConvertArgs) -> Result<String, CliError> {
+    // Waiting for a terminal to type triples would look like a hang.
+    if std::io::stdin().is_terminal() {
+        return Err(CliError::NoAngles);
+    }
     let mut input = Vec::new();
     std::io::stdin()
         .lock()
