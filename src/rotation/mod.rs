@@ -1,4 +1,6 @@
-//! Rotation mathematics for CYCLE600: sequences, angles <-> matrices, frames.
+//! Rotation mathematics for CYCLE600: sequences, trigonometry in degrees,
+//! angles <-> matrices (one conversion at a time or many side by side),
+//! frames.
 //!
 //! Pure functions on nalgebra. No spans, no syntax types, no printing: the
 //! conventions are those of `spec/cycle600.md` sections 2-4 (right-handed
@@ -12,12 +14,11 @@ pub mod sequence;
 pub mod trig;
 
 pub use euler::{decompose, matrix, Angles, Decomposition};
-
-use euler::{decompose_lanes, matrix_lanes, rotation_of_lane};
 pub use frame::Frame;
-use lanes::Lanes;
 pub use sequence::{Axis, Kind, Sequence, SequenceError};
 
+use euler::{decompose_lanes, matrix_lanes, rotation_of_lane};
+use lanes::Lanes;
 use nalgebra::Rotation3;
 
 /// Angles of one sequence converted into another.
@@ -36,8 +37,8 @@ pub fn convert(from: Sequence, angles: Angles, to: Sequence) -> Conversion {
     }
 }
 
-/// [`convert`] of many angle triples, computed several side by side (see
-/// `lanes`): the same results, bit for bit, several times faster.
+/// [`convert`] of many angle triples, computed eight side by side (see
+/// `lanes`): the same results, bit for bit, about twice as fast.
 pub fn convert_all(from: Sequence, angles: &[Angles], to: Sequence) -> Vec<Conversion> {
     const LANES: usize = 8;
     let mut conversions = Vec::with_capacity(angles.len());
