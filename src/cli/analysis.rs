@@ -14,7 +14,7 @@ use crate::emit::cycle600::{rewrite, Options, Rewrite};
 use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, variable_key};
 use crate::semantic::value::Value;
-use crate::semantic::{analyze, Analysis, Heads, Supplied};
+use crate::semantic::{analyze_lines, Analysis, Heads, Supplied};
 use crate::syntax::parse;
 use crate::syntax::tree::{LineKind, StatementKind};
 
@@ -138,9 +138,11 @@ pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
             diagnostics,
         };
     }
-    let analysis = analyze(&file.bytes, &inputs.supplied, inputs.heads.as_ref());
+    // One line table for the walk and the syntax diagnostics.
+    let lines = crate::syntax::Lines::new(&file.bytes);
+    let analysis = analyze_lines(&lines, &inputs.supplied, inputs.heads.as_ref());
     let rewrite = rewrite(&file.bytes, &analysis, options);
-    let mut diagnostics = crate::syntax::diagnostics(&file.bytes);
+    let mut diagnostics = lines.diagnostics();
     if inputs.heads.is_none() && !analysis.calls.is_empty() {
         diagnostics.push(crate::semantic::head_def::not_found());
     }

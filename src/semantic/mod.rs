@@ -14,7 +14,7 @@ pub mod walk;
 
 pub use env::Supplied;
 pub use head_def::Heads;
-pub use walk::{analyze, Analysis, CallSite};
+pub use walk::{analyze, analyze_lines, Analysis, CallSite};
 
 /// Whether `CYCLE600` (any case) occurs anywhere in the bytes: a program
 /// without it needs no walk.

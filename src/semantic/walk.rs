@@ -71,6 +71,11 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
     run(source, supplied, heads).0
 }
 
+/// [`analyze`] on a line table the caller keeps (for its syntax diagnostics).
+pub fn analyze_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+    run_lines(lines, supplied, heads).0
+}
+
 /// The walk, and the state it ends in: what the program leaves in its
 /// variables when run offline.
 ///
@@ -82,13 +87,18 @@ pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let lines = Lines::new(source);
-    let structure = Structure::build(&lines);
+    run_lines(&Lines::new(source), supplied, heads)
+}
+
+/// [`run`] on a line table.
+fn run_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
+    let source = lines.source;
+    let structure = Structure::build(lines);
     let mut modes = HashMap::new();
     loop {
         let mut walker = Walker {
             structure: &structure,
-            lines: &lines,
+            lines,
             source,
             supplied,
             heads,

@@ -125,15 +125,30 @@ impl<'src> Lines<'src> {
 /// The syntax diagnostics of a program, without keeping its tree: each line
 /// is parsed and dropped, so memory holds one line's tree at a time.
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
+    let lines = plain::scanned_lines(source)
+        .map(|line| (line.raw(), matches!(line, plain::Scanned::Plain(_))));
+    diagnostics_of(source, lines)
+}
+
+impl Lines<'_> {
+    /// [`diagnostics`] from the line table: no second scan of the file.
+    pub fn diagnostics(&self) -> Vec<Diagnostic> {
+        let lines = (0..self.len()).map(|index| (self.raw(index), self.is_plain(index)));
+        diagnostics_of(self.source, lines)
+    }
+}
+
+/// The diagnostics of `lines`, each with whether it is plain.
+fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = (RawLine, bool)>) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
-    plain::scanned_lines(source)
-        .filter_map(|line| match line {
+    lines
+        .filter_map(|(raw, plain)| {
             // A plain line has no error to find.
-            plain::Scanned::Plain(_) => {
+            if plain {
                 parser.pass_plain_line();
-                None
+                return None;
             }
-            plain::Scanned::Other(raw) => parser.parse_line(source, raw).1,
+            parser.parse_line(source, raw).1
         })
         .collect()
 }
