@@ -83,8 +83,9 @@ pub(crate) fn matrix_lanes<const N: usize>(
 
 /// The indices of `axis` and of the two axes that follow it cyclically.
 fn cyclic(axis: Axis) -> (usize, usize, usize) {
-    let i = axis.index();
-    (i, (i + 1) % 3, (i + 2) % 3)
+    // A table, not `% 3`: an integer division costs more than the lookup.
+    const CYCLIC: [(usize, usize, usize); 3] = [(0, 1, 2), (1, 2, 0), (2, 0, 1)];
+    CYCLIC[axis.index()]
 }
 
 /// The elemental right-handed rotation about `axis`.
@@ -127,12 +128,12 @@ pub(crate) fn decompose_lanes<const N: usize>(
             ([a, b, c], lock)
         }
     };
-    let angles = [a, b, c].map(|angle| angle + 0.0);
+    let angles = [a + 0.0, b + 0.0, c + 0.0];
     let alternative = alternative(sequence, angles);
     std::array::from_fn(|lane| Decomposition {
         angles: angles.map(|angle| angle.0[lane]),
         alternative: alternative.map(|angle| angle.0[lane]),
-        gimbal_lock: gimbal_lock[lane],
+        gimbal_lock: gimbal_lock.lane(lane),
     })
 }
 
@@ -151,10 +152,11 @@ fn decompose_intrinsic<const N: usize>(
     zero: GimbalZero,
 ) -> ([Lanes<N>; 3], Mask<N>) {
     let [first, second, _] = sequence.axes;
-    let (i, j) = (first.index(), second.index());
+    let (i, next, _) = cyclic(first);
+    let j = second.index();
     let k = 3 - i - j;
     // +1 when (i, j, k) is a cyclic order of (X, Y, Z), -1 otherwise.
-    let s = if (i + 1) % 3 == j { 1.0 } else { -1.0 };
+    let s = if next == j { 1.0 } else { -1.0 };
     let proper = sequence.is_proper_euler();
 
     // Middle angle, and the first angle's (sin, cos) pair scaled by
@@ -173,40 +175,61 @@ fn decompose_intrinsic<const N: usize>(
     };
     let gimbal_lock = conditioning.test(|x| x < GIMBAL_TOLERANCE);
 
-    // Row j of R_i(a)ᵀ · R equals row j of the third elemental rotation, which
-    // gives the third angle exactly for whatever first angle was chosen.
-    let third_from = |sin_a: Lanes<N>, cos_a: Lanes<N>| {
-        let row = |col: usize| cos_a * m[j][col] + s * sin_a * m[k][col];
-        if proper {
-            atan2_lanes(-s * row(k), row(j))
-        } else {
-            atan2_lanes(s * row(i), row(j))
+    // Gimbal-locked lanes, where that scale may be 0, take other pairs: the
+    // pairs are chosen before atan2, so every lane runs the same instructions.
+    let axes = (i, j, k);
+    let zero_pair = (Lanes::splat(0.0), Lanes::splat(1.0));
+    let (a_pair, c_pair) = match zero {
+        // R = R_i(a) · R_j(b): column j of R is R_i(a) · e_j; the third is 0.
+        GimbalZero::Third => (
+            select_pair(gimbal_lock, (s * m[k][j], m[j][j]), first_pair),
+            select_pair(
+                gimbal_lock,
+                zero_pair,
+                third_pair(m, axes, s, proper, first_pair),
+            ),
+        ),
+        // R = R_j(b) · R_k(c): the first is 0, and row j of R is row j of R_k(c).
+        GimbalZero::First => {
+            let a_pair = select_pair(gimbal_lock, zero_pair, first_pair);
+            (a_pair, third_pair(m, axes, s, proper, a_pair))
         }
     };
-
-    let a = atan2_lanes(first_pair.0, first_pair.1);
-    // The pair is (sin a, cos a) scaled by `conditioning`, and so is the row
-    // `third_from` reads: atan2 ignores the scale. (Gimbal-locked lanes, where
-    // the scale may be 0, are replaced below.)
-    let c = third_from(first_pair.0, first_pair.1);
-    let (a, c) = if gimbal_lock.contains(&true) {
-        let (locked_a, locked_c) = match zero {
-            // R = R_i(a) · R_j(b): column j of R is R_i(a) · e_j.
-            GimbalZero::Third => (atan2_lanes(s * m[k][j], m[j][j]), Lanes::splat(0.0)),
-            // R = R_j(b) · R_k(c): row j of R is row j of R_k(c).
-            GimbalZero::First => (
-                Lanes::splat(0.0),
-                third_from(Lanes::splat(0.0), Lanes::splat(1.0)),
-            ),
-        };
-        (
-            Lanes::select(gimbal_lock, locked_a, a),
-            Lanes::select(gimbal_lock, locked_c, c),
-        )
-    } else {
-        (a, c)
-    };
+    let a = atan2_lanes(a_pair.0, a_pair.1);
+    let c = atan2_lanes(c_pair.0, c_pair.1);
     ([a, b, c].map(principal), gimbal_lock)
+}
+
+/// The (sin, cos) pair of the third angle of R = R_i(a) · R_j(b) · R_k(c),
+/// from the first angle's pair. Row j of R_i(a)ᵀ · R equals row j of the
+/// third elemental rotation, which gives the third angle exactly for whatever
+/// first angle was chosen. The first angle's pair may be scaled by a positive
+/// factor, and so is the result: atan2 ignores the scale.
+#[inline(always)]
+fn third_pair<const N: usize>(
+    m: &MatrixLanes<N>,
+    (i, j, k): (usize, usize, usize),
+    s: f64,
+    proper: bool,
+    (sin_a, cos_a): (Lanes<N>, Lanes<N>),
+) -> (Lanes<N>, Lanes<N>) {
+    let (col, sign) = if proper { (k, -s) } else { (i, s) };
+    let y = cos_a * m[j][col] + s * sin_a * m[k][col];
+    let x = cos_a * m[j][j] + s * sin_a * m[k][j];
+    (sign * y, x)
+}
+
+/// `locked` where `mask` holds, `pair` elsewhere.
+#[inline(always)]
+fn select_pair<const N: usize>(
+    mask: Mask<N>,
+    locked: (Lanes<N>, Lanes<N>),
+    pair: (Lanes<N>, Lanes<N>),
+) -> (Lanes<N>, Lanes<N>) {
+    (
+        Lanes::select(mask, locked.0, pair.0),
+        Lanes::select(mask, locked.1, pair.1),
+    )
 }
 
 /// √(x² + y²) of matrix elements, which lie in [-1, 1]: no overflow to guard

@@ -12,8 +12,34 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lanes<const N: usize>(pub [f64; N]);
 
-/// One yes/no per lane.
-pub type Mask<const N: usize> = [bool; N];
+/// One yes/no per lane, as all bits set or clear: the form a vector compare
+/// produces and a bitwise select consumes, so masks never leave the vector
+/// registers (a `[bool; N]` cost a pack and an unpack per select).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mask<const N: usize>([u64; N]);
+
+impl<const N: usize> Mask<N> {
+    #[inline(always)]
+    fn from_fn(f: impl Fn(usize) -> bool) -> Self {
+        Mask(array::from_fn(|lane| if f(lane) { u64::MAX } else { 0 }))
+    }
+
+    /// Lanes whose `bit` (0 = lowest) is set in `bits`.
+    #[inline(always)]
+    pub fn bit(bits: [u64; N], bit: u32) -> Self {
+        Mask(bits.map(|b| ((b >> bit) & 1).wrapping_neg()))
+    }
+
+    #[inline(always)]
+    pub fn lane(self, lane: usize) -> bool {
+        self.0[lane] != 0
+    }
+
+    #[inline(always)]
+    pub fn any(self) -> bool {
+        self.0.iter().fold(0, |any, &m| any | m) != 0
+    }
+}
 
 impl<const N: usize> Lanes<N> {
     #[inline(always)]
@@ -33,23 +59,36 @@ impl<const N: usize> Lanes<N> {
 
     #[inline(always)]
     pub fn test(self, f: impl Fn(f64) -> bool) -> Mask<N> {
-        self.0.map(f)
+        Mask::from_fn(|lane| f(self.0[lane]))
     }
 
     #[inline(always)]
     pub fn compare(self, other: Self, f: impl Fn(f64, f64) -> bool) -> Mask<N> {
-        array::from_fn(|lane| f(self.0[lane], other.0[lane]))
+        Mask::from_fn(|lane| f(self.0[lane], other.0[lane]))
     }
 
     /// `yes` where `mask` holds, `no` elsewhere.
     #[inline(always)]
     pub fn select(mask: Mask<N>, yes: Self, no: Self) -> Self {
         Lanes(array::from_fn(|lane| {
-            if mask[lane] {
-                yes.0[lane]
-            } else {
-                no.0[lane]
-            }
+            let m = mask.0[lane];
+            f64::from_bits((yes.0[lane].to_bits() & m) | (no.0[lane].to_bits() & !m))
+        }))
+    }
+
+    /// `self` where `mask` holds, +0 elsewhere.
+    #[inline(always)]
+    pub fn or_zero(self, mask: Mask<N>) -> Self {
+        Lanes(array::from_fn(|lane| {
+            f64::from_bits(self.0[lane].to_bits() & mask.0[lane])
+        }))
+    }
+
+    /// Each lane's bits XOR `signs`' (`1 << 63` negates the lane).
+    #[inline(always)]
+    pub fn flip_signs(self, signs: [u64; N]) -> Self {
+        Lanes(array::from_fn(|lane| {
+            f64::from_bits(self.0[lane].to_bits() ^ signs[lane])
         }))
     }
 

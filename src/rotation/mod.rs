@@ -7,18 +7,18 @@
 //! elemental rotations, angles in degrees, intrinsic R = R_a·R_b·R_c and
 //! extrinsic R = R_c·R_b·R_a).
 
+pub mod batch;
 pub mod euler;
 pub mod frame;
 pub mod lanes;
 pub mod sequence;
 pub mod trig;
 
+pub use batch::convert_all;
 pub use euler::{decompose, matrix, Angles, Decomposition};
 pub use frame::Frame;
 pub use sequence::{Axis, Kind, Sequence, SequenceError};
 
-use euler::{decompose_lanes, matrix_lanes, rotation_of_lane};
-use lanes::Lanes;
 use nalgebra::Rotation3;
 
 /// Angles of one sequence converted into another.
@@ -35,32 +35,4 @@ pub fn convert(from: Sequence, angles: Angles, to: Sequence) -> Conversion {
         matrix,
         output: decompose(to, &matrix),
     }
-}
-
-/// [`convert`] of many angle triples, computed eight side by side (see
-/// `lanes`): the same results, bit for bit, about twice as fast.
-pub fn convert_all(from: Sequence, angles: &[Angles], to: Sequence) -> Vec<Conversion> {
-    const LANES: usize = 8;
-    let mut conversions = Vec::with_capacity(angles.len());
-    for chunk in angles.chunks(LANES) {
-        // A short last chunk is padded with zero angles, computed and dropped.
-        let lane_angles = [0, 1, 2].map(|n| {
-            Lanes(std::array::from_fn::<f64, LANES, _>(|lane| {
-                chunk.get(lane).map_or(0.0, |angles| angles[n])
-            }))
-        });
-        let rows = matrix_lanes(from, lane_angles);
-        let outputs = decompose_lanes(to, &rows);
-        conversions.extend(
-            outputs
-                .iter()
-                .take(chunk.len())
-                .enumerate()
-                .map(|(lane, &output)| Conversion {
-                    matrix: rotation_of_lane(&rows, lane),
-                    output,
-                }),
-        );
-    }
-    conversions
 }

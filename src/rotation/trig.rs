@@ -14,7 +14,7 @@
 //! The tests below hold both to the standard library. Each function is
 //! written once over `Lanes`; the scalar ones are its one-lane case.
 
-use crate::rotation::lanes::Lanes;
+use crate::rotation::lanes::{Lanes, Mask};
 
 /// Sine and cosine of an angle in degrees, exact at multiples of 90°, so that
 /// a programmed 90° gives exactly 0 and not 6e-17.
@@ -49,13 +49,16 @@ pub fn sin_cos_lanes<const N: usize>(degrees: Lanes<N>) -> (Lanes<N>, Lanes<N>) 
     let reduced = degrees - quarter_turns * 90.0;
     let x = reduced * RADIANS_PER_DEGREE;
     let (s, c) = (kernel_sin(x), kernel_cos(x));
-    let quadrant = shifted.0.map(|v| v.to_bits() & 3);
-    let odd = quadrant.map(|q| q & 1 == 1);
-    let (s, c) = (Lanes::select(odd, c, s), Lanes::select(odd, -s, c));
-    let opposite = quadrant.map(|q| q & 2 == 2);
+    // The low bits of `shifted` count quarter turns: an odd count swaps sine
+    // and cosine, and the signs follow the quadrant (sin flips in quadrants 2
+    // and 3, cos in 1 and 2), set by flipping sign bits.
+    let quadrant = shifted.0.map(f64::to_bits);
+    let odd = Mask::bit(quadrant, 0);
+    let sin_signs = quadrant.map(|q| (q >> 1) << 63);
+    let cos_signs = quadrant.map(|q| (q ^ (q >> 1)) << 63);
     let (s, c) = (
-        Lanes::select(opposite, -s, s),
-        Lanes::select(opposite, -c, c),
+        Lanes::select(odd, c, s).flip_signs(sin_signs),
+        Lanes::select(odd, s, c).flip_signs(cos_signs),
     );
     // `+ 0.0` turns -0 into 0: a rotation by 90° has a +0 cosine.
     (s + 0.0, c + 0.0)
@@ -132,7 +135,7 @@ fn atan_ratio_degrees<const N: usize>(small: Lanes<N>, large: Lanes<N>) -> Lanes
         Lanes::splat(1.0),
         denominator,
     );
-    let base = Lanes::select(far, Lanes::splat(45.0), Lanes::splat(0.0));
+    let base = Lanes::splat(45.0).or_zero(far);
     base + kernel_atan(numerator / denominator) * DEGREES_PER_RADIAN
 }
 
