@@ -103,7 +103,7 @@ pub fn check_with(
                 if !plain_watchers.is_empty() {
                     let line = PlainLine {
                         raw: plain.raw,
-                        facts: plain::plain_facts(source, &plain),
+                        facts: plain.facts,
                     };
                     for &n in &plain_watchers {
                         checkers[n].plain_line(&file, row, &line, &mut found);

@@ -27,22 +27,37 @@ pub fn is_plain(content: &[u8]) -> bool {
 pub struct Plain {
     pub raw: RawLine,
     pub comment: Option<Span>,
+    pub facts: PlainFacts,
 }
 
 /// The plain line starting at `start` in `source`; `None` when the line is
-/// not plain. The pass that reads the words also finds the line's end, so a
-/// plain line costs one look at each byte.
+/// not plain. The pass that reads the words also finds the line's end and
+/// the facts the rules ask for, so a plain line costs one look at each byte.
 pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
     let rest = &source[start..];
-    let stop = scan_words(rest)?;
+    let words = scan_words(rest)?;
+    let stop = words.stop;
+    let facts = PlainFacts {
+        number: words.number.map(|(letter, end)| BlockNumber {
+            span: Span::new(start + letter, start + end),
+            main: false,
+            digits: Span::new(start + letter + 1, start + end),
+        }),
+        has_words: words.has_words,
+    };
     if rest.get(stop) != Some(&b';') {
         let raw = line_at(source, start, start + stop);
-        return Some(Plain { raw, comment: None });
+        return Some(Plain {
+            raw,
+            comment: None,
+            facts,
+        });
     }
     let end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
     Some(Plain {
         raw: line_at(source, start, start + end),
         comment: Some(Span::new(start + stop, start + end)),
+        facts,
     })
 }
 
@@ -54,42 +69,6 @@ pub struct PlainFacts {
     pub number: Option<BlockNumber>,
     /// It holds at least one word besides the block number.
     pub has_words: bool,
-}
-
-/// The [`PlainFacts`] of a plain line: only its first word needs a look.
-pub fn plain_facts(source: &[u8], plain: &Plain) -> PlainFacts {
-    let start = plain.raw.content.start;
-    let end = plain.comment.map_or(plain.raw.content.end, |c| c.start);
-    let words = &source[start..end];
-    let letter = words.iter().take_while(|&&b| is_blank(b)).count();
-    let digits = words
-        .iter()
-        .skip(letter + 1)
-        .take_while(|b| b.is_ascii_digit())
-        .count();
-    let after = letter + 1 + digits;
-    // The parser's block number: a first word N with digits alone (a sign
-    // or a point makes it an address word).
-    let number = (words
-        .get(letter)
-        .is_some_and(|b| b.eq_ignore_ascii_case(&b'N'))
-        && digits > 0
-        && words.get(after) != Some(&b'.'))
-    .then(|| BlockNumber {
-        span: Span::new(start + letter, start + after),
-        main: false,
-        digits: Span::new(start + letter + 1, start + after),
-    });
-    // Every letter of a plain line starts a word.
-    let others = if number.is_some() {
-        &words[after..]
-    } else {
-        words
-    };
-    PlainFacts {
-        number,
-        has_words: others.iter().any(u8::is_ascii_alphabetic),
-    }
 }
 
 /// Reads the plain line at an offset, if it is one ([`scan_plain_line`]).
@@ -153,39 +132,105 @@ impl Iterator for ScannedLines<'_> {
     }
 }
 
-/// Reads address words up to a `;`, a line end or the end of `bytes`: where
-/// it stopped, or `None` at anything else.
-fn scan_words(bytes: &[u8]) -> Option<usize> {
-    let class = |at: usize| bytes.get(at).map_or(Class::End, |&b| CLASS[usize::from(b)]);
-    let mut at = 0;
+/// What [`scan_words`] saw.
+struct Words {
+    /// Where it stopped: a `;`, a line end or the end of the bytes.
+    stop: usize,
+    /// The block number, as the parser reads one: a first word N with
+    /// digits alone (a sign or a point makes it an address word); where its
+    /// letter is and where its digits end.
+    number: Option<(usize, usize)>,
+    /// A word other than the block number.
+    has_words: bool,
+}
+
+/// Reads address words up to a `;`, a line end or the end of `bytes`; `None`
+/// at anything else.
+fn scan_words(bytes: &[u8]) -> Option<Words> {
+    let (number, mut at) = match next_word(bytes, 0)? {
+        Step::Stop(stop) => {
+            return Some(Words {
+                stop,
+                number: None,
+                has_words: false,
+            })
+        }
+        Step::Word {
+            letter,
+            end,
+            digits_only,
+        } => {
+            let is_number = digits_only && bytes[letter].eq_ignore_ascii_case(&b'N');
+            (is_number.then_some((letter, end)), end)
+        }
+    };
+    let mut has_words = number.is_none();
     loop {
-        while class(at) == Class::Blank {
-            at += 1;
-        }
-        match class(at) {
-            Class::End | Class::Comment => return Some(at),
-            Class::Letter => at += 1,
-            _ => return None,
-        }
-        if class(at) == Class::Sign {
-            at += 1;
-        }
-        let (start, mut digits, mut points) = (at, 0, 0);
-        loop {
-            match class(at) {
-                Class::Digit => digits += 1,
-                Class::Point => points += 1,
-                _ => break,
+        match next_word(bytes, at)? {
+            Step::Stop(stop) => {
+                return Some(Words {
+                    stop,
+                    number,
+                    has_words,
+                })
             }
-            at += 1;
-        }
-        // A number needs a digit, has one point at most, and is no longer
-        // than machine positions get (`1` with 400 zeros is too large for a
-        // REAL: the parser says so).
-        if digits == 0 || points > 1 || at - start > 24 {
-            return None;
+            Step::Word { end, .. } => {
+                has_words = true;
+                at = end;
+            }
         }
     }
+}
+
+enum Step {
+    /// At a `;`, a line end or the end of the bytes.
+    Stop(usize),
+    Word {
+        letter: usize,
+        end: usize,
+        /// No sign and no point: `N10`, not `N-10` or `N10.`.
+        digits_only: bool,
+    },
+}
+
+/// The address word after `at` (blanks skipped), or where the words stop;
+/// `None` at anything else.
+#[inline(always)]
+fn next_word(bytes: &[u8], mut at: usize) -> Option<Step> {
+    let class = |at: usize| bytes.get(at).map_or(Class::End, |&b| CLASS[usize::from(b)]);
+    while class(at) == Class::Blank {
+        at += 1;
+    }
+    match class(at) {
+        Class::End | Class::Comment => return Some(Step::Stop(at)),
+        Class::Letter => at += 1,
+        _ => return None,
+    }
+    let letter = at - 1;
+    let signed = class(at) == Class::Sign;
+    if signed {
+        at += 1;
+    }
+    let (start, mut digits, mut points) = (at, 0, 0);
+    loop {
+        match class(at) {
+            Class::Digit => digits += 1,
+            Class::Point => points += 1,
+            _ => break,
+        }
+        at += 1;
+    }
+    // A number needs a digit, has one point at most, and is no longer than
+    // machine positions get (`1` with 400 zeros is too large for a REAL: the
+    // parser says so).
+    if digits == 0 || points > 1 || at - start > 24 {
+        return None;
+    }
+    Some(Step::Word {
+        letter,
+        end: at,
+        digits_only: !signed && points == 0,
+    })
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -351,9 +396,8 @@ mod tests {
                         .expect("plain");
                     proptest::prop_assert_eq!(plain.raw, lines.raw(index));
                     proptest::prop_assert_eq!(plain.comment, block.comment);
-                    let facts = plain_facts(text.as_bytes(), &plain);
-                    proptest::prop_assert_eq!(facts.number, block.number);
-                    proptest::prop_assert_eq!(facts.has_words, !block.statements.is_empty());
+                    proptest::prop_assert_eq!(plain.facts.number, block.number);
+                    proptest::prop_assert_eq!(plain.facts.has_words, !block.statements.is_empty());
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,
