@@ -10,18 +10,26 @@ use crate::cli::analysis::Inputs;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::config::Config;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, SourceFile};
-use crate::cli::render::{github, human, json, sarif, short, FileReport};
+use crate::cli::input::{expand, read};
+use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
 use crate::cli::{write_stdout, ExitStatus};
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::Severity;
 use crate::lint::{self, Selection};
 use crate::syntax::program_kind;
 
-/// One file's outcome.
+/// One file's outcome, with what its report needs of the source taken out
+/// in the worker: the source is dropped as soon as its file is checked, so
+/// checking a directory holds the findings, not every file.
 struct Checked {
-    file: SourceFile,
-    diagnostics: Vec<Diagnostic>,
-    deny_warnings: bool,
+    report: Report,
+    fails: bool,
+}
+
+enum Report {
+    /// The file's part of a per-file format (short, GitHub, human).
+    Text(String),
+    /// For the whole-run formats (JSON, SARIF).
+    Located(Located),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
@@ -29,11 +37,12 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
         paths.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
+    let colour = std::io::stdout().is_terminal();
     let work = || loop {
         let index = next.fetch_add(1, Ordering::Relaxed);
         let Some(path) = paths.get(index) else { break };
         let outcome = match path {
-            Ok(path) => check_file(path, args),
+            Ok(path) => check_file(path, args, colour),
             Err(error) => Err(CliError::Read {
                 path: PathBuf::new(),
                 source: std::io::Error::other(error.to_string()),
@@ -58,10 +67,18 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     }
 
     let mut failed = false;
-    let mut checked = Vec::new();
+    let mut fails = false;
+    let mut text = String::new();
+    let mut located = Vec::new();
     for slot in results {
         match slot.into_inner().ok().flatten() {
-            Some(Ok(file)) => checked.push(file),
+            Some(Ok(checked)) => {
+                fails |= checked.fails;
+                match checked.report {
+                    Report::Text(part) => text.push_str(&part),
+                    Report::Located(file) => located.push(file),
+                }
+            }
             Some(Err(error)) => {
                 failed = true;
                 eprintln!("{:?}", miette::Report::new(error));
@@ -69,32 +86,13 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
             None => failed = true,
         }
     }
-    let reports: Vec<FileReport> = checked
-        .iter()
-        .map(|c| FileReport {
-            name: &c.file.name,
-            source: &c.file.bytes,
-            diagnostics: &c.diagnostics,
-        })
-        .collect();
-    let mut out = String::new();
-    match args.format {
-        Format::Json => out = json(&reports),
-        Format::Sarif => out = sarif(&reports),
-        Format::Short => reports.iter().for_each(|r| short(r, &mut out)),
-        Format::Github => reports.iter().for_each(|r| github(r, &mut out)),
-        Format::Human => {
-            let colour = std::io::stdout().is_terminal();
-            reports.iter().for_each(|r| human(r, colour, &mut out));
-        }
-    }
+    let out = match args.format {
+        Format::Json => json(&located),
+        Format::Sarif => sarif(&located),
+        Format::Short | Format::Github | Format::Human => text,
+    };
     write_stdout(out.as_bytes())?;
 
-    let fails = checked.iter().any(|c| {
-        c.diagnostics.iter().any(|d| {
-            d.severity == Severity::Error || (c.deny_warnings && d.severity == Severity::Warning)
-        })
-    });
     Ok(if failed {
         ExitStatus::Error
     } else if fails {
@@ -104,7 +102,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     })
 }
 
-fn check_file(path: &Path, args: &CheckArgs) -> Result<Checked, CliError> {
+fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, CliError> {
     let mut file = read(path)?;
     // stdin with --stdin-filename: report and look things up as that file.
     let named = match (&args.stdin_filename, path == Path::new("-")) {
@@ -144,9 +142,27 @@ fn check_file(path: &Path, args: &CheckArgs) -> Result<Checked, CliError> {
         &inputs.supplied,
         inputs.heads.as_ref(),
     );
+    let deny_warnings = args.deny_warnings || config.deny_warnings == Some(true);
+    let fails = diagnostics.iter().any(|d| {
+        d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
+    });
+    let file_report = FileReport {
+        name: &file.name,
+        source: &file.bytes,
+        diagnostics: &diagnostics,
+    };
+    let mut text = String::new();
+    match args.format {
+        Format::Short => short(&file_report, &mut text),
+        Format::Github => github(&file_report, &mut text),
+        Format::Human => human(&file_report, colour, &mut text),
+        Format::Json | Format::Sarif => {
+            let report = Report::Located(Located::new(&file_report));
+            return Ok(Checked { report, fails });
+        }
+    }
     Ok(Checked {
-        file,
-        diagnostics,
-        deny_warnings: args.deny_warnings || config.deny_warnings == Some(true),
+        report: Report::Text(text),
+        fails,
     })
 }

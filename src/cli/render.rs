@@ -236,29 +236,57 @@ struct JsonDiagnostic<'a> {
     length: usize,
 }
 
+/// One file's diagnostics with their start and end positions: what the
+/// whole-run formats (JSON, SARIF) need of a file once its source is gone.
+pub struct Located {
+    pub name: String,
+    pub diagnostics: Vec<Diagnostic>,
+    pub positions: Vec<(Position, Position)>,
+}
+
+impl Located {
+    pub fn new(report: &FileReport) -> Self {
+        let index = LineIndex::new(report.source);
+        Self {
+            name: report.name.to_owned(),
+            diagnostics: report.diagnostics.to_vec(),
+            positions: report
+                .diagnostics
+                .iter()
+                .map(|d| (index.position(d.span.start), index.position(d.span.end)))
+                .collect(),
+        }
+    }
+
+    fn each(&self) -> impl Iterator<Item = (&Diagnostic, Position, Position)> {
+        self.diagnostics
+            .iter()
+            .zip(&self.positions)
+            .map(|(d, &(start, end))| (d, start, end))
+    }
+}
+
 /// One JSON document for all files.
-pub fn json(reports: &[FileReport]) -> String {
+pub fn json(reports: &[Located]) -> String {
     let files = reports
         .iter()
         .map(|report| {
-            let index = LineIndex::new(report.source);
             let diagnostics = report
-                .diagnostics
-                .iter()
-                .map(|d| JsonDiagnostic {
+                .each()
+                .map(|(d, start, end)| JsonDiagnostic {
                     code: d.code,
                     name: d.name,
                     severity: d.severity,
                     message: &d.message,
                     help: d.help.as_deref(),
-                    location: index.position(d.span.start),
-                    end_location: index.position(d.span.end),
+                    location: start,
+                    end_location: end,
                     offset: d.span.start,
                     length: d.span.len(),
                 })
                 .collect();
             JsonFile {
-                path: report.name,
+                path: &report.name,
                 diagnostics,
             }
         })
@@ -307,7 +335,7 @@ fn escape_property(text: &str) -> String {
 }
 
 /// SARIF 2.1.0: one run, the rules that were found, one result each.
-pub fn sarif(reports: &[FileReport]) -> String {
+pub fn sarif(reports: &[Located]) -> String {
     let mut codes: Vec<&str> = reports
         .iter()
         .flat_map(|r| r.diagnostics.iter().map(|d| d.code))
@@ -330,9 +358,7 @@ pub fn sarif(reports: &[FileReport]) -> String {
         .collect();
     let mut results = Vec::new();
     for report in reports {
-        let index = LineIndex::new(report.source);
-        for d in report.diagnostics {
-            let (start, end) = (index.position(d.span.start), index.position(d.span.end));
+        for (d, start, end) in report.each() {
             results.push(serde_json::json!({
                 "ruleId": d.code,
                 "level": level(d.severity),
