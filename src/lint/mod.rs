@@ -14,11 +14,11 @@ pub mod suppression;
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::suppression::Suppressions;
-use crate::semantic::{analyze, Heads, Supplied};
+use crate::semantic::{analyze_lines, Heads, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{self, scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
-use crate::syntax::{LineParser, ProgramKind};
+use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 
 /// Which findings to report.
 #[derive(Clone, Debug)]
@@ -92,7 +92,13 @@ pub fn check_with(
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
     let mut parser = LineParser::default();
+    // The CYCLE600 walk needs a line table: recorded on this pass, not
+    // scanned for again.
+    let mut walk_lines = crate::semantic::mentions_cycle600(source).then(LinesRecorder::default);
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
+        if let Some(recorder) = &mut walk_lines {
+            recorder.record(&line);
+        }
         let raw = match line {
             Scanned::Plain(plain) => {
                 // No syntax error, and only a few rules care: no tree to build.
@@ -128,7 +134,9 @@ pub fn check_with(
     for checker in &mut checkers {
         checker.finish(&file, &mut found);
     }
-    found.extend(cycle600_findings(source, supplied, heads));
+    if let Some(recorder) = walk_lines {
+        found.extend(cycle600_findings(&recorder.finish(source), supplied, heads));
+    }
 
     let index = LineIndex::new(source);
     let mut kept: Vec<Diagnostic> = found
@@ -146,11 +154,8 @@ pub fn check_with(
 /// The CYCLE600 walk's findings, as `check` reports them: an argument only
 /// the machine knows is information here (the rewrite can compute it on the
 /// control), not an error.
-fn cycle600_findings(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
-    if !crate::semantic::mentions_cycle600(source) {
-        return Vec::new();
-    }
-    let analysis = analyze(source, supplied, heads);
+fn cycle600_findings(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
+    let analysis = analyze_lines(lines, supplied, heads);
     let mut out: Vec<Diagnostic> = analysis
         .calls
         .iter()

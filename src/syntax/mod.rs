@@ -76,17 +76,9 @@ pub struct Lines<'src> {
 
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
-        let mut starts = vec![0];
-        let mut plain = Vec::new();
-        for line in plain::scanned_lines(source) {
-            starts.push(line.raw().full().end);
-            plain.push(matches!(line, plain::Scanned::Plain(_)));
-        }
-        Self {
-            source,
-            starts,
-            plain,
-        }
+        let mut recorder = LinesRecorder::default();
+        plain::scanned_lines(source).for_each(|line| recorder.record(&line));
+        recorder.finish(source)
     }
 
     pub fn len(&self) -> usize {
@@ -119,6 +111,39 @@ impl<'src> Lines<'src> {
         let raw = self.raw(index);
         let (kind, _) = parse_line_kind(raw.content.of(self.source), raw.content.start);
         Line { raw, kind }
+    }
+}
+
+/// Builds a [`Lines`] table from a pass over the lines that another job
+/// makes anyway (`check`'s rules), instead of scanning the file again.
+pub struct LinesRecorder {
+    starts: Vec<usize>,
+    plain: Vec<bool>,
+}
+
+impl Default for LinesRecorder {
+    fn default() -> Self {
+        Self {
+            starts: vec![0],
+            plain: Vec::new(),
+        }
+    }
+}
+
+impl LinesRecorder {
+    /// The next line, in order from the first.
+    pub fn record(&mut self, line: &plain::Scanned) {
+        self.starts.push(line.raw().full().end);
+        self.plain.push(matches!(line, plain::Scanned::Plain(_)));
+    }
+
+    /// The table of the lines recorded, which must be all of `source`'s.
+    pub fn finish(self, source: &[u8]) -> Lines<'_> {
+        Lines {
+            source,
+            starts: self.starts,
+            plain: self.plain,
+        }
     }
 }
 
