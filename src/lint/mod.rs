@@ -109,7 +109,7 @@ pub fn check_with(
                 if !plain_watchers.is_empty() {
                     let line = PlainLine {
                         raw: plain.raw,
-                        facts: plain.facts,
+                        facts: plain.facts(),
                     };
                     for &n in &plain_watchers {
                         checkers[n].plain_line(&file, row, &line, &mut found);

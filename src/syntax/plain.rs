@@ -27,7 +27,25 @@ pub fn is_plain(content: &[u8]) -> bool {
 pub struct Plain {
     pub raw: RawLine,
     pub comment: Option<Span>,
-    pub facts: PlainFacts,
+    /// The block number's letter and end (see [`Plain::facts`]): kept this
+    /// small because the syntax pass and the walk copy every `Plain` and
+    /// never ask.
+    number: Option<(usize, usize)>,
+    has_words: bool,
+}
+
+impl Plain {
+    /// What the rules ask of the line, seen by the scan that found it.
+    pub fn facts(&self) -> PlainFacts {
+        PlainFacts {
+            number: self.number.map(|(letter, end)| BlockNumber {
+                span: Span::new(letter, end),
+                main: false,
+                digits: Span::new(letter + 1, end),
+            }),
+            has_words: self.has_words,
+        }
+    }
 }
 
 /// The plain line starting at `start` in `source`; `None` when the line is
@@ -37,27 +55,25 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
     let rest = &source[start..];
     let words = scan_words(rest)?;
     let stop = words.stop;
-    let facts = PlainFacts {
-        number: words.number.map(|(letter, end)| BlockNumber {
-            span: Span::new(start + letter, start + end),
-            main: false,
-            digits: Span::new(start + letter + 1, start + end),
-        }),
-        has_words: words.has_words,
-    };
+    let number = words
+        .number
+        .map(|(letter, end)| (start + letter, start + end));
+    let has_words = words.has_words;
     if rest.get(stop) != Some(&b';') {
         let raw = line_at(source, start, start + stop);
         return Some(Plain {
             raw,
             comment: None,
-            facts,
+            number,
+            has_words,
         });
     }
     let end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
     Some(Plain {
         raw: line_at(source, start, start + end),
         comment: Some(Span::new(start + stop, start + end)),
-        facts,
+        number,
+        has_words,
     })
 }
 
@@ -396,8 +412,8 @@ mod tests {
                         .expect("plain");
                     proptest::prop_assert_eq!(plain.raw, lines.raw(index));
                     proptest::prop_assert_eq!(plain.comment, block.comment);
-                    proptest::prop_assert_eq!(plain.facts.number, block.number);
-                    proptest::prop_assert_eq!(plain.facts.has_words, !block.statements.is_empty());
+                    proptest::prop_assert_eq!(plain.facts().number, block.number);
+                    proptest::prop_assert_eq!(plain.facts().has_words, !block.statements.is_empty());
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,
