@@ -55,25 +55,19 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
     let rest = &source[start..];
     let words = scan_words(rest)?;
     let stop = words.stop;
-    let number = words
-        .number
-        .map(|(letter, end)| (start + letter, start + end));
-    let has_words = words.has_words;
-    if rest.get(stop) != Some(&b';') {
-        let raw = line_at(source, start, start + stop);
-        return Some(Plain {
-            raw,
-            comment: None,
-            number,
-            has_words,
-        });
-    }
-    let end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
+    let (end, comment) = if rest.get(stop) == Some(&b';') {
+        let end = memchr::memchr2(b'\n', b'\r', &rest[stop..]).map_or(rest.len(), |n| stop + n);
+        (end, Some(Span::new(start + stop, start + end)))
+    } else {
+        (stop, None)
+    };
     Some(Plain {
         raw: line_at(source, start, start + end),
-        comment: Some(Span::new(start + stop, start + end)),
-        number,
-        has_words,
+        comment,
+        number: words
+            .number
+            .map(|(letter, end)| (start + letter, start + end)),
+        has_words: words.has_words,
     })
 }
 
