@@ -2,7 +2,7 @@
 
 use nalgebra::Rotation3;
 use proptest::prelude::*;
-use sinuprep::rotation::{convert, convert_all, decompose, matrix, Sequence};
+use sinuprep::rotation::{convert, decompose, matrix, Sequence};
 
 fn sequences() -> Vec<Sequence> {
     Sequence::all().collect()
@@ -72,28 +72,6 @@ proptest! {
             // Angles near ±180 may come back on the other side of the cut.
             let d = (x - y).rem_euclid(360.0);
             prop_assert!(d.min(360.0 - d) < 1e-9, "{:?} vs {:?}", first.angles, second.angles);
-        }
-    }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
-
-    /// The batched engine computes several conversions side by side with the
-    /// same operations: its results must equal one-by-one conversion exactly,
-    /// whatever the batch length (a short last batch is padded).
-    #[test]
-    fn converting_many_at_once_equals_converting_one_by_one(
-        from in 0usize..24, to in 0usize..24,
-        angles in prop::collection::vec((angle(), angle(), angle()), 0..40),
-    ) {
-        let all = sequences();
-        let (from, to) = (all[from], all[to]);
-        let angles: Vec<[f64; 3]> = angles.into_iter().map(|(a, b, c)| [a, b, c]).collect();
-        let many = convert_all(from, &angles, to);
-        prop_assert_eq!(many.len(), angles.len());
-        for (one, &angles) in many.iter().zip(&angles) {
-            prop_assert_eq!(*one, convert(from, angles, to), "{} {:?} -> {}", from, angles, to);
         }
     }
 }

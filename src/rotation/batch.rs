@@ -110,11 +110,12 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(400))]
 
         /// Both builds (the baseline one and, on a CPU that has it, AVX2)
-        /// give one-by-one conversion's results bit for bit.
+        /// give one-by-one conversion's results bit for bit, whatever the
+        /// batch length (a short last chunk is padded).
         #[test]
         fn both_builds_equal_one_by_one_bit_for_bit(
             from in 0usize..24, to in 0usize..24,
-            angles in prop::collection::vec((angle(), angle(), angle()), 0..20),
+            angles in prop::collection::vec((angle(), angle(), angle()), 0..40),
         ) {
             let all: Vec<Sequence> = Sequence::all().collect();
             let (from, to) = (all[from], all[to]);
