@@ -34,11 +34,6 @@ impl<const N: usize> Mask<N> {
     pub fn lane(self, lane: usize) -> bool {
         self.0[lane] != 0
     }
-
-    #[inline(always)]
-    pub fn any(self) -> bool {
-        self.0.iter().fold(0, |any, &m| any | m) != 0
-    }
 }
 
 impl<const N: usize> Lanes<N> {
