@@ -175,8 +175,9 @@ fn decompose_intrinsic<const N: usize>(
     };
     let gimbal_lock = conditioning.test(|x| x < GIMBAL_TOLERANCE);
 
-    // Gimbal-locked lanes, where that scale may be 0, take other pairs: the
-    // pairs are chosen before atan2, so every lane runs the same instructions.
+    // Gimbal-locked lanes, where `conditioning` may be 0 and the pairs with
+    // it, take other pairs: chosen before the atan2, so every lane runs the
+    // same instructions.
     let axes = (i, j, k);
     let zero_pair = (Lanes::splat(0.0), Lanes::splat(1.0));
     let (a_pair, c_pair) = match zero {
