@@ -56,6 +56,7 @@ fn convert_all_lanes(from: Sequence, angles: &[Angles], to: Sequence) -> Vec<Con
     // Written in place: an `extend` over mapped iterators was not inlined
     // into the AVX2 build and ran as baseline code.
     let mut conversions = vec![UNWRITTEN; angles.len()];
+    let mut rows = [[Lanes::<LANES>::splat(0.0); 3]; 3];
     for (chunk, written) in angles.chunks(LANES).zip(conversions.chunks_mut(LANES)) {
         // A short last chunk is padded with zero angles, computed and dropped.
         let mut lane_angles = [Lanes::<LANES>::splat(0.0); 3];
@@ -64,7 +65,7 @@ fn convert_all_lanes(from: Sequence, angles: &[Angles], to: Sequence) -> Vec<Con
                 angle.0[lane] = value;
             }
         }
-        let rows = matrix_lanes(from, lane_angles);
+        matrix_lanes(from, lane_angles, &mut rows);
         let outputs = decompose_lanes(to, &rows);
         for (lane, conversion) in written.iter_mut().enumerate() {
             conversion.matrix = rotation_of_lane(&rows, lane);
