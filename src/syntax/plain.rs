@@ -335,6 +335,14 @@ pub fn block_numbers(source: &[u8], wanted: &HashSet<u64>) -> Vec<(u64, usize)> 
 
 /// The value of ASCII digits, `None` beyond `u64` (or for anything else).
 pub fn digits_value(digits: &[u8]) -> Option<u64> {
+    // Nineteen digits cannot overflow a `u64`: no checked arithmetic for the
+    // block numbers of every line.
+    if digits.len() <= 19 {
+        return digits.iter().try_fold(0u64, |value, &digit| {
+            let digit = digit.wrapping_sub(b'0');
+            (digit < 10).then(|| value * 10 + u64::from(digit))
+        });
+    }
     digits.iter().try_fold(0u64, |value, &digit| {
         let digit = (digit as char).to_digit(10)?;
         value.checked_mul(10)?.checked_add(u64::from(digit))
@@ -395,6 +403,16 @@ mod tests {
             let odd: HashSet<u64> = all.iter().copied().filter(|v| v % 2 == 1).collect();
             expected.retain(|(value, _)| value % 2 == 1);
             proptest::prop_assert_eq!(block_numbers(source, &odd), expected);
+        }
+    }
+
+    proptest::proptest! {
+        /// Digits read as `str::parse` reads them, up to and past `u64::MAX`
+        /// (20 digits), and nothing else read as a number.
+        #[test]
+        fn digits_value_is_parse(text in "[0-9]{1,22}|[0-9]{0,3}[^0-9][0-9]{0,3}") {
+            let parsed = text.parse::<u64>().ok().filter(|_| text.bytes().all(|b| b.is_ascii_digit()));
+            proptest::prop_assert_eq!(digits_value(text.as_bytes()), parsed);
         }
     }
 
