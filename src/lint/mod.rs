@@ -16,7 +16,7 @@ use crate::lint::rule::{FileContext, LineView, PlainLine, RuleInfo};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze_lines, Heads, Supplied};
 use crate::span::LineIndex;
-use crate::syntax::plain::{self, scanned_lines_with, PlainScanner, Scanned};
+use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
 use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 
@@ -63,11 +63,18 @@ pub fn check(
     supplied: &Supplied,
     heads: Option<&Heads>,
 ) -> Vec<Diagnostic> {
-    let scan = plain::scan_plain_line;
-    check_with(scan, source, name, kind, selection, supplied, heads)
+    check_with(
+        PlainScanner::Scan,
+        source,
+        name,
+        kind,
+        selection,
+        supplied,
+        heads,
+    )
 }
 
-/// [`check`] with the plain-line scanner given: [`plain::PARSE_EVERY_LINE`]
+/// [`check`] with the plain-line scanner given: [`PlainScanner::ParseEveryLine`]
 /// builds every line's tree, the reference the shortcut is tested against
 /// (`tests/lint.rs`, the `check` fuzz target).
 #[doc(hidden)]

@@ -166,16 +166,18 @@ impl Lines<'_> {
 /// The diagnostics of `lines`, each with whether it is plain.
 fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = (RawLine, bool)>) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
-    lines
-        .filter_map(|(raw, plain)| {
-            // A plain line has no error to find.
-            if plain {
-                parser.pass_plain_line();
-                return None;
-            }
-            parser.parse_line(source, raw).1
-        })
-        .collect()
+    let mut found = Vec::new();
+    // A loop, not `filter_map`: the adapter was not inlined and cost a third
+    // as much as scanning the line.
+    for (raw, plain) in lines {
+        // A plain line has no error to find.
+        if plain {
+            parser.pass_plain_line();
+            continue;
+        }
+        found.extend(parser.parse_line(source, raw).1);
+    }
+    found
 }
 
 /// Parses line after line, remembering the one thing that crosses lines: a

@@ -54,6 +54,7 @@ impl Plain {
 /// The plain line starting at `start` in `source`; `None` when the line is
 /// not plain. The pass that reads the words also finds the line's end and
 /// the facts the rules ask for, so a plain line costs one look at each byte.
+#[inline]
 pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
     let rest = &source[start..];
     let words = scan_words(rest)?;
@@ -84,8 +85,15 @@ pub struct PlainFacts {
     pub has_words: bool,
 }
 
-/// Reads the plain line at an offset, if it is one ([`scan_plain_line`]).
-pub type PlainScanner = fn(&[u8], usize) -> Option<Plain>;
+/// Whether [`scanned_lines_with`] looks for plain lines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlainScanner {
+    /// [`scan_plain_line`] on every line.
+    Scan,
+    /// Take no line for plain: every line is parsed, the reference the
+    /// plain-line shortcut is tested against.
+    ParseEveryLine,
+}
 
 /// A line of [`scanned_lines`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,14 +115,13 @@ impl Scanned {
 /// Every line of `source`, plain or not: a plain line's words and its end
 /// are found in one pass, other lines' ends by a search.
 pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
-    scanned_lines_with(source, scan_plain_line)
+    scanned_lines_with(source, PlainScanner::Scan)
 }
 
-/// A scanner that takes no line for plain: every line is parsed, the
-/// reference the plain-line shortcut is tested against.
-pub const PARSE_EVERY_LINE: PlainScanner = |_, _| None;
+/// [`PlainScanner::ParseEveryLine`].
+pub const PARSE_EVERY_LINE: PlainScanner = PlainScanner::ParseEveryLine;
 
-/// [`scanned_lines`] with another scanner ([`PARSE_EVERY_LINE`]).
+/// [`scanned_lines`], or with [`PARSE_EVERY_LINE`] every line parsed.
 pub fn scanned_lines_with(source: &[u8], scan: PlainScanner) -> ScannedLines<'_> {
     ScannedLines {
         source,
@@ -136,7 +143,13 @@ impl Iterator for ScannedLines<'_> {
         if self.at >= self.source.len() {
             return None;
         }
-        let line = match (self.scan)(self.source, self.at) {
+        // An enum rather than a function pointer, so that the scan is
+        // inlined into this loop over millions of lines.
+        let plain = match self.scan {
+            PlainScanner::Scan => scan_plain_line(self.source, self.at),
+            PlainScanner::ParseEveryLine => None,
+        };
+        let line = match plain {
             Some(plain) => Scanned::Plain(plain),
             None => Scanned::Other(line_from(self.source, self.at)),
         };

@@ -6,8 +6,8 @@
 //!
 //! Decides only lines whose words stop within the first 64 bytes, on a CPU
 //! with AVX2 (x86-64 since 2013); longer lines, the file's last 63 bytes and
-//! older CPUs go byte by byte. Property-tested to
-//! agree with the byte-by-byte scan on every input.
+//! older CPUs go byte by byte. Property-tested to agree with the byte-by-byte
+//! scan on every input.
 
 use super::Words;
 
@@ -34,7 +34,20 @@ pub(super) fn scan_words(window: &[u8; 64]) -> Option<Option<Words>> {
     }
     // SAFETY: the CPU has AVX2 (checked above; the answer is cached).
     #[allow(unsafe_code)]
-    let classes = unsafe { classify(window) };
+    unsafe {
+        scan_words_avx2(window)
+    }
+}
+
+/// [`scan_words`] compiled for AVX2, so that [`classify`] is inlined.
+///
+/// # Safety
+///
+/// The CPU must have AVX2.
+#[allow(unsafe_code)]
+#[target_feature(enable = "avx2")]
+unsafe fn scan_words_avx2(window: &[u8; 64]) -> Option<Option<Words>> {
+    let classes = classify(window);
     if classes.stops == 0 {
         return None;
     }
@@ -122,50 +135,55 @@ fn lowest_bit(mask: u64) -> Option<usize> {
 ///
 /// The CPU must have AVX2.
 #[allow(unsafe_code)]
+#[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn classify(window: &[u8; 64]) -> Classes {
+    let (low, high) = window.split_at(32);
+    let (low, high) = (classify_32(low), classify_32(high));
+    let join = |class: usize| u64::from(low[class]) | u64::from(high[class]) << 32;
+    Classes {
+        letters: join(0),
+        signs: join(1),
+        numbers: join(2),
+        points: join(3),
+        allowed: join(4),
+        stops: join(5),
+    }
+}
+
+/// The class masks of 32 bytes, in the order of [`Classes`]' fields.
+///
+/// # Safety
+///
+/// The CPU must have AVX2, and `bytes` must hold 32 bytes at least.
+#[allow(unsafe_code)]
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn classify_32(bytes: &[u8]) -> [u32; 6] {
     use std::arch::x86_64::*;
 
+    let v = _mm256_loadu_si256(bytes.as_ptr().cast());
     let splat = |byte: u8| _mm256_set1_epi8(byte as i8);
-    let mut masks = [0u64; 6];
-    for (half, bytes) in window.chunks_exact(32).enumerate() {
-        // The load reads the 32 bytes of `bytes` (`chunks_exact`).
-        let v = _mm256_loadu_si256(bytes.as_ptr().cast());
-        let eq = |byte: u8| _mm256_cmpeq_epi8(v, splat(byte));
-        // x in [0, limit] as unsigned bytes: min(x, limit) == x.
-        let at_most =
-            |x: __m256i, limit: u8| _mm256_cmpeq_epi8(_mm256_min_epu8(x, splat(limit)), x);
-        let letter = at_most(
-            _mm256_sub_epi8(_mm256_or_si256(v, splat(0x20)), splat(b'a')),
-            25,
-        );
-        let digit = at_most(_mm256_sub_epi8(v, splat(b'0')), 9);
-        let point = eq(b'.');
-        let sign = _mm256_or_si256(eq(b'+'), eq(b'-'));
-        let number = _mm256_or_si256(digit, point);
-        // Blanks as `lexer::is_blank`: CR and LF count too, but they are
-        // stops, and only the bytes before the first stop are read.
-        let blank = _mm256_or_si256(at_most(v, b' '), _mm256_or_si256(eq(b'&'), eq(0x7f)));
-        let allowed = _mm256_or_si256(
-            _mm256_or_si256(letter, sign),
-            _mm256_or_si256(number, blank),
-        );
-        let stop = _mm256_or_si256(_mm256_or_si256(eq(b'\n'), eq(b'\r')), eq(b';'));
-        let half_masks = [letter, sign, number, point, allowed, stop]
-            .map(|mask| u64::from(_mm256_movemask_epi8(mask) as u32));
-        for (mask, half_mask) in masks.iter_mut().zip(half_masks) {
-            *mask |= half_mask << (32 * half);
-        }
-    }
-    let [letters, signs, numbers, points, allowed, stops] = masks;
-    Classes {
-        letters,
-        signs,
-        numbers,
-        points,
-        allowed,
-        stops,
-    }
+    let eq = |byte: u8| _mm256_cmpeq_epi8(v, splat(byte));
+    // x in [0, limit] as unsigned bytes: min(x, limit) == x.
+    let at_most = |x: __m256i, limit: u8| _mm256_cmpeq_epi8(_mm256_min_epu8(x, splat(limit)), x);
+    let letter = at_most(
+        _mm256_sub_epi8(_mm256_or_si256(v, splat(0x20)), splat(b'a')),
+        25,
+    );
+    let digit = at_most(_mm256_sub_epi8(v, splat(b'0')), 9);
+    let point = eq(b'.');
+    let sign = _mm256_or_si256(eq(b'+'), eq(b'-'));
+    let number = _mm256_or_si256(digit, point);
+    // Blanks as `lexer::is_blank`: CR and LF count too, but they are
+    // stops, and only the bytes before the first stop are read.
+    let blank = _mm256_or_si256(at_most(v, b' '), _mm256_or_si256(eq(b'&'), eq(0x7f)));
+    let allowed = _mm256_or_si256(
+        _mm256_or_si256(letter, sign),
+        _mm256_or_si256(number, blank),
+    );
+    let stop = _mm256_or_si256(_mm256_or_si256(eq(b'\n'), eq(b'\r')), eq(b';'));
+    [letter, sign, number, point, allowed, stop].map(|mask| _mm256_movemask_epi8(mask) as u32)
 }
 
 #[cfg(test)]
