@@ -129,6 +129,8 @@ impl<'l> LineView<'l> {
 /// program), as the rules see it without a tree: its words are address
 /// letters with numbers, which define, read, call and jump nowhere.
 pub struct PlainLine {
+    /// 0-based.
+    pub row: usize,
     pub raw: RawLine,
     pub facts: PlainFacts,
 }
@@ -145,16 +147,18 @@ pub trait Check {
     ) {
     }
     /// Whether the rule learns anything from plain lines. Most do not, and
-    /// `check` then gives them neither [`Check::plain_line`] nor
+    /// `check` then gives them neither [`Check::plain_lines`] nor
     /// [`Check::line`] for those lines: the parser never builds their tree.
     fn sees_plain_lines(&self) -> bool {
         false
     }
-    fn plain_line(
+    /// Plain lines in order, each run of them between other lines in
+    /// slices: a call per slice rather than per line, because a CAM program
+    /// is millions of them.
+    fn plain_lines(
         &mut self,
         _file: &FileContext,
-        _row: usize,
-        _line: &PlainLine,
+        _lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
     }

@@ -49,14 +49,10 @@ impl Check for Checker {
         true
     }
 
-    fn plain_line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &PlainLine,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        self.number(file, line.facts.number, out);
+    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        for line in lines {
+            self.number(file, line.facts.number, out);
+        }
     }
 }
 

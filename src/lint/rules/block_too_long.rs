@@ -43,14 +43,10 @@ impl Check for Checker {
         true
     }
 
-    fn plain_line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &PlainLine,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        check_length(file, line.raw.content, out);
+    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        for line in lines {
+            check_length(file, line.raw.content, out);
+        }
     }
 }
 

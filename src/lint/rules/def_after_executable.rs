@@ -36,15 +36,14 @@ impl Check for Checker {
     }
 
     /// Address words are executable.
-    fn plain_line(
+    fn plain_lines(
         &mut self,
         _file: &FileContext,
-        row: usize,
-        line: &PlainLine,
+        lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
-        if line.facts.has_words {
-            self.first_executable.get_or_insert(row);
+        if let Some(line) = lines.iter().find(|line| line.facts.has_words) {
+            self.first_executable.get_or_insert(line.row);
         }
     }
 

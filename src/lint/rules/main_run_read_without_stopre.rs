@@ -45,14 +45,13 @@ impl Check for Checker {
 
     /// An address word is motion (or may be): values read after it need a
     /// new STOPRE.
-    fn plain_line(
+    fn plain_lines(
         &mut self,
         _file: &FileContext,
-        _row: usize,
-        line: &PlainLine,
+        lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
-        if line.facts.has_words {
+        if lines.iter().any(|line| line.facts.has_words) {
             self.stopped = false;
         }
     }

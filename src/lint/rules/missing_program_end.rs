@@ -53,14 +53,13 @@ impl Check for Checker {
         true
     }
 
-    fn plain_line(
+    fn plain_lines(
         &mut self,
         _file: &FileContext,
-        _row: usize,
-        line: &PlainLine,
+        lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
-        if line.facts.has_words {
+        if let Some(line) = lines.iter().rev().find(|line| line.facts.has_words) {
             self.last = Some(line.raw);
         }
     }
