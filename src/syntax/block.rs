@@ -103,21 +103,10 @@ pub fn parse_skip(input: Input) -> PResult<Skip> {
 
 /// `block_number := 'N' digit+ | ':' digit+`
 pub fn parse_block_number(input: Input) -> PResult<BlockNumber> {
-    let main = match peek(&input) {
-        Some(b'N' | b'n') => false,
-        Some(b':') => true,
-        _ => return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number")),
-    };
-    let digits = input.fragment()[1..]
-        .iter()
-        .take_while(|b| b.is_ascii_digit())
-        .count();
-    // `N10=5` would be an assignment, not a block number.
-    if digits == 0
-        || peek_at(&input, 1 + digits).is_some_and(|b| b == b'=' || b == b'[' || b == b'.')
-    {
+    let Some(digits) = block_number_digits(input.fragment()) else {
         return SyntaxError::at(&input, SyntaxErrorKind::Expected("a block number"));
-    }
+    };
+    let main = peek(&input) == Some(b':');
     let after_prefix = input.take_from(1);
     let rest = input.take_from(1 + digits);
     Ok((
@@ -128,6 +117,18 @@ pub fn parse_block_number(input: Input) -> PResult<BlockNumber> {
             digits: span_between(&after_prefix, &rest),
         },
     ))
+}
+
+/// How many digits follow the `N` or `:` that `bytes` starts with, if they
+/// make a block number.
+pub fn block_number_digits(bytes: &[u8]) -> Option<usize> {
+    if !matches!(bytes.first(), Some(b'N' | b'n' | b':')) {
+        return None;
+    }
+    let digits = bytes[1..].iter().take_while(|b| b.is_ascii_digit()).count();
+    // `N10=5` would be an assignment, not a block number.
+    let assigned = matches!(bytes.get(1 + digits), Some(b'=' | b'[' | b'.'));
+    (digits > 0 && !assigned).then_some(digits)
 }
 
 /// `label := name ':'` (not `::`, which is not a label)
