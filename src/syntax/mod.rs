@@ -150,32 +150,33 @@ impl LinesRecorder {
 /// The syntax diagnostics of a program, without keeping its tree: each line
 /// is parsed and dropped, so memory holds one line's tree at a time.
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
-    let lines = plain::scanned_lines(source)
-        .map(|line| (line.raw(), matches!(line, plain::Scanned::Plain(_))));
+    let lines = plain::scanned_lines(source).map(|line| match line {
+        plain::Scanned::Plain(_) => None,
+        plain::Scanned::Other(raw) => Some(raw),
+    });
     diagnostics_of(source, lines)
 }
 
 impl Lines<'_> {
     /// [`diagnostics`] from the line table: no second scan of the file.
     pub fn diagnostics(&self) -> Vec<Diagnostic> {
-        let lines = (0..self.len()).map(|index| (self.raw(index), self.is_plain(index)));
+        let lines = (0..self.len()).map(|index| (!self.is_plain(index)).then(|| self.raw(index)));
         diagnostics_of(self.source, lines)
     }
 }
 
-/// The diagnostics of `lines`, each with whether it is plain.
-fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = (RawLine, bool)>) -> Vec<Diagnostic> {
+/// The diagnostics of `lines`, `None` for a plain one.
+fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
     let mut found = Vec::new();
     // A loop, not `filter_map`: the adapter was not inlined and cost a third
     // as much as scanning the line.
-    for (raw, plain) in lines {
-        // A plain line has no error to find.
-        if plain {
-            parser.pass_plain_line();
-            continue;
+    for line in lines {
+        match line {
+            // A plain line has no error to find.
+            None => parser.pass_plain_line(),
+            Some(raw) => found.extend(parser.parse_line(source, raw).1),
         }
-        found.extend(parser.parse_line(source, raw).1);
     }
     found
 }
