@@ -406,7 +406,7 @@ mod tests {
         /// by number and line, whatever the line endings.
         #[test]
         fn block_numbers_are_the_trees_numbers(
-            lines in proptest::collection::vec("( ?/[0-9]? ?)?(N[0-9]{1,3}|:[0-9]{1,2}|N9{20}|N1\\.5)?( X1)?", 0..12),
+            lines in proptest::collection::vec("( ?/[0-9]? ?)?(N[0-9]{1,3}|n[0-9]|:[0-9]{1,2}|N9{20}|N1\\.5|N1=5|N2\\[1\\]=5)?( X1)?", 0..12),
             endings in proptest::collection::vec(proptest::prop_oneof!["\n", "\r\n", "\r"], 12),
             last in "(N[0-9])?",
         ) {
