@@ -228,7 +228,7 @@ fn assert_shortcut_agrees(name: &str, source: &[u8]) {
     let selection = Selection::default();
     let supplied = Supplied::default();
     let fast = lint::check(source, name, kind, &selection, &supplied, Some(&heads));
-    let every_line = sinuprep::syntax::plain::PARSE_EVERY_LINE;
+    let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
     let reference = lint::check_with(
         every_line,
         source,

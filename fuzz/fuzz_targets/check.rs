@@ -5,7 +5,7 @@
 use libfuzzer_sys::fuzz_target;
 use sinuprep::lint::{check, check_with, Selection};
 use sinuprep::semantic::{Heads, Supplied};
-use sinuprep::syntax::plain::PARSE_EVERY_LINE;
+use sinuprep::syntax::plain::PlainScanner;
 use sinuprep::syntax::program_kind;
 
 fuzz_target!(|data: &[u8]| {
@@ -16,7 +16,7 @@ fuzz_target!(|data: &[u8]| {
     let kind = program_kind(None, data);
     let (selection, supplied) = (Selection::default(), Supplied::default());
     let findings = check(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
-    let every_line = PARSE_EVERY_LINE;
+    let every_line = PlainScanner::ParseEveryLine;
     let reference = check_with(
         every_line,
         data,

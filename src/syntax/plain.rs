@@ -118,10 +118,7 @@ pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
     scanned_lines_with(source, PlainScanner::Scan)
 }
 
-/// [`PlainScanner::ParseEveryLine`].
-pub const PARSE_EVERY_LINE: PlainScanner = PlainScanner::ParseEveryLine;
-
-/// [`scanned_lines`], or with [`PARSE_EVERY_LINE`] every line parsed.
+/// [`scanned_lines`], or with [`PlainScanner::ParseEveryLine`] every line parsed.
 pub fn scanned_lines_with(source: &[u8], scan: PlainScanner) -> ScannedLines<'_> {
     ScannedLines {
         source,
