@@ -51,20 +51,18 @@ unsafe fn scan_words_avx2(window: &[u8; 64]) -> Option<Option<Words>> {
     if classes.stops == 0 {
         return None;
     }
-    let stop = classes.stops.trailing_zeros();
-    let before_stop = (1u64 << stop) - 1;
-    Some(words_before(window, &classes, stop as usize, before_stop))
+    Some(words_before(
+        window,
+        &classes,
+        classes.stops.trailing_zeros() as usize,
+    ))
 }
 
 /// The grammar of a plain line, `blank* (letter sign? number blank*)*`, with
 /// a number of 1 to 24 digits and points, at least one digit and at most one
-/// point, read on the masks of the bytes before the stop.
-fn words_before(
-    window: &[u8; 64],
-    classes: &Classes,
-    stop: usize,
-    before_stop: u64,
-) -> Option<Words> {
+/// point, read on the masks of the bytes before `stop` (below 64).
+fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Words> {
+    let before_stop = (1u64 << stop) - 1;
     let letters = classes.letters & before_stop;
     let signs = classes.signs & before_stop;
     let numbers = classes.numbers & before_stop;
