@@ -3,7 +3,7 @@
 //! Spans are byte offsets so that every node of the tree can point back at the
 //! exact bytes it came from; nothing here knows about the NC language.
 
-use std::cell::OnceCell;
+use std::cell::{OnceCell, RefCell};
 use std::ops::Range;
 
 /// A half-open byte range `start..end` into the source.
@@ -62,10 +62,11 @@ pub struct Position {
 pub struct LineIndex<'a> {
     source: &'a [u8],
     /// The line ends before each `BLOCK`-byte block: a row is found by
-    /// counting the line ends of at most one block. Counted on the first
-    /// question (a file without findings never asks) with `memchr`'s
-    /// vectorised count: a search per line end cost 80 instructions a line.
-    rows_before_block: OnceCell<Vec<usize>>,
+    /// counting the line ends of at most one block. Counted up to the block
+    /// asked about, when asked (a file without findings never asks, and a
+    /// large file is read in step with its report) with `memchr`'s vectorised
+    /// count: a search per line end cost 80 instructions a line.
+    rows_before_block: RefCell<Vec<usize>>,
     utf8: OnceCell<bool>,
 }
 
@@ -75,7 +76,7 @@ impl<'a> LineIndex<'a> {
     pub fn new(source: &'a [u8]) -> Self {
         Self {
             source,
-            rows_before_block: OnceCell::new(),
+            rows_before_block: RefCell::new(vec![0]),
             utf8: OnceCell::new(),
         }
     }
@@ -86,27 +87,29 @@ impl<'a> LineIndex<'a> {
             .get_or_init(|| std::str::from_utf8(self.source).is_ok())
     }
 
-    fn rows_before_block(&self) -> &[usize] {
-        self.rows_before_block.get_or_init(|| {
-            let mut rows = vec![0];
-            let mut row = 0;
-            for start in (0..self.source.len()).step_by(BLOCK) {
-                row += line_ends(self.source, start..(start + BLOCK).min(self.source.len()));
-                rows.push(row);
-            }
-            rows
-        })
+    /// The line ends before `block`.
+    fn rows_before(&self, block: usize) -> usize {
+        let mut rows = self.rows_before_block.borrow_mut();
+        while rows.len() <= block {
+            let start = (rows.len() - 1) * BLOCK;
+            let end = (start + BLOCK).min(self.source.len());
+            let row = rows[rows.len() - 1] + line_ends(self.source, start..end);
+            rows.push(row);
+        }
+        rows[block]
     }
 
     pub fn position(&self, offset: usize) -> Position {
         let offset = offset.min(self.source.len());
         let block = offset / BLOCK;
-        let row = self.rows_before_block()[block] + line_ends(self.source, block * BLOCK..offset);
+        let row = self.rows_before(block) + line_ends(self.source, block * BLOCK..offset);
         let before = &self.source[line_start(self.source, offset)..offset];
-        let column = if self.is_utf8() {
-            before.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
-        } else {
+        // Only a line with other bytes than ASCII asks how the file is
+        // encoded: the question reads the whole file.
+        let column = if before.is_ascii() || !self.is_utf8() {
             before.len()
+        } else {
+            before.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
         };
         Position {
             row: row + 1,

@@ -84,6 +84,37 @@ fn human_reports_show_the_right_lines_far_into_a_file() {
     }
 }
 
+/// A program large enough to be mapped instead of read (`cli::mapped`) is
+/// checked and rewritten exactly as the same bytes read from stdin.
+#[test]
+fn a_mapped_program_reads_as_the_same_bytes_read_whole() {
+    let mut program =
+        std::fs::read(support::repo().join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    program.truncate(program.len() - b"M30\n".len());
+    for n in 0..200_000 {
+        program.extend_from_slice(format!("N{} G1 X{n}.5 Y-2 Z3\r\n", 200 + n * 2).as_bytes());
+    }
+    program.extend_from_slice(b"GOTOF NOWHERE\r\nX\xe4\r\nM30\r\n");
+    assert!(program.len() > 4 << 20, "not large enough to be mapped");
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("MAPPED.MPF");
+    std::fs::write(&path, &program).expect("temporary file");
+    let name = path.to_str().expect("UTF-8 path");
+    for format in ["short", "json", "human"] {
+        let mapped = run(&["check", "--format", format, name], b"");
+        let read = run(
+            &["check", "--format", format, "--stdin-filename", name, "-"],
+            &program,
+        );
+        assert_exit(&mapped, 1);
+        assert_eq!(stdout(&mapped), stdout(&read), "--format {format}");
+    }
+    let mapped = run(&["rewrite", name], b"");
+    let read = run(&["rewrite", "-"], &program);
+    assert_exit(&mapped, 1);
+    assert!(mapped.stdout.len() > program.len(), "nothing rewritten");
+    assert!(mapped.stdout == read.stdout, "the rewrites differ");
+}
+
 #[test]
 fn rewrite_gives_every_byte_back_when_there_is_nothing_to_rewrite() {
     let input = b"N10 G1 X1\r\n\xe4\xf6 broken ( \"\rN20 X2";

@@ -1,14 +1,33 @@
 //! Finding and reading the programs named on the command line.
 
 use std::io::Read;
+use std::ops::Deref;
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
+use crate::cli::mapped::{Mapped, MAPPED_FROM};
 
 /// A program's name for reports, and its bytes.
 pub struct SourceFile {
     pub name: String,
-    pub bytes: Vec<u8>,
+    pub bytes: Bytes,
+}
+
+/// A program's bytes: read into memory, or mapped if the file is large.
+pub enum Bytes {
+    Read(Vec<u8>),
+    Mapped(Mapped),
+}
+
+impl Deref for Bytes {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        match self {
+            Bytes::Read(bytes) => bytes,
+            Bytes::Mapped(mapped) => mapped,
+        }
+    }
 }
 
 /// Expands the command-line paths: a directory yields its `.mpf`/`.spf` files
@@ -52,7 +71,8 @@ fn is_program(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("mpf") || e.eq_ignore_ascii_case("spf"))
 }
 
-/// Reads a file, or stdin for `-`.
+/// Reads a file, or stdin for `-`; a file of [`MAPPED_FROM`] bytes or more
+/// is mapped instead (stdin is read whole).
 pub fn read(path: &Path) -> Result<SourceFile, CliError> {
     if path == Path::new("-") {
         let mut bytes = Vec::new();
@@ -64,7 +84,7 @@ pub fn read(path: &Path) -> Result<SourceFile, CliError> {
             })?;
         return Ok(SourceFile {
             name: "<stdin>".to_string(),
-            bytes,
+            bytes: Bytes::Read(bytes),
         });
     }
     if path.is_dir() {
@@ -72,10 +92,19 @@ pub fn read(path: &Path) -> Result<SourceFile, CliError> {
             path: path.to_path_buf(),
         });
     }
-    let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+    let fail = |source| CliError::Read {
         path: path.to_path_buf(),
         source,
-    })?;
+    };
+    let mut file = std::fs::File::open(path).map_err(fail)?;
+    let metadata = file.metadata().map_err(fail)?;
+    let bytes = if metadata.is_file() && metadata.len() >= MAPPED_FROM {
+        Bytes::Mapped(Mapped::new(&file).map_err(fail)?)
+    } else {
+        let mut bytes = Vec::with_capacity(metadata.len().try_into().unwrap_or(0));
+        file.read_to_end(&mut bytes).map_err(fail)?;
+        Bytes::Read(bytes)
+    };
     Ok(SourceFile {
         name: path.display().to_string(),
         bytes,

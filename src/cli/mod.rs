@@ -8,6 +8,7 @@ mod convert;
 pub mod error;
 mod eval;
 mod input;
+mod mapped;
 mod output;
 pub mod render;
 mod rewrite;

@@ -81,7 +81,9 @@ impl Window {
         let end = line_end(source, next_line(source, line_end(source, span_end)));
         let bytes = &source[start..end];
         let (text, latin1) = match std::str::from_utf8(bytes) {
-            Ok(text) if index.is_utf8() => (text.to_string(), false),
+            // ASCII reads the same either way: only other text asks how the
+            // whole file is encoded.
+            Ok(text) if text.is_ascii() || index.is_utf8() => (text.to_string(), false),
             _ => (bytes.iter().map(|&b| b as char).collect(), true),
         };
         Self {

@@ -1,0 +1,92 @@
+//! A large program mapped into memory instead of read into it, with its
+//! pages given back to the kernel as the analysis goes.
+//!
+//! `check` and `rewrite` read a program front to back several times (the
+//! line scan, the line index, the report), each pass touching every page
+//! once. Mapped, a page costs no copy and no zeroed memory of our own; and
+//! since the mapping is read-only and private, dropping its pages from our
+//! address space loses nothing: the next read of a dropped page maps it again
+//! from the page cache. A releaser thread drops them all every few
+//! milliseconds, so the memory a file holds is what the analysis touched
+//! since the last release, whatever the file's size: the whole-file passes
+//! stream through it at a few megabytes at a time.
+//!
+//! A file truncated by another program while it is mapped ends the process
+//! with SIGBUS, as in every program that maps files; only files of at least
+//! [`MAPPED_FROM`] bytes are mapped (an editor saves files far smaller).
+
+use std::fs::File;
+use std::ops::Deref;
+use std::sync::mpsc::{channel, RecvTimeoutError, Sender};
+use std::sync::Arc;
+use std::thread::JoinHandle;
+use std::time::Duration;
+
+use memmap2::{Advice, Mmap};
+
+/// Files from this size on are mapped; smaller ones are read.
+pub const MAPPED_FROM: u64 = 4 << 20;
+
+/// How long pages stay mapped at most: at the scan's 0.5-1 GB/s, a few
+/// megabytes.
+const RELEASE_EVERY: Duration = Duration::from_millis(1);
+
+/// A file's bytes, mapped; its releaser thread stops when it is dropped.
+pub struct Mapped {
+    map: Arc<Mmap>,
+    releaser: Option<(Sender<()>, JoinHandle<()>)>,
+}
+
+impl Mapped {
+    pub fn new(file: &File) -> std::io::Result<Self> {
+        // SAFETY: the mapping is read-only, and every read of it goes through
+        // `&[u8]`. Its bytes change only if another program writes the file
+        // while we read it (the same result as reading a file being written,
+        // a mix of old and new bytes, which the analysis, like any input,
+        // survives); truncation is the SIGBUS case the module documents.
+        #[allow(unsafe_code)]
+        let map = Arc::new(unsafe { Mmap::map(file)? });
+        // Only a hint for read-ahead; a refusal changes nothing.
+        let _ = map.advise(Advice::Sequential);
+        let (stop, stopped) = channel::<()>();
+        let pages = Arc::clone(&map);
+        let releaser = std::thread::Builder::new()
+            .name("sinuprep-release".into())
+            .spawn(move || {
+                while let Err(RecvTimeoutError::Timeout) = stopped.recv_timeout(RELEASE_EVERY) {
+                    release(&pages);
+                }
+            })?;
+        Ok(Self {
+            map,
+            releaser: Some((stop, releaser)),
+        })
+    }
+}
+
+/// Drops every page of the mapping from the process's memory.
+fn release(map: &Mmap) {
+    // SAFETY: `DontNeed` on a private mapping discards the pages' private
+    // copies; there are none, as the mapping is read-only, so the next read
+    // of a page sees the file's bytes again, as before the release. Failure
+    // only leaves the pages mapped.
+    #[allow(unsafe_code)]
+    let _ = unsafe { map.unchecked_advise(memmap2::UncheckedAdvice::DontNeed) };
+}
+
+impl Deref for Mapped {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        &self.map
+    }
+}
+
+impl Drop for Mapped {
+    fn drop(&mut self) {
+        if let Some((stop, releaser)) = self.releaser.take() {
+            drop(stop);
+            let _ = releaser.join();
+        }
+    }
+}
