@@ -18,11 +18,13 @@
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
 //! - [`cli`]: the command line; the only place that prints.
+//! - [`pages`]: where the analysis reads, for a program mapped from its file.
 
 pub mod cli;
 pub mod diagnostic;
 pub mod emit;
 pub mod lint;
+pub mod pages;
 pub mod rotation;
 pub mod semantic;
 pub mod span;

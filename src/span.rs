@@ -101,6 +101,7 @@ impl<'a> LineIndex<'a> {
 
     pub fn position(&self, offset: usize) -> Position {
         let offset = offset.min(self.source.len());
+        crate::pages::reading(&self.source[offset..]);
         let block = offset / BLOCK;
         let row = self.rows_before(block) + line_ends(self.source, block * BLOCK..offset);
         let before = &self.source[line_start(self.source, offset)..offset];

@@ -11,10 +11,16 @@
 //! since the last release, whatever the file's size: the whole-file passes
 //! stream through it at a few megabytes at a time.
 //!
+//! The timer alone cannot keep up with passes that read a line here and
+//! there, which map a whole page-cache folio at each: while the analysis of a
+//! mapped file runs, its reads (`pages::reading`) also give the pages back
+//! whenever they have moved [`FAR`] from where they last did.
+//!
 //! A file truncated by another program while it is mapped ends the process
 //! with SIGBUS, as in every program that maps files; only files of at least
 //! [`MAPPED_FROM`] bytes are mapped (an editor saves files far smaller).
 
+use std::cell::Cell;
 use std::fs::File;
 use std::ops::Deref;
 use std::sync::mpsc::{channel, RecvTimeoutError, Sender};
@@ -24,12 +30,17 @@ use std::time::Duration;
 
 use memmap2::{Advice, Mmap};
 
+use crate::pages;
+
 /// Files from this size on are mapped; smaller ones are read.
 pub const MAPPED_FROM: u64 = 4 << 20;
 
 /// How long pages stay mapped at most: at the scan's 0.5-1 GB/s, a few
 /// megabytes.
 const RELEASE_EVERY: Duration = Duration::from_millis(1);
+
+/// How far the reads move before the pages are given back: about a folio.
+const FAR: usize = 2 << 20;
 
 /// A file's bytes, mapped; its releaser thread stops when it is dropped.
 pub struct Mapped {
@@ -61,6 +72,22 @@ impl Mapped {
             map,
             releaser: Some((stop, releaser)),
         })
+    }
+}
+
+impl Mapped {
+    /// Until the guard is dropped, this thread's reads of the file give its
+    /// pages back whenever they have moved [`FAR`].
+    pub fn watch_reads(&self) -> pages::Watching {
+        let map = Arc::clone(&self.map);
+        let released_at = Cell::new(0);
+        pages::watch(Box::new(move |at| {
+            let offset = (at as usize).wrapping_sub(map.as_ptr() as usize);
+            if offset < map.len() && offset.abs_diff(released_at.get()) >= FAR {
+                released_at.set(offset);
+                release(&map);
+            }
+        }))
     }
 }
 

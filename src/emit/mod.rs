@@ -61,11 +61,21 @@ pub fn write_applied(
             debug_assert!(false, "overlapping edits at {:?}", edit.span);
             continue;
         }
-        out.write_all(&source[at..edit.span.start])?;
+        copy(&source[at..edit.span.start], out)?;
         out.write_all(&edit.text)?;
         at = edit.span.end;
     }
-    out.write_all(&source[at..])
+    copy(&source[at..], out)
+}
+
+/// Writes `bytes` a megabyte at a time, each said to be read
+/// ([`crate::pages`]): one write of a large part of a mapped program would
+/// bring all of it into memory at once.
+fn copy(bytes: &[u8], out: &mut (impl Write + ?Sized)) -> io::Result<()> {
+    bytes.chunks(1 << 20).try_for_each(|chunk| {
+        crate::pages::reading(chunk);
+        out.write_all(chunk)
+    })
 }
 
 #[cfg(test)]

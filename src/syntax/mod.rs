@@ -116,6 +116,7 @@ impl<'src> Lines<'src> {
             (last, start) if (strided..=index).contains(&last) => (last, start),
             _ => (strided, self.strided_starts[index / STRIDE]),
         };
+        crate::pages::reading(&self.source[start..]);
         while at < index {
             start = lines::line_from(self.source, start).full().end;
             at += 1;
