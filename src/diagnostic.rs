@@ -5,6 +5,8 @@
 //! that says how to fix it. Rendering (miette, short lines, JSON) lives in the
 //! CLI; nothing here prints.
 
+use std::borrow::Cow;
+
 use crate::span::Span;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
@@ -32,9 +34,11 @@ pub struct Diagnostic {
     pub severity: Severity,
     pub message: String,
     pub span: Span,
-    /// Short text shown under the span.
-    pub label: String,
-    pub help: Option<String>,
+    /// Short text shown under the span. Label and help are mostly fixed
+    /// texts, kept without a copy: a program can have hundreds of thousands
+    /// of findings, all held until they are sorted.
+    pub label: Cow<'static, str>,
+    pub help: Option<Cow<'static, str>>,
 }
 
 impl Diagnostic {
@@ -45,7 +49,7 @@ impl Diagnostic {
             severity,
             message: String::new(),
             span,
-            label: String::new(),
+            label: Cow::Borrowed(""),
             help: None,
         }
     }
@@ -55,12 +59,12 @@ impl Diagnostic {
         self
     }
 
-    pub fn label(mut self, label: impl Into<String>) -> Self {
+    pub fn label(mut self, label: impl Into<Cow<'static, str>>) -> Self {
         self.label = label.into();
         self
     }
 
-    pub fn help(mut self, help: impl Into<String>) -> Self {
+    pub fn help(mut self, help: impl Into<Cow<'static, str>>) -> Self {
         self.help = Some(help.into());
         self
     }

@@ -14,8 +14,11 @@
 
 use std::cell::RefCell;
 
+/// Told the address of each read.
+pub type Watcher = Box<dyn Fn(*const u8)>;
+
 thread_local! {
-    static WATCHER: RefCell<Option<Box<dyn Fn(*const u8)>>> = const { RefCell::new(None) };
+    static WATCHER: RefCell<Option<Watcher>> = const { RefCell::new(None) };
 }
 
 /// The analysis reads `bytes` next.
@@ -28,7 +31,7 @@ pub fn reading(bytes: &[u8]) {
 }
 
 /// Tells `watcher` where this thread reads, until the guard is dropped.
-pub fn watch(watcher: Box<dyn Fn(*const u8)>) -> Watching {
+pub fn watch(watcher: Watcher) -> Watching {
     WATCHER.with(|slot| *slot.borrow_mut() = Some(watcher));
     Watching(())
 }

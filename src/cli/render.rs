@@ -206,7 +206,7 @@ impl miette::Diagnostic for Shown<'_> {
         let start = self.window.offset(span.start);
         let len = self.window.offset(span.end) - start;
         Some(Box::new(std::iter::once(LabeledSpan::new(
-            Some(self.diagnostic.label.clone()),
+            Some(self.diagnostic.label.to_string()),
             start,
             len,
         ))))
