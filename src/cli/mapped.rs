@@ -2,19 +2,17 @@
 //! pages given back to the kernel as the analysis goes.
 //!
 //! `check` and `rewrite` read a program front to back several times (the
-//! line scan, the line index, the report), each pass touching every page
-//! once. Mapped, a page costs no copy and no zeroed memory of our own; and
-//! since the mapping is read-only and private, dropping its pages from our
-//! address space loses nothing: the next read of a dropped page maps it again
-//! from the page cache. A releaser thread drops them all every few
-//! milliseconds, so the memory a file holds is what the analysis touched
-//! since the last release, whatever the file's size: the whole-file passes
-//! stream through it at a few megabytes at a time.
-//!
-//! The timer alone cannot keep up with passes that read a line here and
-//! there, which map a whole page-cache folio at each: while the analysis of a
-//! mapped file runs, its reads (`pages::reading`) also give the pages back
-//! whenever they have moved [`FAR`] from where they last did.
+//! line scan, the line index, the report). Mapped, a page costs no copy and
+//! no zeroed memory of our own; and as the mapping is read-only, dropping its
+//! pages from our address space loses nothing: the next read of a dropped
+//! page maps it again from the page cache. Two things drop them:
+//! - a releaser thread, every millisecond: the passes that go front to back
+//!   stream through a few megabytes at a time;
+//! - the reads themselves, whenever they have moved [`FAR`] (`pages::reading`):
+//!   the kernel maps a whole page-cache folio (up to 2 MiB here) at the first
+//!   read of any byte in it, so passes that read a line here and there (the
+//!   CYCLE600 walk, the rewrite's edits) would map the whole file between
+//!   two ticks of the timer.
 //!
 //! A file truncated by another program while it is mapped ends the process
 //! with SIGBUS, as in every program that maps files; only files of at least
@@ -35,8 +33,7 @@ use crate::pages;
 /// Files from this size on are mapped; smaller ones are read.
 pub const MAPPED_FROM: u64 = 4 << 20;
 
-/// How long pages stay mapped at most: at the scan's 0.5-1 GB/s, a few
-/// megabytes.
+/// How long pages stay mapped at most, unless the reads give them back first.
 const RELEASE_EVERY: Duration = Duration::from_millis(1);
 
 /// How far the reads move before the pages are given back: about a folio.
@@ -51,10 +48,11 @@ pub struct Mapped {
 impl Mapped {
     pub fn new(file: &File) -> std::io::Result<Self> {
         // SAFETY: the mapping is read-only, and every read of it goes through
-        // `&[u8]`. Its bytes change only if another program writes the file
-        // while we read it (the same result as reading a file being written,
-        // a mix of old and new bytes, which the analysis, like any input,
-        // survives); truncation is the SIGBUS case the module documents.
+        // `&[u8]`. Its bytes change under us only if another program writes
+        // the file meanwhile: the report is then as unreliable as for any
+        // file read while it is written, and the offsets an earlier pass
+        // found stay within the mapping, whose length is fixed;
+        // truncation is the SIGBUS case the module documents.
         #[allow(unsafe_code)]
         let map = Arc::new(unsafe { Mmap::map(file)? });
         // Only a hint for read-ahead; a refusal changes nothing.
@@ -73,9 +71,7 @@ impl Mapped {
             releaser: Some((stop, releaser)),
         })
     }
-}
 
-impl Mapped {
     /// Until the guard is dropped, this thread's reads of the file give its
     /// pages back whenever they have moved [`FAR`].
     pub fn watch_reads(&self) -> pages::Watching {
@@ -93,10 +89,10 @@ impl Mapped {
 
 /// Drops every page of the mapping from the process's memory.
 fn release(map: &Mmap) {
-    // SAFETY: `DontNeed` on a private mapping discards the pages' private
-    // copies; there are none, as the mapping is read-only, so the next read
-    // of a page sees the file's bytes again, as before the release. Failure
-    // only leaves the pages mapped.
+    // SAFETY: `DontNeed` would discard changes made through a private
+    // mapping; this one is shared and read-only, so nothing was changed
+    // through it, and the next read of a page maps the file's page again, the
+    // same bytes as before the release. Failure only leaves the pages mapped.
     #[allow(unsafe_code)]
     let _ = unsafe { map.unchecked_advise(memmap2::UncheckedAdvice::DontNeed) };
 }
