@@ -82,9 +82,7 @@ impl<'a> LineIndex<'a> {
     }
 
     pub fn is_utf8(&self) -> bool {
-        *self
-            .utf8
-            .get_or_init(|| std::str::from_utf8(self.source).is_ok())
+        *self.utf8.get_or_init(|| is_utf8(self.source))
     }
 
     /// The line ends before `block`.
@@ -92,6 +90,9 @@ impl<'a> LineIndex<'a> {
         let mut rows = self.rows_before_block.borrow_mut();
         while rows.len() <= block {
             let start = (rows.len() - 1) * BLOCK;
+            if start % (256 * BLOCK) == 0 {
+                crate::pages::reading(&self.source[start..]);
+            }
             let end = (start + BLOCK).min(self.source.len());
             let row = rows[rows.len() - 1] + line_ends(self.source, start..end);
             rows.push(row);
@@ -117,6 +118,27 @@ impl<'a> LineIndex<'a> {
             column: column + 1,
         }
     }
+}
+
+/// Whether `bytes` are UTF-8, checked a megabyte at a time and each said to
+/// be read ([`crate::pages`]): at the check's speed a whole mapped program
+/// would be in memory at once.
+fn is_utf8(bytes: &[u8]) -> bool {
+    const STEP: usize = 1 << 20;
+    let mut rest = bytes;
+    while !rest.is_empty() {
+        let end = rest.len().min(STEP);
+        crate::pages::reading(&rest[..end]);
+        match std::str::from_utf8(&rest[..end]) {
+            Ok(_) => rest = &rest[end..],
+            // A character cut by the step's end: the next step starts at it.
+            Err(cut) if cut.error_len().is_none() && end < rest.len() => {
+                rest = &rest[cut.valid_up_to()..]
+            }
+            Err(_) => return false,
+        }
+    }
+    true
 }
 
 /// The line ends (LF, CRLF, lone CR; a CRLF counted at its LF) within `range`.
@@ -182,6 +204,22 @@ mod tests {
             let row = starts.iter().filter(|&&s| s <= offset).count();
             let column = offset - starts[row - 1] + 1;
             proptest::prop_assert_eq!(LineIndex::new(source).position(offset), Position { row, column });
+        }
+    }
+
+    #[test]
+    fn utf8_is_checked_across_the_steps() {
+        let step = 1 << 20;
+        for before in step - 3..=step {
+            let mut text = vec![b'a'; before];
+            text.extend_from_slice("\u{20ac}".as_bytes());
+            text.extend_from_slice(b"tail");
+            assert!(is_utf8(&text), "a 3-byte character at {before}");
+            let mut cut = text.clone();
+            cut.truncate(before + 2);
+            assert!(!is_utf8(&cut), "a cut character at {before}");
+            text[before + 1] = b'a';
+            assert!(!is_utf8(&text), "a broken character at {before}");
         }
     }
 

@@ -75,6 +75,8 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
             Some(Ok(checked)) => {
                 fails |= checked.fails;
                 match checked.report {
+                    // One file's report (the common case) is taken, not copied.
+                    Report::Text(part) if text.is_empty() => text = part,
                     Report::Text(part) => text.push_str(&part),
                     Report::Located(file) => located.push(file),
                 }
@@ -147,6 +149,10 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
     let fails = diagnostics.iter().any(|d| {
         d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
     });
+    if let Format::Json | Format::Sarif = args.format {
+        let report = Report::Located(Located::new(&file.name, &file.bytes, diagnostics));
+        return Ok(Checked { report, fails });
+    }
     let file_report = FileReport {
         name: &file.name,
         source: &file.bytes,
@@ -157,10 +163,7 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         Format::Short => short(&file_report, &mut text),
         Format::Github => github(&file_report, &mut text),
         Format::Human => human(&file_report, colour, &mut text),
-        Format::Json | Format::Sarif => {
-            let report = Report::Located(Located::new(&file_report));
-            return Ok(Checked { report, fails });
-        }
+        Format::Json | Format::Sarif => {}
     }
     Ok(Checked {
         report: Report::Text(text),

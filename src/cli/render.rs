@@ -247,16 +247,17 @@ pub struct Located {
 }
 
 impl Located {
-    pub fn new(report: &FileReport) -> Self {
-        let index = LineIndex::new(report.source);
+    /// Takes the diagnostics over (a program can have hundreds of thousands).
+    pub fn new(name: &str, source: &[u8], diagnostics: Vec<Diagnostic>) -> Self {
+        let index = LineIndex::new(source);
+        let positions = diagnostics
+            .iter()
+            .map(|d| (index.position(d.span.start), index.position(d.span.end)))
+            .collect();
         Self {
-            name: report.name.to_owned(),
-            diagnostics: report.diagnostics.to_vec(),
-            positions: report
-                .diagnostics
-                .iter()
-                .map(|d| (index.position(d.span.start), index.position(d.span.end)))
-                .collect(),
+            name: name.to_owned(),
+            diagnostics,
+            positions,
         }
     }
 
