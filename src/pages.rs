@@ -14,6 +14,10 @@
 
 use std::cell::RefCell;
 
+/// How much a pass that goes front to back reads between two calls of
+/// [`reading`].
+pub const STEP: usize = 1 << 20;
+
 /// Told the address of each read.
 pub type Watcher = Box<dyn Fn(*const u8)>;
 

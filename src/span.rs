@@ -90,7 +90,7 @@ impl<'a> LineIndex<'a> {
         let mut rows = self.rows_before_block.borrow_mut();
         while rows.len() <= block {
             let start = (rows.len() - 1) * BLOCK;
-            if start % (256 * BLOCK) == 0 {
+            if start % crate::pages::STEP == 0 {
                 crate::pages::reading(&self.source[start..]);
             }
             let end = (start + BLOCK).min(self.source.len());
@@ -124,10 +124,9 @@ impl<'a> LineIndex<'a> {
 /// be read ([`crate::pages`]): at the check's speed a whole mapped program
 /// would be in memory at once.
 fn is_utf8(bytes: &[u8]) -> bool {
-    const STEP: usize = 1 << 20;
     let mut rest = bytes;
     while !rest.is_empty() {
-        let end = rest.len().min(STEP);
+        let end = rest.len().min(crate::pages::STEP);
         crate::pages::reading(&rest[..end]);
         match std::str::from_utf8(&rest[..end]) {
             Ok(_) => rest = &rest[end..],
@@ -209,7 +208,7 @@ mod tests {
 
     #[test]
     fn utf8_is_checked_across_the_steps() {
-        let step = 1 << 20;
+        let step = crate::pages::STEP;
         for before in step - 3..=step {
             let mut text = vec![b'a'; before];
             text.extend_from_slice("\u{20ac}".as_bytes());

@@ -149,10 +149,6 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
     let fails = diagnostics.iter().any(|d| {
         d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
     });
-    if let Format::Json | Format::Sarif = args.format {
-        let report = Report::Located(Located::new(&file.name, &file.bytes, diagnostics));
-        return Ok(Checked { report, fails });
-    }
     let file_report = FileReport {
         name: &file.name,
         source: &file.bytes,
@@ -163,7 +159,10 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         Format::Short => short(&file_report, &mut text),
         Format::Github => github(&file_report, &mut text),
         Format::Human => human(&file_report, colour, &mut text),
-        Format::Json | Format::Sarif => {}
+        Format::Json | Format::Sarif => {
+            let report = Report::Located(Located::new(&file.name, &file.bytes, diagnostics));
+            return Ok(Checked { report, fails });
+        }
     }
     Ok(Checked {
         report: Report::Text(text),

@@ -72,7 +72,7 @@ pub fn write_applied(
 /// ([`crate::pages`]): one write of a large part of a mapped program would
 /// bring all of it into memory at once.
 fn copy(bytes: &[u8], out: &mut (impl Write + ?Sized)) -> io::Result<()> {
-    bytes.chunks(1 << 20).try_for_each(|chunk| {
+    bytes.chunks(crate::pages::STEP).try_for_each(|chunk| {
         crate::pages::reading(chunk);
         out.write_all(chunk)
     })
