@@ -66,19 +66,24 @@ fn a_hundred_thousand_nested_blocks_around_a_cycle600() {
         "IF R1>0\n".repeat(depth),
         "ENDIF\n".repeat(depth)
     );
-    survive("nested IF", source.as_bytes());
+    // The call is too deep to walk: reported, never passed over in silence.
+    assert!(survive("nested IF", source.as_bytes()).contains(&"C618"));
     let source = format!(
         "{}{CALL}{}M30\n",
         "WHILE R1>0\n".repeat(depth),
         "ENDWHILE\n".repeat(depth)
     );
-    survive("nested WHILE", source.as_bytes());
+    assert!(survive("nested WHILE", source.as_bytes()).contains(&"C618"));
     let source = format!(
         "R1=1\n{}{CALL}{}M30\n",
         "IF R1>0\n".repeat(depth),
         "ENDIF\n".repeat(depth)
     );
-    survive("nested known IF", source.as_bytes());
+    assert!(survive("nested known IF", source.as_bytes()).contains(&"C618"));
+    // `eval` lists it, and `rewrite --check` fails on it.
+    let eval = run(&["eval", "-"], source.as_bytes());
+    assert!(String::from_utf8_lossy(&eval.stdout).contains("CYCLE600"));
+    assert_exit(&run(&["rewrite", "--check", "-"], source.as_bytes()), 1);
 }
 
 #[test]
@@ -284,5 +289,29 @@ fn rewriting_regressions_again_changes_nothing() {
             let once = run(&source);
             assert!(run(&once) == once, "{}: not idempotent", path.display());
         }
+    }
+}
+
+/// The human format renders a finding far out on a long line (miette counts
+/// columns in 16 bits): an excerpt of the line, with its real column.
+#[test]
+fn a_finding_past_column_65535_renders() {
+    let mut source = format!("N10 X1 {}", "G1 ".repeat(30_000)).into_bytes();
+    source.extend_from_slice(b"IF (");
+    // The error is at the end of the line: "expected an expression".
+    let position = format!("1:{}", source.len() + 1);
+    source.extend_from_slice(b"\nM30\n");
+    for format in ["human", "short"] {
+        let output = run(&["check", "--format", format, "-"], &source);
+        assert_exit(&output, 1);
+        let text = String::from_utf8_lossy(&output.stdout);
+        assert!(text.contains(&position), "{format}: {text}");
+        assert!(text.len() < 4000, "{format}: the whole line shown");
+    }
+    for command in [&["rewrite", "-"][..], &["eval", "-"][..]] {
+        let mut call = source.clone();
+        call.extend_from_slice(CALL.as_bytes());
+        let output = run(command, &call);
+        assert!(output.status.code() != Some(101), "{command:?} panicked");
     }
 }

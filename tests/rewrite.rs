@@ -11,7 +11,8 @@ use support::{assert_exit, run};
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use sinuprep::emit::apply;
-use sinuprep::emit::cycle600::{rewrite, Options};
+use sinuprep::emit::cycle600::{rewrite, Form, Options};
+use sinuprep::semantic::value::Value;
 use sinuprep::semantic::{analyze, Heads, Supplied};
 use sinuprep::syntax::lines::raw_lines;
 use sinuprep::syntax::parse;
@@ -340,20 +341,40 @@ const SNIPPETS: &[&str] = &[
     "M30",
     "CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45,",
     "IF (",
+    // Frames of the program's own (spec section 8), and swivels around them.
+    "AROT Z=5",
+    "TRANS X10",
+    "TRANS",
+    "ATRANS Y=R1",
+    "$P_PFRAME=CTRANS(X,1)",
+    "TOFRAME",
+    "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 10, 0, 0, 0, 0, 0, 1, 57, 1, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 0, 0, 0, 0, 15, 0, 1, 57, 1, 1, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 27, 1, 2, 3, 5, 6, 7, 0, 0, 0, 1, 39, 1, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R4, 0, 0, 0, 0, 0, 1, 57, 1, 0, 0)",
+    "CYCLE600(0, \"UFK600\", 0, 39, 0, 0, 0, 0, R4, 0, 0, 0, 0, 1, 57, 1, 0, 0)",
 ];
 
 proptest::proptest! {
-    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1000))]
 
     #[test]
     fn random_programs_never_panic_and_rewrite_idempotently(
         picks in proptest::collection::vec(0..SNIPPETS.len(), 0..40),
         inline in proptest::bool::ANY,
+        form in proptest::sample::select(vec![Form::Cycle800, Form::Frames, Form::Traori]),
+        at_run_time in proptest::bool::ANY,
     ) {
         let source: String = picks.iter().map(|&i| format!("{}\n", SNIPPETS[i])).collect();
         let source = source.as_bytes();
         let heads = Heads::read("HEAD_DEF.SPF".into(), b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n");
-        let options = Options { inline_results: inline, ..Options::default() };
+        let options = Options {
+            inline_results: inline,
+            form,
+            runtime: at_run_time.then_some(None),
+            ..Options::default()
+        };
         let run = |bytes: &[u8]| {
             let analysis = analyze(bytes, &Supplied::default(), Some(&heads));
             apply(bytes, &rewrite(bytes, &analysis, &options).edits)
@@ -361,5 +382,31 @@ proptest::proptest! {
         let once = run(source);
         proptest::prop_assert_eq!(&run(&once), &once, "not idempotent");
         proptest::prop_assert!(parse(&once).diagnostics.len() <= parse(source).diagnostics.len());
+    }
+
+    /// A program rewritten where its values are known, and again once the
+    /// measured ones are supplied, ends as one rewrite with everything
+    /// supplied: the blocks emitted first count as the calls they replace.
+    #[test]
+    fn rewriting_in_two_steps_equals_one(
+        picks in proptest::collection::vec(0..SNIPPETS.len(), 0..40),
+        form in proptest::sample::select(vec![Form::Cycle800, Form::Frames, Form::Traori]),
+    ) {
+        let source: String = picks.iter().map(|&i| format!("{}\n", SNIPPETS[i])).collect();
+        let source = source.as_bytes();
+        let heads = Heads::read("HEAD_DEF.SPF".into(), b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n");
+        let options = Options { form, ..Options::default() };
+        let mut measured = Supplied::default();
+        measured.insert("R4".into(), Value::Number(12.5), "--set R4=12.5".into());
+        let run = |bytes: &[u8], supplied: &Supplied| {
+            let analysis = analyze(bytes, supplied, Some(&heads));
+            apply(bytes, &rewrite(bytes, &analysis, &options).edits)
+        };
+        let first = run(source, &Supplied::default());
+        let (in_two, in_one) = (run(&first, &measured), run(source, &measured));
+        proptest::prop_assert_eq!(
+            String::from_utf8_lossy(&in_two),
+            String::from_utf8_lossy(&in_one)
+        );
     }
 }

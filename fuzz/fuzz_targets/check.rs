@@ -1,9 +1,14 @@
 //! Linting never panics, every finding points inside the input, and the
-//! plain-line shortcut finds exactly what parsing every line finds.
+//! plain-line shortcut finds exactly what parsing every line finds; every
+//! finding renders in the human and short formats, also where the input's
+//! first line starts 70,000 columns further right (past miette's 16 bits).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
+use sinuprep::cli::render::{human, short, FileReport};
+use sinuprep::diagnostic::Diagnostic;
 use sinuprep::lint::{check, check_with, Selection};
+use sinuprep::span::Span;
 use sinuprep::semantic::{Heads, Supplied};
 use sinuprep::syntax::plain::PlainScanner;
 use sinuprep::syntax::program_kind;
@@ -34,4 +39,27 @@ fuzz_target!(|data: &[u8]| {
             finding.code
         );
     }
+    render(data, &findings);
+    const PAD: usize = 70_000;
+    let mut padded = vec![b' '; PAD];
+    padded.extend_from_slice(data);
+    let shifted: Vec<Diagnostic> = findings
+        .into_iter()
+        .map(|mut d| {
+            d.span = Span::new(d.span.start + PAD, d.span.end + PAD);
+            d
+        })
+        .collect();
+    render(&padded, &shifted);
 });
+
+fn render(source: &[u8], diagnostics: &[Diagnostic]) {
+    let report = FileReport {
+        name: "FUZZ.MPF",
+        source,
+        diagnostics,
+    };
+    let mut text = String::new();
+    human(&report, false, &mut text);
+    short(&report, &mut text);
+}

@@ -1,19 +1,27 @@
-//! Rewriting never panics; its output parses with no new syntax error;
-//! rewriting it again changes nothing; and every line of the input that does
-//! not mention CYCLE600 is still there, in order (lines as the tool splits
-//! them: LF, CRLF, or a lone CR).
+//! Rewriting never panics, in every form; its diagnostics render; its output
+//! parses with no new syntax error; rewriting it again changes nothing; and
+//! every line of the input that does not mention CYCLE600 is still there, in
+//! order (lines as the tool splits them: LF, CRLF, or a lone CR).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use sinuprep::emit::apply;
-use sinuprep::emit::cycle600::{rewrite, Options};
+use sinuprep::cli::render::{human, FileReport};
+use sinuprep::emit::cycle600::{rewrite, Form, Options};
 use sinuprep::semantic::{analyze, Heads, Supplied};
 use sinuprep::syntax::lines::raw_lines;
 use sinuprep::syntax::parse;
 
 fn run(source: &[u8], heads: &Heads, options: &Options) -> Vec<u8> {
     let analysis = analyze(source, &Supplied::default(), Some(heads));
-    apply(source, &rewrite(source, &analysis, options).edits)
+    let rewrite = rewrite(source, &analysis, options);
+    let report = FileReport {
+        name: "FUZZ.MPF",
+        source,
+        diagnostics: &rewrite.diagnostics,
+    };
+    human(&report, false, &mut String::new());
+    apply(source, &rewrite.edits)
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -21,14 +29,22 @@ fuzz_target!(|data: &[u8]| {
         "HEAD_DEF".into(),
         b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
     );
-    for options in [
-        Options::default(),
-        Options {
-            runtime: Some(None),
-            inline_results: true,
-            ..Options::default()
-        },
-    ] {
+    let forms = [Form::Cycle800, Form::Frames, Form::Traori];
+    let options = forms.into_iter().flat_map(|form| {
+        [
+            Options {
+                form,
+                ..Options::default()
+            },
+            Options {
+                form,
+                runtime: Some(None),
+                inline_results: true,
+                ..Options::default()
+            },
+        ]
+    });
+    for options in options {
         let once = run(data, &heads, &options);
         assert!(
             parse(&once).diagnostics.len() <= parse(data).diagnostics.len(),

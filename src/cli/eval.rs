@@ -164,7 +164,7 @@ fn table(
                 })
                 .collect();
             out.push_str(&format!("  results  {}\n", gud.join(" ")));
-            match code(evaluation, options, site.statement) {
+            match code(site, evaluation, options) {
                 Ok(blocks) => {
                     for (i, block) in blocks.iter().enumerate() {
                         out.push_str(&format!(
@@ -211,7 +211,7 @@ fn json(site: &CallSite, source: &[u8], options: &Options) -> serde_json::Value 
             "matrix": matrix,
             "additive_on_control": e.additive_on_control,
             "results": results,
-            "emits": code(e, options, site.statement).ok(),
+            "emits": code(site, e, options).ok(),
         })
     });
     serde_json::json!({

@@ -61,15 +61,28 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
 /// as text: a file that is not UTF-8 is read as Latin-1 (one byte, one
 /// character). Handing miette the whole file made it count lines from the
 /// start for every diagnostic, and copied the file twice.
+///
+/// Where those lines are long (a CAM block run together, a generated
+/// table), the window is an excerpt of the diagnostic's own line around
+/// where it starts, and the column miette prints is the line's real one:
+/// miette counts columns in 16 bits and panics past 65,535.
 struct Window {
     name: String,
     text: String,
     /// Where the window starts in the file, and on which line (0-based).
     start: usize,
     first_row: usize,
+    /// Columns of the line before the window (an excerpt starts inside it).
+    first_column: usize,
     latin1: bool,
     bytes: Vec<u8>,
 }
+
+/// Windows longer than this (in bytes) are cut to an excerpt of one line.
+const LONGEST_WINDOW: usize = 1000;
+/// How much of a long line an excerpt shows before and after the span's start.
+const EXCERPT_BEFORE: usize = 60;
+const EXCERPT_AFTER: usize = 240;
 
 impl Window {
     fn around(report: &FileReport, index: &LineIndex, span: Span) -> Self {
@@ -77,8 +90,18 @@ impl Window {
         let span_start = span.start.min(source.len());
         let span_end = span.end.clamp(span_start, source.len());
         let own_line = line_start(source, span_start);
-        let start = line_start(source, previous_line_end(source, own_line));
-        let end = line_end(source, next_line(source, line_end(source, span_end)));
+        let mut start = line_start(source, previous_line_end(source, own_line));
+        let mut end = line_end(source, next_line(source, line_end(source, span_end)));
+        let mut first_column = 0;
+        if end - start > LONGEST_WINDOW {
+            let own_end = line_end(source, span_start);
+            start = char_boundary(
+                source,
+                span_start.saturating_sub(EXCERPT_BEFORE).max(own_line),
+            );
+            end = char_boundary(source, (span_start + EXCERPT_AFTER).min(own_end));
+            first_column = index.position(start).column - 1;
+        }
         let bytes = &source[start..end];
         let (text, latin1) = match std::str::from_utf8(bytes) {
             // ASCII reads the same either way: only other text asks how the
@@ -91,6 +114,7 @@ impl Window {
             text,
             start,
             first_row: index.position(start).row - 1,
+            first_column,
             latin1,
             bytes: bytes.to_vec(),
         }
@@ -120,10 +144,21 @@ impl SourceCode for Window {
             inner.data(),
             *inner.span(),
             inner.line() + self.first_row,
-            inner.column(),
+            inner.column() + self.first_column,
             inner.line_count(),
         )))
     }
+}
+
+/// `at`, moved back to the start of the UTF-8 sequence it falls inside (a
+/// file read as Latin-1 has a character at every byte, and is cut anywhere).
+fn char_boundary(source: &[u8], mut at: usize) -> usize {
+    let mut back = 0;
+    while at > 0 && at < source.len() && source[at] & 0xC0 == 0x80 && back < 3 {
+        at -= 1;
+        back += 1;
+    }
+    at
 }
 
 /// Where the line holding `at` starts (a line ends at LF, CRLF or a lone CR).

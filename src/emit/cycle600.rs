@@ -11,6 +11,7 @@ use crate::emit::number::format;
 use crate::emit::{runtime, Edit};
 use crate::rotation::Kind;
 use crate::semantic::cycle600::{no_cycle800_form, Evaluation};
+use crate::semantic::frames::FrameSeen;
 use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
 use crate::span::Span;
@@ -78,7 +79,7 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
             .any(|d| d.severity == Severity::Error);
         if let (Some(evaluation), false) = (&site.evaluation, refused) {
             out.diagnostics.extend(site.diagnostics.iter().cloned());
-            match code(evaluation, options, site.statement) {
+            match code(site, evaluation, options) {
                 Ok(blocks) => {
                     out.edits.extend(edits(source, site, &blocks, options, eol));
                     out.rewritten += 1;
@@ -190,10 +191,11 @@ fn literal(value: &Value, precision: usize) -> String {
 
 /// The blocks that replace the call, first one in the call's place.
 pub fn code(
+    site: &CallSite,
     evaluation: &Evaluation,
     options: &Options,
-    span: Span,
 ) -> Result<Vec<String>, Diagnostic> {
+    let span = site.statement;
     let p = &evaluation.parameters;
     let n = |v: f64| format(v, options.precision);
     if p.recalculate_only {
@@ -231,6 +233,9 @@ pub fn code(
             )])
         }
         Form::Frames | Form::Traori => {
+            if let Some(seen) = &site.user_frame {
+                return Err(over_programmable_frame(options.form, seen, span));
+            }
             let mut blocks = Vec::new();
             if options.form == Form::Traori {
                 blocks.push("TRAORI".to_string());
@@ -288,4 +293,24 @@ fn edits(
         edits.push(Edit::insert(content.end, rest));
     }
     edits
+}
+
+/// C617: the frames and TRAORI forms set the programmable frame with
+/// `TRANS`, which would drop the program's own frame statement.
+fn over_programmable_frame(form: Form, seen: &FrameSeen, span: Span) -> Diagnostic {
+    let form = match form {
+        Form::Traori => "traori",
+        _ => "frames",
+    };
+    Diagnostic::new(
+        "C617",
+        "cycle600-frames-over-programmable-frame",
+        Severity::Error,
+        span,
+    )
+    .message(format!(
+        "the {form} form replaces the programmable frame with TRANS, and {seen} is active in it"
+    ))
+    .label("would drop the programmable frame")
+    .help("rewrite with --emit cycle800 (CYCLE800 keeps the programmable frame), or clear the frame (TRANS) before the call")
 }

@@ -368,6 +368,16 @@ pub fn shares_block(after: Span) -> Diagnostic {
         .help("move them to a block of their own: a cycle call stands alone in its block")
 }
 
+/// C618: a call inside blocks nested deeper than the walk follows.
+pub fn nested_too_deep(call: Span, limit: usize) -> Diagnostic {
+    diagnostic("C618", "cycle600-nested-too-deep", Severity::Error, call)
+        .message(format!(
+            "this CYCLE600 is inside {limit} or more nested blocks, deeper than the walk follows: it is not evaluated"
+        ))
+        .label("not evaluated")
+        .help("take the call out of some of the nested IF/WHILE/FOR/LOOP/REPEAT blocks")
+}
+
 fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
     match why {
         Unknown::Invalid(reason) => diagnostic(

@@ -6,6 +6,7 @@ use std::collections::HashMap;
 use nalgebra::Rotation3;
 
 use crate::semantic::eval::Lookup;
+use crate::semantic::frames::FrameSeen;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 
 /// Values the user supplies for measured variables (`--set`, `--values`).
@@ -63,6 +64,12 @@ pub struct Env {
     /// Set after a subprogram call that may have written any R parameter.
     r_clobbered: Option<Origin>,
     pub active: Active,
+    /// A frame statement of the program's own since the last swivel: the
+    /// rotation an additive call adds to is unknown (spec section 8).
+    pub frame_since_swivel: Option<FrameSeen>,
+    /// A frame statement of the program's own active in the programmable
+    /// frame, which the frames and TRAORI forms would replace.
+    pub user_frame: Option<FrameSeen>,
 }
 
 impl Default for Env {
@@ -73,6 +80,8 @@ impl Default for Env {
             measured_arrays: HashMap::new(),
             r_clobbered: None,
             active: Active::None,
+            frame_since_swivel: None,
+            user_frame: None,
         }
     }
 }
@@ -163,6 +172,12 @@ impl Env {
         }
         if self.r_clobbered.is_none() {
             self.r_clobbered = other.r_clobbered;
+        }
+        if self.frame_since_swivel.is_none() {
+            self.frame_since_swivel = other.frame_since_swivel;
+        }
+        if self.user_frame.is_none() {
+            self.user_frame = other.user_frame;
         }
         if self.active != other.active {
             self.active = Active::Unknown {

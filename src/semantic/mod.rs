@@ -8,6 +8,7 @@
 pub mod cycle600;
 pub mod env;
 pub mod eval;
+pub mod frames;
 pub mod head_def;
 pub mod value;
 pub mod walk;

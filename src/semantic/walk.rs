@@ -19,6 +19,7 @@ use crate::rotation::{self, Kind, Sequence};
 use crate::semantic::cycle600::{self, Bound, Evaluation};
 use crate::semantic::env::{Active, Env, Supplied};
 use crate::semantic::eval::{evaluate, key, variable_key};
+use crate::semantic::frames::{self, FrameEffect, FrameSeen};
 use crate::semantic::head_def::Heads;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
@@ -41,8 +42,12 @@ pub struct CallSite {
     pub statement: Span,
     pub bound: Option<Bound>,
     pub evaluation: Option<Evaluation>,
-    /// The rotation active when the walk reached the call.
+    /// The rotation active when the walk reached the call, as an additive
+    /// call adds to it (unknown after a frame statement of the program's own).
     pub active: Active,
+    /// A frame statement of the program's own in the programmable frame at
+    /// the call: the frames and TRAORI forms would replace it.
+    pub user_frame: Option<FrameSeen>,
     /// For a call whose angles or translations are known only at run time:
     /// everything else, for computing it on the control.
     pub runtime: Option<cycle600::RuntimeParameters>,
@@ -107,6 +112,8 @@ fn run_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> (Anal
             depth: 0,
             modes: &modes,
             assumed: HashSet::new(),
+            replayed: Vec::new(),
+            too_deep: HashSet::new(),
         };
         let mut env = Env::default();
         walker.walk(0, lines.len(), &mut env);
@@ -114,6 +121,7 @@ fn run_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> (Anal
             .analysis
             .calls
             .iter()
+            .chain(&walker.replayed)
             .filter(|c| walker.assumed.contains(&c.line))
             .filter_map(|c| Some((c.line, c.mode()?)))
             .collect();
@@ -154,6 +162,8 @@ struct Written {
     rotation: bool,
     /// Lines of CYCLE600 calls: they swivel or write their results.
     cycle600_lines: Vec<usize>,
+    /// A frame statement of the program's own is there.
+    frames: bool,
 }
 
 struct Walker<'a> {
@@ -172,10 +182,15 @@ struct Walker<'a> {
     modes: &'a HashMap<usize, Mode>,
     /// CYCLE600 lines a forget had to assume both things of.
     assumed: HashSet<usize>,
+    /// The calls kept in `; sinuprep:` lines, as the walk met them.
+    replayed: Vec<CallSite>,
+    /// Lines of calls reported as nested too deep.
+    too_deep: HashSet<usize>,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
-/// becomes unknown, and CYCLE600 calls inside them stay as they are.
+/// becomes unknown, and CYCLE600 calls inside them stay as they are, each
+/// with an error (C618).
 pub const MAX_NESTING: usize = 512;
 
 enum Control<'a> {
@@ -199,6 +214,9 @@ impl<'a> Walker<'a> {
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
         if self.depth >= MAX_NESTING {
             let written = self.written(start, end);
+            for &line in &written.cycle600_lines {
+                self.too_deep(line, env);
+            }
             self.forget(
                 &written,
                 env,
@@ -218,6 +236,9 @@ impl<'a> Walker<'a> {
         let mut pc = start;
         while pc < end {
             self.enter(pc, env);
+            if let Some(statement) = self.structure.marked.get(&pc) {
+                self.replay(pc, statement, env);
+            }
             // Motion blocks change nothing the walk tracks: no need to parse them.
             if self.lines.is_plain(pc) {
                 pc += 1;
@@ -445,10 +466,29 @@ impl<'a> Walker<'a> {
                 why: origin.to_string(),
             };
         }
+        if written.frames {
+            let seen = FrameSeen::Region(origin.to_string());
+            env.user_frame.get_or_insert_with(|| seen.clone());
+            env.frame_since_swivel.get_or_insert(seen);
+        }
     }
 
     fn visit(&mut self, pc: usize, block: &Block, env: &mut Env) {
         let line = pc + 1;
+        if !self.structure.emitted.contains(&pc) {
+            if let Some(effect) = frames::frame_effect(self.source, block) {
+                let seen = FrameSeen::Statement {
+                    text: frames::statements_text(self.source, block),
+                    line,
+                };
+                match effect {
+                    FrameEffect::ClearsProgrammable => env.user_frame = None,
+                    FrameEffect::SetsProgrammable => env.user_frame = Some(seen.clone()),
+                    FrameEffect::SetsOther => {}
+                }
+                env.frame_since_swivel = Some(seen);
+            }
+        }
         for statement in &block.statements {
             self.record_result_reads(statement, env);
             match &statement.kind {
@@ -580,7 +620,13 @@ impl<'a> Walker<'a> {
         let line = pc + 1;
         match (call_kind(name), call) {
             (CallKind::Cycle600, Some(call)) => self.cycle600(pc, statement, call, env),
-            (CallKind::Cycle800, Some(call)) => env.active = self.cycle800(call, env, line),
+            // sinuprep's own CYCLE800 for a CYCLE600 stands for that call,
+            // which the walk took from the `; sinuprep:` line above it.
+            (CallKind::Cycle800, Some(_)) if self.structure.emitted.contains(&pc) => {}
+            (CallKind::Cycle800, Some(call)) => {
+                env.active = self.cycle800(call, env, line);
+                env.frame_since_swivel = None;
+            }
             (CallKind::Measuring, _) => env.measure_arrays(line, name),
             (CallKind::Subprogram, _) => env.clobber_r_parameters(Origin::ControlFlow {
                 line,
@@ -591,14 +637,72 @@ impl<'a> Walker<'a> {
     }
 
     fn cycle600(&mut self, pc: usize, statement: &Statement, call: &Call, env: &mut Env) {
+        let site = self.evaluate_call(pc, statement, call, env);
+        self.analysis.calls.push(site);
+    }
+
+    /// A call in blocks nested deeper than [`MAX_NESTING`]: reported, once,
+    /// and left as it is.
+    fn too_deep(&mut self, pc: usize, env: &Env) {
+        if !self.too_deep.insert(pc) {
+            return;
+        }
+        let Some(block) = self.block(pc) else { return };
+        for statement in &block.statements {
+            let StatementKind::Call(call) = &statement.kind else {
+                continue;
+            };
+            if call_kind(&upper(call.name.text(self.source))) != CallKind::Cycle600 {
+                continue;
+            }
+            self.analysis.calls.push(CallSite {
+                line: pc,
+                content: self.lines.raw(pc).content,
+                statement: statement.span,
+                bound: None,
+                evaluation: None,
+                active: env.active.clone(),
+                user_frame: env.user_frame.clone(),
+                runtime: None,
+                needs_stopre: false,
+                diagnostics: vec![cycle600::nested_too_deep(statement.span, MAX_NESTING)],
+            });
+        }
+    }
+
+    /// The CYCLE600 kept in a `; sinuprep:` line stands for the blocks
+    /// sinuprep emitted below it: the walk takes it as the call, and the
+    /// emitted blocks as its own, not the program's.
+    fn replay(&mut self, pc: usize, statement: &Statement, env: &mut Env) {
+        if let StatementKind::Call(call) = &statement.kind {
+            let site = self.evaluate_call(pc, statement, call, env);
+            self.replayed.push(site);
+        }
+    }
+
+    /// Binds and evaluates the call, and steps `env` past it.
+    fn evaluate_call(
+        &mut self,
+        pc: usize,
+        statement: &Statement,
+        call: &Call,
+        env: &mut Env,
+    ) -> CallSite {
         let line = pc + 1;
+        let active = match &env.frame_since_swivel {
+            Some(seen) => Active::Unknown {
+                why: format!("{seen} stands between the last swivel and this call"),
+            },
+            None => env.active.clone(),
+        };
         let mut site = CallSite {
             line: pc,
             content: self.lines.raw(pc).content,
             statement: statement.span,
             bound: None,
             evaluation: None,
-            active: env.active.clone(),
+            active,
+            user_frame: env.user_frame.clone(),
             runtime: None,
             needs_stopre: false,
             diagnostics: Vec::new(),
@@ -623,7 +727,7 @@ impl<'a> Walker<'a> {
                 site.diagnostics.extend(problems);
                 site.bound = Some(bound);
                 if let Some(parameters) = parameters {
-                    match cycle600::evaluate_parameters(parameters, &env.active, statement.span) {
+                    match cycle600::evaluate_parameters(parameters, &site.active, statement.span) {
                         Ok((evaluation, warnings)) => {
                             site.diagnostics.extend(warnings);
                             site.evaluation = Some(evaluation);
@@ -634,8 +738,11 @@ impl<'a> Walker<'a> {
             }
         }
         self.results(&site, env);
-        env.active = self.rotation_after(&site, env);
-        self.analysis.calls.push(site);
+        if site.mode() != Some(Mode::Recalculate) {
+            env.active = self.rotation_after(&site);
+            env.frame_since_swivel = None;
+        }
+        site
     }
 
     /// What the call leaves in `_CYC600_1..6`. The spec documents them as the
@@ -681,14 +788,10 @@ impl<'a> Walker<'a> {
         }
     }
 
-    /// The rotation active after the call.
-    fn rotation_after(&self, site: &CallSite, env: &Env) -> Active {
+    /// The rotation active after a call that may swivel (one that only
+    /// recalculates never does, even when its results are unknown).
+    fn rotation_after(&self, site: &CallSite) -> Active {
         let line = site.line + 1;
-        // A call that only recalculates never swivels, even when its results
-        // are unknown.
-        if site.mode() == Some(Mode::Recalculate) {
-            return env.active.clone();
-        }
         match &site.evaluation {
             Some(evaluation) if !evaluation.additive_on_control => Active::Known {
                 rotation: evaluation.target,
@@ -703,7 +806,7 @@ impl<'a> Walker<'a> {
                 .runtime
                 .as_ref()
                 .and_then(|runtime| runtime.rotation_parameters())
-                .and_then(|p| cycle600::evaluate_parameters(p, &env.active, site.statement).ok())
+                .and_then(|p| cycle600::evaluate_parameters(p, &site.active, site.statement).ok())
                 .filter(|(evaluation, _)| !evaluation.additive_on_control)
                 .map_or_else(
                     || Active::Unknown {
@@ -806,9 +909,13 @@ impl<'a> Walker<'a> {
 }
 
 /// What one block may write: variables, arrays a measuring cycle fills, R
-/// parameters a subprogram may change, the swivel rotation.
-fn block_writes(source: &[u8], block: &Block, line: usize) -> Written {
-    let mut written = Written::default();
+/// parameters a subprogram may change, the swivel rotation, frames (not
+/// those of a block sinuprep `emitted`).
+fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Written {
+    let mut written = Written {
+        frames: !emitted && frames::frame_effect(source, block).is_some(),
+        ..Written::default()
+    };
     for statement in &block.statements {
         match &statement.kind {
             StatementKind::Assign(assign) => {
@@ -1048,6 +1155,10 @@ struct Structure {
     stopre_lines: Vec<usize>,
     /// What each line that writes anything writes, in line order.
     writes: Vec<(usize, Written)>,
+    /// `; sinuprep:` lines -> the CYCLE600 call they keep.
+    marked: HashMap<usize, Statement>,
+    /// Lines sinuprep emitted with frames or CYCLE800 for a marked call.
+    emitted: HashSet<usize>,
 }
 
 #[derive(PartialEq)]
@@ -1070,11 +1181,22 @@ impl Structure {
             loop_starts: HashMap::new(),
             stopre_lines: Vec::new(),
             writes: Vec::new(),
+            marked: HashMap::new(),
+            emitted: HashSet::new(),
         };
+        structure.find_emitted(lines);
         let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
         // Jumps, resolved once every label is known.
         let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
         for line in 0..lines.len() {
+            if structure.marked.contains_key(&line) {
+                // The call it keeps may swivel or recalculate, as it did.
+                let call = Written {
+                    cycle600_lines: vec![line],
+                    ..Written::default()
+                };
+                structure.writes.push((line, call));
+            }
             if lines.is_plain(line) {
                 continue;
             }
@@ -1082,8 +1204,12 @@ impl Structure {
                 continue;
             };
             let block = &block;
-            let writes = block_writes(source, block, line);
-            if !writes.names.is_empty() || writes.rotation || !writes.cycle600_lines.is_empty() {
+            let writes = block_writes(source, block, line, structure.emitted.contains(&line));
+            if !writes.names.is_empty()
+                || writes.rotation
+                || writes.frames
+                || !writes.cycle600_lines.is_empty()
+            {
                 structure.writes.push((line, writes));
             }
             for statement in &block.statements {
@@ -1177,6 +1303,33 @@ impl Structure {
             }
         }
         structure
+    }
+
+    /// The `; sinuprep:` lines and the blocks emitted below them. A program
+    /// sinuprep never rewrote has none: one search of the bytes says so.
+    fn find_emitted(&mut self, lines: &Lines) {
+        let source = lines.source;
+        if memchr::memmem::find(source, frames::MARKER).is_none() {
+            return;
+        }
+        for line in 0..lines.len() {
+            let Some(statement) = frames::marked_call(source, lines.raw(line).content) else {
+                continue;
+            };
+            let block = |offset: usize| {
+                let at = line + 1 + offset;
+                if at >= lines.len() {
+                    return None;
+                }
+                match lines.parse(at).kind {
+                    LineKind::Block(block) => Some(block),
+                    _ => None,
+                }
+            };
+            let count = frames::emitted_blocks(source, block);
+            self.emitted.extend(line + 1..line + 1 + count);
+            self.marked.insert(line, statement);
+        }
     }
 
     /// The line a jump from `from` lands on, searching as its kind says.

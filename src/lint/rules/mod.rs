@@ -7,9 +7,11 @@ pub mod cycle600_additive_extrinsic_unknown_active;
 pub mod cycle600_argument_count;
 pub mod cycle600_computed_at_run_time;
 pub mod cycle600_flag_not_boolean;
+pub mod cycle600_frames_over_programmable_frame;
 pub mod cycle600_gimbal_lock;
 pub mod cycle600_invalid_argument;
 pub mod cycle600_invalid_sequence_code;
+pub mod cycle600_nested_too_deep;
 pub mod cycle600_no_cycle800_form;
 pub mod cycle600_reserved_not_zero;
 pub mod cycle600_results_without_stopre;
@@ -217,6 +219,14 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &cycle600_shares_block::RULE,
+            checker: None,
+        },
+        Rule {
+            info: &cycle600_frames_over_programmable_frame::RULE,
+            checker: None,
+        },
+        Rule {
+            info: &cycle600_nested_too_deep::RULE,
             checker: None,
         },
     ];
