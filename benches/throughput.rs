@@ -131,7 +131,7 @@ fn cam_program(size: usize, every: usize) -> Vec<u8> {
     let mut n = 50u64;
     while out.len() < size {
         n += 10;
-        let feed = if n % 970 == 0 { " F2000." } else { "" };
+        let feed = if n.is_multiple_of(970) { " F2000." } else { "" };
         let line = format!(
             "N{n} G1 X{:.3} Y{:.3} Z{:.3} B{:.3} C{:.3}{feed}\n",
             next() - 500.0,
@@ -141,7 +141,7 @@ fn cam_program(size: usize, every: usize) -> Vec<u8> {
             next() / 2.7 - 180.0
         );
         out.extend_from_slice(line.as_bytes());
-        if every != 0 && n % (every as u64 * 10) == 0 {
+        if every != 0 && n.is_multiple_of(every as u64 * 10) {
             out.extend_from_slice(b"CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 1.5, -0.5, 30, 0, 0, 0, 1, 39, 0, 0, 0)\n");
         }
     }
@@ -161,7 +161,7 @@ fn replicated_corpus(root: &Path, size: usize) -> Vec<u8> {
             let path = entry.path();
             if path.is_dir() {
                 stack.push(path);
-            } else if path.extension().map_or(true, |e| e != "md") {
+            } else if path.extension().is_none_or(|e| e != "md") {
                 files.extend(std::fs::read(&path));
             }
         }

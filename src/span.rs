@@ -90,7 +90,7 @@ impl<'a> LineIndex<'a> {
         let mut rows = self.rows_before_block.borrow_mut();
         while rows.len() <= block {
             let start = (rows.len() - 1) * BLOCK;
-            if start % crate::pages::STEP == 0 {
+            if start.is_multiple_of(crate::pages::STEP) {
                 crate::pages::reading(&self.source[start..]);
             }
             let end = (start + BLOCK).min(self.source.len());

@@ -168,7 +168,7 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
     let path = dir.join("BIG.MPF");
     let rewrite = || {
         std::process::Command::new(env!("CARGO_BIN_EXE_sinuprep"))
-            .args(["rewrite", "--in-place", "--no-backup", "--heads"])
+            .args(["rewrite", "--in-place", "--heads"])
             .arg(&heads)
             .arg(&path)
             .stdout(std::process::Stdio::null())
@@ -183,8 +183,19 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
     assert!(rewrite().wait().expect("ends").success());
     let whole = started.elapsed();
     let (mut untouched, mut replaced) = (0, 0);
+    let backup = dir.join("BIG.MPF.bak");
+    let temporaries = || {
+        std::fs::read_dir(&dir)
+            .expect("dir")
+            .filter(|e| {
+                e.as_ref()
+                    .is_ok_and(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+            })
+            .count()
+    };
     for percent in [2u32, 25, 50, 75, 90, 100, 110, 200, 300] {
         std::fs::write(&path, &original).expect("write");
+        let _ = std::fs::remove_file(&backup);
         let mut child = rewrite();
         std::thread::sleep(whole * percent / 100);
         let _ = child.kill();
@@ -194,6 +205,15 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
             && now.ends_with(b"M30\n")
             && now.len() > original.len();
         assert!(now == original || rewritten, "killed at {percent}%: the file is neither the original nor the whole rewrite ({} bytes)", now.len());
+        // The backup is written (atomically) before the rewrite: absent, or
+        // the whole original, and always there once the file is rewritten.
+        match std::fs::read(&backup) {
+            Ok(bak) => assert!(bak == original, "killed at {percent}%: a partial backup"),
+            Err(_) => assert!(
+                now == original,
+                "killed at {percent}%: rewritten without a backup"
+            ),
+        }
         if now == original {
             untouched += 1
         } else {
@@ -201,6 +221,10 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
         }
     }
     eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite");
+    // A later run removes what killed runs left.
+    std::fs::write(&path, &original).expect("write");
+    assert!(rewrite().wait().expect("ends").success());
+    assert_eq!(temporaries(), 0, "temporary files left after a whole run");
     // The early kills cannot have finished, the late ones must have: the test
     // saw both sides of the write.
     assert!(

@@ -54,6 +54,13 @@ pub enum CliError {
         why: String,
     },
 
+    #[error("{path} cannot be rewritten in place: {why}")]
+    #[diagnostic(
+        code(sinuprep::in_place),
+        help("--in-place replaces a regular file; to rewrite a stream, give -o FILE or read the output from stdout")
+    )]
+    NotInPlace { path: PathBuf, why: String },
+
     #[error("cannot write {path}: {source}")]
     #[diagnostic(code(sinuprep::write), help("check that the directory is writable and the disk not full; the original file is unchanged"))]
     WriteFile {

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
 use crate::cli::mapped::{Mapped, MAPPED_FROM};
+use std::collections::HashSet;
 
 /// A program's name for reports, and its bytes.
 pub struct SourceFile {
@@ -43,19 +44,41 @@ impl Deref for Bytes {
 
 /// Expands the command-line paths: a directory yields its `.mpf`/`.spf` files
 /// (any case, recursively, sorted); a file is taken whatever its extension.
+/// Every file and directory is taken once, by its device and inode, so
+/// symlinks that loop (`a -> .`, `up -> ..`) or name a file twice do not
+/// repeat it.
 pub fn expand(paths: &[PathBuf]) -> Vec<Result<PathBuf, CliError>> {
     let mut out = Vec::new();
+    let mut seen = HashSet::new();
     for path in paths {
         if path.is_dir() {
-            walk(path, &mut out);
-        } else {
+            walk(path, &mut seen, &mut out);
+        } else if first_time(path, &mut seen) {
             out.push(Ok(path.clone()));
         }
     }
     out
 }
 
-fn walk(dir: &Path, out: &mut Vec<Result<PathBuf, CliError>>) {
+/// Whether `path` has not been met before (a path that cannot be read is
+/// taken, to be reported when it is read).
+fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
+    match std::fs::metadata(path) {
+        Ok(metadata) => seen.insert(identity(&metadata)),
+        Err(_) => true,
+    }
+}
+
+/// A file's identity: device and inode.
+pub fn identity(metadata: &std::fs::Metadata) -> (u64, u64) {
+    use std::os::unix::fs::MetadataExt;
+    (metadata.dev(), metadata.ino())
+}
+
+fn walk(dir: &Path, seen: &mut HashSet<(u64, u64)>, out: &mut Vec<Result<PathBuf, CliError>>) {
+    if !first_time(dir, seen) {
+        return;
+    }
     let entries = match std::fs::read_dir(dir) {
         Ok(entries) => entries,
         Err(source) => {
@@ -69,8 +92,8 @@ fn walk(dir: &Path, out: &mut Vec<Result<PathBuf, CliError>>) {
     paths.sort();
     for path in paths {
         if path.is_dir() {
-            walk(&path, out);
-        } else if is_program(&path) {
+            walk(&path, seen, out);
+        } else if is_program(&path) && first_time(&path, seen) {
             out.push(Ok(path));
         }
     }

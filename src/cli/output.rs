@@ -1,60 +1,131 @@
 //! Writing files so that an interrupted run never leaves a partial one.
+//!
+//! Every file is written into a temporary file beside it (a random name,
+//! created exclusively, readable by its owner only, locked while the run
+//! lives), synced, given the original's owner, group and mode, and renamed
+//! over it. A run that was killed leaves its temporary file unlocked; the
+//! next run that writes beside it removes it. A rename replaces the
+//! directory entry: a file that has other hard links keeps its old bytes
+//! under them. Unix only, as is the mapping of large programs.
 
-use std::fs::{self, OpenOptions};
+use std::fs::{self, File, Metadata, OpenOptions};
+use std::hash::{BuildHasher, Hasher};
 use std::io::Write;
+use std::os::unix::fs::{fchown, FileTypeExt, MetadataExt, OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
+use crate::cli::input::identity;
 
-/// Writes the file with `write` into a temporary file beside `path`, syncs
-/// it, keeps the original's permissions, optionally copies the original to
-/// `<path>.bak`, and renames the temporary file over `path`. On any failure
-/// `path` is untouched.
+/// The regular file an in-place rewrite of `path` replaces: the file a
+/// symlink points to (the link stays). Standard input, FIFOs, devices and
+/// directories are refused, before anything is read.
+pub fn in_place_target(path: &Path) -> Result<PathBuf, CliError> {
+    let refuse = |why: &str| CliError::NotInPlace {
+        path: path.to_path_buf(),
+        why: why.to_string(),
+    };
+    if path == Path::new("-") {
+        return Err(refuse("standard input has no file to rewrite"));
+    }
+    let target = fs::canonicalize(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let metadata = fs::metadata(&target).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    if !metadata.is_file() {
+        return Err(refuse(&format!(
+            "it is {}, not a regular file",
+            kind(&metadata)
+        )));
+    }
+    Ok(target)
+}
+
+/// Whether `output` names the same file as `input` (through links).
+pub fn same_file(input: &Path, output: &Path) -> bool {
+    match (fs::metadata(input), fs::metadata(output)) {
+        (Ok(a), Ok(b)) => identity(&a) == identity(&b),
+        _ => false,
+    }
+}
+
+/// Writes `path` with `write`: atomically where `path` is a regular file or
+/// does not exist yet, and straight into it where it is something else (a
+/// device such as `/dev/stdout`, a FIFO). With `backup`, those bytes go to
+/// `<path>.bak` first, atomically as well. On any failure `path` and its
+/// backup are untouched, and no temporary file is left.
 pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-    backup: bool,
+    backup: Option<&[u8]>,
 ) -> Result<(), CliError> {
     let fail = |source: std::io::Error| CliError::WriteFile {
         path: path.to_path_buf(),
         source,
     };
-    let dir = match path.parent() {
+    // A symlink is written through: the file it points to is replaced.
+    let target = fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let existing = fs::metadata(&target).ok();
+    if let Some(metadata) = existing.as_ref().filter(|m| !m.is_file()) {
+        if metadata.is_dir() {
+            return Err(fail(std::io::Error::other("it is a directory")));
+        }
+        let mut file = OpenOptions::new().write(true).open(&target).map_err(fail)?;
+        return write_buffered(&mut file, write).map_err(fail);
+    }
+    if existing
+        .as_ref()
+        .is_some_and(|m| m.permissions().readonly())
+    {
+        return Err(fail(std::io::Error::new(
+            std::io::ErrorKind::PermissionDenied,
+            "the file is read-only",
+        )));
+    }
+    if let Some(original) = backup {
+        let mut bak = target.as_os_str().to_owned();
+        bak.push(".bak");
+        let bak = PathBuf::from(bak);
+        replace(&bak, |out| out.write_all(original), existing.as_ref()).map_err(|source| {
+            CliError::WriteFile {
+                path: bak.clone(),
+                source,
+            }
+        })?;
+    }
+    replace(&target, write, existing.as_ref()).map_err(fail)
+}
+
+/// Writes a temporary file beside `target` and renames it over `target`,
+/// with the owner, group and mode of `like` (the file replaced).
+fn replace(
+    target: &Path,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    like: Option<&Metadata>,
+) -> std::io::Result<()> {
+    let dir = match target.parent() {
         Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    let name = path
+    let name = target
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let temporary = dir.join(format!(".{name}.sinuprep-{}.tmp", std::process::id()));
+    remove_stale_temporaries(&dir, &name);
+    let (mut file, temporary) = create_temporary(&dir, &name, like.is_some())?;
     let result = (|| {
-        let mut file = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&temporary)?;
-        let mut buffered = std::io::BufWriter::new(&mut file);
-        write(&mut buffered)?;
-        buffered.flush()?;
-        drop(buffered);
+        write_buffered(&mut file, write)?;
         file.sync_all()?;
-        if let Ok(metadata) = fs::metadata(path) {
-            fs::set_permissions(&temporary, metadata.permissions())?;
-            if metadata.permissions().readonly() {
-                return Err(std::io::Error::new(
-                    std::io::ErrorKind::PermissionDenied,
-                    "the file is read-only",
-                ));
-            }
-            if backup {
-                let mut bak = path.as_os_str().to_owned();
-                bak.push(".bak");
-                fs::copy(path, PathBuf::from(bak))?;
-            }
+        if let Some(like) = like {
+            keep_owner_and_mode(&file, like)?;
         }
-        fs::rename(&temporary, path)?;
+        fs::rename(&temporary, target)?;
         // The rename is durable once the directory is synced.
-        if let Ok(dir) = fs::File::open(&dir) {
+        if let Ok(dir) = File::open(&dir) {
             let _ = dir.sync_all();
         }
         Ok(())
@@ -62,5 +133,128 @@ pub fn write_atomically(
     if result.is_err() {
         let _ = fs::remove_file(&temporary);
     }
-    result.map_err(fail)
+    result
+}
+
+fn write_buffered(
+    file: &mut File,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    let mut buffered = std::io::BufWriter::new(file);
+    write(&mut buffered)?;
+    buffered.flush()
+}
+
+/// What the temporary files for `name` are called: `.NAME.sinuprep-*.tmp`.
+fn temporary_prefix(name: &str) -> String {
+    format!(".{name}.sinuprep-")
+}
+
+const TEMPORARY_SUFFIX: &str = ".tmp";
+
+/// A new temporary file beside the target, under a name nobody can guess,
+/// created exclusively, and locked for as long as this run holds it. Where
+/// it replaces a file it starts readable by its owner only, and is given the
+/// file's mode once written; a new file gets the usual mode (0666 less the
+/// umask).
+fn create_temporary(dir: &Path, name: &str, private: bool) -> std::io::Result<(File, PathBuf)> {
+    let prefix = temporary_prefix(name);
+    for _ in 0..64 {
+        let path = dir.join(format!("{prefix}{:016x}{TEMPORARY_SUFFIX}", random()));
+        let file = match OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .mode(if private { 0o600 } else { 0o666 })
+            .open(&path)
+        {
+            Ok(file) => file,
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        };
+        // Another run's clean-up may have taken it between its creation and
+        // the lock: then it is no longer at its path, and another is made.
+        let locked = file.try_lock().is_ok();
+        let still_there = match (fs::symlink_metadata(&path), file.metadata()) {
+            (Ok(at_path), Ok(own)) => identity(&at_path) == identity(&own),
+            _ => false,
+        };
+        if locked && still_there {
+            return Ok((file, path));
+        }
+    }
+    Err(std::io::Error::new(
+        std::io::ErrorKind::AlreadyExists,
+        "no temporary file could be created beside it",
+    ))
+}
+
+/// Removes the temporary files of runs that ended without cleaning up
+/// (killed): theirs are the unlocked ones. A running process holds its lock.
+fn remove_stale_temporaries(dir: &Path, name: &str) {
+    let prefix = temporary_prefix(name);
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let file_name = entry.file_name();
+        let Some(file_name) = file_name.to_str() else {
+            continue;
+        };
+        if !(file_name.starts_with(&prefix) && file_name.ends_with(TEMPORARY_SUFFIX)) {
+            continue;
+        }
+        let path = entry.path();
+        // Never follow a link planted under such a name.
+        if !fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+            continue;
+        }
+        let Ok(file) = File::open(&path) else {
+            continue;
+        };
+        if file.try_lock().is_ok() {
+            let _ = fs::remove_file(&path);
+        }
+    }
+}
+
+/// Gives the temporary file the replaced file's owner, group and mode. Where
+/// the owner cannot be kept (not root), the file is this user's, and the
+/// setuid and setgid bits are not put back on it.
+fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> {
+    let _ = fchown(file, Some(like.uid()), Some(like.gid()))
+        .or_else(|_| fchown(file, None, Some(like.gid())));
+    let own = file.metadata()?;
+    let owner_kept = own.uid() == like.uid() && own.gid() == like.gid();
+    let mut mode = like.mode() & 0o7777;
+    if !owner_kept {
+        mode &= !0o6000;
+    }
+    file.set_permissions(fs::Permissions::from_mode(mode))
+}
+
+fn kind(metadata: &Metadata) -> &'static str {
+    let file_type = metadata.file_type();
+    if file_type.is_fifo() {
+        "a FIFO"
+    } else if file_type.is_char_device() || file_type.is_block_device() {
+        "a device"
+    } else if file_type.is_socket() {
+        "a socket"
+    } else if file_type.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// 64 bits nobody can predict: the standard library's per-process random
+/// hash keys, over the time and the process id.
+fn random() -> u64 {
+    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    hasher.write_u128(nanos);
+    hasher.write_u32(std::process::id());
+    hasher.finish()
 }

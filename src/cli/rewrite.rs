@@ -6,14 +6,26 @@ use crate::cli::args::RewriteArgs;
 use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::read;
-use crate::cli::output::write_atomically;
+use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::cycle600::Options;
 use std::io::Write;
+use std::path::Path;
 
 use crate::emit::{diff, write_applied};
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
+    // `-o` naming the program itself is a rewrite in place, with its rules.
+    let onto_itself = args
+        .output
+        .as_deref()
+        .is_some_and(|output| args.path != Path::new("-") && same_file(&args.path, output));
+    // Refused before anything is read: stdin, a FIFO, a device.
+    let in_place = if args.in_place || onto_itself {
+        Some(in_place_target(&args.path)?)
+    } else {
+        None
+    };
     let file = read(&args.path)?;
     let _pages = file.bytes.watch_reads();
     let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
@@ -43,7 +55,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         return Ok(status(errors));
     }
     let output = |out: &mut dyn Write| write_applied(&file.bytes, edits, out);
-    if args.in_place {
+    if let Some(target) = in_place {
         if errors {
             eprintln!(
                 "{}: not rewritten in place, because of the errors above",
@@ -52,12 +64,14 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
             return Ok(ExitStatus::Failure);
         }
         if changed {
-            write_atomically(&args.path, output, !args.no_backup)?;
+            // The backup holds the bytes this run read and rewrote.
+            let backup = (!args.no_backup).then_some(&file.bytes[..]);
+            write_atomically(&target, output, backup)?;
         }
         return Ok(ExitStatus::Success);
     }
     match &args.output {
-        Some(path) => write_atomically(path, output, false)?,
+        Some(path) => write_atomically(path, output, None)?,
         None => write_stdout_with(output)?,
     }
     Ok(status(errors))

@@ -86,7 +86,7 @@ impl Suppressions {
         let row = row();
         let mut covered = false;
         for suppression in &mut self.list {
-            if suppression.code == diagnostic.code && suppression.row.map_or(true, |r| r == row) {
+            if suppression.code == diagnostic.code && suppression.row.is_none_or(|r| r == row) {
                 suppression.used = true;
                 covered = true;
             }

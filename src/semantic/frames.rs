@@ -244,7 +244,7 @@ pub fn emitted_blocks(source: &[u8], mut block: impl FnMut(usize) -> Option<Bloc
     let all = expected.iter().enumerate().all(|(i, matches)| {
         block(i)
             .and_then(|b| shape(source, &b))
-            .is_some_and(|s| matches(s))
+            .is_some_and(matches)
     });
     if all {
         expected.len()

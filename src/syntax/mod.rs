@@ -146,10 +146,10 @@ impl LinesRecorder {
     /// The next line, in order from the first.
     pub fn record(&mut self, line: &plain::Scanned) {
         let index = self.len;
-        if index % STRIDE == 0 {
+        if index.is_multiple_of(STRIDE) {
             self.strided_starts.push(line.raw().content.start);
         }
-        if index % 64 == 0 {
+        if index.is_multiple_of(64) {
             self.plain.push(0);
         }
         if let (plain::Scanned::Plain(_), Some(word)) = (line, self.plain.last_mut()) {

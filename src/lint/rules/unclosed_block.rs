@@ -74,7 +74,7 @@ impl Check for Checker {
                 StatementKind::EndLoop => "ENDLOOP",
                 StatementKind::Until { .. } => "UNTIL",
                 StatementKind::Else => {
-                    if !self.open.last().is_some_and(|(k, ..)| *k == "IF") {
+                    if self.open.last().is_none_or(|(k, ..)| *k != "IF") {
                         out.push(
                             RULE.at(statement.span)
                                 .message("ELSE without an open IF")

@@ -1,0 +1,334 @@
+//! What `rewrite` does to the files around a program: only regular files
+//! are replaced in place, links are written through, owner, group and mode
+//! are kept, the backup is written atomically and never through a planted
+//! link, temporary files are unguessable and cleaned up, `-o` onto the input
+//! is an in-place rewrite, and directory walks take every file once.
+//! Cases that need root say so on stderr and are skipped elsewhere.
+
+mod support;
+
+use std::fs;
+use std::os::unix::fs::{symlink, MetadataExt, PermissionsExt};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+use support::assert_exit;
+
+const PROGRAM: &[u8] =
+    b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n";
+const REFUSED: &[u8] =
+    b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R20, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n";
+
+/// A fresh directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("sinuprep-files-{name}-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+fn heads() -> String {
+    support::repo()
+        .join("samples/HEAD_DEF.SPF")
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// The binary in `dir`, with a bound on its time: a run that hangs fails.
+fn run_in(dir: &Path, args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let started = Instant::now();
+    while child.try_wait().expect("wait").is_none() {
+        if started.elapsed() > Duration::from_secs(20) {
+            let _ = child.kill();
+            panic!("{args:?} hangs");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    child.wait_with_output().expect("output")
+}
+
+fn rewrite_in_place(dir: &Path, path: &Path) -> Output {
+    let heads = heads();
+    run_in(
+        dir,
+        &[
+            "rewrite",
+            "--in-place",
+            "--heads",
+            &heads,
+            path.to_str().expect("utf-8"),
+        ],
+    )
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .expect("dir")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+fn is_root() -> bool {
+    fs::metadata("/proc/self").is_ok_and(|m| m.uid() == 0)
+}
+
+#[test]
+fn in_place_refuses_what_is_not_a_regular_file() {
+    let dir = scratch("streams");
+    let heads = heads();
+    // `-` (the default path) and /dev/stdin: nothing to replace.
+    for path in ["-", "/dev/stdin"] {
+        let output = run_in(&dir, &["rewrite", "--in-place", "--heads", &heads, path]);
+        assert_exit(&output, 2);
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains("cannot be rewritten in place"),
+            "{path}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+    let output = run_in(&dir, &["rewrite", "--in-place", "--heads", &heads]);
+    assert_exit(&output, 2);
+    assert!(names(&dir).is_empty(), "written: {:?}", names(&dir));
+    // A FIFO is refused before it is read (reading it would wait for a writer).
+    let fifo = dir.join("PIPE.MPF");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let output = rewrite_in_place(&dir, &fifo);
+        assert_exit(&output, 2);
+        assert!(String::from_utf8_lossy(&output.stderr).contains("a FIFO"));
+        assert_eq!(names(&dir), ["PIPE.MPF"]);
+    } else {
+        eprintln!("NOTE: mkfifo is not available here; the FIFO case was skipped");
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn in_place_writes_through_a_symlink_and_keeps_the_link() {
+    let dir = scratch("symlink");
+    let real = dir.join("real");
+    fs::create_dir_all(&real).expect("dir");
+    fs::write(real.join("PART.MPF"), PROGRAM).expect("write");
+    let link = dir.join("LINK.MPF");
+    symlink("real/PART.MPF", &link).expect("symlink");
+    assert_exit(&rewrite_in_place(&dir, &link), 0);
+    assert!(fs::symlink_metadata(&link)
+        .expect("link")
+        .file_type()
+        .is_symlink());
+    assert_eq!(
+        fs::read_link(&link).expect("link"),
+        Path::new("real/PART.MPF")
+    );
+    let rewritten = fs::read(real.join("PART.MPF")).expect("target");
+    assert!(rewritten.starts_with(b"; sinuprep: CYCLE600"));
+    // The backup and every temporary file are beside the target.
+    assert_eq!(
+        fs::read(real.join("PART.MPF.bak")).expect("backup"),
+        PROGRAM
+    );
+    assert_eq!(names(&real), ["PART.MPF", "PART.MPF.bak"]);
+    assert_eq!(names(&dir), ["LINK.MPF", "real"]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn in_place_keeps_the_mode_and_the_owner() {
+    let dir = scratch("mode");
+    let path = dir.join("PRIVATE.MPF");
+    fs::write(&path, PROGRAM).expect("write");
+    fs::set_permissions(&path, fs::Permissions::from_mode(0o600)).expect("chmod");
+    assert_exit(&rewrite_in_place(&dir, &path), 0);
+    let metadata = fs::metadata(&path).expect("metadata");
+    assert_eq!(metadata.mode() & 0o7777, 0o600);
+    assert_eq!(
+        fs::metadata(dir.join("PRIVATE.MPF.bak"))
+            .expect("bak")
+            .mode()
+            & 0o7777,
+        0o600,
+        "the backup is as private as the program"
+    );
+    if !is_root() {
+        eprintln!("NOTE: not root; the owner and setuid cases were skipped");
+        let _ = fs::remove_dir_all(&dir);
+        return;
+    }
+    // Root rewriting a user's file leaves it the user's, setgid bit and all.
+    let users = dir.join("USERS.MPF");
+    fs::write(&users, PROGRAM).expect("write");
+    std::os::unix::fs::chown(&users, Some(4321), Some(4322)).expect("chown");
+    fs::set_permissions(&users, fs::Permissions::from_mode(0o2640)).expect("chmod");
+    assert_exit(&rewrite_in_place(&dir, &users), 0);
+    let metadata = fs::metadata(&users).expect("metadata");
+    assert_eq!((metadata.uid(), metadata.gid()), (4321, 4322));
+    assert_eq!(metadata.mode() & 0o7777, 0o2640);
+    // A user who cannot keep the owner gets the file, without setuid/setgid.
+    let shared = dir.join("shared");
+    fs::create_dir_all(&shared).expect("dir");
+    fs::set_permissions(&shared, fs::Permissions::from_mode(0o777)).expect("chmod");
+    let theirs = shared.join("THEIRS.MPF");
+    fs::write(&theirs, PROGRAM).expect("write");
+    std::os::unix::fs::chown(&theirs, Some(4321), Some(4322)).expect("chown");
+    fs::set_permissions(&theirs, fs::Permissions::from_mode(0o6777)).expect("chmod");
+    let output = {
+        use std::os::unix::process::CommandExt;
+        Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(["rewrite", "--in-place", "--no-backup", "--heads", &heads()])
+            .arg(&theirs)
+            .current_dir(&shared)
+            .uid(5555)
+            .gid(5555)
+            .output()
+            .expect("runs as another user")
+    };
+    if output.status.code() == Some(0) {
+        let metadata = fs::metadata(&theirs).expect("metadata");
+        assert_eq!(metadata.uid(), 5555);
+        assert_eq!(metadata.mode() & 0o7777, 0o0777, "setuid/setgid dropped");
+    } else {
+        eprintln!(
+            "NOTE: the binary could not run as another user here ({}); the setuid case was skipped",
+            String::from_utf8_lossy(&output.stderr).trim()
+        );
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_backup_is_never_written_through_a_planted_link() {
+    let dir = scratch("backup-link");
+    let path = dir.join("PART.MPF");
+    fs::write(&path, PROGRAM).expect("write");
+    let victim = dir.join("victim");
+    fs::write(&victim, b"precious").expect("write");
+    symlink(&victim, dir.join("PART.MPF.bak")).expect("symlink");
+    assert_exit(&rewrite_in_place(&dir, &path), 0);
+    assert_eq!(fs::read(&victim).expect("victim"), b"precious");
+    let bak = dir.join("PART.MPF.bak");
+    assert!(fs::symlink_metadata(&bak).expect("bak").is_file());
+    assert_eq!(fs::read(&bak).expect("bak"), PROGRAM);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn leftover_temporary_files_of_killed_runs_are_removed_and_live_ones_kept() {
+    let dir = scratch("leftovers");
+    let path = dir.join("PART.MPF");
+    fs::write(&path, PROGRAM).expect("write");
+    // What a killed run left, under the old fixed name (this process's PID,
+    // as a run under PID 1 in a container would meet it) and a random one.
+    let stale = [
+        format!(".PART.MPF.sinuprep-{}.tmp", std::process::id()),
+        ".PART.MPF.sinuprep-0123456789abcdef.tmp".to_string(),
+    ];
+    for name in &stale {
+        fs::write(dir.join(name), b"half a rewrite").expect("write");
+    }
+    // One that a running rewrite holds (its lock).
+    let live_name = ".PART.MPF.sinuprep-fedcba9876543210.tmp";
+    let live = fs::File::create(dir.join(live_name)).expect("create");
+    live.lock().expect("lock");
+    assert_exit(&rewrite_in_place(&dir, &path), 0);
+    assert_eq!(names(&dir), [live_name, "PART.MPF", "PART.MPF.bak"]);
+    drop(live);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn output_onto_the_input_is_an_in_place_rewrite() {
+    let dir = scratch("onto-input");
+    let heads = heads();
+    fs::write(dir.join("BAD.MPF"), REFUSED).expect("write");
+    let output = run_in(
+        &dir,
+        &["rewrite", "--heads", &heads, "BAD.MPF", "-o", "./BAD.MPF"],
+    );
+    assert_exit(&output, 1);
+    assert_eq!(fs::read(dir.join("BAD.MPF")).expect("read"), REFUSED);
+    assert_eq!(names(&dir), ["BAD.MPF"]);
+    fs::write(dir.join("GOOD.MPF"), PROGRAM).expect("write");
+    let output = run_in(
+        &dir,
+        &["rewrite", "--heads", &heads, "GOOD.MPF", "-o", "GOOD.MPF"],
+    );
+    assert_exit(&output, 0);
+    assert!(fs::read(dir.join("GOOD.MPF"))
+        .expect("read")
+        .starts_with(b"; sinuprep:"));
+    assert_eq!(fs::read(dir.join("GOOD.MPF.bak")).expect("backup"), PROGRAM);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn directory_walks_take_every_file_once_through_looping_links() {
+    let dir = scratch("loops");
+    let programs = dir.join("programs");
+    fs::create_dir_all(programs.join("sub")).expect("dir");
+    fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    fs::write(programs.join("sub/B.SPF"), b"PROC B\nM17\n").expect("write");
+    symlink(".", programs.join("a")).expect("symlink");
+    symlink(".", programs.join("b")).expect("symlink");
+    symlink("..", programs.join("sub/up")).expect("symlink");
+    symlink("A.MPF", programs.join("SAME.MPF")).expect("symlink");
+    let output = run_in(
+        &dir,
+        &["check", "--format", "json", "programs", "programs/A.MPF"],
+    );
+    assert_exit(&output, 0);
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let files: Vec<&str> = report["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .map(|f| f["path"].as_str().expect("path"))
+        .collect();
+    assert_eq!(files.len(), 2, "{files:?}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn concurrent_in_place_rewrites_leave_one_whole_version_and_the_original_as_backup() {
+    let dir = scratch("concurrent");
+    let path = dir.join("PART.MPF");
+    let heads = heads();
+    fs::write(&path, PROGRAM).expect("write");
+    assert_exit(&rewrite_in_place(&dir, &path), 0);
+    let rewritten = fs::read(&path).expect("read");
+    for round in 0..20 {
+        fs::write(&path, PROGRAM).expect("write");
+        let _ = fs::remove_file(dir.join("PART.MPF.bak"));
+        let children: Vec<_> = (0..2)
+            .map(|_| {
+                Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+                    .args(["rewrite", "--in-place", "--heads", &heads])
+                    .arg(&path)
+                    .stderr(Stdio::null())
+                    .spawn()
+                    .expect("runs")
+            })
+            .collect();
+        for mut child in children {
+            assert!(child.wait().expect("ends").success(), "round {round}");
+        }
+        assert_eq!(fs::read(&path).expect("read"), rewritten, "round {round}");
+        assert_eq!(
+            fs::read(dir.join("PART.MPF.bak")).expect("backup"),
+            PROGRAM,
+            "round {round}: the backup is not the original"
+        );
+        assert_eq!(names(&dir), ["PART.MPF", "PART.MPF.bak"], "round {round}");
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
