@@ -7,6 +7,7 @@
 //! selected rule. The CYCLE600 walk runs only for programs that mention
 //! CYCLE600. It reports diagnostics; printing them is the CLI's job.
 
+pub mod labels;
 pub mod rule;
 pub mod rules;
 pub mod suppression;
@@ -134,6 +135,9 @@ pub fn check_with(
         if let LineKind::Block(block) = &line.kind {
             if let Some(comment) = block.comment {
                 suppressions.read(source, row, comment);
+            }
+            if let Some(label) = block.label {
+                file.record_label(row, label.span);
             }
         }
         let view = LineView::new(&line);

@@ -5,6 +5,7 @@ use std::cell::{OnceCell, RefCell};
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, Severity};
+use crate::lint::labels::Labels;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::plain::PlainFacts;
@@ -39,6 +40,9 @@ pub struct FileContext<'a> {
     /// Block numbers some jump names, announced during the line pass.
     wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
+    /// Labels as the line pass met them, then sorted for the rules.
+    recorded_labels: RefCell<Labels>,
+    labels: OnceCell<Labels>,
 }
 
 impl<'a> FileContext<'a> {
@@ -49,7 +53,23 @@ impl<'a> FileContext<'a> {
             kind,
             wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
+            recorded_labels: RefCell::default(),
+            labels: OnceCell::new(),
         }
+    }
+
+    /// Records, during the line pass, the label at `span` on line `row`.
+    pub fn record_label(&self, row: usize, span: Span) {
+        self.recorded_labels
+            .borrow_mut()
+            .record(self.source, row, span);
+    }
+
+    /// Every label of the file (see [`Self::record_label`]); asked for once
+    /// the line pass is over.
+    pub fn labels(&self) -> &Labels {
+        self.labels
+            .get_or_init(|| self.recorded_labels.take().sorted())
     }
 
     /// Announces, during the line pass, a block number a jump names.

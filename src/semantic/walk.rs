@@ -154,7 +154,7 @@ impl CallSite {
     }
 }
 
-/// Names a region writes, for forgetting them.
+/// Names a line writes, for forgetting them.
 #[derive(Default, Clone)]
 struct Written {
     names: Vec<String>,
@@ -173,7 +173,7 @@ struct Walker<'a> {
     heads: Option<&'a Heads>,
     structure: &'a Structure,
     /// Line -> what jumps that may skip to it have jumped over.
-    pending: HashMap<usize, Vec<(Written, Origin)>>,
+    pending: HashMap<usize, Vec<(usize, usize, Origin)>>,
     analysis: Analysis,
     /// How many blocks the walk is inside; bounded, so that no program can
     /// exhaust the stack.
@@ -213,12 +213,15 @@ impl<'a> Walker<'a> {
 
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
         if self.depth >= MAX_NESTING {
-            let written = self.written(start, end);
-            for &line in &written.cycle600_lines {
-                self.too_deep(line, env);
+            let structure = self.structure;
+            for (_, written) in structure.writes_in(start, end) {
+                for &line in &written.cycle600_lines {
+                    self.too_deep(line, env);
+                }
             }
             self.forget(
-                &written,
+                start,
+                end,
                 env,
                 &Origin::ControlFlow {
                     line: start + 1,
@@ -261,12 +264,13 @@ impl<'a> Walker<'a> {
                                 }
                             }
                             None => {
-                                let mut other = env.clone();
+                                let fork = env.fork();
                                 self.walk(pc + 1, then_end, env);
+                                let then = env.rewind(fork);
                                 if let Some(else_line) = else_line {
-                                    self.walk(else_line + 1, end_line, &mut other);
+                                    self.walk(else_line + 1, end_line, env);
                                 }
-                                env.merge(other, pc + 1);
+                                env.join(then, pc + 1);
                             }
                         }
                         pc = end_line + 1;
@@ -286,12 +290,11 @@ impl<'a> Walker<'a> {
                             line: pc + 1,
                             what: "loop",
                         };
-                        let written = self.written(pc, end_line + 1);
-                        self.forget(&written, env, &origin);
+                        self.forget(pc, end_line + 1, env, &origin);
                         self.visit(pc, &block, env);
                         self.walk(pc + 1, end_line, env);
                         if !runs_once {
-                            self.forget(&written, env, &origin);
+                            self.forget(pc, end_line + 1, env, &origin);
                         }
                         pc = end_line + 1;
                         continue;
@@ -321,9 +324,9 @@ impl<'a> Walker<'a> {
             return;
         }
         if let Some(&last) = self.structure.loop_starts.get(&line) {
-            let written = self.written(line, last + 1);
             self.forget(
-                &written,
+                line,
+                last + 1,
                 env,
                 &Origin::ControlFlow {
                     line: last + 1,
@@ -332,8 +335,8 @@ impl<'a> Walker<'a> {
             );
         }
         if let Some(skipped) = self.pending.remove(&line) {
-            for (written, origin) in &skipped {
-                self.forget(written, env, origin);
+            for (start, end, origin) in &skipped {
+                self.forget(*start, *end, env, origin);
             }
         }
     }
@@ -411,9 +414,9 @@ impl<'a> Walker<'a> {
             }
             // Taken or not, or leaving the region walked: what lies between
             // is unknown at the target.
-            let written = self.written(pc + 1, target);
             self.pending.entry(target).or_default().push((
-                written,
+                pc + 1,
+                target,
                 Origin::ControlFlow {
                     line: pc + 1,
                     what: "jump",
@@ -423,36 +426,28 @@ impl<'a> Walker<'a> {
         None
     }
 
-    /// What lines `start..end` may write.
-    /// What lines `start..end` may write: the union of the per-line
-    /// summaries the structure pass recorded (only lines that write are there).
-    fn written(&self, start: usize, end: usize) -> Written {
-        let writes = &self.structure.writes;
-        let first = writes.partition_point(|(line, _)| *line < start);
-        let mut written = Written::default();
-        for (_, line) in writes[first..].iter().take_while(|(line, _)| *line < end) {
-            written.names.extend(line.names.iter().cloned());
-            written.rotation |= line.rotation;
-            written.cycle600_lines.extend(&line.cycle600_lines);
-        }
-        written
-    }
-
-    /// Makes unknown what a region writes: its variables, the active rotation
-    /// if anything in it may swivel, and `_CYC600_1..6` if a CYCLE600 in it may
-    /// recalculate.
-    fn forget(&mut self, written: &Written, env: &mut Env, origin: &Origin) {
-        for name in &written.names {
-            env.forget(name, origin.clone());
-        }
-        let (mut swivels, mut recalculates) = (written.rotation, false);
-        for line in &written.cycle600_lines {
-            match self.modes.get(line) {
-                Some(Mode::Swivel) => swivels = true,
-                Some(Mode::Recalculate) => recalculates = true,
-                None => {
-                    self.assumed.insert(*line);
-                    (swivels, recalculates) = (true, true);
+    /// Makes unknown what lines `start..end` may write (the per-line
+    /// summaries the structure pass recorded): their variables, the active
+    /// rotation if anything there may swivel, `_CYC600_1..6` if a CYCLE600
+    /// there may recalculate, and the frames if a frame statement is there.
+    /// Read in place, never copied: loops nest, and each forgets its region.
+    fn forget(&mut self, start: usize, end: usize, env: &mut Env, origin: &Origin) {
+        let structure = self.structure;
+        let (mut swivels, mut recalculates, mut frames) = (false, false, false);
+        for (_, written) in structure.writes_in(start, end) {
+            for name in &written.names {
+                env.forget(name, origin.clone());
+            }
+            swivels |= written.rotation;
+            frames |= written.frames;
+            for line in &written.cycle600_lines {
+                match self.modes.get(line) {
+                    Some(Mode::Swivel) => swivels = true,
+                    Some(Mode::Recalculate) => recalculates = true,
+                    None => {
+                        self.assumed.insert(*line);
+                        (swivels, recalculates) = (true, true);
+                    }
                 }
             }
         }
@@ -466,7 +461,7 @@ impl<'a> Walker<'a> {
                 why: origin.to_string(),
             };
         }
-        if written.frames {
+        if frames {
             let seen = FrameSeen::Region(origin.to_string());
             env.user_frame.get_or_insert_with(|| seen.clone());
             env.frame_since_swivel.get_or_insert(seen);
@@ -1330,6 +1325,14 @@ impl Structure {
             self.emitted.extend(line + 1..line + 1 + count);
             self.marked.insert(line, statement);
         }
+    }
+
+    /// What each line in `start..end` that writes anything writes.
+    fn writes_in(&self, start: usize, end: usize) -> impl Iterator<Item = &(usize, Written)> {
+        let first = self.writes.partition_point(|(line, _)| *line < start);
+        self.writes[first..]
+            .iter()
+            .take_while(move |(line, _)| *line < end)
     }
 
     /// The line a jump from `from` lands on, searching as its kind says.

@@ -1,10 +1,7 @@
 //! N003 `duplicate-label`: Finds a label defined twice in one program.
 
-use std::collections::HashMap;
-
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
-use crate::lint::rules::support::*;
+use crate::lint::rule::{Check, FileContext, RuleInfo};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N003",
@@ -27,31 +24,23 @@ N90 ENDE: M30
 Rename one of the labels and the jumps meant for it."#,
 };
 
+/// The labels are the file's ([`FileContext::labels`]), read once the line
+/// pass is over.
 #[derive(Default)]
-pub struct Checker {
-    seen: HashMap<String, usize>,
-}
+pub struct Checker;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block else {
-            return;
-        };
-        let Some(label) = block.label else { return };
-        let name = upper(file.source, label.span);
-        match self.seen.get(&name) {
-            Some(first) => out.push(
-                RULE.at(label.span)
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        for (span, name, first) in file.labels().repeated(file.source) {
+            out.push(
+                RULE.at(span)
                     .message(format!(
                         "label `{name}` is already defined on line {}",
                         first + 1
                     ))
                     .label("second definition")
                     .help("rename one of the labels, and the jumps meant for it"),
-            ),
-            None => {
-                self.seen.insert(name, row);
-            }
+            );
         }
     }
 }

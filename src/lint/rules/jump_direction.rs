@@ -1,7 +1,5 @@
 //! N002 `jump-direction`: Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
 
-use std::collections::HashMap;
-
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
@@ -29,10 +27,9 @@ N20 GOTOF START    ; START is behind
 Use GOTOB (or GOTO, which searches both ways), or move the label."#,
 };
 
+/// The labels are the file's ([`FileContext::labels`]).
 #[derive(Default)]
 pub struct Checker {
-    /// Label -> rows where it stands.
-    labels: HashMap<String, Vec<usize>>,
     jumps: Vec<(Target, Span, usize, GotoKind)>,
 }
 
@@ -47,9 +44,6 @@ impl Check for Checker {
         let Some(block) = line.block else {
             return;
         };
-        if let Some((name, _)) = label(file.source, block) {
-            self.labels.entry(name).or_default().push(row);
-        }
         if line.plain {
             return;
         }
@@ -63,7 +57,7 @@ impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         for (target, span, row, kind) in &self.jumps {
             let rows: Vec<usize> = match target {
-                Target::Label(name) => self.labels.get(name).cloned().unwrap_or_default(),
+                Target::Label(name) => file.labels().rows(file.source, name).collect(),
                 Target::Number(n) => {
                     // Read from the file on first use: most programs never jump to one.
                     let numbers = file.block_numbers();

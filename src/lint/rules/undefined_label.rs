@@ -1,7 +1,5 @@
 //! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
 
-use std::collections::HashSet;
-
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
@@ -30,9 +28,9 @@ N20 ENDE: M30      ; label is ENDE, the jump says ENDE... in another file it say
 Correct the label's spelling (the help suggests the nearest existing label) or add the label."#,
 };
 
+/// The labels are the file's ([`FileContext::labels`]).
 #[derive(Default)]
 pub struct Checker {
-    labels: HashSet<String>,
     jumps: Vec<(Target, Span, bool)>,
 }
 
@@ -47,8 +45,6 @@ impl Check for Checker {
         let Some(block) = line.block else {
             return;
         };
-        self.labels
-            .extend(label(file.source, block).map(|(l, _)| l));
         if line.plain {
             return;
         }
@@ -63,7 +59,7 @@ impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
-                Target::Label(name) => self.labels.contains(name),
+                Target::Label(name) => file.labels().contains(file.source, name),
                 // Read from the file on first use: most programs never jump to one.
                 Target::Number(n) => file
                     .block_numbers()
@@ -74,10 +70,10 @@ impl Check for Checker {
                 continue;
             }
             let wanted = target.to_string();
-            let nearest = self
-                .labels
-                .iter()
-                .map(|l| (distance(l, &wanted), l))
+            let nearest = file
+                .labels()
+                .names(file.source)
+                .map(|l| (distance(&l, &wanted), l))
                 .filter(|(d, _)| *d <= 2)
                 .min();
             let help = match nearest {

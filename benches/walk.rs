@@ -1,0 +1,57 @@
+//! The CYCLE600 walk on the shapes that once made it slow: loops nested
+//! deep, each writing a variable of its own; many IFs with unknown
+//! conditions over many variables; a CYCLE600 inside all of them.
+//! `cargo bench --bench walk`; whole programs are `throughput`'s job.
+
+use divan::{black_box, Bencher};
+use sinuprep::semantic::{analyze, Supplied};
+
+fn main() {
+    divan::main();
+}
+
+const CALL: &str = "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
+
+/// `depth` loops (`open` with `{i}` for the level), each writing R1000+i.
+fn nested(open: &str, close: &str, depth: usize) -> String {
+    let mut program = String::new();
+    for i in 0..depth {
+        program.push_str(&open.replace("{i}", &i.to_string()));
+        program.push_str(&format!("\nR{n}=R{n}+1\n", n = 1000 + i));
+    }
+    program.push_str(CALL);
+    for _ in 0..depth {
+        program.push_str(close);
+        program.push('\n');
+    }
+    program.push_str("M30\n");
+    program
+}
+
+#[divan::bench(args = [100, 400, 2000])]
+fn nested_for_loops(bencher: Bencher, depth: usize) {
+    let program = nested("FOR R{i}=0 TO 2", "ENDFOR", depth);
+    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+}
+
+#[divan::bench(args = [100, 400, 2000])]
+fn nested_while_loops(bencher: Bencher, depth: usize) {
+    let program = nested("WHILE R{i}<3", "ENDWHILE", depth);
+    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+}
+
+/// `count` DEF variables, then `count` IFs with unknown conditions, each
+/// writing one of them.
+#[divan::bench(args = [1000, 5000])]
+fn unknown_ifs_over_many_variables(bencher: Bencher, count: usize) {
+    let mut program = String::new();
+    for i in 0..count {
+        program.push_str(&format!("DEF REAL V{i}\n"));
+    }
+    for i in 0..count {
+        program.push_str(&format!("IF R{i}>0\nV{i}=V{i}+1\nENDIF\n"));
+    }
+    program.push_str(CALL);
+    program.push_str("M30\n");
+    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+}
