@@ -5,7 +5,8 @@ use std::path::PathBuf;
 
 #[derive(Debug, thiserror::Error, miette::Diagnostic)]
 pub enum CliError {
-    #[error("cannot read {path}: {source}")]
+    // The cause is `source`, which miette prints below the message.
+    #[error("cannot read {path}")]
     #[diagnostic(
         code(sinuprep::read),
         help("check that the path exists and is readable")
@@ -61,14 +62,14 @@ pub enum CliError {
     )]
     NotInPlace { path: PathBuf, why: String },
 
-    #[error("cannot write {path}: {source}")]
+    #[error("cannot write {path}")]
     #[diagnostic(code(sinuprep::write), help("check that the directory is writable and the disk not full; the original file is unchanged"))]
     WriteFile {
         path: PathBuf,
         source: std::io::Error,
     },
 
-    #[error("cannot write the output: {0}")]
+    #[error("cannot write the output")]
     #[diagnostic(code(sinuprep::write))]
     Write(#[from] std::io::Error),
 }

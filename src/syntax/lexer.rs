@@ -37,6 +37,8 @@ pub enum SyntaxErrorKind {
     MissingValue,
     /// Parentheses or operators nested deeper than the parser follows.
     TooDeep,
+    /// A line longer than the parser reads into a tree ([`crate::syntax::MAX_PARSED_LINE`]).
+    TooLong,
 }
 
 impl SyntaxError {

@@ -250,7 +250,21 @@ impl LineParser {
     }
 }
 
+/// Lines longer than this (in bytes) are not read into a tree, unless they
+/// are plain (address words with numbers, which have no tree to build): a
+/// tree costs about 50 bytes a byte of source, and the control takes 512
+/// characters a block. The bytes stay as they are, with an error (S009).
+pub const MAX_PARSED_LINE: usize = 64 * 1024;
+
 fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxError>) {
+    if content.len() > MAX_PARSED_LINE && !plain::is_plain(content) {
+        let block = Block {
+            unparsed: Some(Span::new(start, start + content.len())),
+            ..Block::default()
+        };
+        let error = SyntaxError::new(start, SyntaxErrorKind::TooLong);
+        return (LineKind::Block(block), Some(error));
+    }
     if content.first() == Some(&b'%') {
         return (
             LineKind::Header {
@@ -383,6 +397,15 @@ fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic
                 ))
                 .label("too deep")
                 .help("split the expression over several assignments")
+        }
+        SyntaxErrorKind::TooLong => {
+            Diagnostic::new("S009", "block-too-long-to-read", Severity::Error, one)
+                .message(format!(
+                    "block of {} bytes: too long to read (the control takes at most 512 characters a block)",
+                    raw.content.len()
+                ))
+                .label("too long")
+                .help("split it into blocks of at most 512 characters")
         }
         SyntaxErrorKind::Expected(what) => {
             let found = if at >= line_end {

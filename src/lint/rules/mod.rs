@@ -82,6 +82,10 @@ pub fn all() -> Vec<Rule> {
             checker: None,
         },
         Rule {
+            info: &syntax_errors::TOO_LONG_TO_READ,
+            checker: None,
+        },
+        Rule {
             info: &cycle600_argument_count::RULE,
             checker: None,
         },

@@ -144,6 +144,28 @@ the next line as usual.
 Join the line to the one before: a block is one line."#,
 };
 
+pub static TOO_LONG_TO_READ: RuleInfo = RuleInfo {
+    code: "S009",
+    name: "block-too-long-to-read",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a block of more than 64 KiB that is not only address words with numbers.
+
+## Why it matters
+The control takes at most 512 characters a block (Siemens, Programming Manual Fundamentals:
+block length), so such a line can never run. sinuprep does not read it into a tree, which would
+cost about 50 bytes of memory a byte of the line: its bytes stay as they are, no rule sees its
+statements, and the next line is read as usual. (N008 warns from 512 characters on.)
+
+## Example
+```
+N10 R1=MAX(1,1,1,1, ... 100,000 more ...,1)
+```
+
+## Fix
+Split it into blocks of at most 512 characters."#,
+};
+
 pub static NESTING_TOO_DEEP: RuleInfo = RuleInfo {
     code: "S008",
     name: "nesting-too-deep",
