@@ -1,6 +1,7 @@
-//! Every label of a file, in one table the rules share: 32 bytes a label,
-//! names read back from the source when asked (a program can have a million
-//! labels, and three rules look them up).
+//! Every label of a file, in one table the rules share: about 40 bytes a
+//! label plus its name (a program can have a million labels, and three rules
+//! look them up). Names are kept here rather than read back from the source:
+//! reads scattered over a large mapped program would map all of it again.
 
 use crate::span::Span;
 
@@ -8,31 +9,43 @@ use crate::span::Span;
 struct Entry {
     /// Of the upper-case name: equal names have equal hashes.
     hash: u64,
-    span: Span,
+    start: usize,
     /// 0-based.
     row: usize,
+    /// Where the upper-case name is in [`Labels::names`].
+    name_at: usize,
+    name_len: u32,
 }
 
 /// The labels, sorted by name hash and row once the line pass is over.
 #[derive(Default, Debug)]
 pub struct Labels {
     entries: Vec<Entry>,
+    /// The upper-case names, one after another.
+    names: Vec<u8>,
 }
 
-/// FNV-1a over the upper-case bytes (labels are not case-sensitive).
-fn hash(name: &[u8]) -> u64 {
-    name.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
-        (hash ^ u64::from(b.to_ascii_uppercase())).wrapping_mul(0x0100_0000_01b3)
+/// FNV-1a (labels are compared in upper case).
+fn hash(upper: &[u8]) -> u64 {
+    upper.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
+        (hash ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
     })
 }
 
 impl Labels {
     /// Records the label at `span` on line `row` (during the line pass).
     pub fn record(&mut self, source: &[u8], row: usize, span: Span) {
+        let name_at = self.names.len();
+        self.names
+            .extend(span.of(source).iter().map(u8::to_ascii_uppercase));
+        let name_len = u32::try_from(span.len()).unwrap_or(u32::MAX);
+        self.names.truncate(name_at + name_len as usize);
         self.entries.push(Entry {
-            hash: hash(span.of(source)),
-            span,
+            hash: hash(&self.names[name_at..]),
+            start: span.start,
             row,
+            name_at,
+            name_len,
         });
     }
 
@@ -40,56 +53,60 @@ impl Labels {
     pub fn sorted(mut self) -> Self {
         self.entries.sort_unstable_by_key(|e| (e.hash, e.row));
         self.entries.shrink_to_fit();
+        self.names.shrink_to_fit();
         self
     }
 
-    /// The rows where `name` (any case) stands, in order.
-    pub fn rows<'s>(&'s self, source: &'s [u8], name: &'s str) -> impl Iterator<Item = usize> + 's {
+    fn name(&self, entry: &Entry) -> &[u8] {
+        &self.names[entry.name_at..entry.name_at + entry.name_len as usize]
+    }
+
+    fn span(&self, entry: &Entry) -> Span {
+        Span::new(entry.start, entry.start + entry.name_len as usize)
+    }
+
+    /// The rows where `name` (upper case) stands, in order.
+    pub fn rows<'s>(&'s self, name: &'s str) -> impl Iterator<Item = usize> + 's {
         let wanted = hash(name.as_bytes());
         let first = self.entries.partition_point(|e| e.hash < wanted);
         self.entries[first..]
             .iter()
             .take_while(move |e| e.hash == wanted)
-            .filter(move |e| e.span.of(source).eq_ignore_ascii_case(name.as_bytes()))
+            .filter(move |e| self.name(e) == name.as_bytes())
             .map(|e| e.row)
     }
 
-    pub fn contains(&self, source: &[u8], name: &str) -> bool {
-        self.rows(source, name).next().is_some()
+    /// Whether `name` (upper case) is a label.
+    pub fn contains(&self, name: &str) -> bool {
+        self.rows(name).next().is_some()
     }
 
     /// Each name once, upper case.
-    pub fn names<'s>(&'s self, source: &'s [u8]) -> impl Iterator<Item = String> + 's {
-        self.with_first(source)
+    pub fn names(&self) -> impl Iterator<Item = String> + '_ {
+        self.with_first()
             .filter(|(_, first)| first.is_none())
-            .map(move |(e, _)| String::from_utf8_lossy(e.span.of(source)).to_ascii_uppercase())
+            .map(|(e, _)| String::from_utf8_lossy(self.name(e)).into_owned())
     }
 
     /// Every label that stands again after its first line: its span, its
     /// name (upper case) and the first line (0-based).
-    pub fn repeated(&self, source: &[u8]) -> Vec<(Span, String, usize)> {
-        self.with_first(source)
+    pub fn repeated(&self) -> Vec<(Span, String, usize)> {
+        self.with_first()
             .filter_map(|(e, first)| {
-                let name = String::from_utf8_lossy(e.span.of(source)).to_ascii_uppercase();
-                Some((e.span, name, first?.row))
+                let name = String::from_utf8_lossy(self.name(e)).into_owned();
+                Some((self.span(e), name, first?.row))
             })
             .collect()
     }
 
     /// Each entry with the first entry of the same name before it, if any
     /// (looked for among the entries of the same hash only).
-    fn with_first<'s>(
-        &'s self,
-        source: &'s [u8],
-    ) -> impl Iterator<Item = (&'s Entry, Option<&'s Entry>)> + 's {
+    fn with_first(&self) -> impl Iterator<Item = (&Entry, Option<&Entry>)> + '_ {
         self.entries
             .chunk_by(|a, b| a.hash == b.hash)
             .flat_map(move |group| {
                 group.iter().enumerate().map(move |(i, e)| {
-                    let text = e.span.of(source);
-                    let first = group[..i]
-                        .iter()
-                        .find(|o| o.span.of(source).eq_ignore_ascii_case(text));
+                    let first = group[..i].iter().find(|o| self.name(o) == self.name(e));
                     (e, first)
                 })
             })
@@ -111,13 +128,13 @@ mod tests {
             labels.record(source, row, Span::new(start, start + len));
         }
         let labels = labels.sorted();
-        assert_eq!(labels.rows(source, "LOOP").collect::<Vec<_>>(), [1, 2]);
-        assert!(labels.contains(source, "end"));
-        assert!(!labels.contains(source, "ENDE"));
-        let mut names: Vec<String> = labels.names(source).collect();
+        assert_eq!(labels.rows("LOOP").collect::<Vec<_>>(), [1, 2]);
+        assert!(labels.contains("END"));
+        assert!(!labels.contains("ENDE"));
+        let mut names: Vec<String> = labels.names().collect();
         names.sort();
         assert_eq!(names, ["END", "LOOP", "START"]);
-        let mut repeated = labels.repeated(source);
+        let mut repeated = labels.repeated();
         repeated.sort_by_key(|(span, ..)| span.start);
         assert_eq!(
             repeated,

@@ -239,7 +239,7 @@ impl<'a> Walker<'a> {
         let mut pc = start;
         while pc < end {
             self.enter(pc, env);
-            if let Some(statement) = self.structure.marked.get(&pc) {
+            if let Some(statement) = self.structure.marked_call(pc) {
                 self.replay(pc, statement, env);
             }
             // Motion blocks change nothing the walk tracks: no need to parse them.
@@ -470,7 +470,7 @@ impl<'a> Walker<'a> {
 
     fn visit(&mut self, pc: usize, block: &Block, env: &mut Env) {
         let line = pc + 1;
-        if !self.structure.emitted.contains(&pc) {
+        if !self.structure.is_emitted(pc) {
             if let Some(effect) = frames::frame_effect(self.source, block) {
                 let seen = FrameSeen::Statement {
                     text: frames::statements_text(self.source, block),
@@ -617,7 +617,7 @@ impl<'a> Walker<'a> {
             (CallKind::Cycle600, Some(call)) => self.cycle600(pc, statement, call, env),
             // sinuprep's own CYCLE800 for a CYCLE600 stands for that call,
             // which the walk took from the `; sinuprep:` line above it.
-            (CallKind::Cycle800, Some(_)) if self.structure.emitted.contains(&pc) => {}
+            (CallKind::Cycle800, Some(_)) if self.structure.is_emitted(pc) => {}
             (CallKind::Cycle800, Some(call)) => {
                 env.active = self.cycle800(call, env, line);
                 env.frame_since_swivel = None;
@@ -1199,7 +1199,7 @@ impl Structure {
                 continue;
             };
             let block = &block;
-            let writes = block_writes(source, block, line, structure.emitted.contains(&line));
+            let writes = block_writes(source, block, line, structure.is_emitted(line));
             if !writes.names.is_empty()
                 || writes.rotation
                 || writes.frames
@@ -1325,6 +1325,20 @@ impl Structure {
             self.emitted.extend(line + 1..line + 1 + count);
             self.marked.insert(line, statement);
         }
+    }
+
+    /// The CYCLE600 kept in the `; sinuprep:` line `line`, if it is one
+    /// (most programs have none: no hashing of every line then).
+    fn marked_call(&self, line: usize) -> Option<&Statement> {
+        if self.marked.is_empty() {
+            return None;
+        }
+        self.marked.get(&line)
+    }
+
+    /// Whether sinuprep emitted `line` for a marked call.
+    fn is_emitted(&self, line: usize) -> bool {
+        !self.emitted.is_empty() && self.emitted.contains(&line)
     }
 
     /// What each line in `start..end` that writes anything writes.

@@ -31,7 +31,7 @@ pub struct Checker;
 
 impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for (span, name, first) in file.labels().repeated(file.source) {
+        for (span, name, first) in file.labels().repeated() {
             out.push(
                 RULE.at(span)
                     .message(format!(

@@ -57,7 +57,7 @@ impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         for (target, span, row, kind) in &self.jumps {
             let rows: Vec<usize> = match target {
-                Target::Label(name) => file.labels().rows(file.source, name).collect(),
+                Target::Label(name) => file.labels().rows(name).collect(),
                 Target::Number(n) => {
                     // Read from the file on first use: most programs never jump to one.
                     let numbers = file.block_numbers();

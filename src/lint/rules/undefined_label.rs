@@ -59,7 +59,7 @@ impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
-                Target::Label(name) => file.labels().contains(file.source, name),
+                Target::Label(name) => file.labels().contains(name),
                 // Read from the file on first use: most programs never jump to one.
                 Target::Number(n) => file
                     .block_numbers()
@@ -72,7 +72,7 @@ impl Check for Checker {
             let wanted = target.to_string();
             let nearest = file
                 .labels()
-                .names(file.source)
+                .names()
                 .map(|l| (distance(&l, &wanted), l))
                 .filter(|(d, _)| *d <= 2)
                 .min();
