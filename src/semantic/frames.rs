@@ -49,7 +49,7 @@ pub enum FrameEffect {
     /// A frame statement or an assignment to `$P_PFRAME`: the programmable
     /// frame holds something of the program's own.
     SetsProgrammable,
-    /// Another frame changes (system or settable frames, `TOFRAME`, ...).
+    /// Another frame changes (system or settable frames, `TOROT`, `PAROT`, ...).
     SetsOther,
 }
 
@@ -78,9 +78,8 @@ pub fn frame_effect(source: &[u8], block: &Block) -> Option<FrameEffect> {
             StatementKind::Command(name) if is_frame_command(name.text(source)) => {
                 // TOFRAME writes the programmable frame unless the machine
                 // data sends it to the tool frame: take the stronger effect.
-                if name.text(source).len() >= 7
-                    && name.text(source)[..7].eq_ignore_ascii_case(b"TOFRAME")
-                {
+                let text = name.text(source);
+                if text.len() >= 7 && text[..7].eq_ignore_ascii_case(b"TOFRAME") {
                     FrameEffect::SetsProgrammable
                 } else {
                     FrameEffect::SetsOther
@@ -101,12 +100,14 @@ pub fn frame_effect(source: &[u8], block: &Block) -> Option<FrameEffect> {
 /// `$P_PFRAME` is the programmable frame; other `$P_...FRAME` and the
 /// settable and basic frame arrays (`$P_UIFR`, `$P_CHBFR`, ...) are frames too.
 fn frame_variable(name: &[u8]) -> Option<FrameEffect> {
-    let upper = name.to_ascii_uppercase();
-    if upper == b"$P_PFRAME" {
+    if name.eq_ignore_ascii_case(b"$P_PFRAME") {
         return Some(FrameEffect::SetsProgrammable);
     }
-    let frame = upper.starts_with(b"$P_") && (upper.ends_with(b"FRAME") || upper.ends_with(b"FR"))
-        || upper.starts_with(b"$P_UIFR");
+    let ends = |suffix: &[u8]| {
+        name.len() >= suffix.len() && name[name.len() - suffix.len()..].eq_ignore_ascii_case(suffix)
+    };
+    let frame =
+        name.len() > 3 && name[..3].eq_ignore_ascii_case(b"$P_") && (ends(b"FRAME") || ends(b"FR"));
     frame.then_some(FrameEffect::SetsOther)
 }
 
@@ -250,5 +251,79 @@ pub fn emitted_blocks(source: &[u8], mut block: impl FnMut(usize) -> Option<Bloc
         expected.len()
     } else {
         0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::{parse, tree::LineKind};
+
+    fn blocks(source: &[u8]) -> Vec<Block> {
+        parse(source)
+            .lines
+            .into_iter()
+            .filter_map(|line| match line.kind {
+                LineKind::Block(block) => Some(block),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn frame_statements_are_told_apart() {
+        let source = b"TRANS\nROT\nTRANS X10\nAROT Z=5\n$P_PFRAME=CTRANS(X,1)\n$P_UIFR[1]=CROT(Z,5)\nTOROT\nTOFRAME\nG1 X10\nR1=5\n";
+        let effects: Vec<_> = blocks(source)
+            .iter()
+            .map(|b| frame_effect(source, b))
+            .collect();
+        use FrameEffect::*;
+        assert_eq!(
+            effects,
+            [
+                Some(ClearsProgrammable),
+                Some(ClearsProgrammable),
+                Some(SetsProgrammable),
+                Some(SetsProgrammable),
+                Some(SetsProgrammable),
+                Some(SetsOther),
+                Some(SetsOther),
+                Some(SetsProgrammable),
+                None,
+                None
+            ]
+        );
+    }
+
+    #[test]
+    fn only_the_blocks_a_form_writes_count_as_emitted() {
+        let count = |text: &[u8]| {
+            let found = blocks(text);
+            emitted_blocks(text, |i| found.get(i).cloned())
+        };
+        assert_eq!(
+            count(b"N10 CYCLE800(0,\"H\",0,39,0,0,0,1,2,3,0,0,0,-1)\nAROT Z=5\n"),
+            1
+        );
+        let frames =
+            b"N10 TRANS X0 Y0 Z0\nAROT Z=1\nAROT X=2\nAROT Y=3\nATRANS X0 Y0 Z0\nAROT Z=5\n";
+        assert_eq!(count(frames), 5);
+        let traori = b"TRAORI\nORIWKS\nATRANS X0 Y0 Z0\nAROT Z=1\nAROT X=2\nAROT Y=3\nATRANS X0 Y0 Z0\nG0 A3=0 B3=0 C3=1\n";
+        assert_eq!(count(traori), 8);
+        // One block short, or a user's block in between: not sinuprep's.
+        assert_eq!(
+            count(b"TRANS X0 Y0 Z0\nAROT Z=1\nAROT X=2\nATRANS X0 Y0 Z0\n"),
+            0
+        );
+        assert_eq!(count(b"_CYC600_1=\"H\" _CYC600_2=1\n"), 0);
+    }
+
+    #[test]
+    fn the_marker_keeps_a_cycle600_call() {
+        let source = b"  ; sinuprep: CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)";
+        let call = marked_call(source, Span::new(0, source.len())).expect("a call");
+        assert_eq!(&source[call.span.start..call.span.start + 8], b"CYCLE600");
+        let other = b"; sinuprep: ignore N005";
+        assert!(marked_call(other, Span::new(0, other.len())).is_none());
     }
 }
