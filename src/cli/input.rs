@@ -1,7 +1,9 @@
 //! Finding and reading the programs named on the command line.
 
-use std::io::Read;
+use std::io::{Read, Seek, Write};
 use std::ops::Deref;
+use std::os::fd::AsFd;
+use std::os::unix::fs::OpenOptionsExt;
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
@@ -69,6 +71,62 @@ fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
     }
 }
 
+/// Standard input: read whole while it is small; from [`MAPPED_FROM`] bytes
+/// on, what came and what follows go to an unnamed file in the temporary
+/// directory (`TMPDIR`), which is mapped as a large program is: a program
+/// piped in takes no more of the process's own memory than one read from a
+/// file. The file has no name from the start (removed as soon as it is
+/// made), so nothing is left behind, whatever ends the run.
+fn read_stdin() -> std::io::Result<Bytes> {
+    let mut stdin = std::io::stdin().lock();
+    // A file redirected to stdin (`< PART.MPF`), unread so far: map it.
+    let mut file = std::fs::File::from(stdin.as_fd().try_clone_to_owned()?);
+    if let (Ok(metadata), Ok(0)) = (file.metadata(), file.stream_position()) {
+        if metadata.is_file() && metadata.len() >= MAPPED_FROM {
+            return Ok(Bytes::Mapped(Mapped::new(&file)?));
+        }
+    }
+    let mut head = Vec::new();
+    (&mut stdin).take(MAPPED_FROM).read_to_end(&mut head)?;
+    if (head.len() as u64) < MAPPED_FROM {
+        return Ok(Bytes::Read(head));
+    }
+    let mut spool = unnamed_file()?;
+    spool.write_all(&head)?;
+    drop(head);
+    std::io::copy(&mut stdin, &mut spool)?;
+    Ok(Bytes::Mapped(Mapped::new(&spool)?))
+}
+
+/// A new file in the temporary directory, already removed from it.
+fn unnamed_file() -> std::io::Result<std::fs::File> {
+    let dir = std::env::temp_dir();
+    for _ in 0..64 {
+        let path = dir.join(format!(
+            ".sinuprep-stdin-{:016x}",
+            crate::cli::output::random()
+        ));
+        match std::fs::OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create_new(true)
+            .mode(0o600)
+            .open(&path)
+        {
+            Ok(file) => {
+                std::fs::remove_file(&path)?;
+                return Ok(file);
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    Err(std::io::Error::new(
+        std::io::ErrorKind::AlreadyExists,
+        "no file could be made in the temporary directory for standard input",
+    ))
+}
+
 /// A file's identity: device and inode.
 pub fn identity(metadata: &std::fs::Metadata) -> (u64, u64) {
     use std::os::unix::fs::MetadataExt;
@@ -106,19 +164,16 @@ fn is_program(path: &Path) -> bool {
 }
 
 /// Reads a file, or stdin for `-`; a file of [`MAPPED_FROM`] bytes or more
-/// is mapped instead (stdin is read whole).
+/// is mapped instead, and so is stdin from that size on, spooled to a file.
 pub fn read(path: &Path) -> Result<SourceFile, CliError> {
     if path == Path::new("-") {
-        let mut bytes = Vec::new();
-        std::io::stdin()
-            .read_to_end(&mut bytes)
-            .map_err(|source| CliError::Read {
-                path: path.to_path_buf(),
-                source,
-            })?;
+        let bytes = read_stdin().map_err(|source| CliError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
         return Ok(SourceFile {
             name: "<stdin>".to_string(),
-            bytes: Bytes::Read(bytes),
+            bytes,
         });
     }
     if path.is_dir() {

@@ -249,7 +249,7 @@ fn kind(metadata: &Metadata) -> &'static str {
 
 /// 64 bits nobody can predict: the standard library's per-process random
 /// hash keys, over the time and the process id.
-fn random() -> u64 {
+pub(crate) fn random() -> u64 {
     let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
     let nanos = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
