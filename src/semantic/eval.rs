@@ -121,6 +121,10 @@ pub fn evaluate(source: &[u8], expr: &Expr, lookup: &dyn Lookup) -> Result<Value
             }
             lookup.variable(&variable_key(source, variable, lookup)?)
         }
+        ExprKind::Unary {
+            op: UnaryOp::Concat,
+            operand,
+        } => Ok(Value::Text(as_text(evaluate(source, operand, lookup)?))),
         ExprKind::Unary { op, operand } => {
             let value = number(evaluate(source, operand, lookup)?)?;
             finite(match op {
@@ -128,6 +132,7 @@ pub fn evaluate(source: &[u8], expr: &Expr, lookup: &dyn Lookup) -> Result<Value
                 UnaryOp::Plus => value,
                 UnaryOp::Not => truth(value == 0.0),
                 UnaryOp::BitNot => !(integer(value)?) as f64,
+                UnaryOp::Concat => unreachable!("handled above"),
             })
         }
         ExprKind::Binary { op, lhs, rhs } => binary(
@@ -156,6 +161,14 @@ pub fn evaluate(source: &[u8], expr: &Expr, lookup: &dyn Lookup) -> Result<Value
             }
             function(&name, &args)
         }
+    }
+}
+
+/// A value as `<<` turns it into a string.
+fn as_text(value: Value) -> String {
+    match value {
+        Value::Text(t) => t,
+        Value::Number(n) => format!("{n}"),
     }
 }
 
@@ -202,11 +215,7 @@ fn binary(
         (Err(e), _) | (_, Err(e)) => return Err(e),
     };
     if op == BinaryOp::Concat {
-        let text = |v: Value| match v {
-            Value::Text(t) => t,
-            Value::Number(n) => format!("{n}"),
-        };
-        return Ok(Value::Text(text(lhs) + &text(rhs)));
+        return Ok(Value::Text(as_text(lhs) + &as_text(rhs)));
     }
     if let (Value::Text(a), Value::Text(b)) = (&lhs, &rhs) {
         return match op {
@@ -379,6 +388,13 @@ mod tests {
 
     fn num(text: &str) -> f64 {
         eval(text).ok().and_then(|v| v.number()).unwrap_or(f64::NAN)
+    }
+
+    #[test]
+    fn unary_concatenation_makes_a_string() {
+        assert_eq!(eval("<< R1"), Ok(Value::Text("10".into())));
+        assert_eq!(eval("<< R1 << \"S\""), Ok(Value::Text("10S".into())));
+        assert_eq!(eval("\"A\" << << 2"), Ok(Value::Text("A2".into())));
     }
 
     #[test]

@@ -7,7 +7,9 @@
 
 use nom::Input as _;
 
-use crate::syntax::expr::{parse_arguments, parse_expr, parse_indices, parse_list};
+use crate::syntax::expr::{
+    bracket_after_blank, parse_arguments, parse_expr, parse_indices, parse_list,
+};
 use crate::syntax::lexer::{
     is_name_char, is_name_start, keyword, offset, parse_blank, parse_name, parse_number, peek,
     peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
@@ -391,7 +393,12 @@ fn parse_assignment_call_or_command<'a>(
     name: Name,
     after_name: Input<'a>,
 ) -> PResult<'a, StatementKind> {
-    let (after_index, indices) = parse_indices(after_name, 0)?;
+    let (after_index, indices) = parse_indices(bracket_after_blank(after_name), 0)?;
+    let after_index = if indices.is_empty() {
+        after_name
+    } else {
+        after_index
+    };
     let next = parse_blank(after_index);
     match peek(&next) {
         Some(b'=') if peek_at(&next, 1) != Some(b'=') => {
@@ -509,7 +516,7 @@ pub fn parse_data_type(input: Input) -> PResult<DataType> {
     let mut rest = rest;
     let mut length = None;
     if kind == TypeKind::String {
-        let (after, mut list) = parse_indices(rest, 0)?;
+        let (after, mut list) = parse_indices(bracket_after_blank(rest), 0)?;
         if list.len() > 1 {
             return SyntaxError::fail(
                 offset(&rest),
@@ -534,8 +541,9 @@ pub fn parse_declarator(input: Input) -> PResult<Declarator> {
     let Ok((rest, name)) = parse_name(input) else {
         return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("a variable name"));
     };
-    let (rest, dimensions) = if peek(&rest) == Some(b'[') {
-        let (rest, list) = parse_list(rest, b'[', b']', 0)?;
+    let open = bracket_after_blank(rest);
+    let (rest, dimensions) = if peek(&open) == Some(b'[') {
+        let (rest, list) = parse_list(open, b'[', b']', 0)?;
         (rest, list.items)
     } else {
         (rest, Vec::new())

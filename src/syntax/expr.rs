@@ -130,13 +130,14 @@ fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
     Ok((input, lhs))
 }
 
-/// `unary := ('-' | '+' | 'NOT' | 'B_NOT') unary | primary`
+/// `unary := ('-' | '+' | '<<' | 'NOT' | 'B_NOT') unary | primary`
 fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
     let depth = deeper(&input, depth)?;
     let start = input;
     let symbol = match peek(&input) {
         Some(b'-') => Some((UnaryOp::Neg, 1)),
         Some(b'+') => Some((UnaryOp::Plus, 1)),
+        Some(b'<') if peek_at(&input, 1) == Some(b'<') => Some((UnaryOp::Concat, 2)),
         _ => None,
     };
     let word = symbol.or_else(|| {
@@ -236,10 +237,13 @@ fn close_error<T>(open: &Input, at: &Input, bracket: u8) -> PResult<'static, T> 
     }
 }
 
-/// `variable := name ('[' expr (',' expr)* ']')?` ; `call := name arguments`
+/// `variable := name (blank '[' expr (',' expr)* ']')?` ;
+/// `call := name blank arguments`: a blank may stand between a name and its
+/// bracket (`ABS ( R1 )`, `_OVR [4]`, as machine builders' cycles write).
 fn parse_variable_or_call(input: Input, depth: usize) -> PResult<Expr> {
     let start = input;
     let (rest, name) = parse_name(input)?;
+    let rest = bracket_after_blank(rest);
     if peek(&rest) == Some(b'(') {
         let (rest, arguments) = parse_arguments(rest, depth)?;
         return Ok((
@@ -263,6 +267,16 @@ fn parse_variable_or_call(input: Input, depth: usize) -> PResult<Expr> {
             }),
         },
     ))
+}
+
+/// Where the `(` or `[` after a name stands, past blanks; `input` itself
+/// when no bracket follows (the name ends there).
+pub fn bracket_after_blank(input: Input) -> Input {
+    let after = parse_blank(input);
+    match peek(&after) {
+        Some(b'(' | b'[') => after,
+        _ => input,
+    }
 }
 
 /// `indices := ('[' expr (',' expr)* ']')?`

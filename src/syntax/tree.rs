@@ -412,6 +412,9 @@ pub enum UnaryOp {
     Plus,
     Not,
     BitNot,
+    /// `<<` with nothing before it: the operand as a string (Siemens, Job
+    /// Planning, "String concatenation": `STRING_ERG = << any type`).
+    Concat,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
