@@ -11,8 +11,8 @@ use crate::syntax::expr::{
     bracket_after_blank, parse_arguments, parse_expr, parse_indices, parse_list,
 };
 use crate::syntax::lexer::{
-    is_name_char, is_name_start, keyword, offset, parse_blank, parse_name, parse_number, peek,
-    peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
+    is_name_char, is_name_start, is_one_of, keyword, offset, parse_blank, parse_name, parse_number,
+    peek, peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind, RESERVED,
 };
 use crate::syntax::tree::*;
 
@@ -170,6 +170,16 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     let (after_name, name) = parse_name(input)?;
     let next = parse_blank(after_name);
     let is_assignment_like = matches!(peek(&next), Some(b'=' | b'['));
+    if !is_assignment_like {
+        if let Some(len) = multi_letter_address(&input.fragment()[..name.span.len()]) {
+            return SyntaxError::fail(
+                offset(&input) + len,
+                SyntaxErrorKind::Expected(
+                    "`=` between a multi-letter address and its value (`CR=25`)",
+                ),
+            );
+        }
+    }
     if !is_assignment_like && first != b'$' {
         let mut buffer = [0u8; 16];
         if let Some(parsed) =
@@ -179,6 +189,18 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
         }
     }
     parse_assignment_call_or_command(input, name, after_name)
+}
+
+/// The length of the multi-letter address (radius, chamfer, rounding) that
+/// `name` runs into its digits, as `CR25` for `CR=25`.
+fn multi_letter_address(name: &[u8]) -> Option<usize> {
+    ["RNDM", "CHF", "CHR", "RND", "CR"]
+        .iter()
+        .find_map(|address| {
+            let len = address.len();
+            let starts = name.len() > len && name[..len].eq_ignore_ascii_case(address.as_bytes());
+            (starts && name[len..].iter().all(u8::is_ascii_digit)).then_some(len)
+        })
 }
 
 fn stray_kind(byte: u8) -> SyntaxErrorKind {
@@ -235,7 +257,12 @@ fn parse_keyword_statement<'a>(
         b"GOTO" | b"GOTOF" | b"GOTOB" | b"GOTOC" | b"GOTOS" => {
             Some(parse_goto(start).map(|(r, g)| (r, StatementKind::Goto(g))))
         }
-        b"CALL" | b"PCALL" | b"MCALL" | b"EXTCALL" => Some(parse_indirect_call(after, name)),
+        b"CALL" | b"PCALL" | b"MCALL" | b"EXTCALL" | b"ISOCALL" | b"CALLPATH" => {
+            // `MCALL` alone ends a modal call, `CALLPATH` alone resets the
+            // search path; the others name what they call.
+            let bare_allowed = matches!(word, b"MCALL" | b"CALLPATH");
+            Some(parse_indirect_call(after, name, bare_allowed))
+        }
         b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => {
             Some(parse_expr(parse_blank(after)).map(|(r, condition)| {
                 (
@@ -279,6 +306,13 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
 
     // `X1=100`, `A3=0.5`, `R1 = 2`: digits then `=` make an extension.
     if peek(&equals) == Some(b'=') && peek_at(&equals, 1) != Some(b'=') {
+        // A G function is written alone (`G0`); `G[8]=2` is the indexed form.
+        if digits > 0 && input.fragment()[0].eq_ignore_ascii_case(&b'G') {
+            return SyntaxError::fail(
+                offset(&equals),
+                SyntaxErrorKind::Expected("no value after a G function (`G0`, not `G0=10`)"),
+            );
+        }
         let (rest, value) = parse_expr(parse_blank(equals.take_from(1)))?;
         if is_r && digits > 0 {
             let name = Name {
@@ -318,6 +352,17 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
             indices,
         };
         return Ok((rest, StatementKind::Assign(Assign { target, value })));
+    }
+    // `L6(TNR)`: a subprogram named L and digits, called with arguments.
+    if digits > 0 && input.fragment()[0].eq_ignore_ascii_case(&b'L') {
+        let open = bracket_after_blank(after_digits);
+        if peek(&open) == Some(b'(') {
+            let name = Name {
+                span: span_between(&input, &after_digits),
+            };
+            let (rest, arguments) = parse_arguments(open, 0)?;
+            return Ok((rest, StatementKind::Call(Call { name, arguments })));
+        }
     }
     // `X-12.5`, `F.02`, `G01`: the number directly after the letter.
     let mut number_start = after_letter;
@@ -363,9 +408,11 @@ fn plain_word(input: Input) -> Option<(Input, Statement)> {
         return None;
     }
     let (rest, mut number) = parse_number(input.take_from(number_start)).ok()?;
-    // An extension (`X1 =5`), a broken exponent or a second point: the
-    // general path, which knows what to say.
-    if matches!(peek(&rest), Some(b'E' | b'e' | b'.')) || peek(&parse_blank(rest)) == Some(b'=') {
+    // An extension (`X1 =5`), a call (`L6(TNR)`), a broken exponent or a
+    // second point: the general path, which knows what to say.
+    if matches!(peek(&rest), Some(b'E' | b'e' | b'.'))
+        || matches!(peek(&parse_blank(rest)), Some(b'=' | b'('))
+    {
         return None;
     }
     let after_letter = input.take_from(1);
@@ -418,6 +465,13 @@ fn parse_assignment_call_or_command<'a>(
             offset(&next),
             SyntaxErrorKind::Expected("`=` after an indexed variable"),
         ),
+        // SETINT(n) names the interrupt it assigns.
+        _ if start.fragment()[..name.span.len()].eq_ignore_ascii_case(b"SETINT") => {
+            SyntaxError::fail(
+                offset(&next),
+                SyntaxErrorKind::Expected("`(` and the interrupt number: SETINT(n)"),
+            )
+        }
         _ => Ok((after_name, StatementKind::Command(name))),
     }
 }
@@ -541,6 +595,21 @@ pub fn parse_declarator(input: Input) -> PResult<Declarator> {
     let Ok((rest, name)) = parse_name(input) else {
         return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("a variable name"));
     };
+    let text = &input.fragment()[..name.span.len()];
+    if text.len() == 1 {
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected(
+                "a variable name of two characters or more (one letter is an address)",
+            ),
+        );
+    }
+    if is_one_of(text, RESERVED) {
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("a variable name that is not a reserved word"),
+        );
+    }
     let open = bracket_after_blank(rest);
     let (rest, dimensions) = if peek(&open) == Some(b'[') {
         let (rest, list) = parse_list(open, b'[', b']', 0)?;
@@ -895,9 +964,19 @@ fn is_operator_after_number(input: Input) -> bool {
 }
 
 /// `indirect_call := ('CALL' | 'PCALL' | 'MCALL' | 'EXTCALL') any?` (kept as written up to the comment)
-pub fn parse_indirect_call<'a>(input: Input<'a>, keyword_name: Name) -> PResult<'a, StatementKind> {
+pub fn parse_indirect_call<'a>(
+    input: Input<'a>,
+    keyword_name: Name,
+    bare_allowed: bool,
+) -> PResult<'a, StatementKind> {
     let at = parse_blank(input);
     let len = target_len(at.fragment());
+    if len == 0 && !bare_allowed {
+        return SyntaxError::fail(
+            offset(&at),
+            SyntaxErrorKind::Expected("the program to call: its name, or its path in quotes"),
+        );
+    }
     if len == 0 {
         return Ok((
             input,

@@ -243,6 +243,15 @@ fn close_error<T>(open: &Input, at: &Input, bracket: u8) -> PResult<'static, T> 
 fn parse_variable_or_call(input: Input, depth: usize) -> PResult<Expr> {
     let start = input;
     let (rest, name) = parse_name(input)?;
+    // An operator written as a word, or DO, where an operand belongs.
+    let text = &input.fragment()[..name.span.len()];
+    if text.eq_ignore_ascii_case(b"DO")
+        || WORD_OPERATORS
+            .iter()
+            .any(|(word, ..)| word.as_bytes().eq_ignore_ascii_case(text))
+    {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("an operand"));
+    }
     let rest = bracket_after_blank(rest);
     if peek(&rest) == Some(b'(') {
         let (rest, arguments) = parse_arguments(rest, depth)?;

@@ -131,6 +131,26 @@ pub fn symbol(byte: u8) -> impl Fn(Input) -> PResult<Input> {
 }
 
 /// `name := '$'* (letter | '_') (letter | digit | '_')*`
+/// Words of the language that name nothing else: the control keywords,
+/// the operators, the data types and the frame statements (Siemens,
+/// Fundamentals, "Reserved words"). A variable cannot take one as its name.
+pub const RESERVED: &[&str] = &[
+    "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "TO", "ENDFOR", "LOOP", "ENDLOOP", "REPEAT",
+    "REPEATB", "UNTIL", "CASE", "OF", "DEFAULT", "GOTO", "GOTOF", "GOTOB", "GOTOC", "GOTOS", "DEF",
+    "REDEF", "PROC", "EXTERN", "DEFINE", "AS", "RET", "DO", "WHEN", "WHENEVER", "FROM", "EVERY",
+    "AND", "OR", "XOR", "NOT", "B_AND", "B_OR", "B_XOR", "B_NOT", "DIV", "MOD", "INT", "REAL",
+    "BOOL", "CHAR", "STRING", "AXIS", "FRAME", "TRANS", "ATRANS", "ROT", "AROT", "ROTS", "AROTS",
+    "CROTS", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "CALL", "PCALL", "MCALL", "EXTCALL",
+    "ISOCALL",
+];
+
+/// Whether `text` is one of `words` (any case).
+pub fn is_one_of(text: &[u8], words: &[&str]) -> bool {
+    words
+        .iter()
+        .any(|w| w.as_bytes().eq_ignore_ascii_case(text))
+}
+
 pub fn parse_name(input: Input) -> PResult<Name> {
     let start = input;
     let (input, _) = take_while(|b| b == b'$').parse(input)?;
