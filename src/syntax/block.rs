@@ -232,9 +232,19 @@ fn parse_keyword_statement<'a>(
     word: &[u8],
 ) -> Option<PResult<'a, StatementKind>> {
     let simple = |kind: StatementKind| Some(Ok((after, kind)));
-    let expr = |make: fn(Expr) -> StatementKind| {
-        Some(parse_expr(parse_blank(after)).map(|(r, e)| (r, make(e))))
+    // A condition followed by a lone `=` was meant as a comparison.
+    let condition = |input: Input<'a>| {
+        let (rest, condition) = parse_expr(parse_blank(input))?;
+        let next = parse_blank(rest);
+        if peek(&next) == Some(b'=') && peek_at(&next, 1) != Some(b'=') {
+            return SyntaxError::fail(
+                offset(&next),
+                SyntaxErrorKind::Expected("`==` to compare (one `=` assigns: `IF R1==5`)"),
+            );
+        }
+        Ok((rest, condition))
     };
+    let expr = |make: fn(Expr) -> StatementKind| Some(condition(after).map(|(r, e)| (r, make(e))));
     match word {
         b"DEF" | b"REDEF" => {
             Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d)))))
@@ -264,7 +274,7 @@ fn parse_keyword_statement<'a>(
             Some(parse_indirect_call(after, name, bare_allowed))
         }
         b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => {
-            Some(parse_expr(parse_blank(after)).map(|(r, condition)| {
+            Some(condition(after).map(|(r, condition)| {
                 (
                     r,
                     StatementKind::SyncCondition {
