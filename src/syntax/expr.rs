@@ -114,8 +114,20 @@ fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
         if level < min_level {
             break;
         }
-        chain_depth = deeper(&input, chain_depth)?;
-        let (rest, rhs) = parse_binary(parse_blank(after), level + 1, chain_depth)?;
+        // Where this chain took most of the depth, it is too long, not too deep.
+        let chain = chain_depth - depth;
+        let too_long = move |error: nom::Err<SyntaxError>| match error {
+            nom::Err::Failure(SyntaxError {
+                at,
+                kind: SyntaxErrorKind::TooDeep,
+            }) if chain + 1 >= MAX_DEPTH / 2 => {
+                nom::Err::Failure(SyntaxError::new(at, SyntaxErrorKind::ChainTooLong))
+            }
+            other => other,
+        };
+        chain_depth = deeper(&input, chain_depth).map_err(too_long)?;
+        let (rest, rhs) =
+            parse_binary(parse_blank(after), level + 1, chain_depth).map_err(too_long)?;
         let span = lhs.span.to(rhs.span);
         lhs = Expr {
             span,
@@ -455,11 +467,11 @@ mod tests {
     #[test]
     fn long_operator_chains_are_refused_not_overflowed() {
         let text = "1".to_string() + &"+1".repeat(100_000);
-        let error = parse_expr(Input::new(text.as_bytes(), 0)).expect_err("too deep");
+        let error = parse_expr(Input::new(text.as_bytes(), 0)).expect_err("too long");
         assert!(matches!(
             error,
             nom::Err::Failure(SyntaxError {
-                kind: SyntaxErrorKind::TooDeep,
+                kind: SyntaxErrorKind::ChainTooLong,
                 ..
             })
         ));

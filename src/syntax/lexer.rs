@@ -37,6 +37,8 @@ pub enum SyntaxErrorKind {
     MissingValue,
     /// Parentheses or operators nested deeper than the parser follows.
     TooDeep,
+    /// More operators in a row than the parser follows (`1+1+...+1`).
+    ChainTooLong,
     /// A line longer than the parser reads into a tree ([`crate::syntax::MAX_PARSED_LINE`]).
     TooLong,
 }

@@ -389,6 +389,15 @@ fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic
         .message(format!("address `{}` has no value", show(one)))
         .label("value missing")
         .help("write the value directly after the address (`X0`, not `X`) or as `X=expression`"),
+        SyntaxErrorKind::ChainTooLong => {
+            Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
+                .message(format!(
+                    "more than {} operators in a row in one expression",
+                    expr::MAX_DEPTH
+                ))
+                .label("too many operators")
+                .help("split the expression over several assignments (a block takes 512 characters on the control)")
+        }
         SyntaxErrorKind::TooDeep => {
             Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
                 .message(format!(
