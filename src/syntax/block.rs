@@ -246,6 +246,7 @@ fn parse_keyword_statement<'a>(
     };
     let expr = |make: fn(Expr) -> StatementKind| Some(condition(after).map(|(r, e)| (r, make(e))));
     match word {
+        b"REDEF" if !starts_typed_def(after) => Some(parse_redef(after)),
         b"DEF" | b"REDEF" => {
             Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d)))))
         }
@@ -518,6 +519,45 @@ pub fn parse_def(input: Input) -> PResult<Def> {
             ));
         }
     }
+}
+
+/// Whether what follows `DEF`/`REDEF` starts as a definition with a type
+/// does (a scope, an attribute or a data type first).
+fn starts_typed_def(input: Input) -> bool {
+    let input = parse_blank(input);
+    let Ok((_, name)) = parse_name(input) else {
+        return false;
+    };
+    let text = &input.fragment()[..name.span.len()];
+    let is = |list: &[&str]| list.iter().any(|k| text.eq_ignore_ascii_case(k.as_bytes()));
+    is(&["NCK", "CHAN"])
+        || is(&VALUED_ATTRIBUTES)
+        || is(&FLAG_ATTRIBUTES)
+        || TYPES
+            .iter()
+            .any(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes()))
+}
+
+/// `redef := 'REDEF' name attribute+`: new attributes (access levels,
+/// initialisation) for a variable defined elsewhere (Siemens, Job Planning,
+/// "REDEF").
+pub fn parse_redef(input: Input) -> PResult<StatementKind> {
+    let input = parse_blank(input);
+    let Ok((rest, name)) = parse_name(input) else {
+        return SyntaxError::fail(
+            offset(&input),
+            SyntaxErrorKind::Expected("the name of the variable to redefine"),
+        );
+    };
+    let after = parse_blank(rest);
+    let (rest, attributes) = parse_attributes(after)?;
+    if attributes.is_empty() {
+        return SyntaxError::fail(
+            offset(&after),
+            SyntaxErrorKind::Expected("its new attributes (APR, APW, APX, INIRE, SYNR, ...)"),
+        );
+    }
+    Ok((rest, StatementKind::Redef { name, attributes }))
 }
 
 const VALUED_ATTRIBUTES: [&str; 10] = [

@@ -100,6 +100,12 @@ pub enum StatementKind {
     // stays small: CAM blocks of address words are moved and stored by the
     // million.
     Def(Box<Def>),
+    /// `REDEF NAME APR 7 APW 1`: new attributes for a variable (a GUD, a
+    /// system variable, machine data) defined elsewhere.
+    Redef {
+        name: Name,
+        attributes: Vec<Attribute>,
+    },
     Proc(Proc),
     /// `EXTERN NAME(REAL, VAR BOOL)`: the declaration is kept as written.
     Extern {

@@ -102,6 +102,16 @@ fn statement_text(source: &[u8], kind: &StatementKind) -> String {
                 variables.join("; ")
             )
         }
+        StatementKind::Redef { name, attributes } => {
+            let attributes: Vec<String> = attributes
+                .iter()
+                .map(|a| match &a.value {
+                    Some(v) => format!("{}={}", t(a.keyword.span), e(v)),
+                    None => t(a.keyword.span),
+                })
+                .collect();
+            format!("redef {} attrs=[{}]", t(name.span), attributes.join(" "))
+        }
         StatementKind::Proc(p) => {
             let params: Vec<String> = p
                 .parameters

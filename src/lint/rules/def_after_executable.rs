@@ -73,6 +73,7 @@ impl Check for Checker {
                     }
                 }
                 StatementKind::Proc(_)
+                | StatementKind::Redef { .. }
                 | StatementKind::Extern { .. }
                 | StatementKind::Define { .. } => {}
                 _ => {
