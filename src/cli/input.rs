@@ -75,8 +75,9 @@ fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
 /// on, what came and what follows go to an unnamed file in the temporary
 /// directory (`TMPDIR`), which is mapped as a large program is: a program
 /// piped in takes no more of the process's own memory than one read from a
-/// file. The file has no name from the start (removed as soon as it is
-/// made), so nothing is left behind, whatever ends the run.
+/// file. The file is removed from its directory as soon as it is
+/// made, so nothing is left behind, whatever ends the run. A file
+/// redirected to stdin is mapped as it is.
 fn read_stdin() -> std::io::Result<Bytes> {
     let mut stdin = std::io::stdin().lock();
     // A file redirected to stdin (`< PART.MPF`), unread so far: map it.

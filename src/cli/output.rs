@@ -56,8 +56,9 @@ pub fn same_file(input: &Path, output: &Path) -> bool {
 /// Writes `path` with `write`: atomically where `path` is a regular file or
 /// does not exist yet, and straight into it where it is something else (a
 /// device such as `/dev/stdout`, a FIFO). With `backup`, those bytes go to
-/// `<path>.bak` first, atomically as well. On any failure `path` and its
-/// backup are untouched, and no temporary file is left.
+/// `<path>.bak` first, atomically as well. On any failure `path` is
+/// untouched (a backup already written holds its bytes), and no temporary
+/// file is left.
 pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
