@@ -174,10 +174,10 @@ enum Shape {
     Cycle800,
     Traori,
     Oriwks,
-    /// `TRANS X.. Y.. Z..` or `ATRANS X.. Y.. Z..`.
-    Shift {
-        additive: bool,
-    },
+    /// `TRANS X.. Y.. Z..`.
+    Trans,
+    /// `ATRANS X.. Y.. Z..`.
+    Atrans,
     Arot,
     /// Address words only: the tool direction after TRAORI.
     Words,
@@ -199,8 +199,8 @@ fn shape(source: &[u8], block: &Block) -> Option<Shape> {
             StatementKind::Command(name) if name.is(source, "TRAORI") => Shape::Traori,
             StatementKind::Command(name) if name.is(source, "ORIWKS") => Shape::Oriwks,
             StatementKind::Frame(frame) => match frame.kind {
-                FrameKind::Trans => Shape::Shift { additive: false },
-                FrameKind::ATrans => Shape::Shift { additive: true },
+                FrameKind::Trans => Shape::Trans,
+                FrameKind::ATrans => Shape::Atrans,
                 FrameKind::ARot => Shape::Arot,
                 _ => return None,
             },
@@ -221,34 +221,32 @@ fn shape(source: &[u8], block: &Block) -> Option<Shape> {
 /// assignments the walk follows as they are). `block(i)` parses the `i`-th
 /// line after the marker, `None` past the end.
 pub fn emitted_blocks(source: &[u8], mut block: impl FnMut(usize) -> Option<Block>) -> usize {
-    let shift = |s: Shape| matches!(s, Shape::Shift { .. });
-    let frames: [&dyn Fn(Shape) -> bool; 5] = [
-        &shift,
-        &|s| s == Shape::Arot,
-        &|s| s == Shape::Arot,
-        &|s| s == Shape::Arot,
-        &|s| s == Shape::Shift { additive: true },
+    use Shape::*;
+    // Each block of a form, with the shapes it may take.
+    const FRAMES: &[&[Shape]] = &[&[Trans, Atrans], &[Arot], &[Arot], &[Arot], &[Atrans]];
+    const TRAORI: &[&[Shape]] = &[
+        &[Traori],
+        &[Oriwks],
+        &[Trans, Atrans],
+        &[Arot],
+        &[Arot],
+        &[Arot],
+        &[Atrans],
+        &[Words],
     ];
-    let first = block(0).and_then(|b| shape(source, &b));
-    let expected: Vec<&dyn Fn(Shape) -> bool> = match first {
-        Some(Shape::Cycle800) => return 1,
-        Some(Shape::Shift { .. }) => frames.to_vec(),
-        Some(Shape::Traori) => {
-            let mut expected: Vec<&dyn Fn(Shape) -> bool> =
-                vec![&|s| s == Shape::Traori, &|s| s == Shape::Oriwks];
-            expected.extend(frames);
-            expected.push(&|s| s == Shape::Words);
-            expected
-        }
+    let form = match block(0).and_then(|b| shape(source, &b)) {
+        Some(Cycle800) => return 1,
+        Some(Trans | Atrans) => FRAMES,
+        Some(Traori) => TRAORI,
         _ => return 0,
     };
-    let all = expected.iter().enumerate().all(|(i, matches)| {
+    let fits = form.iter().enumerate().all(|(i, shapes)| {
         block(i)
             .and_then(|b| shape(source, &b))
-            .is_some_and(matches)
+            .is_some_and(|s| shapes.contains(&s))
     });
-    if all {
-        expected.len()
+    if fits {
+        form.len()
     } else {
         0
     }

@@ -650,18 +650,10 @@ impl<'a> Walker<'a> {
             if call_kind(&upper(call.name.text(self.source))) != CallKind::Cycle600 {
                 continue;
             }
-            self.analysis.calls.push(CallSite {
-                line: pc,
-                content: self.lines.raw(pc).content,
-                statement: statement.span,
-                bound: None,
-                evaluation: None,
-                active: env.active.clone(),
-                user_frame: env.user_frame.clone(),
-                runtime: None,
-                needs_stopre: false,
-                diagnostics: vec![cycle600::nested_too_deep(statement.span, MAX_NESTING)],
-            });
+            let mut site = self.site(pc, statement, env.active.clone(), env);
+            site.diagnostics
+                .push(cycle600::nested_too_deep(statement.span, MAX_NESTING));
+            self.analysis.calls.push(site);
         }
     }
 
@@ -672,6 +664,22 @@ impl<'a> Walker<'a> {
         if let StatementKind::Call(call) = &statement.kind {
             let site = self.evaluate_call(pc, statement, call, env);
             self.replayed.push(site);
+        }
+    }
+
+    /// The call at line `pc`, before it is bound.
+    fn site(&self, pc: usize, statement: &Statement, active: Active, env: &Env) -> CallSite {
+        CallSite {
+            line: pc,
+            content: self.lines.raw(pc).content,
+            statement: statement.span,
+            bound: None,
+            evaluation: None,
+            active,
+            user_frame: env.user_frame.clone(),
+            runtime: None,
+            needs_stopre: false,
+            diagnostics: Vec::new(),
         }
     }
 
@@ -690,18 +698,7 @@ impl<'a> Walker<'a> {
             },
             None => env.active.clone(),
         };
-        let mut site = CallSite {
-            line: pc,
-            content: self.lines.raw(pc).content,
-            statement: statement.span,
-            bound: None,
-            evaluation: None,
-            active,
-            user_frame: env.user_frame.clone(),
-            runtime: None,
-            needs_stopre: false,
-            diagnostics: Vec::new(),
-        };
+        let mut site = self.site(pc, statement, active, env);
         let rest = Span::new(statement.span.end, site.content.end).of(self.source);
         let blank = rest.iter().take_while(|&&b| is_blank(b)).count();
         if rest.get(blank).is_some_and(|&b| b != b';') {

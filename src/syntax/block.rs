@@ -538,17 +538,18 @@ fn starts_typed_def(input: Input) -> bool {
             .any(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes()))
 }
 
+/// The name at `input`, or an error that says what was `expected` there.
+fn expect_name<'a>(input: Input<'a>, expected: &'static str) -> PResult<'a, Name> {
+    parse_name(input)
+        .or_else(|_| SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected(expected)))
+}
+
 /// `redef := 'REDEF' name attribute+`: new attributes (access levels,
 /// initialisation) for a variable defined elsewhere (Siemens, Job Planning,
 /// "REDEF").
 pub fn parse_redef(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
-    let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("the name of the variable to redefine"),
-        );
-    };
+    let (rest, name) = expect_name(input, "the name of the variable to redefine")?;
     let after = parse_blank(rest);
     let (rest, attributes) = parse_attributes(after)?;
     if attributes.is_empty() {
@@ -642,9 +643,7 @@ pub fn parse_data_type(input: Input) -> PResult<DataType> {
 
 /// `declarator := name dimensions? (blank '=' blank initializer)?`
 pub fn parse_declarator(input: Input) -> PResult<Declarator> {
-    let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("a variable name"));
-    };
+    let (rest, name) = expect_name(input, "a variable name")?;
     let text = &input.fragment()[..name.span.len()];
     if text.len() == 1 {
         return SyntaxError::fail(
@@ -704,12 +703,7 @@ pub fn parse_initializer(input: Input) -> PResult<Initializer> {
 /// `proc := 'PROC' name (blank '(' (parameter (',' parameter)*)? ')')? (blank name)*`
 pub fn parse_proc(input: Input) -> PResult<Proc> {
     let input = parse_blank(input);
-    let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("the procedure's name"),
-        );
-    };
+    let (rest, name) = expect_name(input, "the procedure's name")?;
     let mut input = parse_blank(rest);
     let mut parameters = Vec::new();
     if peek(&input) == Some(b'(') {
@@ -785,12 +779,7 @@ pub fn parse_parameter(input: Input) -> PResult<Parameter> {
 /// `extern := 'EXTERN' name ('(' any ')')?`
 pub fn parse_extern(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
-    let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("the subprogram's name"),
-        );
-    };
+    let (rest, name) = expect_name(input, "the subprogram's name")?;
     let next = parse_blank(rest);
     if peek(&next) != Some(b'(') {
         return Ok((
@@ -819,12 +808,7 @@ pub fn parse_extern(input: Input) -> PResult<StatementKind> {
 /// `define := 'DEFINE' name 'AS' any` (the macro text runs to the comment)
 pub fn parse_define(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
-    let Ok((rest, name)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("the macro's name"),
-        );
-    };
+    let (rest, name) = expect_name(input, "the macro's name")?;
     let Ok((rest, _)) = keyword("AS")(parse_blank(rest)) else {
         return SyntaxError::fail(
             offset(&parse_blank(rest)),
@@ -847,12 +831,7 @@ pub fn parse_define(input: Input) -> PResult<StatementKind> {
 /// `for := 'FOR' name blank '=' expr 'TO' expr`
 pub fn parse_for(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
-    let Ok((rest, variable)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("the loop variable"),
-        );
-    };
+    let (rest, variable) = expect_name(input, "the loop variable")?;
     let equals = parse_blank(rest);
     if peek(&equals) != Some(b'=') {
         return SyntaxError::fail(
@@ -934,12 +913,7 @@ pub fn parse_case(input: Input) -> PResult<Case> {
 /// `goto := ('GOTO' | 'GOTOF' | 'GOTOB' | 'GOTOC') goto_target | 'GOTOS'`
 /// `goto_target := name | number | expr`
 pub fn parse_goto(input: Input) -> PResult<Goto> {
-    let Ok((rest, keyword_name)) = parse_name(input) else {
-        return SyntaxError::fail(
-            offset(&input),
-            SyntaxErrorKind::Expected("GOTOF, GOTOB, GOTO or GOTOC"),
-        );
-    };
+    let (rest, keyword_name) = expect_name(input, "GOTOF, GOTOB, GOTO or GOTOC")?;
     let text = &input.fragment()[..keyword_name.span.len()];
     let kind = match text.to_ascii_uppercase().as_slice() {
         b"GOTOF" => GotoKind::Forward,
