@@ -17,6 +17,7 @@
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
+//! - [`suggest`]: did-you-mean, shared by the parser's and the rules' messages.
 //! - [`cli`]: the command line; the only place that prints.
 //! - [`pages`]: where the analysis reads, for a program mapped from its file.
 
@@ -28,4 +29,5 @@ pub mod pages;
 pub mod rotation;
 pub mod semantic;
 pub mod span;
+pub mod suggest;
 pub mod syntax;

@@ -106,6 +106,9 @@ pub fn evaluate(source: &[u8], expr: &Expr, lookup: &dyn Lookup) -> Result<Value
             ))
         }
         ExprKind::Paren(inner) => evaluate(source, inner, lookup),
+        ExprKind::Tuple(_) => Err(Unknown::Invalid(
+            "a list of values is not one value".to_string(),
+        )),
         ExprKind::Variable(variable) => {
             let name = variable.name.text(source);
             if variable.indices.is_empty() {

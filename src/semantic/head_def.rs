@@ -6,6 +6,7 @@
 
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::Span;
+use crate::suggest::closest;
 use crate::syntax::parse;
 use crate::syntax::tree::{ExprKind, StatementKind};
 
@@ -75,13 +76,8 @@ impl Heads {
                     .help(format!("set _HEAD_ALLOWED=1 in its section of {}, or choose another accessory", self.file)),
             ),
             None => {
-                let suggestion = self
-                    .heads
-                    .iter()
-                    .map(|h| (distance(&h.name.to_ascii_uppercase(), &name.to_ascii_uppercase()), &h.name))
-                    .filter(|(d, _)| *d <= 3)
-                    .min_by_key(|(d, _)| *d)
-                    .map(|(_, n)| format!("did you mean \"{n}\"? "))
+                let suggestion = closest(name, self.heads.iter().map(|h| h.name.as_str()), 3)
+                    .map(|n| format!("did you mean \"{n}\"? "))
                     .unwrap_or_default();
                 let known: Vec<&str> = self.heads.iter().map(|h| h.name.as_str()).collect();
                 Some(
@@ -106,25 +102,6 @@ pub fn not_found() -> Diagnostic {
     .message("head names were not checked: no HEAD_DEF.SPF next to the program")
     .label("accessories unchecked")
     .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml")
-}
-
-/// Levenshtein distance, for did-you-mean.
-pub fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut previous: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut current = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let cost = usize::from(ca != *cb);
-            current.push(
-                (previous[j] + cost)
-                    .min(previous[j + 1] + 1)
-                    .min(current[j] + 1),
-            );
-        }
-        previous = current;
-    }
-    previous[b.len()]
 }
 
 #[cfg(test)]
@@ -158,11 +135,5 @@ mod tests {
             .unwrap_or("")
             .starts_with("did you mean \"UFK600\""));
         assert!(heads.check("HEAD_OLD", Span::default()).is_some());
-    }
-
-    #[test]
-    fn levenshtein() {
-        assert_eq!(distance("UFK600", "UFK060"), 2);
-        assert_eq!(distance("", "ABC"), 3);
     }
 }

@@ -27,7 +27,7 @@ use crate::syntax::lexer::is_blank;
 use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
     Block, Call, Expr, ExprKind, GotoTarget, Initializer, LineKind, Statement, StatementKind,
-    TypeKind, Variable, WordValue,
+    SyncAction, TypeKind, Variable, WordValue,
 };
 use crate::syntax::Lines;
 
@@ -552,6 +552,17 @@ impl<'a> Walker<'a> {
                         },
                     );
                 }
+                StatementKind::SyncAction(sync) => {
+                    for name in sync_writes(self.source, sync) {
+                        env.forget(
+                            &name,
+                            Origin::ControlFlow {
+                                line,
+                                what: "synchronized action",
+                            },
+                        );
+                    }
+                }
                 StatementKind::Call(call) => self.call(
                     pc,
                     statement,
@@ -900,6 +911,33 @@ impl<'a> Walker<'a> {
     }
 }
 
+/// The variables a synchronized action assigns, in the walk's keys: it
+/// writes them in the main run, at a time preprocessing cannot know. `$R1`
+/// there is the R parameter `R1`.
+fn sync_writes<'s>(source: &'s [u8], sync: &'s SyncAction) -> impl Iterator<Item = String> + 's {
+    let otherwise = sync.otherwise.iter().flat_map(|(_, actions)| actions);
+    sync.actions
+        .iter()
+        .chain(otherwise)
+        .filter_map(move |action| {
+            let StatementKind::Assign(assign) = &action.kind else {
+                return None;
+            };
+            let name = upper(assign.target.name.text(source));
+            let name = match name.strip_prefix('$') {
+                Some(r) if r.starts_with('R') && r[1..].bytes().all(|b| b.is_ascii_digit()) => {
+                    r.to_string()
+                }
+                _ => name,
+            };
+            Some(if assign.target.indices.is_empty() {
+                key(&name, &[])
+            } else {
+                name
+            })
+        })
+}
+
 /// What one block may write: variables, arrays a measuring cycle fills, R
 /// parameters a subprogram may change, the swivel rotation, frames (not
 /// those of a block sinuprep `emitted`).
@@ -924,6 +962,7 @@ fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Wri
             StatementKind::For { variable, .. } => {
                 written.names.push(key(&upper(variable.text(source)), &[]))
             }
+            StatementKind::SyncAction(sync) => written.names.extend(sync_writes(source, sync)),
             StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
                 match call_kind(&upper(name.text(source))) {
                     CallKind::Cycle600 => written.cycle600_lines.push(line),
@@ -1091,7 +1130,19 @@ pub(crate) fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn F
         StatementKind::If { condition }
         | StatementKind::While { condition }
         | StatementKind::Until { condition } => visit(condition),
-        StatementKind::SyncCondition { condition, .. } => visit(condition),
+        // What an action reads is read in the main run, yet read all the same.
+        StatementKind::SyncAction(sync) => {
+            if let Some((_, number)) = &sync.id {
+                visit(number);
+            }
+            if let Some(condition) = &sync.condition {
+                visit(&condition.expr);
+            }
+            let otherwise = sync.otherwise.iter().flat_map(|(_, actions)| actions);
+            for action in sync.actions.iter().chain(otherwise) {
+                for_each_expression(&action.kind, visit);
+            }
+        }
         StatementKind::For { start, end, .. } => {
             visit(start);
             visit(end);
@@ -1125,6 +1176,9 @@ pub(crate) fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>)
                 stack.push(rhs);
             }
             ExprKind::Paren(inner) => stack.push(inner),
+            ExprKind::Tuple(items) => {
+                stack.extend(items.items.iter().filter_map(|a| a.value.as_ref()))
+            }
             ExprKind::Number(_) | ExprKind::String => {}
         }
     }
@@ -1407,7 +1461,7 @@ fn control(block: &Block) -> Control<'_> {
                 condition: None,
                 runs_once: true,
             },
-            StatementKind::Repeat { targets } if targets.is_empty() => Control::Loop {
+            StatementKind::Repeat { targets, .. } if targets.is_empty() => Control::Loop {
                 condition: None,
                 runs_once: true,
             },

@@ -28,10 +28,16 @@ fn upper<'a>(input: &Input<'a>, name: Name, buffer: &'a mut [u8; 16]) -> &'a [u8
     out
 }
 
+/// The text of `span`, which lies in `input` or after its start on the line.
+fn text_in<'a>(input: &Input<'a>, span: crate::span::Span) -> &'a [u8] {
+    &input.fragment()[span.start - input.offset()..span.end - input.offset()]
+}
+
 /// `block := blank skip? blank block_number? blank label? statement* comment?`
 ///
 /// Returns the block and, if a statement could not be read, the error.
 pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
+    let line = input;
     let mut block = Block::default();
     let mut input = parse_blank(input);
     if let Ok((rest, skip)) = parse_skip(input) {
@@ -52,39 +58,138 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
     }
     loop {
         input = parse_blank(input);
-        if let Some((rest, statement)) = plain_word(input) {
-            block.statements.push(statement);
-            input = rest;
-            continue;
-        }
         match peek(&input) {
             None => return (block, None),
             Some(b';') => {
                 block.comment = Some(span_between(&input, &input.take_from(input.input_len())));
                 return (block, None);
             }
-            Some(_) => match parse_statement(input) {
-                Ok((rest, statement)) => {
-                    block.statements.push(statement);
-                    input = rest;
+            Some(_) => {}
+        }
+        if let Some(Err(error)) = block.statements.last().map(|p| may_follow(p, input)) {
+            return unparsed(block, line, input, error);
+        }
+        let (rest, statement) = match plain_word(input) {
+            Some(word) => word,
+            None => match parse_statement(input) {
+                Ok(statement) => statement,
+                Err(nom::Err::Error(error) | nom::Err::Failure(error)) => {
+                    return unparsed(block, line, input, error)
                 }
-                Err(stop) => {
-                    let error = match stop {
-                        nom::Err::Error(error) | nom::Err::Failure(error) => error,
-                        // Complete parsers never ask for more input; should one, the
-                        // line is still kept and reported, not a panic.
-                        nom::Err::Incomplete(_) => SyntaxError::new(
-                            offset(&input),
-                            SyntaxErrorKind::Expected("a complete statement"),
-                        ),
-                    };
-                    let end = input.take_from(input.input_len());
-                    block.unparsed = Some(span_between(&input, &end));
-                    return (block, Some(error));
+                // Complete parsers never ask for more input; should one, the
+                // line is still kept and reported, not a panic.
+                Err(nom::Err::Incomplete(_)) => {
+                    let error = SyntaxError::new(
+                        offset(&input),
+                        SyntaxErrorKind::Expected("a complete statement"),
+                    );
+                    return unparsed(block, line, input, error);
                 }
             },
+        };
+        if !block.statements.is_empty() {
+            if let Some(what) = stands_alone(&statement.kind) {
+                let error = SyntaxError::new(statement.span.start, SyntaxErrorKind::NotAlone(what));
+                return unparsed(block, line, input, error);
+            }
         }
+        block.statements.push(statement);
+        input = rest;
     }
+}
+
+/// The block read so far, with `rest` of the line unparsed and the error
+/// that stopped it.
+fn unparsed<'a>(
+    mut block: Block,
+    line: Input<'a>,
+    rest: Input<'a>,
+    mut error: SyntaxError,
+) -> (Block, Option<SyntaxError>) {
+    error.meant = misspelt_keyword(&line, &block);
+    let end = rest.take_from(rest.input_len());
+    block.unparsed = Some(span_between(&rest, &end));
+    (block, Some(error))
+}
+
+/// Keywords that take operands: misspelt, they leave a command followed by
+/// operands that do not read as statements (`IFF R1==1`, `WHILEE R1<5`).
+const KEYWORDS_WITH_OPERANDS: [&str; 20] = [
+    "IF", "WHILE", "UNTIL", "FOR", "CASE", "GOTO", "GOTOF", "GOTOB", "GOTOC", "REPEAT", "REPEATB",
+    "DEF", "REDEF", "PROC", "EXTERN", "DEFINE", "WHEN", "WHENEVER", "EVERY", "FROM",
+];
+
+/// The keyword a broken block's first word was probably meant to be.
+fn misspelt_keyword(line: &Input, block: &Block) -> Option<&'static str> {
+    let StatementKind::Command(name) = &block.statements.first()?.kind else {
+        return None;
+    };
+    let word = std::str::from_utf8(text_in(line, name.span)).ok()?;
+    let most = if word.len() <= 4 { 1 } else { 2 };
+    crate::suggest::closest(word, &KEYWORDS_WITH_OPERANDS, most).copied()
+}
+
+/// Statements that stand alone in their block (Siemens, Job Planning,
+/// "Control structures", "Definition of user variables", "Synchronized
+/// actions"), by the name a message gives them.
+fn stands_alone(kind: &StatementKind) -> Option<&'static str> {
+    Some(match kind {
+        StatementKind::Else => "ELSE",
+        StatementKind::EndIf => "ENDIF",
+        StatementKind::While { .. } => "WHILE",
+        StatementKind::EndWhile => "ENDWHILE",
+        StatementKind::For { .. } => "FOR",
+        StatementKind::EndFor => "ENDFOR",
+        StatementKind::Loop => "LOOP",
+        StatementKind::EndLoop => "ENDLOOP",
+        StatementKind::Repeat { .. } => "REPEAT",
+        StatementKind::Until { .. } => "UNTIL",
+        StatementKind::Def(_) => "DEF",
+        StatementKind::Redef { .. } => "REDEF",
+        StatementKind::AccessLevels(_) => "a line of access levels",
+        StatementKind::Proc(_) => "PROC",
+        StatementKind::Extern { .. } => "EXTERN",
+        StatementKind::Define { .. } => "DEFINE",
+        StatementKind::SyncAction(_) => "a synchronized action",
+        _ => return None,
+    })
+}
+
+/// Whether the statement at `next` may follow `previous` in one block.
+/// `IF cond` is followed by its jump or by nothing; a jump by another
+/// `IF … GOTO…` or nothing; the statements that stand alone, the calls by
+/// `CALL`/`PCALL`/... and CASE by nothing.
+fn may_follow(previous: &Statement, next: Input) -> Result<(), SyntaxError> {
+    const GOTOS: [&str; 5] = ["GOTO", "GOTOF", "GOTOB", "GOTOC", "GOTOS"];
+    const ELSEWHERE: &str = "write it in a block of its own, or after `;` as a comment";
+    let (after, help) = match &previous.kind {
+        StatementKind::If { .. } if keyword_of(next, &GOTOS).is_none() => (
+            "the IF condition",
+            "an IF either opens a block that ENDIF closes (nothing follows its condition) or jumps: `IF R1==1 GOTOF LABEL`",
+        ),
+        StatementKind::Goto(_) if keyword_of(next, &["IF"]).is_none() => (
+            "a jump",
+            "a jump ends its block; only another `IF … GOTOF …` may follow it",
+        ),
+        StatementKind::Repeat { .. } => (
+            "REPEAT",
+            "REPEAT names its labels first, then the count: `REPEAT LBL1 LBL2 P=3`",
+        ),
+        StatementKind::Proc(_) => (
+            "the PROC header",
+            "after the parameters come only the attributes SAVE, SBLOF, SBLON, DISPLOF, DISPLON, ACTBLOCNO, ICYCOF, ICYCON, IPTRLOCK, IPTRUNLOCK, PREPRO",
+        ),
+        StatementKind::IndirectCall { .. } => ("the called program", ELSEWHERE),
+        StatementKind::Case(_) => ("CASE", ELSEWHERE),
+        kind => match stands_alone(kind) {
+            Some(what) => (what, ELSEWHERE),
+            None => return Ok(()),
+        },
+    };
+    Err(SyntaxError::new(
+        offset(&next),
+        SyntaxErrorKind::Trailing { after, help },
+    ))
 }
 
 /// `skip := '/' digit?`
@@ -170,6 +275,14 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     let (after_name, name) = parse_name(input)?;
     let next = parse_blank(after_name);
     let is_assignment_like = matches!(peek(&next), Some(b'=' | b'['));
+    // `ID=1 WHEN ...`: the action's number, not an assignment.
+    if is_assignment_like
+        && name.span.len() <= 3
+        && peek_at(&next, 1) != Some(b'=')
+        && is_one_of(&input.fragment()[..name.span.len()], &["ID", "IDS"])
+    {
+        return parse_sync_action(input);
+    }
     if !is_assignment_like {
         if let Some(len) = multi_letter_address(&input.fragment()[..name.span.len()]) {
             return SyntaxError::fail(
@@ -232,26 +345,20 @@ fn parse_keyword_statement<'a>(
     word: &[u8],
 ) -> Option<PResult<'a, StatementKind>> {
     let simple = |kind: StatementKind| Some(Ok((after, kind)));
-    // A condition followed by a lone `=` was meant as a comparison.
-    let condition = |input: Input<'a>| {
-        let (rest, condition) = parse_expr(parse_blank(input))?;
-        let next = parse_blank(rest);
-        if peek(&next) == Some(b'=') && peek_at(&next, 1) != Some(b'=') {
-            return SyntaxError::fail(
-                offset(&next),
-                SyntaxErrorKind::Expected("`==` to compare (one `=` assigns: `IF R1==5`)"),
-            );
-        }
-        Ok((rest, condition))
-    };
-    let expr = |make: fn(Expr) -> StatementKind| Some(condition(after).map(|(r, e)| (r, make(e))));
+    let expr =
+        |make: fn(Expr) -> StatementKind| Some(parse_condition(after).map(|(r, e)| (r, make(e))));
     match word {
+        b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" | b"DO" => Some(parse_sync_action(start)),
         b"REDEF" if !starts_typed_def(after) => Some(parse_redef(after)),
         b"DEF" | b"REDEF" => {
             Some(parse_def(after).map(|(r, d)| (r, StatementKind::Def(Box::new(d)))))
         }
         b"PROC" => Some(parse_proc(after).map(|(r, p)| (r, StatementKind::Proc(p)))),
         b"EXTERN" => Some(parse_extern(after)),
+        _ if is_one_of(word, &ACCESS_ATTRIBUTES) => Some(
+            parse_attributes(start)
+                .map(|(r, attributes)| (r, StatementKind::AccessLevels(attributes))),
+        ),
         b"DEFINE" => Some(parse_define(after)),
         b"IF" => expr(|condition| StatementKind::If { condition }),
         b"ELSE" => simple(StatementKind::Else),
@@ -262,28 +369,14 @@ fn parse_keyword_statement<'a>(
         b"ENDFOR" => simple(StatementKind::EndFor),
         b"LOOP" => simple(StatementKind::Loop),
         b"ENDLOOP" => simple(StatementKind::EndLoop),
-        b"REPEAT" | b"REPEATB" => Some(parse_repeat(after)),
+        b"REPEAT" | b"REPEATB" => Some(parse_repeat(after, word == b"REPEATB")),
         b"UNTIL" => expr(|condition| StatementKind::Until { condition }),
         b"CASE" => Some(parse_case(after).map(|(r, c)| (r, StatementKind::Case(Box::new(c))))),
         b"GOTO" | b"GOTOF" | b"GOTOB" | b"GOTOC" | b"GOTOS" => {
             Some(parse_goto(start).map(|(r, g)| (r, StatementKind::Goto(g))))
         }
         b"CALL" | b"PCALL" | b"MCALL" | b"EXTCALL" | b"ISOCALL" | b"CALLPATH" => {
-            // `MCALL` alone ends a modal call, `CALLPATH` alone resets the
-            // search path; the others name what they call.
-            let bare_allowed = matches!(word, b"MCALL" | b"CALLPATH");
-            Some(parse_indirect_call(after, name, bare_allowed))
-        }
-        b"WHEN" | b"WHENEVER" | b"FROM" | b"EVERY" => {
-            Some(condition(after).map(|(r, condition)| {
-                (
-                    r,
-                    StatementKind::SyncCondition {
-                        keyword: name,
-                        condition,
-                    },
-                )
-            }))
+            Some(parse_indirect_call(after, name, word))
         }
         _ => FrameKind::ALL
             .iter()
@@ -295,6 +388,155 @@ fn parse_keyword_statement<'a>(
                 }))
             }),
     }
+}
+
+/// `condition := expr`; a condition followed by a lone `=` was meant as a
+/// comparison.
+fn parse_condition(input: Input) -> PResult<Expr> {
+    let (rest, condition) = parse_expr(parse_blank(input))?;
+    let next = parse_blank(rest);
+    if peek(&next) == Some(b'=') && peek_at(&next, 1) != Some(b'=') {
+        return SyntaxError::fail(
+            offset(&next),
+            SyntaxErrorKind::Expected("`==` to compare (one `=` assigns: `IF R1==5`)"),
+        );
+    }
+    Ok((rest, condition))
+}
+
+const SYNC_FREQUENCIES: [&str; 4] = ["WHEN", "WHENEVER", "FROM", "EVERY"];
+
+/// The keyword at `input` if it is one of `words`.
+fn keyword_of<'a>(input: Input<'a>, words: &[&str]) -> Option<(Input<'a>, Name)> {
+    let (rest, name) = parse_name(input).ok()?;
+    is_one_of(&input.fragment()[..name.span.len()], words).then_some((rest, name))
+}
+
+/// `sync_action := (('ID' | 'IDS') '=' expr)? (frequency g_word* condition)?
+/// 'DO' actions ('ELSE' actions)?` (Siemens, Function Manual Synchronized
+/// actions, "Definition of a synchronized action": the action is the whole
+/// block; without a frequency there is no condition and the actions run in
+/// every interpolation cycle).
+pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
+    let mut at = input;
+    let mut id = None;
+    if let Some((rest, keyword)) = keyword_of(at, &["ID", "IDS"]) {
+        let equals = parse_blank(rest);
+        let (rest, number) = parse_expr(parse_blank(equals.take_from(1)))?;
+        id = Some((keyword, number));
+        at = parse_blank(rest);
+    }
+    let mut condition = None;
+    if let Some((rest, frequency)) = keyword_of(at, &SYNC_FREQUENCIES) {
+        let mut next = parse_blank(rest);
+        let mut g_functions = Vec::new();
+        while let Some((rest, g)) = g_function(next) {
+            g_functions.push(g);
+            next = parse_blank(rest);
+        }
+        if matches!(peek(&next), None | Some(b';')) || keyword_of(next, &["DO"]).is_some() {
+            return SyntaxError::fail(
+                offset(&next),
+                SyntaxErrorKind::Expected("the condition the synchronized action tests"),
+            );
+        }
+        let (rest, expr) = parse_condition(next)?;
+        condition = Some(SyncCondition {
+            frequency,
+            g_functions,
+            expr,
+        });
+        at = parse_blank(rest);
+    }
+    let Some((rest, do_keyword)) = keyword_of(at, &["DO"]) else {
+        return SyntaxError::fail(
+            offset(&at),
+            SyntaxErrorKind::Expected("`DO` and the actions of the synchronized action"),
+        );
+    };
+    let (mut rest, actions) = parse_actions(rest)?;
+    let mut otherwise = None;
+    if let Some((after, else_keyword)) = keyword_of(parse_blank(rest), &["ELSE"]) {
+        if condition.is_none() {
+            return SyntaxError::fail(
+                else_keyword.span.start,
+                SyntaxErrorKind::Trailing {
+                    after: "the actions of a synchronized action without a condition",
+                    help:
+                        "ELSE runs while a condition is not met: `WHEN $A_IN[1]==1 DO M3 ELSE M5`",
+                },
+            );
+        }
+        let (after, actions) = parse_actions(after)?;
+        if let Some((_, second)) = keyword_of(parse_blank(after), &["ELSE"]) {
+            return SyntaxError::fail(
+                second.span.start,
+                SyntaxErrorKind::Trailing {
+                    after: "the ELSE actions",
+                    help: "a synchronized action has one ELSE at most",
+                },
+            );
+        }
+        otherwise = Some((else_keyword, actions));
+        rest = after;
+    }
+    Ok((
+        rest,
+        StatementKind::SyncAction(Box::new(SyncAction {
+            id,
+            condition,
+            do_keyword,
+            actions,
+            otherwise,
+        })),
+    ))
+}
+
+/// A G function such as `G710`, as a synchronized action's condition may start with.
+fn g_function(input: Input) -> Option<(Input, Statement)> {
+    let bytes = input.fragment();
+    let is_g = bytes.first()?.eq_ignore_ascii_case(&b'G') && bytes.get(1)?.is_ascii_digit();
+    is_g.then(|| plain_word(input)).flatten()
+}
+
+/// The actions after `DO` or `ELSE`, up to the comment, the end of the
+/// line or an `ELSE`: address words, assignments, calls (technology
+/// cycles, `CANCEL(n)`, `LOCK(n)`, ...) and commands (`DELDTG`, `STOPREOF`).
+fn parse_actions(mut input: Input) -> PResult<Vec<Statement>> {
+    let mut actions = Vec::new();
+    loop {
+        let at = parse_blank(input);
+        if matches!(peek(&at), None | Some(b';')) || keyword_of(at, &["ELSE"]).is_some() {
+            break;
+        }
+        let (rest, action) = match plain_word(at) {
+            Some(word) => word,
+            None => parse_statement(at)?,
+        };
+        if !matches!(
+            action.kind,
+            StatementKind::Word(_)
+                | StatementKind::Assign(_)
+                | StatementKind::Call(_)
+                | StatementKind::Command(_)
+        ) {
+            return SyntaxError::fail(
+                action.span.start,
+                SyntaxErrorKind::Expected(
+                    "an action: an assignment, an address word, a call or a command",
+                ),
+            );
+        }
+        actions.push(action);
+        input = rest;
+    }
+    if actions.is_empty() {
+        return SyntaxError::fail(
+            offset(&parse_blank(input)),
+            SyntaxErrorKind::Expected("an action after DO or ELSE"),
+        );
+    }
+    Ok((input, actions))
 }
 
 /// `word := letter (extension? blank '=' blank expr | sign? number)`
@@ -409,6 +651,7 @@ pub fn parse_word(input: Input) -> PResult<StatementKind> {
 /// The word most blocks are made of, `X-12.5` or `G1`, read without the
 /// general machinery; `None` for anything else (`X1=5`, `X=R1`, `X'H1F'`),
 /// which [`parse_word`] reads into the same tree.
+#[inline]
 fn plain_word(input: Input) -> Option<(Input, Statement)> {
     let bytes = input.fragment();
     let letter = *bytes.first()?;
@@ -460,7 +703,12 @@ fn parse_assignment_call_or_command<'a>(
     let next = parse_blank(after_index);
     match peek(&next) {
         Some(b'=') if peek_at(&next, 1) != Some(b'=') => {
-            let (rest, value) = parse_expr(parse_blank(next.take_from(1)))?;
+            let value_start = parse_blank(next.take_from(1));
+            let tuple = (!indices.is_empty()).then(|| tuple(value_start)).flatten();
+            let (rest, value) = match tuple {
+                Some(tuple) => tuple,
+                None => parse_expr(value_start)?,
+            };
             let target = Variable {
                 span: span_between(&start, &after_index),
                 name,
@@ -485,6 +733,26 @@ fn parse_assignment_call_or_command<'a>(
         }
         _ => Ok((after_name, StatementKind::Command(name))),
     }
+}
+
+/// `tuple := '(' expr (',' expr)+ ')'`: the several values of an indexed
+/// assignment (`OSCTRL[Z]=(1+2,16+32+64)`, `POSP[X]=(END,PART,MODE)`);
+/// `None` for one value in parentheses, which is an expression.
+fn tuple(input: Input) -> Option<(Input, Expr)> {
+    if peek(&input) != Some(b'(') {
+        return None;
+    }
+    let (rest, items) = parse_list(input, b'(', b')', 0).ok()?;
+    (items.items.len() > 1).then(|| {
+        let span = span_between(&input, &rest);
+        (
+            rest,
+            Expr {
+                span,
+                kind: ExprKind::Tuple(items),
+            },
+        )
+    })
 }
 
 /// `def := ('DEF' | 'REDEF') scope? attribute* data_type attribute* declarator (',' declarator)*`
@@ -544,26 +812,45 @@ fn expect_name<'a>(input: Input<'a>, expected: &'static str) -> PResult<'a, Name
         .or_else(|_| SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected(expected)))
 }
 
-/// `redef := 'REDEF' name attribute+`: new attributes (access levels,
-/// initialisation) for a variable defined elsewhere (Siemens, Job Planning,
-/// "REDEF").
+/// `redef := 'REDEF' name attribute+ ('='? expr)?`: new attributes (access
+/// levels, initialisation) for a variable defined elsewhere; a new
+/// initialisation value follows its time, `REDEF _VAR INIRE ""` (Siemens,
+/// Job Planning, "Redefinition of system data, user data, and NC language
+/// commands (REDEF)"). The value is kept as the time's.
 pub fn parse_redef(input: Input) -> PResult<StatementKind> {
     let input = parse_blank(input);
     let (rest, name) = expect_name(input, "the name of the variable to redefine")?;
     let after = parse_blank(rest);
-    let (rest, attributes) = parse_attributes(after)?;
-    if attributes.is_empty() {
+    let (mut rest, mut attributes) = parse_attributes(after)?;
+    let Some(last) = attributes.last_mut() else {
         return SyntaxError::fail(
             offset(&after),
             SyntaxErrorKind::Expected("its new attributes (APR, APW, APX, INIRE, SYNR, ...)"),
         );
+    };
+    let value_start = parse_blank(rest);
+    let is_init_time = is_one_of(text_in(&after, last.keyword.span), &INIT_TIMES);
+    if is_init_time && !matches!(peek(&value_start), None | Some(b';')) {
+        let value_start = match peek(&value_start) {
+            Some(b'=') => parse_blank(value_start.take_from(1)),
+            _ => value_start,
+        };
+        let (after_value, value) = parse_expr(value_start)?;
+        last.value = Some(value);
+        rest = after_value;
     }
     Ok((rest, StatementKind::Redef { name, attributes }))
 }
 
+/// Access levels for reading, writing and executing (Siemens, Job
+/// Planning, "Attribute: Access rights").
+const ACCESS_ATTRIBUTES: [&str; 7] = ["APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB"];
 const VALUED_ATTRIBUTES: [&str; 10] = [
     "APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI",
 ];
+/// When a variable is initialised again (Siemens, Job Planning, "Attribute:
+/// Initialization value").
+const INIT_TIMES: [&str; 4] = ["INIPO", "INIRE", "INICF", "PRLOC"];
 const FLAG_ATTRIBUTES: [&str; 7] = ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
 
 /// `attribute := ('APR' | 'APW' | ... | 'LLI' | 'ULI') expr | 'SYNR' | ... | 'PRLOC'`
@@ -700,7 +987,23 @@ pub fn parse_initializer(input: Input) -> PResult<Initializer> {
     parse_expr(input).map(|(rest, expr)| (rest, Initializer::Expr(expr)))
 }
 
-/// `proc := 'PROC' name (blank '(' (parameter (',' parameter)*)? ')')? (blank name)*`
+/// What may follow a PROC's parameters (Siemens, Job Planning, "Subprogram
+/// with SAVE mechanism", "Suppress single block execution", ...).
+const PROC_ATTRIBUTES: [&str; 11] = [
+    "SAVE",
+    "SBLOF",
+    "SBLON",
+    "DISPLOF",
+    "DISPLON",
+    "ACTBLOCNO",
+    "ICYCOF",
+    "ICYCON",
+    "IPTRLOCK",
+    "IPTRUNLOCK",
+    "PREPRO",
+];
+
+/// `proc := 'PROC' name (blank '(' (parameter (',' parameter)*)? ')')? proc_attribute*`
 pub fn parse_proc(input: Input) -> PResult<Proc> {
     let input = parse_blank(input);
     let (rest, name) = expect_name(input, "the procedure's name")?;
@@ -737,12 +1040,12 @@ pub fn parse_proc(input: Input) -> PResult<Proc> {
     let mut attributes = Vec::new();
     loop {
         let at = parse_blank(input);
-        match parse_name(at) {
-            Ok((rest, attribute)) => {
+        match keyword_of(at, &PROC_ATTRIBUTES) {
+            Some((rest, attribute)) => {
                 attributes.push(attribute);
                 input = rest;
             }
-            Err(_) => {
+            None => {
                 return Ok((
                     input,
                     Proc {
@@ -857,21 +1160,62 @@ pub fn parse_for(input: Input) -> PResult<StatementKind> {
     ))
 }
 
-/// `repeat := ('REPEAT' | 'REPEATB') (blank name)*` (the `P=n` after it is a word)
-pub fn parse_repeat(mut input: Input) -> PResult<StatementKind> {
+/// `repeat := 'REPEAT' (label label? ('P' '=' expr)?)? | 'REPEATB' label ('P' '=' expr)?`
+/// (Siemens, Job Planning, "Program section repetition": the labels first,
+/// then the count).
+pub fn parse_repeat(mut input: Input, block_only: bool) -> PResult<StatementKind> {
     let mut targets = Vec::new();
+    let mut count = None;
     loop {
         let at = parse_blank(input);
         let Ok((rest, name)) = parse_name(at) else {
             break;
         };
-        if matches!(peek(&parse_blank(rest)), Some(b'=')) {
+        let equals = parse_blank(rest);
+        if peek(&equals) == Some(b'=') {
+            if at.fragment()[..name.span.len()].eq_ignore_ascii_case(b"P") && !targets.is_empty() {
+                let (rest, n) = parse_expr(parse_blank(equals.take_from(1)))?;
+                count = Some(Box::new(n));
+                input = rest;
+            }
             break;
+        }
+        if !is_label_name(&at.fragment()[..name.span.len()]) {
+            return SyntaxError::fail(
+                name.span.start,
+                SyntaxErrorKind::Expected("a label: two letters or `_` first (`LBL1`, `_MARK`)"),
+            );
+        }
+        let most = if block_only { 1 } else { 2 };
+        if targets.len() == most {
+            return SyntaxError::fail(
+                name.span.start,
+                SyntaxErrorKind::Expected(if block_only {
+                    "one label after REPEATB, then `P=n` or nothing"
+                } else {
+                    "two labels at most after REPEAT, then `P=n` or nothing"
+                }),
+            );
         }
         targets.push(name);
         input = rest;
     }
-    Ok((input, StatementKind::Repeat { targets }))
+    if block_only && targets.is_empty() {
+        return SyntaxError::fail(
+            offset(&parse_blank(input)),
+            SyntaxErrorKind::Expected("the label of the block REPEATB repeats"),
+        );
+    }
+    Ok((input, StatementKind::Repeat { targets, count }))
+}
+
+/// A label's name: two letters or underscores first (Siemens,
+/// Fundamentals, "Labels"), then letters, digits and underscores.
+pub fn is_label_name(text: &[u8]) -> bool {
+    text.len() >= 2
+        && text[..2]
+            .iter()
+            .all(|b| b.is_ascii_alphabetic() || *b == b'_')
 }
 
 /// `case := 'CASE' expr 'OF' (expr goto)* ('DEFAULT' goto)?`
@@ -987,21 +1331,26 @@ fn is_operator_after_number(input: Input) -> bool {
     input.fragment()[len..].starts_with(b"<<")
 }
 
-/// `indirect_call := ('CALL' | 'PCALL' | 'MCALL' | 'EXTCALL') any?` (kept as written up to the comment)
+/// `indirect_call := 'CALL' (program block_range? | block_range) | ('PCALL' |
+/// 'MCALL' | 'ISOCALL') program | ('EXTCALL' | 'CALLPATH') expr`, with
+/// `program := path arguments? | expr` and `block_range := 'BLOCK' expr 'TO' expr`
+/// (Siemens, Job Planning, "Indirect program call", "Program call with path
+/// specification and parameters", "Modal subprogram call", "Execute external
+/// subprogram", "Search path for subprogram calls"). `MCALL` alone ends a modal
+/// call and `CALLPATH` alone resets the search path.
 pub fn parse_indirect_call<'a>(
     input: Input<'a>,
     keyword_name: Name,
-    bare_allowed: bool,
+    word: &[u8],
 ) -> PResult<'a, StatementKind> {
     let at = parse_blank(input);
-    let len = target_len(at.fragment());
-    if len == 0 && !bare_allowed {
-        return SyntaxError::fail(
-            offset(&at),
-            SyntaxErrorKind::Expected("the program to call: its name, or its path in quotes"),
-        );
-    }
-    if len == 0 {
+    if matches!(peek(&at), None | Some(b';')) {
+        if !matches!(word, b"MCALL" | b"CALLPATH") {
+            return SyntaxError::fail(
+                offset(&at),
+                SyntaxErrorKind::Expected("the program to call: its name, or its path in quotes"),
+            );
+        }
         return Ok((
             input,
             StatementKind::IndirectCall {
@@ -1010,18 +1359,56 @@ pub fn parse_indirect_call<'a>(
             },
         ));
     }
-    let end = at.take_from(len);
-    let span = span_between(&at, &end);
-    if let Some(quote) = unclosed_quote(&at.fragment()[..len]) {
-        return SyntaxError::fail(span.start + quote, SyntaxErrorKind::UnclosedString);
-    }
+    let end = match word {
+        b"CALL" if keyword_of(at, &["BLOCK"]).is_some() => block_range(at)?,
+        b"CALL" => {
+            let end = program(at)?;
+            match keyword_of(parse_blank(end), &["BLOCK"]) {
+                Some(_) => block_range(parse_blank(end))?,
+                None => end,
+            }
+        }
+        b"EXTCALL" | b"CALLPATH" => parse_expr(at)?.0,
+        _ => program(at)?,
+    };
     Ok((
         end,
         StatementKind::IndirectCall {
             keyword: keyword_name,
-            target: Some(span),
+            target: Some(span_between(&at, &end)),
         },
     ))
+}
+
+/// `program := ('/' name)+ arguments? | expr`: `/_N_MPF_DIR/WELLE(1,2)`,
+/// `WELLE(1,2)`, `"/_N_CUS_DIR/_N_L320_SPF"`, `"L"<<NR`.
+fn program(input: Input) -> Result<Input, nom::Err<SyntaxError>> {
+    if peek(&input) != Some(b'/') {
+        return Ok(parse_expr(input)?.0);
+    }
+    let mut rest = input;
+    while peek(&rest) == Some(b'/') {
+        rest = expect_name(rest.take_from(1), "a directory or program name after `/`")?.0;
+    }
+    let open = bracket_after_blank(rest);
+    if peek(&open) == Some(b'(') {
+        rest = parse_arguments(open, 0)?.0;
+    }
+    Ok(rest)
+}
+
+/// `block_range := 'BLOCK' expr 'TO' expr`: the labels or block numbers of
+/// the section to run.
+fn block_range(input: Input) -> Result<Input, nom::Err<SyntaxError>> {
+    let (rest, _) = keyword("BLOCK")(input)?;
+    let (rest, _) = parse_expr(parse_blank(rest))?;
+    let Some((rest, _)) = keyword_of(parse_blank(rest), &["TO"]) else {
+        return SyntaxError::fail(
+            offset(&parse_blank(rest)),
+            SyntaxErrorKind::Expected("`TO` and the end of the section (`BLOCK L1 TO L2`)"),
+        );
+    };
+    Ok(parse_expr(parse_blank(rest))?.0)
 }
 
 /// Up to the comment (outside strings), without trailing blanks.
@@ -1042,11 +1429,6 @@ fn target_len(bytes: &[u8]) -> usize {
         .iter()
         .rposition(|&b| !crate::syntax::lexer::is_blank(b))
         .map_or(0, |p| p + 1)
-}
-
-fn unclosed_quote(bytes: &[u8]) -> Option<usize> {
-    let quotes: Vec<usize> = memchr::memchr_iter(b'"', bytes).collect();
-    (quotes.len() % 2 == 1).then(|| quotes[quotes.len() - 1])
 }
 
 #[cfg(test)]

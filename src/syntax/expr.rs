@@ -120,6 +120,7 @@ fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
             nom::Err::Failure(SyntaxError {
                 at,
                 kind: SyntaxErrorKind::TooDeep,
+                ..
             }) if chain + 1 >= MAX_DEPTH / 2 => {
                 nom::Err::Failure(SyntaxError::new(at, SyntaxErrorKind::ChainTooLong))
             }

@@ -20,6 +20,8 @@ pub type PResult<'a, T> = IResult<Input<'a>, T, SyntaxError>;
 pub struct SyntaxError {
     pub at: usize,
     pub kind: SyntaxErrorKind,
+    /// A keyword the block's first word looks like: `IFF R1==1` was meant as `IF`.
+    pub meant: Option<&'static str>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -41,11 +43,23 @@ pub enum SyntaxErrorKind {
     ChainTooLong,
     /// A line longer than the parser reads into a tree ([`crate::syntax::MAX_PARSED_LINE`]).
     TooLong,
+    /// A statement after one that ends its block: `ELSE invalid`.
+    Trailing {
+        /// What ends the block: `ELSE`, `a jump`, ...
+        after: &'static str,
+        help: &'static str,
+    },
+    /// A statement that stands alone in its block, after others: `X10 ENDIF`.
+    NotAlone(&'static str),
 }
 
 impl SyntaxError {
     pub fn new(at: usize, kind: SyntaxErrorKind) -> Self {
-        Self { at, kind }
+        Self {
+            at,
+            kind,
+            meant: None,
+        }
     }
 
     /// A recoverable error at `input` (another alternative may still match).

@@ -314,6 +314,16 @@ fn continuation(open: &OpenCall, unparsed: Span) -> Diagnostic {
 
 /// Turns the parser's stop into a diagnostic at the offending bytes.
 fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
+    let diagnostic = describe(source, raw, error);
+    match error.meant {
+        Some(keyword) => diagnostic.help(format!(
+            "did you mean `{keyword}`? The block's first word is no keyword, so it reads as a subprogram call"
+        )),
+        None => diagnostic,
+    }
+}
+
+fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
     let at = error.at.min(raw.content.end);
     let line_end = raw.content.end;
     let one = Span::new(at, (at + 1).min(line_end).max(at));
@@ -416,6 +426,21 @@ fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic
                 .label("too long")
                 .help("split it into blocks of at most 512 characters")
         }
+        SyntaxErrorKind::Trailing { after, help } => {
+            Diagnostic::new("S005", "unexpected-token", Severity::Error, word_span(source, at, line_end))
+                .message(format!(
+                    "unexpected `{}` after {after}",
+                    show_token(source, at, line_end)
+                ))
+                .label(format!("nothing may follow {after} in its block"))
+                .help(*help)
+        }
+        SyntaxErrorKind::NotAlone(what) => {
+            Diagnostic::new("S005", "unexpected-token", Severity::Error, word_span(source, at, line_end))
+                .message(format!("{what} must stand alone in its block"))
+                .label("after other statements")
+                .help("move the statements before it into a block of their own")
+        }
         SyntaxErrorKind::Expected(what) => {
             let found = if at >= line_end {
                 "the end of the line".to_string()
@@ -467,6 +492,15 @@ fn char_span(source: &[u8], at: usize, end: usize) -> Span {
 }
 
 /// A whole name if one starts at `at`, else one character.
+/// The name at `at` (`$` included), or its one character.
+fn word_span(source: &[u8], at: usize, end: usize) -> Span {
+    let len = source[at.min(end)..end]
+        .iter()
+        .take_while(|&&b| lexer::is_name_char(b) || b == b'$')
+        .count();
+    Span::new(at, (at + len.max(1)).min(end).max(at))
+}
+
 fn show_token(source: &[u8], at: usize, end: usize) -> String {
     let len = source[at..end]
         .iter()

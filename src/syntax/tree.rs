@@ -106,6 +106,9 @@ pub enum StatementKind {
         name: Name,
         attributes: Vec<Attribute>,
     },
+    /// `APW 2 APR 7` alone in a block of a definition file: the access
+    /// levels of the definitions after it.
+    AccessLevels(Vec<Attribute>),
     Proc(Proc),
     /// `EXTERN NAME(REAL, VAR BOOL)`: the declaration is kept as written.
     Extern {
@@ -135,9 +138,12 @@ pub enum StatementKind {
     EndFor,
     Loop,
     EndLoop,
-    /// `REPEAT` (opens a REPEAT/UNTIL loop) or `REPEAT LBL1 [LBL2] [P=n]`.
+    /// `REPEAT` (opens a REPEAT/UNTIL loop), `REPEAT LBL1 [LBL2] [P=n]` or
+    /// `REPEATB LBL [P=n]`.
     Repeat {
         targets: Vec<Name>,
+        /// The `n` of `P=n`: how many times.
+        count: Option<Box<Expr>>,
     },
     Until {
         condition: Expr,
@@ -149,11 +155,33 @@ pub enum StatementKind {
         keyword: Name,
         target: Option<Span>,
     },
-    /// `WHEN`, `WHENEVER`, `FROM`, `EVERY` of a synchronized action.
-    SyncCondition {
-        keyword: Name,
-        condition: Expr,
-    },
+    /// A synchronized action, the whole rest of its block: its actions run
+    /// in the main run, not while the program is preprocessed.
+    SyncAction(Box<SyncAction>),
+}
+
+/// `[ID=n | IDS=n] [WHEN | WHENEVER | FROM | EVERY [G..] condition] DO actions [ELSE actions]`
+/// (Siemens, Function Manual Synchronized actions, "Definition of a
+/// synchronized action").
+#[derive(Clone, Debug, PartialEq)]
+pub struct SyncAction {
+    /// `ID=n` (modal) or `IDS=n` (static): the keyword and the number.
+    pub id: Option<(Name, Expr)>,
+    pub condition: Option<SyncCondition>,
+    pub do_keyword: Name,
+    /// Address words, assignments, calls and commands, in order.
+    pub actions: Vec<Statement>,
+    /// `ELSE` and its actions, run while the condition is not met.
+    pub otherwise: Option<(Name, Vec<Statement>)>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SyncCondition {
+    /// `WHEN`, `WHENEVER`, `FROM` or `EVERY`: how often the condition is tested.
+    pub frequency: Name,
+    /// G functions that set the units the condition is tested in (`G710`).
+    pub g_functions: Vec<Statement>,
+    pub expr: Expr,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -410,6 +438,9 @@ pub enum ExprKind {
         rhs: Box<Expr>,
     },
     Paren(Box<Expr>),
+    /// `(1+2, 16+32+64)`: the values of an indexed assignment that takes
+    /// several (`OSCTRL[Z]=(...)`, `POSP[X]=(END, PART, MODE)`, `PO[X]=(...)`).
+    Tuple(Arguments),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

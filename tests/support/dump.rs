@@ -154,14 +154,18 @@ fn statement_text(source: &[u8], kind: &StatementKind) -> String {
         StatementKind::EndFor => "endfor".into(),
         StatementKind::Loop => "loop".into(),
         StatementKind::EndLoop => "endloop".into(),
-        StatementKind::Repeat { targets } => {
+        StatementKind::Repeat { targets, count } => {
             format!(
-                "repeat [{}]",
+                "repeat [{}]{}",
                 targets
                     .iter()
                     .map(|n| t(n.span))
                     .collect::<Vec<_>>()
-                    .join(" ")
+                    .join(" "),
+                count
+                    .as_ref()
+                    .map(|n| format!(" P={}", e(n)))
+                    .unwrap_or_default()
             )
         }
         StatementKind::Until { condition } => format!("until {}", e(condition)),
@@ -188,9 +192,43 @@ fn statement_text(source: &[u8], kind: &StatementKind) -> String {
             t(keyword.span),
             target.map(t).unwrap_or_default()
         ),
-        StatementKind::SyncCondition { keyword, condition } => {
-            format!("sync {} {}", t(keyword.span), e(condition))
+        StatementKind::SyncAction(sync) => {
+            let mut out = String::from("sync");
+            if let Some((keyword, number)) = &sync.id {
+                out += &format!(" {}={}", t(keyword.span), e(number));
+            }
+            if let Some(condition) = &sync.condition {
+                out += &format!(" {}", t(condition.frequency.span));
+                for g in &condition.g_functions {
+                    out += &format!(" [{}]", statement_text(source, &g.kind));
+                }
+                out += &format!(" {}", e(&condition.expr));
+            }
+            let actions = |actions: &[Statement]| {
+                actions
+                    .iter()
+                    .map(|a| format!("[{}]", statement_text(source, &a.kind)))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            };
+            out += &format!(" {} {}", t(sync.do_keyword.span), actions(&sync.actions));
+            if let Some((keyword, otherwise)) = &sync.otherwise {
+                out += &format!(" {} {}", t(keyword.span), actions(otherwise));
+            }
+            out
         }
+        StatementKind::AccessLevels(attributes) => format!(
+            "access levels {}",
+            attributes
+                .iter()
+                .map(|a| format!(
+                    "{}={}",
+                    t(a.keyword.span),
+                    a.value.as_ref().map(e).unwrap_or_default()
+                ))
+                .collect::<Vec<_>>()
+                .join(" ")
+        ),
     }
 }
 
@@ -280,5 +318,6 @@ fn expr_text(source: &[u8], expr: &Expr) -> String {
             expr_text(source, rhs)
         ),
         ExprKind::Paren(inner) => expr_text(source, inner),
+        ExprKind::Tuple(items) => format!("(tuple {})", arguments_text(source, items)),
     }
 }

@@ -74,6 +74,7 @@ impl Check for Checker {
                 }
                 StatementKind::Proc(_)
                 | StatementKind::Redef { .. }
+                | StatementKind::AccessLevels(_)
                 | StatementKind::Extern { .. }
                 | StatementKind::Define { .. } => {}
                 _ => {

@@ -70,7 +70,7 @@ impl Check for Checker {
         if block
             .statements
             .iter()
-            .any(|s| matches!(s.kind, StatementKind::SyncCondition { .. }))
+            .any(|s| matches!(s.kind, StatementKind::SyncAction(_)))
         {
             return;
         }

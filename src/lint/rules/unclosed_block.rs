@@ -44,7 +44,7 @@ fn opener(block: &crate::syntax::tree::Block) -> Option<(&'static str, &'static 
         StatementKind::While { .. } => Some(("WHILE", "ENDWHILE", s.span)),
         StatementKind::For { .. } => Some(("FOR", "ENDFOR", s.span)),
         StatementKind::Loop => Some(("LOOP", "ENDLOOP", s.span)),
-        StatementKind::Repeat { targets } if targets.is_empty() => {
+        StatementKind::Repeat { targets, .. } if targets.is_empty() => {
             Some(("REPEAT", "UNTIL", s.span))
         }
         _ => None,

@@ -3,8 +3,8 @@
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
 use crate::lint::rules::support::*;
-use crate::semantic::head_def::distance;
 use crate::span::Span;
+use crate::suggest::closest;
 use crate::syntax::tree::GotoKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -70,14 +70,9 @@ impl Check for Checker {
                 continue;
             }
             let wanted = target.to_string();
-            let nearest = file
-                .labels()
-                .names()
-                .map(|l| (distance(&l, &wanted), l))
-                .filter(|(d, _)| *d <= 2)
-                .min();
-            let help = match nearest {
-                Some((_, label)) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
+            let names: Vec<_> = file.labels().names().collect();
+            let help = match closest(&wanted, &names, 2) {
+                Some(label) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
                 None => format!("add the label `{wanted}:` where the jump should land, or correct the jump"),
             };
             let mut diagnostic = RULE
