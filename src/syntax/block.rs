@@ -393,7 +393,11 @@ fn parse_keyword_statement<'a>(
 /// `condition := expr`; a condition followed by a lone `=` was meant as a
 /// comparison.
 fn parse_condition(input: Input) -> PResult<Expr> {
-    let (rest, condition) = parse_expr(parse_blank(input))?;
+    let input = parse_blank(input);
+    if matches!(peek(&input), None | Some(b';')) {
+        return SyntaxError::fail(offset(&input), SyntaxErrorKind::Expected("a condition"));
+    }
+    let (rest, condition) = parse_expr(input)?;
     let next = parse_blank(rest);
     if peek(&next) == Some(b'=') && peek_at(&next, 1) != Some(b'=') {
         return SyntaxError::fail(

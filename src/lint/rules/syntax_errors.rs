@@ -89,7 +89,20 @@ pub static UNEXPECTED_TOKEN: RuleInfo = RuleInfo {
     name: "unexpected-token",
     severity: Severity::Error,
     docs: r#"## What it does
-Reports something else than the statement needs at this place (the message says what).
+Reports something else than the statement needs at this place (the message says what), and
+statements that cannot share a block:
+- the control-structure keywords (ELSE, ENDIF, WHILE, ENDWHILE, FOR, ENDFOR, LOOP, ENDLOOP,
+  REPEAT, REPEATB, UNTIL), DEF, REDEF, PROC, EXTERN, DEFINE and a synchronized action stand
+  alone in their block (Siemens, Job Planning, "Control structures"; Function Manual
+  Synchronized actions: no other commands in the action's block);
+- nothing follows CASE, a call by CALL/PCALL/MCALL/EXTCALL/ISOCALL/CALLPATH, or the PROC
+  header's attributes (SAVE, SBLOF, DISPLOF, ...);
+- `IF cond` is followed by its jump (`IF R1==1 GOTOF LBL`) or by nothing, and a jump by another
+  `IF … GOTO…` or by nothing;
+- REPEAT names at most two labels (REPEATB one), then `P=n`.
+When the block's first word is one edit or two from a keyword that takes operands (`IFF R1==1`),
+the help offers the keyword. The grammar, with the manual section of each choice, is
+`grammar/sinumerik.ebnf`.
 
 ## Why it matters
 The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
@@ -98,10 +111,14 @@ the next line as usual.
 ## Example
 ```
 N30 DEF WORD X
+N40 ELSE invalid
+N50 IF R1==1 ELSE ENDIF
+N60 REPEAT P=10 START
 ```
 
 ## Fix
-Correct the statement."#,
+Correct the statement; move what shares a block with a statement that stands alone into a block
+of its own."#,
 };
 
 pub static MISSING_VALUE: RuleInfo = RuleInfo {
