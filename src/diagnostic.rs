@@ -42,7 +42,9 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    pub fn new(code: &'static str, name: &'static str, severity: Severity, span: Span) -> Self {
+    /// Diagnostics are made by their rule, [`RuleInfo::at`], so that every
+    /// code raised is one `sinuprep rule` documents.
+    fn new(code: &'static str, name: &'static str, severity: Severity, span: Span) -> Self {
         Self {
             code,
             name,
@@ -67,5 +69,24 @@ impl Diagnostic {
     pub fn help(mut self, help: impl Into<Cow<'static, str>>) -> Self {
         self.help = Some(help.into());
         self
+    }
+}
+
+/// A rule's identity and documentation.
+#[derive(Debug)]
+pub struct RuleInfo {
+    /// Stable code: `S...` syntax, `C6..` CYCLE600, `N...` general NC.
+    pub code: &'static str,
+    /// Kebab-case; reads as "allow <name>".
+    pub name: &'static str,
+    pub severity: Severity,
+    /// Markdown with the sections What it does / Why it matters / Example / Fix.
+    pub docs: &'static str,
+}
+
+impl RuleInfo {
+    /// A diagnostic of this rule at `span`.
+    pub fn at(&self, span: Span) -> Diagnostic {
+        Diagnostic::new(self.code, self.name, self.severity, span)
     }
 }

@@ -11,6 +11,8 @@
 //! Modules:
 //! - [`span`]: byte ranges and their line/column positions.
 //! - [`diagnostic`]: the one diagnostic type for syntax errors, findings and refusals.
+//! - [`registry`]: every rule's code, name, severity and docs below the linter; diagnostics are
+//!   built from them.
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
 //! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra;
 //!   knows nothing of syntax.
@@ -26,6 +28,7 @@ pub mod diagnostic;
 pub mod emit;
 pub mod lint;
 pub mod pages;
+pub mod registry;
 pub mod rotation;
 pub mod semantic;
 pub mod span;

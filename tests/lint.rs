@@ -106,6 +106,38 @@ fn every_rule_is_documented_and_has_fixtures() {
     assert_eq!(sorted.len(), codes.len(), "codes are unique");
 }
 
+/// Diagnostics can only be made from a rule (`RuleInfo::at`); every rule
+/// defined anywhere in the source is one `sinuprep rule` lists, so every code
+/// the parser, the walk, the rewrite or a checker raises is documented.
+#[test]
+fn every_rule_defined_is_registered() {
+    let registered: Vec<&str> = lint::rules::all().iter().map(|r| r.info.code).collect();
+    let mut defined = Vec::new();
+    for path in support::files_below(&support::repo().join("src")) {
+        let text = std::fs::read_to_string(&path).expect("source");
+        for definition in text.split(": RuleInfo = RuleInfo {").skip(1) {
+            let code = definition
+                .split("code: \"")
+                .nth(1)
+                .and_then(|rest| rest.split('"').next())
+                .expect("a rule's code");
+            defined.push(code.to_string());
+        }
+    }
+    assert!(defined.len() >= 40, "rules found: {}", defined.len());
+    for code in &defined {
+        assert!(
+            registered.contains(&code.as_str()),
+            "{code} is defined but not registered"
+        );
+    }
+    assert_eq!(
+        defined.len(),
+        registered.len(),
+        "every registered rule is defined once"
+    );
+}
+
 #[test]
 fn rule_command_prints_documentation_and_the_list() {
     let one = run(&["rule", "n001"], b"");

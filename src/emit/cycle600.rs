@@ -9,6 +9,7 @@
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::number::format;
 use crate::emit::{runtime, Edit};
+use crate::registry;
 use crate::rotation::Kind;
 use crate::semantic::cycle600::{no_cycle800_form, Evaluation};
 use crate::semantic::frames::FrameSeen;
@@ -93,10 +94,10 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
         }
         // What the run-time code answers is the unknown arguments (C605); any
         // other error still refuses the call.
-        let refused_at_run_time = site
-            .diagnostics
-            .iter()
-            .any(|d| d.severity == Severity::Error && d.code != "C605");
+        let refused_at_run_time = site.diagnostics.iter().any(|d| {
+            d.severity == Severity::Error
+                && d.code != registry::cycle600_unknown_argument::RULE.code
+        });
         if let (Some(_), Some(parameters), false) =
             (options.runtime, &site.runtime, refused_at_run_time)
         {
@@ -152,11 +153,11 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
                     out.diagnostics.extend(
                         site.diagnostics
                             .iter()
-                            .filter(|d| d.code != "C605")
+                            .filter(|d| d.code != registry::cycle600_unknown_argument::RULE.code)
                             .cloned(),
                     );
                     out.diagnostics.push(
-                        Diagnostic::new("C613", "cycle600-computed-at-run-time", Severity::Info, site.statement)
+                        registry::cycle600_computed_at_run_time::RULE.at(site.statement)
                             .message("values known only at run time: the conversion is computed on the control in native arithmetic")
                             .label("computed at run time"),
                     );
@@ -302,11 +303,7 @@ fn over_programmable_frame(form: Form, seen: &FrameSeen, span: Span) -> Diagnost
         Form::Traori => "traori",
         _ => "frames",
     };
-    Diagnostic::new(
-        "C617",
-        "cycle600-frames-over-programmable-frame",
-        Severity::Error,
-        span,
+    registry::cycle600_frames_over_programmable_frame::RULE.at(span,
     )
     .message(format!(
         "the {form} form replaces the programmable frame with TRANS, and {seen} is active in it"

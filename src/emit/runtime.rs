@@ -13,9 +13,10 @@ use std::collections::BTreeMap;
 
 use nalgebra::Matrix3;
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::Diagnostic;
 use crate::emit::cycle600::{Form, Options};
 use crate::emit::number::format;
+use crate::registry;
 use crate::rotation::euler::GIMBAL_TOLERANCE;
 use crate::rotation::trig::sin_cos_degrees;
 use crate::rotation::{self, Axis, Kind};
@@ -552,7 +553,7 @@ pub fn collision(source: &[u8], names: &Names) -> Option<Diagnostic> {
         None => {
             let at = find_ignoring_case(source, PREFIX.as_bytes())?;
             Some(
-                Diagnostic::new("C612", "runtime-name-collision", Severity::Error, Span::new(at, at + PREFIX.len()))
+                registry::runtime_name_collision::RULE.at(Span::new(at, at + PREFIX.len()))
                     .message(format!("the program already uses names starting with {PREFIX}, which the run-time code needs"))
                     .label("already used")
                     .help(help),
@@ -580,7 +581,7 @@ pub fn collision(source: &[u8], names: &Names) -> Option<Diagnostic> {
                             .and_then(|d| d.parse::<u32>().ok());
                         if let Some(n) = number.filter(|n| range.contains(n)) {
                             return Some(
-                                Diagnostic::new("C612", "runtime-name-collision", Severity::Error, variable.span)
+                                registry::runtime_name_collision::RULE.at(variable.span)
                                     .message(format!("R{n} is used by the program, and the run-time code needs R{} to R{}", range.start, range.end - 1))
                                     .label("already used")
                                     .help(help),

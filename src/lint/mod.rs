@@ -12,8 +12,8 @@ pub mod rule;
 pub mod rules;
 pub mod suppression;
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::{analyze_lines, Heads, Supplied};
 use crate::span::LineIndex;
@@ -205,7 +205,7 @@ fn cycle600_findings(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) 
         .flat_map(|site| site.diagnostics.iter().cloned())
         .collect();
     for diagnostic in &mut out {
-        if diagnostic.code == "C605" {
+        if diagnostic.code == crate::registry::cycle600_unknown_argument::RULE.code {
             diagnostic.severity = Severity::Info;
         }
     }

@@ -4,32 +4,13 @@
 use std::cell::{OnceCell, RefCell};
 use std::collections::HashSet;
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::lint::labels::Labels;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::plain::PlainFacts;
 use crate::syntax::tree::{Block, Line, LineKind, StatementKind, Variable, Word, WordValue};
 use crate::syntax::ProgramKind;
-
-/// A rule's identity and documentation.
-#[derive(Debug)]
-pub struct RuleInfo {
-    /// Stable code: `S...` syntax, `C6..` CYCLE600, `N...` general NC.
-    pub code: &'static str,
-    /// Kebab-case; reads as "allow <name>".
-    pub name: &'static str,
-    pub severity: Severity,
-    /// Markdown with the sections What it does / Why it matters / Example / Fix.
-    pub docs: &'static str,
-}
-
-impl RuleInfo {
-    /// A diagnostic of this rule at `span`.
-    pub fn at(&self, span: Span) -> Diagnostic {
-        Diagnostic::new(self.code, self.name, self.severity, span)
-    }
-}
 
 /// The file a rule is looking at.
 pub struct FileContext<'a> {

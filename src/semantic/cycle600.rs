@@ -8,6 +8,7 @@
 use nalgebra::{Rotation3, Vector3};
 
 use crate::diagnostic::{Diagnostic, Severity};
+use crate::registry;
 use crate::rotation::{self, frame::compose_additive, Decomposition, Kind, Sequence};
 use crate::semantic::env::{Active, Scope};
 use crate::semantic::eval::{evaluate, variable_key};
@@ -99,21 +100,12 @@ impl Evaluation {
     }
 }
 
-fn diagnostic(
-    code: &'static str,
-    name: &'static str,
-    severity: Severity,
-    span: Span,
-) -> Diagnostic {
-    Diagnostic::new(code, name, severity, span)
-}
-
 /// Names the arguments of `call`; a count other than 18 or 19 is an error.
 pub fn bind(source: &[u8], call: &Call, scope: &Scope) -> Result<Bound, Diagnostic> {
     let items = &call.arguments.items;
     let count = items.len();
     if count != 18 && count != 19 {
-        return Err(diagnostic("C601", "cycle600-argument-count", Severity::Error, call.arguments.span)
+        return Err(registry::cycle600_argument_count::RULE.at(call.arguments.span)
             .message(format!("CYCLE600 takes 18 arguments (or the paper's 19), this call has {count}"))
             .label(format!("{count} arguments"))
             .help("write the 18 parameters _INEXIN, _MIHEAD, _SW_REC, _BIN_IN, _POS_X.._POS_Z, _ANG_1.._ANG_3, _POS_X_R.._POS_Z_R, _INEXOUT, _BIN_OUT, _ROT_AD, _ROT_INV, _RETR_Z; empty positions (`,,`) count as 0"));
@@ -181,15 +173,11 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
             Ok(Value::Number(n)) => Some(*n),
             Ok(Value::Text(_)) => {
                 problems.push(
-                    diagnostic(
-                        "C609",
-                        "cycle600-invalid-argument",
-                        Severity::Error,
-                        arg.span,
-                    )
-                    .message(format!("{} must be a number, not a string", arg.name))
-                    .label("a string")
-                    .help(format!("give {} as a number", arg.name)),
+                    registry::cycle600_invalid_argument::RULE
+                        .at(arg.span)
+                        .message(format!("{} must be a number, not a string", arg.name))
+                        .label("a string")
+                        .help(format!("give {} as a number", arg.name)),
                 );
                 None
             }
@@ -206,18 +194,14 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
         } else {
             let arg = &args[i];
             problems.push(
-                diagnostic(
-                    "C603",
-                    "cycle600-flag-not-boolean",
-                    Severity::Error,
-                    arg.span,
-                )
-                .message(format!(
-                    "{} is a BOOL and must be 0 or 1, not {value}",
-                    arg.name
-                ))
-                .label("not 0 or 1")
-                .help(format!("write 0 or 1 for {}", arg.name)),
+                registry::cycle600_flag_not_boolean::RULE
+                    .at(arg.span)
+                    .message(format!(
+                        "{} is a BOOL and must be 0 or 1, not {value}",
+                        arg.name
+                    ))
+                    .label("not 0 or 1")
+                    .help(format!("write 0 or 1 for {}", arg.name)),
             );
             None
         }
@@ -235,18 +219,14 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
                 Ok(sequence) => kind.map(|_| sequence),
                 Err(error) => {
                     problems.push(
-                        diagnostic(
-                            "C602",
-                            "cycle600-invalid-sequence-code",
-                            Severity::Error,
-                            arg.span,
-                        )
-                        .message(format!(
-                            "{} = {value} is not an axis sequence code",
-                            arg.name
-                        ))
-                        .label("invalid code")
-                        .help(error.to_string()),
+                        registry::cycle600_invalid_sequence_code::RULE
+                            .at(arg.span)
+                            .message(format!(
+                                "{} = {value} is not an axis sequence code",
+                                arg.name
+                            ))
+                            .label("invalid code")
+                            .help(error.to_string()),
                     );
                     None
                 }
@@ -258,15 +238,11 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
         Ok(Value::Text(text)) => Some(text.clone()),
         Ok(Value::Number(_)) => {
             problems.push(
-                diagnostic(
-                    "C609",
-                    "cycle600-invalid-argument",
-                    Severity::Error,
-                    args[1].span,
-                )
-                .message("_MIHEAD must be the accessory's name as a string")
-                .label("not a string")
-                .help("write the name from HEAD_DEF in quotes, as \"UFK600\""),
+                registry::cycle600_invalid_argument::RULE
+                    .at(args[1].span)
+                    .message("_MIHEAD must be the accessory's name as a string")
+                    .label("not a string")
+                    .help("write the name from HEAD_DEF in quotes, as \"UFK600\""),
             );
             None
         }
@@ -292,18 +268,14 @@ pub fn check(bound: &Bound, heads: Option<&Heads>) -> (Option<Parameters>, Vec<D
         match &reserved.value {
             Ok(Value::Number(n)) if *n == 0.0 => {}
             _ => warnings.push(
-                diagnostic(
-                    "C607",
-                    "cycle600-reserved-not-zero",
-                    Severity::Warning,
-                    reserved.span,
-                )
-                .message(format!(
-                    "the reserved 14th value of the 19-value form is `{}`, not 0",
-                    reserved.text
-                ))
-                .label("reserved, should be 0 or empty")
-                .help("write 0 here, or use the canonical 18-argument form"),
+                registry::cycle600_reserved_not_zero::RULE
+                    .at(reserved.span)
+                    .message(format!(
+                        "the reserved 14th value of the 19-value form is `{}`, not 0",
+                        reserved.text
+                    ))
+                    .label("reserved, should be 0 or empty")
+                    .help("write 0 here, or use the canonical 18-argument form"),
             ),
         }
     }
@@ -337,22 +309,18 @@ pub fn additive_onto_unknown(span: Span, what: &str, why: &str) -> Diagnostic {
     } else {
         format!(": {why}")
     };
-    diagnostic(
-        "C608",
-        "cycle600-additive-extrinsic-unknown-active",
-        Severity::Error,
-        span,
-    )
-    .message(format!(
-        "{what} needs the active rotation, which is unknown offline{why}"
-    ))
-    .label("additive onto an unknown rotation")
-    .help("make the earlier swivel known offline, or give the total rotation with _ROT_AD=0")
+    registry::cycle600_additive_extrinsic_unknown_active::RULE
+        .at(span)
+        .message(format!(
+            "{what} needs the active rotation, which is unknown offline{why}"
+        ))
+        .label("additive onto an unknown rotation")
+        .help("make the earlier swivel known offline, or give the total rotation with _ROT_AD=0")
 }
 
 /// C611: a proper Euler output has no CYCLE800 `_MODE`.
 pub fn no_cycle800_form(output: Sequence, span: Span) -> Diagnostic {
-    diagnostic("C611", "cycle600-no-cycle800-form", Severity::Error, span)
+    registry::cycle600_no_cycle800_form::RULE.at(span)
         .message(format!("CYCLE800 swivels axis by axis in the six Tait-Bryan orders only; {output} is a proper Euler sequence"))
         .label("no CYCLE800 _MODE for this order")
         .help("rewrite with --emit frames, or choose a Tait-Bryan _BIN_OUT (57, 45, 54, 30, 39, 27)")
@@ -362,7 +330,8 @@ pub fn no_cycle800_form(output: Sequence, span: Span) -> Diagnostic {
 /// puts blocks where the call stood, and what followed it would run between
 /// them or end up inside their comments.
 pub fn shares_block(after: Span) -> Diagnostic {
-    diagnostic("C616", "cycle600-shares-block", Severity::Error, after)
+    registry::cycle600_shares_block::RULE
+        .at(after)
         .message("statements follow the CYCLE600 call in its block")
         .label("after the call")
         .help("move them to a block of their own: a cycle call stands alone in its block")
@@ -370,7 +339,7 @@ pub fn shares_block(after: Span) -> Diagnostic {
 
 /// C618: a call inside blocks nested deeper than the walk follows.
 pub fn nested_too_deep(call: Span, limit: usize) -> Diagnostic {
-    diagnostic("C618", "cycle600-nested-too-deep", Severity::Error, call)
+    registry::cycle600_nested_too_deep::RULE.at(call)
         .message(format!(
             "this CYCLE600 is inside {limit} or more nested blocks, deeper than the walk follows: it is not evaluated"
         ))
@@ -380,18 +349,14 @@ pub fn nested_too_deep(call: Span, limit: usize) -> Diagnostic {
 
 fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
     match why {
-        Unknown::Invalid(reason) => diagnostic(
-            "C609",
-            "cycle600-invalid-argument",
-            Severity::Error,
-            arg.span,
-        )
-        .message(format!(
-            "{} = `{}` has no value: {reason}",
-            arg.name, arg.text
-        ))
-        .label("no finite value")
-        .help(format!("correct the expression of {}", arg.name)),
+        Unknown::Invalid(reason) => registry::cycle600_invalid_argument::RULE
+            .at(arg.span)
+            .message(format!(
+                "{} = `{}` has no value: {reason}",
+                arg.name, arg.text
+            ))
+            .label("no finite value")
+            .help(format!("correct the expression of {}", arg.name)),
         Unknown::Variables(vars) => {
             let measured: Vec<&String> = vars
                 .iter()
@@ -411,20 +376,16 @@ fn unknown_argument(arg: &Argument, why: &Unknown) -> Diagnostic {
                     format!("assign it before the call, or give it with `--set {first}=<value>`")
                 }
             };
-            diagnostic(
-                "C605",
-                "cycle600-unknown-argument",
-                Severity::Error,
-                arg.span,
-            )
-            .message(format!(
-                "{} = `{}` is not known offline: {}",
-                arg.name,
-                arg.text,
-                names.join(", ")
-            ))
-            .label("unknown offline")
-            .help(help)
+            registry::cycle600_unknown_argument::RULE
+                .at(arg.span)
+                .message(format!(
+                    "{} = `{}` is not known offline: {}",
+                    arg.name,
+                    arg.text,
+                    names.join(", ")
+                ))
+                .label("unknown offline")
+                .help(help)
         }
     }
 }
@@ -462,7 +423,7 @@ pub fn evaluate_parameters(
     let mut warnings = Vec::new();
     if output.gimbal_lock {
         let axes = parameters.output.axes;
-        warnings.push(diagnostic("C606", "cycle600-gimbal-lock", Severity::Warning, call_span)
+        warnings.push(registry::cycle600_gimbal_lock::RULE.at(call_span)
             .message(format!(
                 "gimbal lock in {}: the middle rotation aligns the first and third axes, so only their combination is defined; the {} and {} rotations were merged into the first ({:.6}°) and the third is 0",
                 parameters.output,

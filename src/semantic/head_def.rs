@@ -4,7 +4,8 @@
 //! The file is read by the project's own parser; only those two assignments
 //! matter here.
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::Diagnostic;
+use crate::registry;
 use crate::span::Span;
 use crate::suggest::closest;
 use crate::syntax::parse;
@@ -70,7 +71,7 @@ impl Heads {
         match found {
             Some(head) if head.allowed == Some(true) => None,
             Some(head) => Some(
-                Diagnostic::new("C604", "cycle600-unknown-head", Severity::Error, span)
+                registry::cycle600_unknown_head::RULE.at(span)
                     .message(format!("accessory \"{name}\" is defined in {} (line {}) but not allowed (_HEAD_ALLOWED is not 1)", self.file, head.line))
                     .label("not allowed")
                     .help(format!("set _HEAD_ALLOWED=1 in its section of {}, or choose another accessory", self.file)),
@@ -81,7 +82,7 @@ impl Heads {
                     .unwrap_or_default();
                 let known: Vec<&str> = self.heads.iter().map(|h| h.name.as_str()).collect();
                 Some(
-                    Diagnostic::new("C604", "cycle600-unknown-head", Severity::Error, span)
+                    registry::cycle600_unknown_head::RULE.at(span)
                         .message(format!("accessory \"{name}\" is not defined in {}", self.file))
                         .label("unknown accessory")
                         .help(format!("{suggestion}defined accessories: {}", known.join(", "))),
@@ -93,15 +94,13 @@ impl Heads {
 
 /// C610: no HEAD_DEF was found, so head names were not checked.
 pub fn not_found() -> Diagnostic {
-    Diagnostic::new(
-        "C610",
-        "head-def-missing",
-        Severity::Warning,
-        Span::new(0, 0),
-    )
-    .message("head names were not checked: no HEAD_DEF.SPF next to the program")
-    .label("accessories unchecked")
-    .help("give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml")
+    registry::head_def_missing::RULE
+        .at(Span::new(0, 0))
+        .message("head names were not checked: no HEAD_DEF.SPF next to the program")
+        .label("accessories unchecked")
+        .help(
+            "give the accessory definitions with --heads HEAD_DEF.SPF, or `heads` in sinuprep.toml",
+        )
 }
 
 #[cfg(test)]

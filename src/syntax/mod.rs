@@ -16,7 +16,8 @@ pub mod tree;
 
 use std::cell::Cell;
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::Diagnostic;
+use crate::registry;
 use crate::span::Span;
 use lexer::{Input, SyntaxError, SyntaxErrorKind};
 use lines::{raw_lines, RawLine};
@@ -300,7 +301,8 @@ fn open_call_name(source: &[u8], block: &Block, open: usize) -> Option<String> {
 }
 
 fn continuation(open: &OpenCall, unparsed: Span) -> Diagnostic {
-    Diagnostic::new("S007", "continued-block", Severity::Error, unparsed)
+    registry::syntax::CONTINUED_BLOCK
+        .at(unparsed)
         .message(format!(
             "this line continues `{}(` from line {}, but a block ends at the end of its line",
             open.name, open.row
@@ -331,7 +333,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
     let show = |span: Span| String::from_utf8_lossy(span.of(source)).into_owned();
     match &error.kind {
         SyntaxErrorKind::UnclosedString => {
-            Diagnostic::new("S001", "unclosed-string", Severity::Error, rest)
+            registry::syntax::UNCLOSED_STRING.at(rest)
                 .message("string is not closed on this line")
                 .label("this string has no closing `\"`")
                 .help("add the closing `\"`; strings cannot span lines")
@@ -343,25 +345,21 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
             } else {
                 format!("add the missing `{close}`")
             };
-            Diagnostic::new("S002", "unbalanced-bracket", Severity::Error, one)
+            registry::syntax::UNBALANCED_BRACKET.at(one)
                 .message(format!("`{open}` is not closed on this line"))
                 .label(format!("this `{open}` has no matching `{close}`"))
                 .help(help)
         }
         SyntaxErrorKind::UnmatchedClose(close) => {
             let close = *close as char;
-            Diagnostic::new("S002", "unbalanced-bracket", Severity::Error, one)
+            registry::syntax::UNBALANCED_BRACKET.at(one)
                 .message(format!("`{close}` without a matching opening bracket"))
                 .label("nothing to close here")
                 .help(format!(
                     "remove this `{close}` or add the opening bracket it closes"
                 ))
         }
-        SyntaxErrorKind::InvalidNumber(why) => Diagnostic::new(
-            "S003",
-            "invalid-number",
-            Severity::Error,
-            number_span(source, at, line_end),
+        SyntaxErrorKind::InvalidNumber(why) => registry::syntax::INVALID_NUMBER.at(number_span(source, at, line_end),
         )
         .message(format!(
             "invalid number `{}`",
@@ -377,11 +375,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 Some(b'!') => "write `<>` for not equal and NOT for negation",
                 _ => "remove it, or put it in a comment after `;` or inside a string",
             };
-            Diagnostic::new(
-                "S004",
-                "unknown-character",
-                Severity::Error,
-                char_span(source, at, line_end),
+            registry::syntax::UNKNOWN_CHARACTER.at(char_span(source, at, line_end),
             )
             .message(format!(
                 "character {} has no meaning here",
@@ -390,17 +384,13 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
             .label("unknown character")
             .help(help)
         }
-        SyntaxErrorKind::MissingValue => Diagnostic::new(
-            "S006",
-            "missing-value",
-            Severity::Error,
-            one,
+        SyntaxErrorKind::MissingValue => registry::syntax::MISSING_VALUE.at(one,
         )
         .message(format!("address `{}` has no value", show(one)))
         .label("value missing")
         .help("write the value directly after the address (`X0`, not `X`) or as `X=expression`"),
         SyntaxErrorKind::ChainTooLong => {
-            Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
+            registry::syntax::NESTING_TOO_DEEP.at(one)
                 .message(format!(
                     "more than {} operators in a row in one expression",
                     expr::MAX_DEPTH
@@ -409,7 +399,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 .help("split the expression over several assignments (a block takes 512 characters on the control)")
         }
         SyntaxErrorKind::TooDeep => {
-            Diagnostic::new("S008", "nesting-too-deep", Severity::Error, one)
+            registry::syntax::NESTING_TOO_DEEP.at(one)
                 .message(format!(
                     "expression nested deeper than {} levels",
                     expr::MAX_DEPTH
@@ -418,7 +408,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 .help("split the expression over several assignments")
         }
         SyntaxErrorKind::TooLong => {
-            Diagnostic::new("S009", "block-too-long-to-read", Severity::Error, one)
+            registry::syntax::TOO_LONG_TO_READ.at(one)
                 .message(format!(
                     "block of {} bytes: too long to read (the control takes at most 512 characters a block)",
                     raw.content.len()
@@ -427,7 +417,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 .help("split it into blocks of at most 512 characters")
         }
         SyntaxErrorKind::Trailing { after, help } => {
-            Diagnostic::new("S005", "unexpected-token", Severity::Error, word_span(source, at, line_end))
+            registry::syntax::UNEXPECTED_TOKEN.at(word_span(source, at, line_end))
                 .message(format!(
                     "unexpected `{}` after {after}",
                     show_token(source, at, line_end)
@@ -436,7 +426,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 .help(*help)
         }
         SyntaxErrorKind::NotAlone(what) => {
-            Diagnostic::new("S005", "unexpected-token", Severity::Error, word_span(source, at, line_end))
+            registry::syntax::UNEXPECTED_TOKEN.at(word_span(source, at, line_end))
                 .message(format!("{what} must stand alone in its block"))
                 .label("after other statements")
                 .help("move the statements before it into a block of their own")
@@ -447,11 +437,7 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
             } else {
                 format!("`{}`", show_token(source, at, line_end))
             };
-            Diagnostic::new(
-                "S005",
-                "unexpected-token",
-                Severity::Error,
-                if at >= line_end {
+            registry::syntax::UNEXPECTED_TOKEN.at(if at >= line_end {
                     Span::new(at, at)
                 } else {
                     one

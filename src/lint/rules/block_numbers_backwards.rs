@@ -1,7 +1,7 @@
 //! N014 `block-numbers-backwards`: Finds a block number lower than the one before it.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::syntax::plain::digits_value;
 use crate::syntax::tree::BlockNumber;
 

@@ -1,7 +1,7 @@
 //! N008 `block-too-long`: Finds blocks longer than 512 characters (comment included).
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {

@@ -1,7 +1,7 @@
 //! C614 `cycle600-results-without-stopre`: Finds a read of `_CYC600_1` .. `_CYC600_6` after a CYCLE600 call with no STOPRE between them.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::syntax::tree::StatementKind;
 

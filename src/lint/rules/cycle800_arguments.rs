@@ -1,7 +1,7 @@
 //! N009 `cycle800-arguments`: Checks CYCLE800 calls: between 14 and 16 arguments (or none, to deselect), and a literal `_MODE`
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::rotation::{Kind, Sequence};
 use crate::syntax::tree::{ExprKind, StatementKind};
 

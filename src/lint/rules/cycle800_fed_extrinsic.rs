@@ -1,7 +1,7 @@
 //! C615 `cycle800-fed-extrinsic`: Finds a CYCLE800 whose angles are `_CYC600_2` .. `_CYC600_4` from a CYCLE600 that computed
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::syntax::tree::{ExprKind, StatementKind};
 

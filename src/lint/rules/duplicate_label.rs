@@ -1,7 +1,7 @@
 //! N003 `duplicate-label`: Finds a label defined twice in one program.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N003",

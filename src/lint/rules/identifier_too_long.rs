@@ -1,7 +1,7 @@
 //! N011 `identifier-too-long`: Finds variable, label and procedure names longer than 31 characters.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 

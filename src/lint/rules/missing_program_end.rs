@@ -1,7 +1,7 @@
 //! N010 `missing-program-end`: Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{LineKind, StatementKind, WordValue};

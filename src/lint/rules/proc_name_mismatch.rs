@@ -1,7 +1,7 @@
 //! N017 `proc-name-mismatch`: Finds a PROC whose name differs from its file's name.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::syntax::tree::StatementKind;
 

@@ -1,7 +1,7 @@
 //! N012 `traori-at-end`: Finds a program that switches on TRAORI and ends with it still active.
 
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, RuleInfo};
+use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 

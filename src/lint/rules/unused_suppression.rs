@@ -1,8 +1,7 @@
 //! N099 `unused-suppression`: found while applying `; sinuprep: ignore`
 //! comments (`lint::suppression`); this file documents it.
 
-use crate::diagnostic::Severity;
-use crate::lint::rule::RuleInfo;
+use crate::diagnostic::{RuleInfo, Severity};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N099",

@@ -2,8 +2,7 @@
 //! (`emit::cycle600`) from the walk's frame facts (`semantic::frames`); this
 //! file documents it.
 
-use crate::diagnostic::Severity;
-use crate::lint::rule::RuleInfo;
+use crate::diagnostic::{RuleInfo, Severity};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C617",

@@ -1,8 +1,7 @@
 //! Syntax errors (`S...`), found by the parser (`syntax`); this file
 //! documents them for `sinuprep rule`.
 
-use crate::diagnostic::Severity;
-use crate::lint::rule::RuleInfo;
+use crate::diagnostic::{RuleInfo, Severity};
 
 pub static UNCLOSED_STRING: RuleInfo = RuleInfo {
     code: "S001",

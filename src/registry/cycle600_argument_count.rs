@@ -1,8 +1,7 @@
 //! C601 `cycle600-argument-count`: found by the CYCLE600 walk (`semantic::cycle600`,
 //! `emit`), which `check`, `rewrite` and `eval` share; this file documents it.
 
-use crate::diagnostic::Severity;
-use crate::lint::rule::RuleInfo;
+use crate::diagnostic::{RuleInfo, Severity};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C601",

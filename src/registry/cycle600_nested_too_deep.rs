@@ -2,8 +2,7 @@
 //! (`semantic::walk`), which `check`, `rewrite` and `eval` share; this file
 //! documents it.
 
-use crate::diagnostic::Severity;
-use crate::lint::rule::RuleInfo;
+use crate::diagnostic::{RuleInfo, Severity};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C618",
