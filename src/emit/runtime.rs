@@ -570,8 +570,8 @@ pub fn collision(source: &[u8], names: &Names) -> Option<Diagnostic> {
                     if let StatementKind::Assign(assign) = &statement.kind {
                         variables.push(&assign.target);
                     }
-                    crate::semantic::walk::for_each_expression(&statement.kind, &mut |e| {
-                        crate::semantic::walk::collect_variables(e, &mut variables)
+                    crate::syntax::visit::for_each_expression(&statement.kind, &mut |e| {
+                        crate::syntax::visit::collect_variables(e, &mut variables)
                     });
                     for variable in variables {
                         let text = variable.name.text(source);

@@ -21,7 +21,7 @@ pub fn variable_key(
     variable: &Variable,
     lookup: &dyn Lookup,
 ) -> Result<String, Unknown> {
-    let name = String::from_utf8_lossy(variable.name.text(source)).to_ascii_uppercase();
+    let name = variable.name.upper(source);
     let mut indices = Vec::with_capacity(variable.indices.len());
     for index in &variable.indices {
         indices.push(index_text(source, index, lookup)?);
@@ -61,7 +61,7 @@ fn r_parameter(name: &str) -> Option<u64> {
 fn index_text(source: &[u8], index: &Expr, lookup: &dyn Lookup) -> Result<String, Unknown> {
     if let ExprKind::Variable(v) = &index.kind {
         if v.indices.is_empty() && is_axis_like(v.name.text(source)) {
-            return Ok(String::from_utf8_lossy(v.name.text(source)).to_ascii_uppercase());
+            return Ok(v.name.upper(source));
         }
     }
     match evaluate(source, index, lookup)? {
@@ -144,7 +144,7 @@ pub fn evaluate(source: &[u8], expr: &Expr, lookup: &dyn Lookup) -> Result<Value
             evaluate(source, rhs, lookup),
         ),
         ExprKind::Call(call) => {
-            let name = String::from_utf8_lossy(call.name.text(source)).to_ascii_uppercase();
+            let name = call.name.upper(source);
             let mut args = Vec::with_capacity(call.arguments.items.len());
             let mut unknown: Option<Unknown> = None;
             for item in &call.arguments.items {

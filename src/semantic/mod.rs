@@ -5,11 +5,13 @@
 //! and binds and evaluates each CYCLE600 call. It produces values and
 //! diagnostics, never text: rewriting is `emit`'s job.
 
+pub mod calls;
 pub mod cycle600;
 pub mod env;
 pub mod eval;
 pub mod frames;
 pub mod head_def;
+pub mod structure;
 pub mod value;
 pub mod walk;
 

@@ -13,6 +13,7 @@ pub mod lexer;
 pub mod lines;
 pub mod plain;
 pub mod tree;
+pub mod visit;
 
 use std::cell::Cell;
 

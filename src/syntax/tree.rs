@@ -66,9 +66,20 @@ pub struct Name {
     pub span: Span,
 }
 
+/// A name as the control compares it: in upper case, since the control
+/// ignores case (bytes that are not UTF-8 become the replacement character).
+pub fn upper(text: &[u8]) -> String {
+    String::from_utf8_lossy(text).to_ascii_uppercase()
+}
+
 impl Name {
     pub fn text(self, source: &[u8]) -> &[u8] {
         self.span.of(source)
+    }
+
+    /// The name in upper case, as the control compares names.
+    pub fn upper(self, source: &[u8]) -> String {
+        upper(self.text(source))
     }
 
     /// Case-insensitive comparison with an upper-case keyword.

@@ -2,15 +2,15 @@
 //! expression reads, whether a name is a user variable.
 
 use crate::lint::rule::FileContext;
-use crate::semantic::walk::{collect_variables, for_each_expression};
 use crate::span::Span;
 use crate::syntax::tree::{
     Block, Goto, GotoTarget, Initializer, Statement, StatementKind, Variable,
 };
+use crate::syntax::visit::{collect_variables, for_each_expression};
 
 /// The upper-case text of `span`.
 pub fn upper(source: &[u8], span: Span) -> String {
-    String::from_utf8_lossy(span.of(source)).to_ascii_uppercase()
+    crate::syntax::tree::upper(span.of(source))
 }
 
 /// Where a jump can land: a named label, or a block number (kept as a

@@ -1,0 +1,128 @@
+//! What a called name is to the walk: CYCLE600, CYCLE800, a measuring cycle
+//! that writes `_OVR[]`, a command of the control that writes no user
+//! variable, or a user subprogram that may change any R parameter.
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum CallKind {
+    Cycle600,
+    Cycle800,
+    /// Siemens measuring cycles: their results land in `_OVR[]`/`_OVI[]`.
+    Measuring,
+    /// Commands and cycles that do not write user variables.
+    Builtin,
+    Subprogram,
+}
+
+pub(crate) fn call_kind(name: &str) -> CallKind {
+    match name {
+        "CYCLE600" => CallKind::Cycle600,
+        "CYCLE800" => CallKind::Cycle800,
+        _ if name.starts_with("CYCLE9")
+            && name.len() == 8
+            && name[5..].bytes().all(|b| b.is_ascii_digit()) =>
+        {
+            CallKind::Measuring
+        }
+        _ if name.starts_with("CYCLE") || BUILTINS.contains(&name) => CallKind::Builtin,
+        _ => CallKind::Subprogram,
+    }
+}
+
+/// Commands and procedures of the control that do not write user variables.
+pub(crate) const BUILTINS: &[&str] = &[
+    "STOPRE",
+    "MSG",
+    "SETAL",
+    "RET",
+    "TRAORI",
+    "TRAFOOF",
+    "TRACYL",
+    "TRANSMIT",
+    "SUPA",
+    "FNORM",
+    "FLIN",
+    "FCUB",
+    "SOFT",
+    "BRISK",
+    "DRIVE",
+    "ORIWKS",
+    "ORIMKS",
+    "ORIAXES",
+    "ORIVECT",
+    "ORIPLANE",
+    "ORIEULER",
+    "ORIRPY",
+    "ORIRPY2",
+    "ORIVIRT1",
+    "ORIVIRT2",
+    "ORICONCW",
+    "ORICONCCW",
+    "ORICURVE",
+    "COMPOF",
+    "COMPON",
+    "COMPCURV",
+    "COMPCAD",
+    "CFTCP",
+    "CFC",
+    "CFIN",
+    "TCOABS",
+    "TCOFR",
+    "TCOFRX",
+    "TCOFRY",
+    "TCOFRZ",
+    "PAROT",
+    "PAROTOF",
+    "TOROT",
+    "TOROTOF",
+    "TOFRAME",
+    "TOFRAMEX",
+    "TOFRAMEY",
+    "TOFRAMEZ",
+    "TCARR",
+    "DO",
+    "LIFTFAST",
+    "SBLOF",
+    "SBLON",
+    "DISPLOF",
+    "DISPLON",
+    "SAVE",
+    "WAITM",
+    "WAITE",
+    "WAITS",
+    "SPOS",
+    "SPOSA",
+    "TRAILON",
+    "TRAILOF",
+    "ASPLINE",
+    "BSPLINE",
+    "CSPLINE",
+    "BNAT",
+    "BTAN",
+    "BAUTO",
+    "ENAT",
+    "ETAN",
+    "EAUTO",
+    "G64",
+    "SETINT",
+    "PRIO",
+    "MEAS",
+    "MEAW",
+    "SETPIECE",
+    "GETT",
+    "GETD",
+    "CANCEL",
+    "ENABLE",
+    "DISABLE",
+    "CLEARM",
+    "SETM",
+    "G290",
+    "G291",
+    "ACC",
+    "OVR",
+    "ID",
+    "IDS",
+    "EXECSTRING",
+    "WRITE",
+    "PUNCH_ON",
+    "PUNCH_OFF",
+];

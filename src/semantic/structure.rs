@@ -1,0 +1,404 @@
+//! The program's block structure, built once before the walk: where each IF
+//! and loop ends, labels and block numbers, the regions backward jumps
+//! repeat, STOPRE lines, what each line writes, and the lines sinuprep wrote
+//! itself (a `; sinuprep:` call and the blocks emitted for it).
+
+use std::borrow::Cow;
+use std::collections::{HashMap, HashSet};
+
+use crate::semantic::calls::{call_kind, CallKind};
+use crate::semantic::eval::key;
+use crate::semantic::frames;
+use crate::syntax::plain::block_numbers;
+use crate::syntax::tree::{
+    upper, Block, Call, Expr, GotoTarget, LineKind, Statement, StatementKind, SyncAction,
+};
+use crate::syntax::Lines;
+
+/// Names a line writes, for forgetting them.
+#[derive(Default, Clone)]
+pub(crate) struct Written {
+    pub(crate) names: Vec<String>,
+    /// A CYCLE800 (or another call that certainly swivels) is there.
+    pub(crate) rotation: bool,
+    /// Lines of CYCLE600 calls: they swivel or write their results.
+    pub(crate) cycle600_lines: Vec<usize>,
+    /// A frame statement of the program's own is there.
+    pub(crate) frames: bool,
+}
+
+/// How the walk goes through a block: into an IF, a loop, past an ELSE.
+pub(crate) enum Control<'a> {
+    IfBlock(&'a Expr),
+    Loop {
+        condition: Option<&'a Expr>,
+        runs_once: bool,
+    },
+    Else,
+    None,
+}
+
+/// The variables a synchronized action assigns, in the walk's keys: it
+/// writes them in the main run, at a time preprocessing cannot know. `$R1`
+/// there is the R parameter `R1`.
+pub(crate) fn sync_writes<'s>(
+    source: &'s [u8],
+    sync: &'s SyncAction,
+) -> impl Iterator<Item = String> + 's {
+    let otherwise = sync.otherwise.iter().flat_map(|(_, actions)| actions);
+    sync.actions
+        .iter()
+        .chain(otherwise)
+        .filter_map(move |action| {
+            let StatementKind::Assign(assign) = &action.kind else {
+                return None;
+            };
+            let name = upper(assign.target.name.text(source));
+            let name = match name.strip_prefix('$') {
+                Some(r) if r.starts_with('R') && r[1..].bytes().all(|b| b.is_ascii_digit()) => {
+                    r.to_string()
+                }
+                _ => name,
+            };
+            Some(if assign.target.indices.is_empty() {
+                key(&name, &[])
+            } else {
+                name
+            })
+        })
+}
+
+/// What one block may write: variables, arrays a measuring cycle fills, R
+/// parameters a subprogram may change, the swivel rotation, frames (not
+/// those of a block sinuprep `emitted`).
+fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Written {
+    let mut written = Written {
+        frames: !emitted && frames::frame_effect(source, block).is_some(),
+        ..Written::default()
+    };
+    for statement in &block.statements {
+        match &statement.kind {
+            StatementKind::Assign(assign) => {
+                let name = upper(assign.target.name.text(source));
+                written.names.push(if assign.target.indices.is_empty() {
+                    key(&name, &[])
+                } else {
+                    name
+                });
+            }
+            StatementKind::Def(def) => written
+                .names
+                .extend(def.variables.iter().map(|d| upper(d.name.text(source)))),
+            StatementKind::For { variable, .. } => {
+                written.names.push(key(&upper(variable.text(source)), &[]))
+            }
+            StatementKind::SyncAction(sync) => written.names.extend(sync_writes(source, sync)),
+            StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
+                match call_kind(&upper(name.text(source))) {
+                    CallKind::Cycle600 => written.cycle600_lines.push(line),
+                    CallKind::Cycle800 => written.rotation = true,
+                    CallKind::Measuring => written
+                        .names
+                        .extend(["_OVR".to_string(), "_OVI".to_string()]),
+                    CallKind::Builtin => {}
+                    CallKind::Subprogram => written.names.push("R".to_string()),
+                }
+            }
+            _ => {}
+        }
+    }
+    written
+}
+
+/// The block structure: where each IF/loop ends, labels, backward jumps.
+pub(crate) struct Structure {
+    /// Opener line -> (ELSE line, closing line).
+    pub(crate) ends: HashMap<usize, (Option<usize>, usize)>,
+    /// ELSE line -> ENDIF line.
+    pub(crate) else_ends: HashMap<usize, usize>,
+    /// Label -> lines where it stands.
+    pub(crate) labels: HashMap<String, Vec<usize>>,
+    /// (block number, line), sorted; read only when a jump names a block
+    /// number, since a CAM program has millions of them.
+    pub(crate) numbers: Vec<(u64, usize)>,
+    /// First line of a region a backward jump repeats -> its last line.
+    pub(crate) loop_starts: HashMap<usize, usize>,
+    /// Lines with a STOPRE, in order.
+    pub(crate) stopre_lines: Vec<usize>,
+    /// What each line that writes anything writes, in line order.
+    pub(crate) writes: Vec<(usize, Written)>,
+    /// `; sinuprep:` lines -> the CYCLE600 call they keep.
+    pub(crate) marked: HashMap<usize, Statement>,
+    /// Lines sinuprep emitted with frames or CYCLE800 for a marked call.
+    pub(crate) emitted: HashSet<usize>,
+}
+
+#[derive(PartialEq)]
+enum Opener {
+    If,
+    While,
+    For,
+    Loop,
+    Repeat,
+}
+
+impl Structure {
+    pub(crate) fn build(lines: &Lines) -> Structure {
+        let source = lines.source;
+        let mut structure = Structure {
+            ends: HashMap::new(),
+            else_ends: HashMap::new(),
+            labels: HashMap::new(),
+            numbers: Vec::new(),
+            loop_starts: HashMap::new(),
+            stopre_lines: Vec::new(),
+            writes: Vec::new(),
+            marked: HashMap::new(),
+            emitted: HashSet::new(),
+        };
+        structure.find_emitted(lines);
+        let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
+        // Jumps, resolved once every label is known.
+        let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
+        for line in 0..lines.len() {
+            if structure.marked.contains_key(&line) {
+                // The call it keeps may swivel or recalculate, as it did.
+                let call = Written {
+                    cycle600_lines: vec![line],
+                    ..Written::default()
+                };
+                structure.writes.push((line, call));
+            }
+            if lines.is_plain(line) {
+                continue;
+            }
+            let LineKind::Block(block) = lines.parse(line).kind else {
+                continue;
+            };
+            let block = &block;
+            let writes = block_writes(source, block, line, structure.is_emitted(line));
+            if !writes.names.is_empty()
+                || writes.rotation
+                || writes.frames
+                || !writes.cycle600_lines.is_empty()
+            {
+                structure.writes.push((line, writes));
+            }
+            for statement in &block.statements {
+                match &statement.kind {
+                    StatementKind::Command(name) if name.is(source, "STOPRE") => {
+                        structure.stopre_lines.push(line)
+                    }
+                    StatementKind::Goto(goto) => jumps.push((line, goto.clone())),
+                    StatementKind::Case(case) => {
+                        let gotos = case.branches.iter().map(|(_, g)| g).chain(&case.default);
+                        jumps.extend(gotos.map(|g| (line, g.clone())));
+                    }
+                    _ => {}
+                }
+            }
+            if let Some(label) = block.label {
+                structure
+                    .labels
+                    .entry(upper(label.text(source)))
+                    .or_default()
+                    .push(line);
+            }
+            let close =
+                |stack: &mut Vec<(Opener, usize, Option<usize>)>,
+                 kind: Opener,
+                 ends: &mut HashMap<usize, (Option<usize>, usize)>| {
+                    if stack.last().is_some_and(|(k, _, _)| *k == kind) {
+                        if let Some((_, open, else_line)) = stack.pop() {
+                            ends.insert(open, (else_line, line));
+                        }
+                    }
+                };
+            match control(block) {
+                Control::IfBlock(_) => stack.push((Opener::If, line, None)),
+                Control::Else => {
+                    if let Some((Opener::If, _, else_line)) = stack.last_mut() {
+                        *else_line = Some(line);
+                    }
+                }
+                Control::Loop { .. } => {
+                    let kind = block.statements.iter().find_map(|s| match s.kind {
+                        StatementKind::While { .. } => Some(Opener::While),
+                        StatementKind::For { .. } => Some(Opener::For),
+                        StatementKind::Loop => Some(Opener::Loop),
+                        StatementKind::Repeat { .. } => Some(Opener::Repeat),
+                        _ => None,
+                    });
+                    if let Some(kind) = kind {
+                        stack.push((kind, line, None));
+                    }
+                }
+                Control::None => {}
+            }
+            for statement in &block.statements {
+                match statement.kind {
+                    StatementKind::EndIf => close(&mut stack, Opener::If, &mut structure.ends),
+                    StatementKind::EndWhile => {
+                        close(&mut stack, Opener::While, &mut structure.ends)
+                    }
+                    StatementKind::EndFor => close(&mut stack, Opener::For, &mut structure.ends),
+                    StatementKind::EndLoop => close(&mut stack, Opener::Loop, &mut structure.ends),
+                    StatementKind::Until { .. } => {
+                        close(&mut stack, Opener::Repeat, &mut structure.ends)
+                    }
+                    _ => {}
+                }
+            }
+        }
+        for &(else_line, end) in structure.ends.values() {
+            if let Some(else_line) = else_line {
+                structure.else_ends.insert(else_line, end);
+            }
+        }
+        let wanted: HashSet<u64> = jumps
+            .iter()
+            .filter_map(|(_, goto)| goto.target.as_ref()?.block_number(source))
+            .collect();
+        if !wanted.is_empty() {
+            structure.numbers = block_numbers(source, &wanted);
+        }
+        // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
+        for (line, goto) in jumps {
+            let target = match (&goto.kind, &goto.target) {
+                (crate::syntax::tree::GotoKind::Start, _) => Some(0),
+                (kind, Some(target)) => structure.resolve(source, target, *kind, line),
+                _ => None,
+            };
+            if let Some(target) = target.filter(|&t| t <= line) {
+                let last = structure.loop_starts.entry(target).or_insert(line);
+                *last = (*last).max(line);
+            }
+        }
+        structure
+    }
+
+    /// The `; sinuprep:` lines and the blocks emitted below them. A program
+    /// sinuprep never rewrote has none: one search of the bytes says so.
+    fn find_emitted(&mut self, lines: &Lines) {
+        let source = lines.source;
+        if memchr::memmem::find(source, frames::MARKER).is_none() {
+            return;
+        }
+        for line in 0..lines.len() {
+            let Some(statement) = frames::marked_call(source, lines.raw(line).content) else {
+                continue;
+            };
+            let block = |offset: usize| {
+                let at = line + 1 + offset;
+                if at >= lines.len() {
+                    return None;
+                }
+                match lines.parse(at).kind {
+                    LineKind::Block(block) => Some(block),
+                    _ => None,
+                }
+            };
+            let count = frames::emitted_blocks(source, block);
+            self.emitted.extend(line + 1..line + 1 + count);
+            self.marked.insert(line, statement);
+        }
+    }
+
+    /// The CYCLE600 kept in the `; sinuprep:` line `line`, if it is one
+    /// (most programs have none: no hashing of every line then).
+    pub(crate) fn marked_call(&self, line: usize) -> Option<&Statement> {
+        if self.marked.is_empty() {
+            return None;
+        }
+        self.marked.get(&line)
+    }
+
+    /// Whether sinuprep emitted `line` for a marked call.
+    pub(crate) fn is_emitted(&self, line: usize) -> bool {
+        !self.emitted.is_empty() && self.emitted.contains(&line)
+    }
+
+    /// What each line in `start..end` that writes anything writes.
+    pub(crate) fn writes_in(
+        &self,
+        start: usize,
+        end: usize,
+    ) -> impl Iterator<Item = &(usize, Written)> {
+        let first = self.writes.partition_point(|(line, _)| *line < start);
+        self.writes[first..]
+            .iter()
+            .take_while(move |(line, _)| *line < end)
+    }
+
+    /// The line a jump from `from` lands on, searching as its kind says.
+    pub(crate) fn resolve(
+        &self,
+        source: &[u8],
+        target: &GotoTarget,
+        kind: crate::syntax::tree::GotoKind,
+        from: usize,
+    ) -> Option<usize> {
+        use crate::syntax::tree::GotoKind;
+        let lines: Cow<[usize]> = match (target.block_number(source), target) {
+            (Some(number), _) => {
+                let first = self.numbers.partition_point(|&(n, _)| n < number);
+                let numbered = self.numbers[first..]
+                    .iter()
+                    .take_while(|&&(n, _)| n == number);
+                Cow::Owned(numbered.map(|&(_, line)| line).collect())
+            }
+            (None, GotoTarget::Label(name)) => {
+                Cow::Borrowed(self.labels.get(&upper(name.text(source)))?)
+            }
+            (None, _) => return None,
+        };
+        let forward = lines.iter().copied().find(|&l| l > from);
+        let backward = lines.iter().copied().rev().find(|&l| l <= from);
+        match kind {
+            GotoKind::Forward => forward,
+            GotoKind::Backward => backward,
+            GotoKind::Both | GotoKind::Conditional => forward.or(backward),
+            GotoKind::Start => Some(0),
+        }
+    }
+}
+
+/// The control statement that decides how a block is walked.
+pub(crate) fn control(block: &Block) -> Control<'_> {
+    for statement in &block.statements {
+        let control = match &statement.kind {
+            // `IF cond GOTOF L` is a jump, not a block.
+            StatementKind::If { condition } => {
+                if block
+                    .statements
+                    .iter()
+                    .any(|s| matches!(s.kind, StatementKind::Goto(_)))
+                {
+                    Control::None
+                } else {
+                    Control::IfBlock(condition)
+                }
+            }
+            StatementKind::While { condition } => Control::Loop {
+                condition: Some(condition),
+                runs_once: false,
+            },
+            StatementKind::For { .. } => Control::Loop {
+                condition: None,
+                runs_once: false,
+            },
+            StatementKind::Loop => Control::Loop {
+                condition: None,
+                runs_once: true,
+            },
+            StatementKind::Repeat { targets, .. } if targets.is_empty() => Control::Loop {
+                condition: None,
+                runs_once: true,
+            },
+            StatementKind::Else => Control::Else,
+            _ => continue,
+        };
+        return control;
+    }
+    Control::None
+}

@@ -1,0 +1,79 @@
+//! Walking a tree's expressions: what a statement reads, for the rules, the
+//! walk and the rewrite alike.
+
+use crate::syntax::tree::{Expr, ExprKind, StatementKind, Variable, WordValue};
+
+/// Every expression directly in a statement, for collecting reads.
+pub fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Expr)) {
+    match kind {
+        StatementKind::Word(word) => {
+            if let WordValue::Expr(expr) = &word.value {
+                visit(expr);
+            }
+        }
+        StatementKind::Assign(assign) => {
+            assign.target.indices.iter().for_each(&mut *visit);
+            visit(&assign.value);
+        }
+        StatementKind::Call(call) => call
+            .arguments
+            .items
+            .iter()
+            .filter_map(|a| a.value.as_ref())
+            .for_each(visit),
+        StatementKind::If { condition }
+        | StatementKind::While { condition }
+        | StatementKind::Until { condition } => visit(condition),
+        // What an action reads is read in the main run, yet read all the same.
+        StatementKind::SyncAction(sync) => {
+            if let Some((_, number)) = &sync.id {
+                visit(number);
+            }
+            if let Some(condition) = &sync.condition {
+                visit(&condition.expr);
+            }
+            let otherwise = sync.otherwise.iter().flat_map(|(_, actions)| actions);
+            for action in sync.actions.iter().chain(otherwise) {
+                for_each_expression(&action.kind, visit);
+            }
+        }
+        StatementKind::For { start, end, .. } => {
+            visit(start);
+            visit(end);
+        }
+        StatementKind::Case(case) => visit(&case.selector),
+        _ => {}
+    }
+}
+
+/// Variables read in `expr` (iteratively: trees may be deep).
+pub fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
+    // Most expressions are a number or one variable: no stack for those.
+    match &expr.kind {
+        ExprKind::Number(_) | ExprKind::String => return,
+        ExprKind::Variable(variable) if variable.indices.is_empty() => return out.push(variable),
+        _ => {}
+    }
+    let mut stack = vec![expr];
+    while let Some(expr) = stack.pop() {
+        match &expr.kind {
+            ExprKind::Variable(variable) => {
+                out.push(variable);
+                stack.extend(variable.indices.iter());
+            }
+            ExprKind::Call(call) => {
+                stack.extend(call.arguments.items.iter().filter_map(|a| a.value.as_ref()))
+            }
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { lhs, rhs, .. } => {
+                stack.push(lhs);
+                stack.push(rhs);
+            }
+            ExprKind::Paren(inner) => stack.push(inner),
+            ExprKind::Tuple(items) => {
+                stack.extend(items.items.iter().filter_map(|a| a.value.as_ref()))
+            }
+            ExprKind::Number(_) | ExprKind::String => {}
+        }
+    }
+}
