@@ -416,6 +416,23 @@ mod tests {
         assert_eq!(eval("\"R1=\" << R1"), Ok(Value::Text("R1=10".to_string())));
     }
 
+    /// The manual gives no negative example: DIV drops the fraction toward
+    /// zero (as an INT conversion does) and MOD keeps the dividend's sign,
+    /// so that `a == (a DIV b) * b + a MOD b` holds for every sign.
+    #[test]
+    fn div_and_mod_of_negative_numbers() {
+        assert_eq!(num("-7 DIV 2"), -3.0);
+        assert_eq!(num("7 DIV -2"), -3.0);
+        assert_eq!(num("-7 DIV -2"), 3.0);
+        assert_eq!(num("-7 MOD 2"), -1.0);
+        assert_eq!(num("7 MOD -2"), 1.0);
+        for (a, b) in [(-7.0, 2.0), (7.0, -2.0), (-7.5, 2.0), (9.0, 4.0)] {
+            let div = num(&format!("({a}) DIV ({b})"));
+            let rem = num(&format!("({a}) MOD ({b})"));
+            assert_eq!(div * b + rem, a, "{a} {b}");
+        }
+    }
+
     #[test]
     fn comparison_precedence_is_the_controls() {
         // Not (1==1) AND (2==2): the control computes (1 == (1 AND 2)) == 2.

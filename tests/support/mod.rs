@@ -90,3 +90,40 @@ pub fn own_inputs() -> Vec<PathBuf> {
     files.extend(files_below(&repo().join("tests/fixtures")));
     files
 }
+
+/// The syntax errors of `source`, each as its code, its message and the text
+/// of its line, sorted: what a rewrite must leave exactly as it found them
+/// (their positions move as lines are added, and so do the line numbers a
+/// message names, which are masked).
+pub fn syntax_errors(source: &[u8]) -> Vec<(&'static str, String, Vec<u8>)> {
+    let mut errors: Vec<_> = sinuprep::syntax::parse(source)
+        .diagnostics
+        .into_iter()
+        .map(|d| {
+            let at = d.span.start.min(source.len());
+            let start = source[..at]
+                .iter()
+                .rposition(|&b| b == b'\n' || b == b'\r')
+                .map_or(0, |p| p + 1);
+            let end = source[at..]
+                .iter()
+                .position(|&b| b == b'\n' || b == b'\r')
+                .map_or(source.len(), |p| at + p);
+            let message = d
+                .message
+                .split("line ")
+                .enumerate()
+                .map(|(n, part)| match n {
+                    0 => part.to_string(),
+                    _ => part
+                        .trim_start_matches(|c: char| c.is_ascii_digit())
+                        .to_string(),
+                })
+                .collect::<Vec<_>>()
+                .join("line _");
+            (d.code, message, source[start..end].to_vec())
+        })
+        .collect();
+    errors.sort();
+    errors
+}

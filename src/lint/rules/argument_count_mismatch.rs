@@ -54,14 +54,7 @@ impl Check for Checker {
                         .insert(upper(file.source, proc.name.span), proc.parameters.len());
                 }
                 StatementKind::Extern { name, parameters } => {
-                    let count = parameters.map_or(0, |p| {
-                        let inner = &p.of(file.source)[1..p.len().saturating_sub(1).max(1)];
-                        if inner.iter().all(|b| b.is_ascii_whitespace()) {
-                            0
-                        } else {
-                            inner.iter().filter(|&&b| b == b',').count() + 1
-                        }
-                    });
+                    let count = parameters.map_or(0, |p| parameter_count(p.of(file.source)));
                     self.declared.insert(upper(file.source, name.span), count);
                 }
                 StatementKind::Call(call) => {
@@ -93,5 +86,41 @@ impl Check for Checker {
                 }
             }
         }
+    }
+}
+
+/// How many parameters `(REAL, VAR REAL A[2,3])` declares: its commas
+/// outside brackets, plus one unless it is empty.
+fn parameter_count(list: &[u8]) -> usize {
+    let inner = list
+        .strip_prefix(b"(")
+        .and_then(|l| l.strip_suffix(b")"))
+        .unwrap_or(list);
+    if inner.iter().all(|b| b.is_ascii_whitespace()) {
+        return 0;
+    }
+    let mut depth = 0usize;
+    let mut commas = 0;
+    for &byte in inner {
+        match byte {
+            b'[' | b'(' => depth += 1,
+            b']' | b')' => depth = depth.saturating_sub(1),
+            b',' if depth == 0 => commas += 1,
+            _ => {}
+        }
+    }
+    commas + 1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parameter_count;
+
+    #[test]
+    fn array_dimensions_are_not_parameters() {
+        assert_eq!(parameter_count(b"(REAL, VAR REAL A[2,3])"), 2);
+        assert_eq!(parameter_count(b"(AXIS,VAR BOOL)"), 2);
+        assert_eq!(parameter_count(b"( )"), 0);
+        assert_eq!(parameter_count(b"(INT)"), 1);
     }
 }
