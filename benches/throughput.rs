@@ -2,10 +2,13 @@
 //! 5-axis CAM program, the outside corpus replicated, the same program with
 //! CYCLE600 calls scattered through it), runs `check` and `rewrite` on each,
 //! and prints MB/s, blocks/s and peak memory, with `wc -l` as the floor.
+//! Memory is given twice: the peak resident set (file pages of a mapped
+//! program included, which the kernel drops at will) and the peak of the
+//! process's own anonymous memory (`RssAnon`, sampled every millisecond).
 //!
 //! `cargo bench --bench throughput` (size in MB: `SINUPREP_BENCH_MB`, default
-//! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs). Peak memory comes from
-//! `/usr/bin/time -f %M`; nothing is asserted.
+//! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs). The resident peak comes
+//! from `/usr/bin/time -f %M`; nothing is asserted.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -37,8 +40,8 @@ fn main() {
     let heads = heads.to_str().expect("utf-8");
 
     println!(
-        "{:<44} {:>9} {:>10} {:>12} {:>10}",
-        "run", "seconds", "MB/s", "blocks/s", "peak MiB"
+        "{:<44} {:>9} {:>10} {:>12} {:>10} {:>10}",
+        "run", "seconds", "MB/s", "blocks/s", "peak MiB", "anon MiB"
     );
     for input in [&cam, &corpus, &with_cycle600] {
         let bytes = std::fs::metadata(input).map(|m| m.len()).unwrap_or(0) as f64;
@@ -76,12 +79,13 @@ fn main() {
             ),
         ];
         for (label, command) in runs {
-            let (seconds, peak) = measure(&command);
+            let (seconds, peak, anon) = measure(&command);
             println!(
-                "{label:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1}",
+                "{label:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1} {:>10.1}",
                 bytes / seconds / 1e6,
                 blocks / seconds,
-                peak as f64 / 1024.0
+                peak as f64 / 1024.0,
+                anon as f64 / 1024.0
             );
         }
     }
@@ -93,17 +97,26 @@ fn main() {
     }
 }
 
-/// Best of three runs: wall seconds, and peak resident memory in KiB.
-fn measure(command: &[&str]) -> (f64, u64) {
-    let mut best = (f64::INFINITY, 0);
+/// Best of three runs: wall seconds, peak resident memory and peak
+/// anonymous memory, both in KiB.
+fn measure(command: &[&str]) -> (f64, u64, u64) {
+    let mut best = (f64::INFINITY, 0, 0);
     for _ in 0..3 {
         let started = Instant::now();
-        let output = Command::new("/usr/bin/time")
+        let mut child = Command::new("/usr/bin/time")
             .arg("-f")
             .arg("%M")
             .args(command)
-            .output()
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
             .expect("/usr/bin/time runs");
+        let mut anon = 0;
+        while child.try_wait().expect("wait").is_none() {
+            anon = anon.max(anonymous_kib(child.id()).unwrap_or(0));
+            std::thread::sleep(std::time::Duration::from_millis(1));
+        }
+        let output = child.wait_with_output().expect("output");
         let seconds = started.elapsed().as_secs_f64();
         let peak = String::from_utf8_lossy(&output.stderr)
             .lines()
@@ -111,10 +124,24 @@ fn measure(command: &[&str]) -> (f64, u64) {
             .and_then(|l| l.trim().parse().ok())
             .unwrap_or(0);
         if seconds < best.0 {
-            best = (seconds, peak);
+            best = (seconds, peak, anon);
         }
     }
     best
+}
+
+/// `RssAnon` of the command `/usr/bin/time` (process `time`) runs, in KiB.
+fn anonymous_kib(time: u32) -> Option<u64> {
+    let children = std::fs::read_to_string(format!("/proc/{time}/task/{time}/children")).ok()?;
+    let child: u32 = children.split_whitespace().next()?.parse().ok()?;
+    let status = std::fs::read_to_string(format!("/proc/{child}/status")).ok()?;
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("RssAnon:"))?
+        .split_whitespace()
+        .next()?
+        .parse()
+        .ok()
 }
 
 /// `N.. G1 X.. Y.. Z.. B.. C..` with an occasional feed, after a header with

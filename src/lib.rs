@@ -21,13 +21,11 @@
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
 //! - [`suggest`]: did-you-mean, shared by the parser's and the rules' messages.
 //! - [`cli`]: the command line; the only place that prints.
-//! - [`pages`]: where the analysis reads, for a program mapped from its file.
 
 pub mod cli;
 pub mod diagnostic;
 pub mod emit;
 pub mod lint;
-pub mod pages;
 pub mod registry;
 pub mod rotation;
 pub mod semantic;

@@ -90,9 +90,6 @@ impl<'a> LineIndex<'a> {
         let mut rows = self.rows_before_block.borrow_mut();
         while rows.len() <= block {
             let start = (rows.len() - 1) * BLOCK;
-            if start.is_multiple_of(crate::pages::STEP) {
-                crate::pages::reading(&self.source[start..]);
-            }
             let end = (start + BLOCK).min(self.source.len());
             let row = rows[rows.len() - 1] + line_ends(self.source, start..end);
             rows.push(row);
@@ -102,7 +99,6 @@ impl<'a> LineIndex<'a> {
 
     pub fn position(&self, offset: usize) -> Position {
         let offset = offset.min(self.source.len());
-        crate::pages::reading(&self.source[offset..]);
         let block = offset / BLOCK;
         let row = self.rows_before(block) + line_ends(self.source, block * BLOCK..offset);
         let before = &self.source[line_start(self.source, offset)..offset];
@@ -120,24 +116,9 @@ impl<'a> LineIndex<'a> {
     }
 }
 
-/// Whether `bytes` are UTF-8, checked a megabyte at a time and each said to
-/// be read ([`crate::pages`]): at the check's speed a whole mapped program
-/// would be in memory at once.
+/// Whether `bytes` are UTF-8.
 fn is_utf8(bytes: &[u8]) -> bool {
-    let mut rest = bytes;
-    while !rest.is_empty() {
-        let end = rest.len().min(crate::pages::STEP);
-        crate::pages::reading(&rest[..end]);
-        match std::str::from_utf8(&rest[..end]) {
-            Ok(_) => rest = &rest[end..],
-            // A character cut by the step's end: the next step starts at it.
-            Err(cut) if cut.error_len().is_none() && end < rest.len() => {
-                rest = &rest[cut.valid_up_to()..]
-            }
-            Err(_) => return false,
-        }
-    }
-    true
+    std::str::from_utf8(bytes).is_ok()
 }
 
 /// The line ends (LF, CRLF, lone CR; a CRLF counted at its LF) within `range`.
@@ -203,22 +184,6 @@ mod tests {
             let row = starts.iter().filter(|&&s| s <= offset).count();
             let column = offset - starts[row - 1] + 1;
             proptest::prop_assert_eq!(LineIndex::new(source).position(offset), Position { row, column });
-        }
-    }
-
-    #[test]
-    fn utf8_is_checked_across_the_steps() {
-        let step = crate::pages::STEP;
-        for before in step - 3..=step {
-            let mut text = vec![b'a'; before];
-            text.extend_from_slice("\u{20ac}".as_bytes());
-            text.extend_from_slice(b"tail");
-            assert!(is_utf8(&text), "a 3-byte character at {before}");
-            let mut cut = text.clone();
-            cut.truncate(before + 2);
-            assert!(!is_utf8(&cut), "a cut character at {before}");
-            text[before + 1] = b'a';
-            assert!(!is_utf8(&text), "a broken character at {before}");
         }
     }
 

@@ -106,7 +106,6 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
 
 fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, CliError> {
     let mut file = read(path)?;
-    let _pages = file.bytes.watch_reads();
     // stdin with --stdin-filename: report and look things up as that file.
     let named = match (&args.stdin_filename, path == Path::new("-")) {
         (Some(name), true) => {

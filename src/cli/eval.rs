@@ -16,7 +16,6 @@ use crate::span::LineIndex;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let file = read(&args.path)?;
-    let _pages = file.bytes.watch_reads();
     let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
     let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
     let options = analysis::options(&args.analysis, &config);

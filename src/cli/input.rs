@@ -22,17 +22,6 @@ pub enum Bytes {
     Mapped(Mapped),
 }
 
-impl Bytes {
-    /// Until the guard is dropped, this thread's reads of mapped bytes give
-    /// their pages back as they move on (see `cli::mapped`).
-    pub fn watch_reads(&self) -> Option<crate::pages::Watching> {
-        match self {
-            Bytes::Read(_) => None,
-            Bytes::Mapped(mapped) => Some(mapped.watch_reads()),
-        }
-    }
-}
-
 impl Deref for Bytes {
     type Target = [u8];
 

@@ -27,7 +27,6 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         None
     };
     let file = read(&args.path)?;
-    let _pages = file.bytes.watch_reads();
     let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
     let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
     let options = Options {

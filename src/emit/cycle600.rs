@@ -73,7 +73,6 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
     let mut names = runtime::Names::new(options.runtime.flatten());
     let mut at_run_time: Vec<(&CallSite, Vec<String>)> = Vec::new();
     for site in &analysis.calls {
-        crate::pages::reading(site.statement.of(source));
         let refused = site
             .diagnostics
             .iter()

@@ -68,14 +68,8 @@ pub fn write_applied(
     copy(&source[at..], out)
 }
 
-/// Writes `bytes` a megabyte at a time, each said to be read
-/// ([`crate::pages`]): one write of a large part of a mapped program would
-/// bring all of it into memory at once.
 fn copy(bytes: &[u8], out: &mut (impl Write + ?Sized)) -> io::Result<()> {
-    bytes.chunks(crate::pages::STEP).try_for_each(|chunk| {
-        crate::pages::reading(chunk);
-        out.write_all(chunk)
-    })
+    out.write_all(bytes)
 }
 
 #[cfg(test)]

@@ -118,7 +118,6 @@ impl<'src> Lines<'src> {
             (last, start) if (strided..=index).contains(&last) => (last, start),
             _ => (strided, self.strided_starts[index / STRIDE]),
         };
-        crate::pages::reading(&self.source[start..]);
         while at < index {
             start = lines::line_from(self.source, start).full().end;
             at += 1;
