@@ -121,9 +121,11 @@ fn is_utf8(bytes: &[u8]) -> bool {
     std::str::from_utf8(bytes).is_ok()
 }
 
+// What ends a line, for every part of the program: LF, CRLF and a lone CR
+// (files from PCs and old controls). `syntax::lines` splits files by the
+// same rule; the functions below find a line's bounds around an offset.
+
 /// The line ends (LF, CRLF, lone CR; a CRLF counted at its LF) within `range`.
-/// The same line ends as `syntax::lines`, written again because `span` sits
-/// below `syntax` and may not depend on it.
 fn line_ends(source: &[u8], range: Range<usize>) -> usize {
     let bytes = &source[range.clone()];
     let line_feeds = memchr::memchr_iter(b'\n', bytes).count();
@@ -133,8 +135,9 @@ fn line_ends(source: &[u8], range: Range<usize>) -> usize {
     line_feeds + lone_returns
 }
 
-/// Where the line containing `offset` starts.
-fn line_start(source: &[u8], offset: usize) -> usize {
+/// Where the line containing `offset` starts (an offset on the LF of a CRLF
+/// belongs to the line that CRLF ends).
+pub fn line_start(source: &[u8], offset: usize) -> usize {
     let mut before = offset;
     while let Some(end) = memchr::memrchr2(b'\n', b'\r', &source[..before]) {
         if source[end] == b'\r' && source.get(end + 1) == Some(&b'\n') {
@@ -147,9 +150,64 @@ fn line_start(source: &[u8], offset: usize) -> usize {
     0
 }
 
+/// Where the line holding `at` ends, before its terminator.
+pub fn line_end(source: &[u8], at: usize) -> usize {
+    memchr::memchr2(b'\n', b'\r', &source[at..]).map_or(source.len(), |end| at + end)
+}
+
+/// Where the line before the one starting at `start` ends, before its
+/// terminator (`start` itself on the first line).
+pub fn previous_line_end(source: &[u8], start: usize) -> usize {
+    match &source[..start] {
+        [.., b'\r', b'\n'] => start - 2,
+        [.., _] => start - 1,
+        [] => start,
+    }
+}
+
+/// Where the next line starts after the terminator at `at` (`at` itself at
+/// the end of the file).
+pub fn next_line_start(source: &[u8], at: usize) -> usize {
+    match &source[at..] {
+        [b'\r', b'\n', ..] => at + 2,
+        [_, ..] => at + 1,
+        [] => at,
+    }
+}
+
+/// The terminator that ends the text before `at`, if `at` starts a line:
+/// `\r\n`, `\n` or `\r`.
+pub fn ending_before(source: &[u8], at: usize) -> Option<&'static [u8]> {
+    match &source[..at] {
+        [.., b'\r', b'\n'] => Some(b"\r\n"),
+        [.., b'\n'] => Some(b"\n"),
+        [.., b'\r'] => Some(b"\r"),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn line_bounds_follow_every_line_ending() {
+        let source = b"a\nbc\r\nd\re";
+        assert_eq!(line_start(source, 4), 2, "on the CR of a CRLF");
+        assert_eq!(line_start(source, 5), 2, "on the LF of a CRLF");
+        assert_eq!(line_end(source, 2), 4);
+        assert_eq!(line_end(source, 8), 9, "the last line has no terminator");
+        assert_eq!(next_line_start(source, 4), 6);
+        assert_eq!(next_line_start(source, 1), 2);
+        assert_eq!(next_line_start(source, 9), 9);
+        assert_eq!(previous_line_end(source, 6), 4);
+        assert_eq!(previous_line_end(source, 8), 7);
+        assert_eq!(previous_line_end(source, 0), 0);
+        assert_eq!(ending_before(source, 6), Some(b"\r\n".as_slice()));
+        assert_eq!(ending_before(source, 8), Some(b"\r".as_slice()));
+        assert_eq!(ending_before(source, 2), Some(b"\n".as_slice()));
+        assert_eq!(ending_before(source, 3), None);
+    }
 
     #[test]
     fn positions_follow_every_line_ending() {

@@ -9,7 +9,9 @@ use miette::{
 };
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::span::{LineIndex, Position, Span};
+use crate::span::{
+    line_end, line_start, next_line_start, previous_line_end, LineIndex, Position, Span,
+};
 
 /// One file's diagnostics, ready to render.
 pub struct FileReport<'a> {
@@ -91,7 +93,7 @@ impl Window {
         let span_end = span.end.clamp(span_start, source.len());
         let own_line = line_start(source, span_start);
         let mut start = line_start(source, previous_line_end(source, own_line));
-        let mut end = line_end(source, next_line(source, line_end(source, span_end)));
+        let mut end = line_end(source, next_line_start(source, line_end(source, span_end)));
         let mut first_column = 0;
         if end - start > LONGEST_WINDOW {
             let own_end = line_end(source, span_start);
@@ -159,35 +161,6 @@ fn char_boundary(source: &[u8], mut at: usize) -> usize {
         back += 1;
     }
     at
-}
-
-/// Where the line holding `at` starts (a line ends at LF, CRLF or a lone CR).
-fn line_start(source: &[u8], at: usize) -> usize {
-    memchr::memrchr2(b'\n', b'\r', &source[..at]).map_or(0, |end| end + 1)
-}
-
-/// Where the line before the one starting at `start` ends, before its
-/// terminator (`start` itself on the first line).
-fn previous_line_end(source: &[u8], start: usize) -> usize {
-    match &source[..start] {
-        [.., b'\r', b'\n'] => start - 2,
-        [.., _] => start - 1,
-        [] => start,
-    }
-}
-
-/// Where the line holding `at` ends, before its terminator.
-fn line_end(source: &[u8], at: usize) -> usize {
-    memchr::memchr2(b'\n', b'\r', &source[at..]).map_or(source.len(), |end| at + end)
-}
-
-/// The start of the line after the terminator at `at` (or `at` at the end).
-fn next_line(source: &[u8], at: usize) -> usize {
-    match &source[at..] {
-        [b'\r', b'\n', ..] => at + 2,
-        [_, ..] => at + 1,
-        [] => at,
-    }
 }
 
 struct Shown<'a> {

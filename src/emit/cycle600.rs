@@ -133,12 +133,7 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
                     let at = runtime::def_insertion(source);
                     // The DEF lines end as the line before them does: a lone CR
                     // in front of that line's LF would join them into one CRLF.
-                    let eol = match &source[..at] {
-                        [.., b'\r', b'\n'] => b"\r\n".as_slice(),
-                        [.., b'\n'] => b"\n",
-                        [.., b'\r'] => b"\r",
-                        _ => eol,
-                    };
+                    let eol = crate::span::ending_before(source, at).unwrap_or(eol);
                     let mut declarations = Vec::new();
                     for chunk in locals.chunks(8) {
                         declarations

@@ -2,7 +2,8 @@
 //!
 //! A block ends at LF; CRLF and a lone CR also end a line (files from PCs and
 //! old controls). The last line may have no terminator. Concatenating every
-//! line's content and terminator gives back the input byte for byte.
+//! line's content and terminator gives back the input byte for byte. The
+//! bounds of a line around an offset are `crate::span`'s, by the same rule.
 
 use crate::span::Span;
 
@@ -70,8 +71,7 @@ impl Iterator for RawLines<'_> {
 
 /// The line that starts at `start` (which must be below `source.len()`).
 pub fn line_from(source: &[u8], start: usize) -> RawLine {
-    let end = memchr::memchr2(b'\n', b'\r', &source[start..]).map_or(source.len(), |n| start + n);
-    line_at(source, start, end)
+    line_at(source, start, crate::span::line_end(source, start))
 }
 
 /// The line from `start` whose content ends at `end`: at a CR, an LF or the
