@@ -1,0 +1,43 @@
+//! Main program or subprogram: what the end-of-program rules and the walk
+//! need to know of a file before reading it.
+
+use crate::syntax::lines::raw_lines;
+use crate::syntax::tree::{LineKind, StatementKind};
+use crate::syntax::LineParser;
+
+/// What kind of program a file holds, by its name or its content.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProgramKind {
+    Main,
+    Subprogram,
+}
+
+/// What kind of program a file holds: by its extension (`.SPF`, `.MPF`), else
+/// by a `%_N_..._SPF` header or a PROC line among its first blocks.
+pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
+    if let Some(name) = file_name {
+        let upper = name.to_ascii_uppercase();
+        if upper.ends_with(".SPF") {
+            return ProgramKind::Subprogram;
+        }
+        if upper.ends_with(".MPF") {
+            return ProgramKind::Main;
+        }
+    }
+    let mut parser = LineParser::default();
+    for raw in raw_lines(source).take(200) {
+        let (line, _) = parser.parse_line(source, raw);
+        let is_sub = match &line.kind {
+            LineKind::Header { name } => name.of(source).to_ascii_uppercase().ends_with(b"_SPF"),
+            LineKind::Block(block) => block
+                .statements
+                .iter()
+                .any(|s| matches!(s.kind, StatementKind::Proc(_))),
+            LineKind::Path { .. } => false,
+        };
+        if is_sub {
+            return ProgramKind::Subprogram;
+        }
+    }
+    ProgramKind::Main
+}
