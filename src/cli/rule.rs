@@ -10,10 +10,11 @@ pub fn run(args: &RuleArgs) -> Result<ExitStatus, CliError> {
         Some(code) if !args.all => {
             let info = lint::rule(code).ok_or_else(|| CliError::UnknownRule(code.clone()))?;
             format!(
-                "# {} {} ({})\n\n{}\n",
+                "# {} {} ({}{})\n\n{}\n",
                 info.code,
                 info.name,
                 info.severity.as_str(),
+                off_note(info.code),
                 info.docs
             )
         }
@@ -21,14 +22,24 @@ pub fn run(args: &RuleArgs) -> Result<ExitStatus, CliError> {
             .iter()
             .map(|r| {
                 format!(
-                    "{:<5} {:<44} {}\n",
+                    "{:<5} {:<44} {}{}\n",
                     r.info.code,
                     r.info.name,
-                    r.info.severity.as_str()
+                    r.info.severity.as_str(),
+                    off_note(r.info.code)
                 )
             })
             .collect(),
     };
     write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
+}
+
+/// `, off by default: --select N015` for a rule that runs only when selected.
+fn off_note(code: &str) -> String {
+    if lint::off_by_default(code) {
+        format!(", off by default: --select {code}")
+    } else {
+        String::new()
+    }
 }

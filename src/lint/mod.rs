@@ -40,10 +40,25 @@ impl Default for Selection {
     }
 }
 
+/// Rules that run only when `--select` (or `select` in sinuprep.toml) names
+/// their code in full: N015, since the control ignores case and users of
+/// other Sinumerik tools do not want case findings unasked.
+pub const OFF_BY_DEFAULT: [&str; 1] = ["N015"];
+
+/// Whether `code` is a rule that runs only when selected by its full code.
+pub fn off_by_default(code: &str) -> bool {
+    OFF_BY_DEFAULT.iter().any(|c| c.eq_ignore_ascii_case(code))
+}
+
 impl Selection {
     pub fn enables(&self, code: &str) -> bool {
         let matches = |list: &[String]| list.iter().any(|p| code.starts_with(p.as_str()));
-        (self.select.is_empty() || matches(&self.select)) && !matches(&self.ignore)
+        let selected = if off_by_default(code) {
+            self.select.iter().any(|p| p.eq_ignore_ascii_case(code))
+        } else {
+            self.select.is_empty() || matches(&self.select)
+        };
+        selected && !matches(&self.ignore)
     }
 }
 

@@ -12,9 +12,24 @@ pub enum ProgramKind {
     Subprogram,
 }
 
-/// What kind of program a file holds: by its extension (`.SPF`, `.MPF`), else
-/// by a `%_N_..._SPF` header or a PROC line among its first blocks.
+/// What kind of program a file holds: a file whose first statement is PROC
+/// is a subprogram whatever its name; else its extension decides (`.SPF`,
+/// `.MPF`), else a `%_N_..._SPF` header or a PROC line among its first blocks.
 pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
+    let mut parser = LineParser::default();
+    let mut first_statements = raw_lines(source).take(200).filter_map(|raw| {
+        let (line, _) = parser.parse_line(source, raw);
+        match line.kind {
+            LineKind::Block(block) => block.statements.into_iter().next(),
+            _ => None,
+        }
+    });
+    if first_statements
+        .next()
+        .is_some_and(|s| matches!(s.kind, StatementKind::Proc(_)))
+    {
+        return ProgramKind::Subprogram;
+    }
     if let Some(name) = file_name {
         let upper = name.to_ascii_uppercase();
         if upper.ends_with(".SPF") {

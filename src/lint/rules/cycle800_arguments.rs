@@ -1,4 +1,4 @@
-//! N009 `cycle800-arguments`: Checks CYCLE800 calls: between 14 and 16 arguments (or none, to deselect), and a literal `_MODE`
+//! N009 `cycle800-arguments`: Checks CYCLE800 calls: at most 16 arguments, and a literal `_MODE`
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
@@ -10,8 +10,10 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "cycle800-arguments",
     severity: Severity::Error,
     docs: r#"## What it does
-Checks CYCLE800 calls: between 14 and 16 arguments (or none, to deselect), and a literal `_MODE`
-whose axis-by-axis coding names a valid axis order.
+Checks CYCLE800 calls: at most 16 arguments, and a literal `_MODE` whose axis-by-axis coding
+names a valid axis order. Fewer arguments are fine: trailing parameters may be left out and are
+passed as 0 (Programming Manual, "incomplete parameter lists"), as in `CYCLE800()` or
+`CYCLE800(,"0")`, which deselect.
 
 ## Why it matters
 A wrong argument list shifts every later parameter (angles land in the translation, the head turns
@@ -48,10 +50,10 @@ impl Check for Checker {
                 continue;
             }
             let count = call.arguments.items.len();
-            if count != 0 && !(14..=16).contains(&count) {
+            if count > 16 {
                 out.push(
                     RULE.at(call.arguments.span)
-                        .message(format!("CYCLE800 takes 14 arguments (16 in the extended form), this call has {count}"))
+                        .message(format!("CYCLE800 takes at most 16 arguments (14 classic, 2 more extended), this call has {count}"))
                         .label(format!("{count} arguments"))
                         .help("write _FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR (then _FR_I, _DMODE)"),
                 );

@@ -11,7 +11,8 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "inconsistent-case",
     severity: Severity::Info,
     docs: r#"## What it does
-Finds a variable written with other capitals than in its definition.
+Finds a variable written with other capitals than in its definition. Off by default: it runs
+when `--select N015` (or `select = ["N015"]` in sinuprep.toml) names it in full.
 
 ## Why it matters
 The control ignores case, so the program works; but readers and search tools do not, and two

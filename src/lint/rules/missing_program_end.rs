@@ -1,4 +1,4 @@
-//! N010 `missing-program-end`: Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
+//! N010 `missing-program-end`: Finds a program whose last block holds no end command (M30, M2, M17, RET).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
@@ -12,8 +12,12 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "missing-program-end",
     severity: Severity::Warning,
     docs: r#"## What it does
-Finds a main program whose last block does not end it with M30 or M2, and a subprogram whose last
-block is not M17, RET (or M30/M2).
+Finds a program whose last block holds no end command (M30, M2, M17, RET).
+A main program may end with M17 or RET as a subprogram does (it can be called as one; the
+Programming Manual allows M2, M17 or M30 as the last block), and a subprogram with M30 or M2.
+Files that are not programs (`.DEF` definition files, `.INI` setup data) are not checked. When
+the last block has a syntax error, the finding stands at that block, unless an end command is
+written in it.
 
 ## Why it matters
 Without an end, a main program stops with an alarm at its last block instead of ending, and a
@@ -22,7 +26,7 @@ subprogram does not return to its caller as intended.
 ## Example
 ```
 N10 G0 X0
-N20 G1 X100 F500
+N20 G1 X100 F500 M5
 ```
 
 ## Fix
@@ -44,7 +48,10 @@ impl Check for Checker {
         line: &LineView,
         _out: &mut Vec<Diagnostic>,
     ) {
-        if line.block.is_some_and(|block| !block.statements.is_empty()) {
+        if line
+            .block
+            .is_some_and(|block| !block.statements.is_empty() || block.unparsed.is_some())
+        {
             self.last = Some(line.raw);
         }
     }
@@ -68,38 +75,74 @@ impl Check for Checker {
         let Some(raw) = self.last else {
             return;
         };
+        let extension = std::path::Path::new(file.name)
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("");
+        if ["DEF", "INI", "GUD", "COM"]
+            .iter()
+            .any(|e| extension.eq_ignore_ascii_case(e))
+        {
+            return;
+        }
         let (line, _) = LineParser::default().parse_line(file.source, raw);
         let LineKind::Block(block) = &line.kind else {
             return;
         };
-        let m = |values: &[f64]| {
-            block.statements.iter().any(|s| match &s.kind {
-                StatementKind::Word(word) => {
-                    word.address.is(file.source, "M")
-                        && matches!(&word.value, WordValue::Number(n) if values.contains(&n.value))
-                }
-                _ => false,
-            })
-        };
-        let ret = block
+        let m_words: Vec<f64> = block
             .statements
             .iter()
-            .any(|s| matches!(&s.kind, StatementKind::Command(n) if n.is(file.source, "RET")));
-        let (ends_main, returns) = (m(&[30.0, 2.0]), m(&[17.0]) || ret);
-        let span = Span::new(raw.content.start, raw.content.end);
-        let (ok, what, fix) = match file.kind {
-            ProgramKind::Main => (ends_main, "main program", "end it with M30 (or M2)"),
-            ProgramKind::Subprogram => {
-                (returns || ends_main, "subprogram", "end it with M17 or RET")
-            }
-        };
-        if !ok {
-            out.push(
-                RULE.at(span)
-                    .message(format!("the {what} does not end with its end command"))
-                    .label("last block")
-                    .help(fix),
-            );
+            .filter_map(|s| match &s.kind {
+                StatementKind::Word(word) if word.address.is(file.source, "M") => match &word.value
+                {
+                    WordValue::Number(n) => Some(n.value),
+                    WordValue::Expr(_) => None,
+                },
+                _ => None,
+            })
+            .collect();
+        let ends = m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
+            || block.statements.iter().any(|s| match &s.kind {
+                StatementKind::Command(n) => n.is(file.source, "RET"),
+                StatementKind::Call(call) => call.name.is(file.source, "RET"),
+                _ => false,
+            });
+        // A broken last block may still hold its end where the parser stopped.
+        let ends_in_unparsed = block.unparsed.is_some_and(|rest| {
+            rest.of(file.source)
+                .split(|b| !b.is_ascii_alphanumeric())
+                .any(|word| {
+                    ["M30", "M2", "M02", "M17", "RET"]
+                        .iter()
+                        .any(|e| word.eq_ignore_ascii_case(e.as_bytes()))
+                })
+        });
+        if ends || ends_in_unparsed {
+            return;
         }
+        let (what, fix) = match file.kind {
+            ProgramKind::Main => (
+                "main program",
+                "end it with M30 (or M2; M17 or RET if it is called as a subprogram)",
+            ),
+            ProgramKind::Subprogram => ("subprogram", "end it with M17 or RET (or M30)"),
+        };
+        let message = match m_words.as_slice() {
+            [] => format!("the {what} does not end: no M30, M2, M17 or RET in its last block"),
+            words => format!(
+                "the {what} does not end: its last block has {}, not M30, M2, M17 or RET",
+                words
+                    .iter()
+                    .map(|m| format!("M{m}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
+        out.push(
+            RULE.at(Span::new(raw.content.start, raw.content.end))
+                .message(message)
+                .label("last block")
+                .help(fix),
+        );
     }
 }

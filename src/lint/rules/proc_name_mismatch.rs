@@ -60,15 +60,26 @@ impl Check for Checker {
                 .map(|s| s.trim_end_matches("_SPF"))
                 .unwrap_or(&stem);
             if name != stem {
+                // A file name that is no NC name (`3_KATUSHKA`) cannot be the PROC's.
+                let help = if is_nc_name(stem) {
+                    format!("rename the PROC to `{stem}`, or the file to `{name}.SPF`")
+                } else {
+                    format!("rename the file to `{name}.SPF` (`{stem}` is not a valid NC name: two letters or `_` first)")
+                };
                 out.push(
                     RULE.at(proc.name.span)
                         .message(format!("PROC `{name}` is in a file named `{stem}`"))
                         .label("differs from the file name")
-                        .help(format!(
-                            "rename the PROC to `{stem}`, or the file to `{name}.SPF`"
-                        )),
+                        .help(help),
                 );
             }
         }
     }
+}
+
+/// A name the control accepts for a program: two letters or `_` first, then
+/// letters, digits and `_`.
+fn is_nc_name(name: &str) -> bool {
+    crate::syntax::block::is_label_name(name.as_bytes())
+        && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
 }
