@@ -276,7 +276,7 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     let next = parse_blank(after_name);
     let is_assignment_like = matches!(peek(&next), Some(b'=' | b'['));
     // `ID=1 WHEN ...`: the action's number, not an assignment.
-    if is_assignment_like
+    if peek(&next) == Some(b'=')
         && name.span.len() <= 3
         && peek_at(&next, 1) != Some(b'=')
         && is_one_of(&input.fragment()[..name.span.len()], &["ID", "IDS"])
