@@ -33,6 +33,8 @@ enum Report {
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
+    codes(&args.select, "--select")?;
+    codes(&args.ignore, "--ignore")?;
     let paths = expand(&args.paths);
     let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
         paths.iter().map(|_| Mutex::new(None)).collect();
@@ -121,13 +123,20 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
     };
     let config = Config::find(args.input.config.as_deref(), &lookup)?;
     let inputs = Inputs::load(&args.input, &config, &named)?;
-    let mut ignore = args.ignore.clone();
-    ignore.extend(config.ignore.clone().unwrap_or_default());
+    let in_config = |what: &str| format!("{} ({what})", config.describe());
+    let mut ignore = codes(&args.ignore, "--ignore")?;
+    ignore.extend(codes(
+        config.ignore.as_deref().unwrap_or_default(),
+        &in_config("ignore"),
+    )?);
     let selection = Selection {
         select: if args.select.is_empty() {
-            config.select.clone().unwrap_or_default()
+            codes(
+                config.select.as_deref().unwrap_or_default(),
+                &in_config("select"),
+            )?
         } else {
-            args.select.clone()
+            codes(&args.select, "--select")?
         },
         ignore,
         severity_min: args
@@ -166,5 +175,14 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
     Ok(Checked {
         report: Report::Text(text),
         fails,
+    })
+}
+
+/// `list` as rule codes: trimmed, upper case, each naming a rule or a family.
+fn codes(list: &[String], origin: &str) -> Result<Vec<String>, CliError> {
+    lint::codes::normalize(list).map_err(|unknown| CliError::UnknownCode {
+        origin: origin.to_string(),
+        code: unknown.code,
+        did_you_mean: unknown.did_you_mean,
     })
 }

@@ -77,6 +77,13 @@ impl Config {
         Ok(config)
     }
 
+    /// The file's path for messages (`sinuprep.toml` when none was found).
+    pub fn describe(&self) -> String {
+        self.path
+            .as_ref()
+            .map_or_else(|| "sinuprep.toml".to_string(), |p| p.display().to_string())
+    }
+
     /// A path written in the file, taken relative to the file's directory.
     pub fn resolve(&self, path: &Path) -> PathBuf {
         match self.path.as_ref().and_then(|p| p.parent()) {

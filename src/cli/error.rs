@@ -27,6 +27,17 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::config), help("the keys are select, ignore, severity-min, deny-warnings, emit, precision, heads, values, emit-runtime, runtime-r"))]
     Config { path: PathBuf, why: String },
 
+    #[error("{origin}: no rule has the code `{code}`{}", did_you_mean.map(|c| format!(" (did you mean `{c}`?)")).unwrap_or_default())]
+    #[diagnostic(
+        code(sinuprep::code),
+        help("`sinuprep rule --all` lists every code; a prefix (`N`, `C6`) selects a family")
+    )]
+    UnknownCode {
+        origin: String,
+        code: String,
+        did_you_mean: Option<&'static str>,
+    },
+
     #[error("no rule has the code `{0}`")]
     #[diagnostic(code(sinuprep::rule), help("`sinuprep rule --all` lists every rule"))]
     UnknownRule(String),

@@ -7,6 +7,7 @@
 //! selected rule. The CYCLE600 walk runs only for programs that mention
 //! CYCLE600. It reports diagnostics; printing them is the CLI's job.
 
+pub mod codes;
 pub mod labels;
 pub mod rule;
 pub mod rules;

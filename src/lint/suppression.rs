@@ -1,6 +1,8 @@
 //! `; sinuprep: ignore CODE[,CODE...]` on a block and
-//! `; sinuprep: ignore-file CODE[,CODE...]` anywhere: findings they cover
-//! are dropped, and a suppression that covers nothing is reported (N099).
+//! `; sinuprep: ignore-file CODE[,CODE...]` anywhere, in any case (NC is
+//! case-insensitive): findings they cover are dropped, and a suppression
+//! that covers nothing is reported (N099), as is a misspelt directive
+//! (`ignor`) or a code that names no rule.
 
 use crate::diagnostic::Diagnostic;
 use crate::lint::rules::unused_suppression;
@@ -17,6 +19,16 @@ struct Suppression {
 #[derive(Default)]
 pub struct Suppressions {
     list: Vec<Suppression>,
+    /// Suppressions that cannot work: what is wrong, where, and the fix.
+    broken: Vec<(Span, String, String)>,
+}
+
+const DIRECTIVES: [&str; 2] = ["ignore", "ignore-file"];
+
+/// Where `needle` (lower case) starts in `text`, in any case.
+fn find_ignoring_case(text: &[u8], needle: &[u8]) -> Option<usize> {
+    text.windows(needle.len())
+        .position(|window| window.eq_ignore_ascii_case(needle))
 }
 
 impl Suppressions {
@@ -25,7 +37,7 @@ impl Suppressions {
     /// and the spans must be the source's own offsets.
     pub fn read(&mut self, source: &[u8], row: usize, comment: Span) {
         let text = comment.of(source);
-        let Some(at) = memchr::memmem::find(text, b"sinuprep:") else {
+        let Some(at) = find_ignoring_case(text, b"sinuprep:") else {
             return;
         };
         let mut position = at + b"sinuprep:".len();
@@ -38,16 +50,30 @@ impl Suppressions {
             }
         };
         skip_blanks(&mut position);
-        let rest = &text[position..];
-        let row = if rest.starts_with(b"ignore-file") {
-            position += b"ignore-file".len();
-            None
-        } else if rest.starts_with(b"ignore") {
-            position += b"ignore".len();
-            Some(row)
-        } else {
-            return;
+        let word_length = text[position..]
+            .iter()
+            .take_while(|b| b.is_ascii_alphabetic() || **b == b'-')
+            .count();
+        let word =
+            String::from_utf8_lossy(&text[position..position + word_length]).to_ascii_lowercase();
+        let row = match word.as_str() {
+            "ignore-file" => None,
+            "ignore" => Some(row),
+            // Other text after `sinuprep:` (the rewrite's `; sinuprep: CYCLE600(...)`
+            // marker, a remark) is no directive; one near a directive is a typo.
+            _ => {
+                if let Some(meant) = crate::suggest::closest(&word, &DIRECTIVES, 2) {
+                    let start = comment.start + position;
+                    self.broken.push((
+                        Span::new(start, start + word_length),
+                        format!("`{word}` is no sinuprep directive, so nothing is suppressed"),
+                        format!("did you mean `{meant}`?"),
+                    ));
+                }
+                return;
+            }
         };
+        position += word_length;
         // Codes: ASCII letters and digits, separated by commas and blanks.
         loop {
             while text
@@ -66,6 +92,19 @@ impl Suppressions {
             let code =
                 String::from_utf8_lossy(&text[position..position + length]).to_ascii_uppercase();
             let start = comment.start + position;
+            if let Err(unknown) = crate::lint::codes::check(&code) {
+                let help = match unknown.did_you_mean {
+                    Some(code) => format!("did you mean `{code}`?"),
+                    None => "`sinuprep rule --all` lists every code".to_string(),
+                };
+                self.broken.push((
+                    Span::new(start, start + length),
+                    format!("no rule has the code `{code}`, so nothing is suppressed"),
+                    help,
+                ));
+                position += length;
+                continue;
+            }
             self.list.push(Suppression {
                 row,
                 code,
@@ -100,7 +139,8 @@ impl Suppressions {
         &'a self,
         enabled: impl Fn(&str) -> bool + 'a,
     ) -> impl Iterator<Item = Diagnostic> + 'a {
-        self.list
+        let unused = self
+            .list
             .iter()
             .filter(move |s| !s.used && enabled(&s.code))
             .map(|s| {
@@ -112,6 +152,14 @@ impl Suppressions {
                     ))
                     .label("nothing to suppress")
                     .help("remove it")
-            })
+            });
+        let broken = self.broken.iter().map(|(span, message, help)| {
+            unused_suppression::RULE
+                .at(*span)
+                .message(message.clone())
+                .label("suppresses nothing")
+                .help(help.clone())
+        });
+        unused.chain(broken)
     }
 }
