@@ -154,6 +154,25 @@ fn rewrite_of_a_directory_is_a_tool_error() {
 }
 
 #[test]
+fn rule_codes_are_checked_trimmed_and_case_free() {
+    let unknown = run(&["check", "--select", "N05", "-"], b"M30\n");
+    assert_exit(&unknown, 2);
+    let stderr = String::from_utf8_lossy(&unknown.stderr);
+    assert!(
+        stderr.contains("`N05`") && stderr.contains("`N005`"),
+        "{stderr}"
+    );
+    // N010 is ignored in lower case with a blank: the program without M30 passes.
+    let ignored = run(
+        &["check", "--deny-warnings", "--ignore", "n010, N005", "-"],
+        b"G0 X0\n",
+    );
+    assert_exit(&ignored, 0);
+    let reported = run(&["check", "--deny-warnings", "-"], b"G0 X0\n");
+    assert_exit(&reported, 1);
+}
+
+#[test]
 fn convert_prints_the_papers_angles() {
     let output = run(
         &[
