@@ -7,6 +7,7 @@
 use crate::diagnostic::Diagnostic;
 use crate::lint::rules::unused_suppression;
 use crate::span::Span;
+use crate::syntax::lexer::find_ignoring_case;
 
 struct Suppression {
     /// The line it applies to; `None` for the whole file.
@@ -24,12 +25,6 @@ pub struct Suppressions {
 }
 
 const DIRECTIVES: [&str; 2] = ["ignore", "ignore-file"];
-
-/// Where `needle` (lower case) starts in `text`, in any case.
-fn find_ignoring_case(text: &[u8], needle: &[u8]) -> Option<usize> {
-    text.windows(needle.len())
-        .position(|window| window.eq_ignore_ascii_case(needle))
-}
 
 impl Suppressions {
     /// Reads the suppressions of a comment on line `row` at `comment`.

@@ -167,7 +167,7 @@ fn may_follow(previous: &Statement, next: Input) -> Result<(), SyntaxError> {
             "the IF condition",
             "an IF either opens a block that ENDIF closes (nothing follows its condition) or jumps: `IF R1==1 GOTOF LABEL`",
         ),
-        StatementKind::Goto(_) if keyword_of(next, &["IF"]).is_none() => (
+        StatementKind::Goto(_) if keyword("IF")(next).is_err() => (
             "a jump",
             "a jump ends its block; only another `IF … GOTOF …` may follow it",
         ),
@@ -424,10 +424,10 @@ fn keyword_of<'a>(input: Input<'a>, words: &[&str]) -> Option<(Input<'a>, Name)>
 pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
     let mut at = input;
     let mut id = None;
-    if let Some((rest, keyword)) = keyword_of(at, &["ID", "IDS"]) {
+    if let Some((rest, id_keyword)) = keyword_of(at, &["ID", "IDS"]) {
         let equals = parse_blank(rest);
         let (rest, number) = parse_expr(parse_blank(equals.take_from(1)))?;
-        id = Some((keyword, number));
+        id = Some((id_keyword, number));
         at = parse_blank(rest);
     }
     let mut condition = None;
@@ -438,7 +438,7 @@ pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
             g_functions.push(g);
             next = parse_blank(rest);
         }
-        if matches!(peek(&next), None | Some(b';')) || keyword_of(next, &["DO"]).is_some() {
+        if matches!(peek(&next), None | Some(b';')) || keyword("DO")(next).is_ok() {
             return SyntaxError::fail(
                 offset(&next),
                 SyntaxErrorKind::Expected("the condition the synchronized action tests"),
@@ -452,7 +452,7 @@ pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
         });
         at = parse_blank(rest);
     }
-    let Some((rest, do_keyword)) = keyword_of(at, &["DO"]) else {
+    let Ok((rest, do_keyword)) = keyword("DO")(at) else {
         return SyntaxError::fail(
             offset(&at),
             SyntaxErrorKind::Expected("`DO` and the actions of the synchronized action"),
@@ -460,7 +460,7 @@ pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
     };
     let (mut rest, actions) = parse_actions(rest)?;
     let mut otherwise = None;
-    if let Some((after, else_keyword)) = keyword_of(parse_blank(rest), &["ELSE"]) {
+    if let Ok((after, else_keyword)) = keyword("ELSE")(parse_blank(rest)) {
         if condition.is_none() {
             return SyntaxError::fail(
                 else_keyword.span.start,
@@ -472,7 +472,7 @@ pub fn parse_sync_action(input: Input) -> PResult<StatementKind> {
             );
         }
         let (after, actions) = parse_actions(after)?;
-        if let Some((_, second)) = keyword_of(parse_blank(after), &["ELSE"]) {
+        if let Ok((_, second)) = keyword("ELSE")(parse_blank(after)) {
             return SyntaxError::fail(
                 second.span.start,
                 SyntaxErrorKind::Trailing {
@@ -510,7 +510,7 @@ fn parse_actions(mut input: Input) -> PResult<Vec<Statement>> {
     let mut actions = Vec::new();
     loop {
         let at = parse_blank(input);
-        if matches!(peek(&at), None | Some(b';')) || keyword_of(at, &["ELSE"]).is_some() {
+        if matches!(peek(&at), None | Some(b';')) || keyword("ELSE")(at).is_ok() {
             break;
         }
         let (rest, action) = match plain_word(at) {
@@ -801,10 +801,9 @@ fn starts_typed_def(input: Input) -> bool {
         return false;
     };
     let text = &input.fragment()[..name.span.len()];
-    let is = |list: &[&str]| list.iter().any(|k| text.eq_ignore_ascii_case(k.as_bytes()));
-    is(&["NCK", "CHAN"])
-        || is(&VALUED_ATTRIBUTES)
-        || is(&FLAG_ATTRIBUTES)
+    is_one_of(text, &["NCK", "CHAN"])
+        || is_one_of(text, &VALUED_ATTRIBUTES)
+        || is_one_of(text, &FLAG_ATTRIBUTES)
         || TYPES
             .iter()
             .any(|(t, _)| text.eq_ignore_ascii_case(t.as_bytes()))
@@ -865,15 +864,14 @@ pub fn parse_attributes(mut input: Input) -> PResult<Vec<Attribute>> {
             return Ok((input, attributes));
         };
         let text = &input.fragment()[..keyword.span.len()];
-        let is = |list: &[&str]| list.iter().any(|k| text.eq_ignore_ascii_case(k.as_bytes()));
-        if is(&VALUED_ATTRIBUTES) {
+        if is_one_of(text, &VALUED_ATTRIBUTES) {
             let (rest, value) = parse_expr(parse_blank(rest))?;
             attributes.push(Attribute {
                 keyword,
                 value: Some(value),
             });
             input = parse_blank(rest);
-        } else if is(&FLAG_ATTRIBUTES) {
+        } else if is_one_of(text, &FLAG_ATTRIBUTES) {
             attributes.push(Attribute {
                 keyword,
                 value: None,
@@ -1364,12 +1362,12 @@ pub fn parse_indirect_call<'a>(
         ));
     }
     let end = match word {
-        b"CALL" if keyword_of(at, &["BLOCK"]).is_some() => block_range(at)?,
+        b"CALL" if keyword("BLOCK")(at).is_ok() => block_range(at)?,
         b"CALL" => {
             let end = program(at)?;
-            match keyword_of(parse_blank(end), &["BLOCK"]) {
-                Some(_) => block_range(parse_blank(end))?,
-                None => end,
+            match keyword("BLOCK")(parse_blank(end)) {
+                Ok(_) => block_range(parse_blank(end))?,
+                Err(_) => end,
             }
         }
         b"EXTCALL" | b"CALLPATH" => parse_expr(at)?.0,
@@ -1406,7 +1404,7 @@ fn program(input: Input) -> Result<Input, nom::Err<SyntaxError>> {
 fn block_range(input: Input) -> Result<Input, nom::Err<SyntaxError>> {
     let (rest, _) = keyword("BLOCK")(input)?;
     let (rest, _) = parse_expr(parse_blank(rest))?;
-    let Some((rest, _)) = keyword_of(parse_blank(rest), &["TO"]) else {
+    let Ok((rest, _)) = keyword("TO")(parse_blank(rest)) else {
         return SyntaxError::fail(
             offset(&parse_blank(rest)),
             SyntaxErrorKind::Expected("`TO` and the end of the section (`BLOCK L1 TO L2`)"),

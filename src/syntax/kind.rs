@@ -56,3 +56,32 @@ pub fn program_kind(file_name: Option<&str>, source: &[u8]) -> ProgramKind {
     }
     ProgramKind::Main
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_that_starts_with_proc_is_a_subprogram_whatever_its_name() {
+        let proc_first = b"; drilling cycle\nPROC HOLES(REAL _D)\nG1 X10\nM17\n";
+        assert_eq!(
+            program_kind(Some("HOLES.MPF"), proc_first),
+            ProgramKind::Subprogram
+        );
+        assert_eq!(
+            program_kind(Some("HOLES.TXT"), proc_first),
+            ProgramKind::Subprogram
+        );
+        let main = b"G0 X0\nM30\n";
+        assert_eq!(
+            program_kind(Some("PART.SPF"), main),
+            ProgramKind::Subprogram
+        );
+        assert_eq!(program_kind(Some("PART.MPF"), main), ProgramKind::Main);
+        assert_eq!(
+            program_kind(None, b"%_N_PART_SPF\nG0 X0\n"),
+            ProgramKind::Subprogram
+        );
+        assert_eq!(program_kind(None, main), ProgramKind::Main);
+    }
+}
