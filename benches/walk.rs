@@ -4,7 +4,7 @@
 //! `cargo bench --bench walk`; whole programs are `throughput`'s job.
 
 use divan::{black_box, Bencher};
-use sinuprep::semantic::{analyze, Supplied};
+use sinuprep::semantic::{analyze, Model, Supplied};
 
 fn main() {
     divan::main();
@@ -31,13 +31,19 @@ fn nested(open: &str, close: &str, depth: usize) -> String {
 #[divan::bench(args = [100, 400, 2000])]
 fn nested_for_loops(bencher: Bencher, depth: usize) {
     let program = nested("FOR R{i}=0 TO 2", "ENDFOR", depth);
-    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+    bencher.bench(|| {
+        let model = Model::of(black_box(program.as_bytes()));
+        analyze(&model, &Supplied::default(), None)
+    });
 }
 
 #[divan::bench(args = [100, 400, 2000])]
 fn nested_while_loops(bencher: Bencher, depth: usize) {
     let program = nested("WHILE R{i}<3", "ENDWHILE", depth);
-    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+    bencher.bench(|| {
+        let model = Model::of(black_box(program.as_bytes()));
+        analyze(&model, &Supplied::default(), None)
+    });
 }
 
 /// `count` DEF variables, then `count` IFs with unknown conditions, each
@@ -53,5 +59,8 @@ fn unknown_ifs_over_many_variables(bencher: Bencher, count: usize) {
     }
     program.push_str(CALL);
     program.push_str("M30\n");
-    bencher.bench(|| analyze(black_box(program.as_bytes()), &Supplied::default(), None));
+    bencher.bench(|| {
+        let model = Model::of(black_box(program.as_bytes()));
+        analyze(&model, &Supplied::default(), None)
+    });
 }

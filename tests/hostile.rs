@@ -6,7 +6,7 @@ mod support;
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Options};
 use sinuprep::lint::{self, Selection};
-use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::semantic::{analyze, Heads, Model, Supplied};
 use sinuprep::syntax::{parse, program_kind};
 use support::{assert_exit, run};
 
@@ -33,10 +33,11 @@ fn survive(name: &str, source: &[u8]) -> Vec<&'static str> {
             finding.code
         );
     }
-    let analysis = analyze(source, &Supplied::default(), Some(&heads));
+    let model = Model::of(source);
+    let analysis = analyze(&model, &Supplied::default(), Some(&heads));
     let output = apply(
         source,
-        &rewrite(source, &analysis, &Options::default()).edits,
+        &rewrite(&model, &analysis, &Options::default()).edits,
     );
     assert_eq!(
         support::syntax_errors(&output),
@@ -307,15 +308,9 @@ fn rewriting_regressions_again_changes_nothing() {
             },
         ] {
             let run = |bytes: &[u8]| {
-                apply(
-                    bytes,
-                    &rewrite(
-                        bytes,
-                        &analyze(bytes, &Supplied::default(), Some(&heads)),
-                        &options,
-                    )
-                    .edits,
-                )
+                let model = Model::of(bytes);
+                let analysis = analyze(&model, &Supplied::default(), Some(&heads));
+                apply(bytes, &rewrite(&model, &analysis, &options).edits)
             };
             let once = run(&source);
             assert!(run(&once) == once, "{}: not idempotent", path.display());

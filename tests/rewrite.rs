@@ -13,7 +13,7 @@ use nalgebra::{Matrix3, Rotation3, Vector3};
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Form, Options};
 use sinuprep::semantic::value::Value;
-use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::semantic::{analyze, Heads, Model, Supplied};
 use sinuprep::syntax::lines::raw_lines;
 
 /// The arguments a fixture asks for on its first line.
@@ -202,8 +202,9 @@ fn check_swivels_independently(name: &str, output: &[u8]) {
 // ---- samples and the outside corpus ---------------------------------------
 
 fn rewrite_bytes(source: &[u8], heads: Option<&Heads>) -> Vec<u8> {
-    let analysis = analyze(source, &Supplied::default(), heads);
-    let rewritten = rewrite(source, &analysis, &Options::default());
+    let model = Model::of(source);
+    let analysis = analyze(&model, &Supplied::default(), heads);
+    let rewritten = rewrite(&model, &analysis, &Options::default());
     apply(source, &rewritten.edits)
 }
 
@@ -377,8 +378,9 @@ proptest::proptest! {
             ..Options::default()
         };
         let run = |bytes: &[u8]| {
-            let analysis = analyze(bytes, &Supplied::default(), Some(&heads));
-            apply(bytes, &rewrite(bytes, &analysis, &options).edits)
+            let model = Model::of(bytes);
+            let analysis = analyze(&model, &Supplied::default(), Some(&heads));
+            apply(bytes, &rewrite(&model, &analysis, &options).edits)
         };
         let once = run(source);
         proptest::prop_assert_eq!(&run(&once), &once, "not idempotent");
@@ -400,8 +402,9 @@ proptest::proptest! {
         let mut measured = Supplied::default();
         measured.insert("R4".into(), Value::Number(12.5), "--set R4=12.5".into());
         let run = |bytes: &[u8], supplied: &Supplied| {
-            let analysis = analyze(bytes, supplied, Some(&heads));
-            apply(bytes, &rewrite(bytes, &analysis, &options).edits)
+            let model = Model::of(bytes);
+            let analysis = analyze(&model, supplied, Some(&heads));
+            apply(bytes, &rewrite(&model, &analysis, &options).edits)
         };
         let first = run(source, &Supplied::default());
         let (in_two, in_one) = (run(&first, &measured), run(source, &measured));

@@ -9,7 +9,7 @@ use sinuprep::emit::number::format;
 use sinuprep::rotation::{convert, decompose, matrix, Kind, Sequence};
 use sinuprep::semantic::value::Value;
 use sinuprep::semantic::walk::run;
-use sinuprep::semantic::{Heads, Supplied};
+use sinuprep::semantic::{Heads, Model, Supplied};
 use sinuprep::syntax::parse;
 
 fn heads() -> Heads {
@@ -39,9 +39,9 @@ fn execute(
     options: &Options,
 ) -> (String, sinuprep::semantic::env::Env) {
     let heads = heads();
-    let analysis =
-        sinuprep::semantic::analyze(source.as_bytes(), &Supplied::default(), Some(&heads));
-    let rewritten = rewrite(source.as_bytes(), &analysis, options);
+    let model = Model::of(source.as_bytes());
+    let analysis = sinuprep::semantic::analyze(&model, &Supplied::default(), Some(&heads));
+    let rewritten = rewrite(&model, &analysis, options);
     assert!(rewritten.refused == 0, "{:?}", rewritten.diagnostics);
     let output = String::from_utf8(apply(source.as_bytes(), &rewritten.edits)).expect("ASCII");
     assert!(
@@ -55,7 +55,11 @@ fn execute(
     let values = format!("R10={} R11={} R12={}\n", angles[0], angles[1], angles[2]);
     let at = output.find("; sinuprep:").expect("original kept");
     let executed = format!("{}{values}{}", &output[..at], &output[at..]);
-    let (_, env) = run(executed.as_bytes(), &Supplied::default(), Some(&heads));
+    let (_, env) = run(
+        &Model::of(executed.as_bytes()),
+        &Supplied::default(),
+        Some(&heads),
+    );
     (output, env)
 }
 
@@ -140,8 +144,9 @@ proptest! {
         for (n, a) in angles.iter().enumerate() {
             supplied.insert(format!("R{}", 10 + n), Value::Number(*a), "test".into());
         }
-        let analysis = sinuprep::semantic::analyze(source.as_bytes(), &supplied, Some(&heads()));
-        let offline = rewrite(source.as_bytes(), &analysis, &Options { precision: 15, ..Options::default() });
+        let model = Model::of(source.as_bytes());
+        let analysis = sinuprep::semantic::analyze(&model, &supplied, Some(&heads()));
+        let offline = rewrite(&model, &analysis, &Options { precision: 15, ..Options::default() });
         let offline = String::from_utf8(apply(source.as_bytes(), &offline.edits)).expect("ASCII");
         let args = |text: &str| -> Vec<String> {
             let line = text.lines().find(|l| l.contains("CYCLE800(")).expect("a CYCLE800").to_string();

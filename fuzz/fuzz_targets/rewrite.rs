@@ -8,13 +8,14 @@ use libfuzzer_sys::fuzz_target;
 use sinuprep::emit::apply;
 use sinuprep::cli::render::{human, FileReport};
 use sinuprep::emit::cycle600::{rewrite, Form, Options};
-use sinuprep::semantic::{analyze, Heads, Supplied};
+use sinuprep::semantic::{analyze, Heads, Model, Supplied};
 use sinuprep::syntax::lines::raw_lines;
 use sinuprep::syntax::parse;
 
 fn run(source: &[u8], heads: &Heads, options: &Options) -> Vec<u8> {
-    let analysis = analyze(source, &Supplied::default(), Some(heads));
-    let rewrite = rewrite(source, &analysis, options);
+    let model = Model::of(source);
+    let analysis = analyze(&model, &Supplied::default(), Some(heads));
+    let rewrite = rewrite(&model, &analysis, options);
     let report = FileReport {
         name: "FUZZ.MPF",
         source,

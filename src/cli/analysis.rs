@@ -14,9 +14,9 @@ use crate::emit::cycle600::{rewrite, Options, Rewrite};
 use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, variable_key};
 use crate::semantic::value::Value;
-use crate::semantic::{analyze_lines, Analysis, Heads, Supplied};
-use crate::syntax::parse;
+use crate::semantic::{analyze, Analysis, Heads, Model, Supplied};
 use crate::syntax::tree::{LineKind, StatementKind};
+use crate::syntax::{parse, program_kind};
 
 /// Measured values and accessory definitions for one program, from the
 /// command line first and sinuprep.toml second.
@@ -138,11 +138,11 @@ pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
             diagnostics,
         };
     }
-    // One line table for the walk and the syntax diagnostics.
-    let lines = crate::syntax::Lines::new(&file.bytes);
-    let analysis = analyze_lines(&lines, &inputs.supplied, inputs.heads.as_ref());
-    let rewrite = rewrite(&file.bytes, &analysis, options);
-    let mut diagnostics = lines.diagnostics();
+    // One parse for the syntax diagnostics, the walk and the rewrite.
+    let model = Model::build(&file.bytes, program_kind(Some(&file.name), &file.bytes));
+    let analysis = analyze(&model, &inputs.supplied, inputs.heads.as_ref());
+    let rewrite = rewrite(&model, &analysis, options);
+    let mut diagnostics = model.syntax;
     if inputs.heads.is_none() && !analysis.calls.is_empty() {
         diagnostics.push(crate::semantic::head_def::not_found());
     }

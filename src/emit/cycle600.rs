@@ -15,6 +15,7 @@ use crate::semantic::cycle600::{no_cycle800_form, Evaluation};
 use crate::semantic::frames::FrameSeen;
 use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
+use crate::semantic::Model;
 use crate::span::Span;
 use crate::syntax::lines::dominant_ending;
 
@@ -67,7 +68,8 @@ pub struct Rewrite {
     pub refused: usize,
 }
 
-pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite {
+pub fn rewrite(model: &Model, analysis: &Analysis, options: &Options) -> Rewrite {
+    let source = model.source;
     let eol = dominant_ending(source).as_bytes();
     let mut out = Rewrite::default();
     let mut names = runtime::Names::new(options.runtime.flatten());
@@ -119,7 +121,7 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
         out.refused += 1;
     }
     if !at_run_time.is_empty() {
-        match runtime::collision(source, &names) {
+        match runtime::collision(model, &names) {
             Some(problem) => {
                 out.diagnostics.push(problem);
                 for (site, _) in &at_run_time {
@@ -130,7 +132,7 @@ pub fn rewrite(source: &[u8], analysis: &Analysis, options: &Options) -> Rewrite
             None => {
                 let locals = names.locals();
                 if !locals.is_empty() {
-                    let at = runtime::def_insertion(source);
+                    let at = model.declarations_insertion();
                     // The DEF lines end as the line before them does: a lone CR
                     // in front of that line's LF would join them into one CRLF.
                     let eol = crate::span::ending_before(source, at).unwrap_or(eol);

@@ -24,8 +24,8 @@ use crate::semantic::cycle600::{
     additive_onto_unknown, no_cycle800_form, Operand, RuntimeParameters,
 };
 use crate::semantic::env::Active;
+use crate::semantic::Model;
 use crate::span::Span;
-use crate::syntax::tree::StatementKind;
 
 /// Where the intermediate values live: local variables (`SNP_...`, declared
 /// by DEF lines the rewrite inserts) or R parameters from `R<base>` upward.
@@ -504,38 +504,12 @@ fn decompose(
     [a1_name, a2, a3_name]
 }
 
-/// Where the DEF lines of the run-time variables go: after the last DEF (or
-/// PROC) before the first executable block, else before that block.
-pub fn def_insertion(source: &[u8]) -> usize {
-    let lines = crate::syntax::Lines::new(source);
-    let mut at = None;
-    for index in 0..lines.len() {
-        let line = lines.parse(index);
-        let crate::syntax::tree::LineKind::Block(block) = &line.kind else {
-            continue;
-        };
-        let declares = block
-            .statements
-            .iter()
-            .all(|s| matches!(s.kind, StatementKind::Def(_) | StatementKind::Proc(_)));
-        if block.statements.is_empty() {
-            continue;
-        }
-        if declares {
-            at = Some(line.raw.full().end);
-        } else {
-            return at.unwrap_or(line.raw.content.start);
-        }
-    }
-    at.unwrap_or(source.len())
-}
-
 /// The problem when the run-time variables would clash with the program's own.
-pub fn collision(source: &[u8], names: &Names) -> Option<Diagnostic> {
+pub fn collision(model: &Model, names: &Names) -> Option<Diagnostic> {
     let help = "rename the program's variables, or choose where the intermediate values go: local variables by default, R parameters with --runtime-r N";
     match names.r_range() {
         None => {
-            let at = crate::syntax::lexer::find_ignoring_case(source, PREFIX.as_bytes())?;
+            let at = crate::syntax::lexer::find_ignoring_case(model.source, PREFIX.as_bytes())?;
             Some(
                 registry::runtime_name_collision::RULE.at(Span::new(at, at + PREFIX.len()))
                     .message(format!("the program already uses names starting with {PREFIX}, which the run-time code needs"))
@@ -544,37 +518,18 @@ pub fn collision(source: &[u8], names: &Names) -> Option<Diagnostic> {
             )
         }
         Some(range) => {
-            let lines = crate::syntax::Lines::new(source);
-            for index in 0..lines.len() {
-                let crate::syntax::tree::LineKind::Block(block) = lines.parse(index).kind else {
-                    continue;
-                };
-                for statement in &block.statements {
-                    let mut variables = Vec::new();
-                    if let StatementKind::Assign(assign) = &statement.kind {
-                        variables.push(&assign.target);
-                    }
-                    crate::syntax::visit::for_each_expression(&statement.kind, &mut |e| {
-                        crate::syntax::visit::collect_variables(e, &mut variables)
-                    });
-                    for variable in variables {
-                        let text = variable.name.text(source);
-                        let number = std::str::from_utf8(text)
-                            .ok()
-                            .and_then(|t| t.strip_prefix(['R', 'r']))
-                            .and_then(|d| d.parse::<u32>().ok());
-                        if let Some(n) = number.filter(|n| range.contains(n)) {
-                            return Some(
-                                registry::runtime_name_collision::RULE.at(variable.span)
-                                    .message(format!("R{n} is used by the program, and the run-time code needs R{} to R{}", range.start, range.end - 1))
-                                    .label("already used")
-                                    .help(help),
-                            );
-                        }
-                    }
-                }
-            }
-            None
+            let (n, span) = model.first_r_parameter(range.clone())?;
+            Some(
+                registry::runtime_name_collision::RULE
+                    .at(span)
+                    .message(format!(
+                        "R{n} is used by the program, and the run-time code needs R{} to R{}",
+                        range.start,
+                        range.end - 1
+                    ))
+                    .label("already used")
+                    .help(help),
+            )
         }
     }
 }

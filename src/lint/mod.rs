@@ -1,14 +1,15 @@
 //! The linter: syntax errors, CYCLE600 findings from the walk, and the
 //! general NC rules, each rule in its own file under `rules/`.
 //!
-//! One pass over the lines: a plain line (address words with numbers, most
-//! of a CAM program) is read by a byte scan and shown only to the few rules
-//! that learn from it; every other line is parsed once and handed to every
-//! selected rule. The CYCLE600 walk runs only for programs that mention
-//! CYCLE600. It reports diagnostics; printing them is the CLI's job.
+//! One pass over the lines builds the program's model
+//! ([`crate::semantic::model`]) and shows each line to the rules: a plain
+//! line (address words with numbers, most of a CAM program) is read by a byte
+//! scan and shown only to the few rules that learn from it; every other line
+//! is parsed once and handed to every selected rule. The rules finish on the
+//! complete model, and the CYCLE600 walk, for programs that mention CYCLE600,
+//! runs on it without parsing again. It reports diagnostics; printing them is the CLI's job.
 
 pub mod codes;
-pub mod labels;
 pub mod rule;
 pub mod rules;
 pub mod suppression;
@@ -16,11 +17,12 @@ pub mod suppression;
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
-use crate::semantic::{analyze_lines, Heads, Supplied};
+use crate::semantic::model::ModelBuilder;
+use crate::semantic::{analyze, Heads, Model, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
-use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
+use crate::syntax::ProgramKind;
 
 /// Which findings to report.
 #[derive(Clone, Debug)]
@@ -118,25 +120,20 @@ pub fn check_with(
     };
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
-    let mut parser = LineParser::default();
-    // The CYCLE600 walk needs a line table: recorded on this pass, not
-    // scanned for again.
-    let mut walk_lines = crate::semantic::mentions_cycle600(source).then(LinesRecorder::default);
+    let mut model = ModelBuilder::new(source);
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
-        if let Some(recorder) = &mut walk_lines {
-            recorder.record(&line);
-        }
         let raw = match line {
             Scanned::Plain(plain) => {
                 // No syntax error, and only a few rules care: no tree to build.
-                parser.pass_plain_line();
+                let facts = plain.facts();
+                model.plain(&line, &facts);
                 if let Some(comment) = plain.comment {
                     suppressions.read(source, row, comment);
                 }
                 plain_run.lines.push(PlainLine {
                     row,
                     raw: plain.raw,
-                    facts: plain.facts(),
+                    facts,
                 });
                 if plain_run.lines.len() == PlainRun::LINES {
                     plain_run.give(&file, &mut checkers, &mut found);
@@ -146,27 +143,28 @@ pub fn check_with(
             Scanned::Other(raw) => raw,
         };
         plain_run.give(&file, &mut checkers, &mut found);
-        let (line, syntax) = parser.parse_line(source, raw);
-        found.extend(syntax);
-        if let LineKind::Block(block) = &line.kind {
+        let tree = model.parse(&line, raw);
+        if let LineKind::Block(block) = &tree.kind {
             if let Some(comment) = block.comment {
                 suppressions.read(source, row, comment);
             }
-            if let Some(label) = block.label {
-                file.record_label(row, label.span);
-            }
         }
-        let view = LineView::new(&line);
+        let view = LineView::new(&tree);
+        model.learn(&view);
         for checker in &mut checkers {
             checker.line(&file, row, &view, &mut found);
         }
+        model.keep(tree);
     }
     plain_run.give(&file, &mut checkers, &mut found);
+    file.complete(model.finish(kind));
+    let model = file.model();
+    found.extend(model.syntax.iter().cloned());
     for checker in &mut checkers {
         checker.finish(&file, &mut found);
     }
-    if let Some(recorder) = walk_lines {
-        found.extend(cycle600_findings(&recorder.finish(source), supplied, heads));
+    if crate::semantic::mentions_cycle600(source) {
+        found.extend(cycle600_findings(model, supplied, heads));
     }
 
     let index = LineIndex::new(source);
@@ -213,8 +211,8 @@ impl PlainRun {
 /// The CYCLE600 walk's findings, as `check` reports them: an argument only
 /// the machine knows is information here (the rewrite can compute it on the
 /// control), not an error.
-fn cycle600_findings(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
-    let analysis = analyze_lines(lines, supplied, heads);
+fn cycle600_findings(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
+    let analysis = analyze(model, supplied, heads);
     let mut out: Vec<Diagnostic> = analysis
         .calls
         .iter()

@@ -5,11 +5,11 @@ use std::cell::{OnceCell, RefCell};
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
-use crate::lint::labels::Labels;
-use crate::span::Span;
+use crate::semantic::labels::Labels;
+pub use crate::semantic::model::LineView;
+use crate::semantic::Model;
 use crate::syntax::lines::RawLine;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::{Block, Line, LineKind, StatementKind, Variable, Word, WordValue};
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at.
@@ -21,9 +21,8 @@ pub struct FileContext<'a> {
     /// Block numbers some jump names, announced during the line pass.
     wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
-    /// Labels as the line pass met them, then sorted for the rules.
-    recorded_labels: RefCell<Labels>,
-    labels: OnceCell<Labels>,
+    /// The program's model, complete once the line pass is over.
+    model: OnceCell<Model<'a>>,
 }
 
 impl<'a> FileContext<'a> {
@@ -34,23 +33,26 @@ impl<'a> FileContext<'a> {
             kind,
             wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
-            recorded_labels: RefCell::default(),
-            labels: OnceCell::new(),
+            model: OnceCell::new(),
         }
     }
 
-    /// Records, during the line pass, the label at `span` on line `row`.
-    pub fn record_label(&self, row: usize, span: Span) {
-        self.recorded_labels
-            .borrow_mut()
-            .record(self.source, row, span);
+    /// Gives the model the line pass built, before the rules finish.
+    pub(crate) fn complete(&self, model: Model<'a>) {
+        let _ = self.model.set(model);
     }
 
-    /// Every label of the file (see [`Self::record_label`]); asked for once
-    /// the line pass is over.
+    /// The program's model; asked for once the line pass is over (in
+    /// [`Check::finish`]).
+    pub fn model(&self) -> &Model<'a> {
+        self.model
+            .get()
+            .expect("the model is complete before the rules finish")
+    }
+
+    /// Every label of the file; asked for once the line pass is over.
     pub fn labels(&self) -> &Labels {
-        self.labels
-            .get_or_init(|| self.recorded_labels.take().sorted())
+        &self.model().labels
     }
 
     /// Announces, during the line pass, a block number a jump names.
@@ -67,62 +69,6 @@ impl<'a> FileContext<'a> {
         self.block_numbers.get_or_init(|| {
             crate::syntax::plain::block_numbers(self.source, &self.wanted_numbers.borrow())
         })
-    }
-}
-
-/// One line as the rules see it. What each statement reads is collected
-/// once here: five rules need it, and walking every statement's expressions
-/// once per rule cost a tenth of `check`'s time.
-pub struct LineView<'l> {
-    pub raw: RawLine,
-    /// The block, when the line is one.
-    pub block: Option<&'l Block>,
-    /// Every statement is an address word with a number (`G1 X-12.5`): the
-    /// line defines, reads, calls and jumps nowhere. Most blocks of a CAM
-    /// program are such, and most rules have nothing to do there.
-    pub plain: bool,
-    /// (statement index, variable read), in statement order.
-    reads: Vec<(usize, &'l Variable)>,
-}
-
-impl<'l> LineView<'l> {
-    pub fn new(line: &'l Line) -> Self {
-        let block = match &line.kind {
-            LineKind::Block(block) => Some(block),
-            _ => None,
-        };
-        let mut reads = Vec::new();
-        let mut plain = true;
-        for (index, statement) in block.iter().flat_map(|b| b.statements.iter().enumerate()) {
-            if let StatementKind::Word(Word {
-                value: WordValue::Number(_),
-                ..
-            }) = statement.kind
-            {
-                continue;
-            }
-            plain = false;
-            reads.extend(
-                crate::lint::rules::support::reads(statement)
-                    .into_iter()
-                    .map(|variable| (index, variable)),
-            );
-        }
-        Self {
-            raw: line.raw,
-            block,
-            plain,
-            reads,
-        }
-    }
-
-    /// The variables statement `index` of the block reads (DEF initialisers
-    /// and indices included).
-    pub fn reads(&self, index: usize) -> impl Iterator<Item = &'l Variable> + '_ {
-        self.reads
-            .iter()
-            .filter(move |(i, _)| *i == index)
-            .map(|(_, variable)| *variable)
     }
 }
 

@@ -5,19 +5,23 @@
 //! and binds and evaluates each CYCLE600 call. It produces values and
 //! diagnostics, never text: rewriting is `emit`'s job.
 
+pub mod blocks;
 pub mod calls;
 pub mod cycle600;
 pub mod env;
 pub mod eval;
 pub mod frames;
 pub mod head_def;
+pub mod labels;
+pub mod model;
 pub mod structure;
 pub mod value;
 pub mod walk;
 
 pub use env::Supplied;
 pub use head_def::Heads;
-pub use walk::{analyze, analyze_lines, Analysis, CallSite};
+pub use model::Model;
+pub use walk::{analyze, Analysis, CallSite};
 
 /// Whether `CYCLE600` (any case) occurs anywhere in the bytes: a program
 /// without it needs no walk.

@@ -6,13 +6,16 @@
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
+use crate::semantic::blocks::{BlockMatcher, Event};
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::eval::key;
 use crate::semantic::frames;
+use crate::semantic::model::Model;
 use crate::syntax::plain::block_numbers;
 use crate::syntax::tree::{
-    upper, Block, Call, Expr, GotoTarget, LineKind, Statement, StatementKind, SyncAction,
+    upper, Block, Call, Expr, GotoTarget, Statement, StatementKind, SyncAction,
 };
+use crate::syntax::visit::gotos;
 use crate::syntax::Lines;
 
 /// Names a line writes, for forgetting them.
@@ -116,15 +119,11 @@ pub(crate) struct Structure {
     pub(crate) ends: HashMap<usize, (Option<usize>, usize)>,
     /// ELSE line -> ENDIF line.
     pub(crate) else_ends: HashMap<usize, usize>,
-    /// Label -> lines where it stands.
-    pub(crate) labels: HashMap<String, Vec<usize>>,
     /// (block number, line), sorted; read only when a jump names a block
     /// number, since a CAM program has millions of them.
     pub(crate) numbers: Vec<(u64, usize)>,
     /// First line of a region a backward jump repeats -> its last line.
     pub(crate) loop_starts: HashMap<usize, usize>,
-    /// Lines with a STOPRE, in order.
-    pub(crate) stopre_lines: Vec<usize>,
     /// What each line that writes anything writes, in line order.
     pub(crate) writes: Vec<(usize, Written)>,
     /// `; sinuprep:` lines -> the CYCLE600 call they keep.
@@ -133,31 +132,21 @@ pub(crate) struct Structure {
     pub(crate) emitted: HashSet<usize>,
 }
 
-#[derive(PartialEq)]
-enum Opener {
-    If,
-    While,
-    For,
-    Loop,
-    Repeat,
-}
-
 impl Structure {
-    pub(crate) fn build(lines: &Lines) -> Structure {
+    pub(crate) fn build(model: &Model) -> Structure {
+        let lines = &model.lines;
         let source = lines.source;
         let mut structure = Structure {
             ends: HashMap::new(),
             else_ends: HashMap::new(),
-            labels: HashMap::new(),
             numbers: Vec::new(),
             loop_starts: HashMap::new(),
-            stopre_lines: Vec::new(),
             writes: Vec::new(),
             marked: HashMap::new(),
             emitted: HashSet::new(),
         };
         structure.find_emitted(lines);
-        let mut stack: Vec<(Opener, usize, Option<usize>)> = Vec::new();
+        let mut blocks = BlockMatcher::default();
         // Jumps, resolved once every label is known.
         let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
         for line in 0..lines.len() {
@@ -172,10 +161,10 @@ impl Structure {
             if lines.is_plain(line) {
                 continue;
             }
-            let LineKind::Block(block) = lines.parse(line).kind else {
+            let Some(block) = lines.block(line) else {
                 continue;
             };
-            let block = &block;
+            let block = &*block;
             let writes = block_writes(source, block, line, structure.is_emitted(line));
             if !writes.names.is_empty()
                 || writes.rotation
@@ -184,71 +173,13 @@ impl Structure {
             {
                 structure.writes.push((line, writes));
             }
-            for statement in &block.statements {
-                match &statement.kind {
-                    StatementKind::Command(name) if name.is(source, "STOPRE") => {
-                        structure.stopre_lines.push(line)
-                    }
-                    StatementKind::Goto(goto) => jumps.push((line, goto.clone())),
-                    StatementKind::Case(case) => {
-                        let gotos = case.branches.iter().map(|(_, g)| g).chain(&case.default);
-                        jumps.extend(gotos.map(|g| (line, g.clone())));
-                    }
-                    _ => {}
+            jumps.extend(gotos(block).into_iter().map(|goto| (line, goto.clone())));
+            let ends = &mut structure.ends;
+            blocks.line(line, block, &mut |event| {
+                if let Event::Closed { open, row } = event {
+                    ends.insert(open.row, (open.else_row, row));
                 }
-            }
-            if let Some(label) = block.label {
-                structure
-                    .labels
-                    .entry(upper(label.text(source)))
-                    .or_default()
-                    .push(line);
-            }
-            let close =
-                |stack: &mut Vec<(Opener, usize, Option<usize>)>,
-                 kind: Opener,
-                 ends: &mut HashMap<usize, (Option<usize>, usize)>| {
-                    if stack.last().is_some_and(|(k, _, _)| *k == kind) {
-                        if let Some((_, open, else_line)) = stack.pop() {
-                            ends.insert(open, (else_line, line));
-                        }
-                    }
-                };
-            match control(block) {
-                Control::IfBlock(_) => stack.push((Opener::If, line, None)),
-                Control::Else => {
-                    if let Some((Opener::If, _, else_line)) = stack.last_mut() {
-                        *else_line = Some(line);
-                    }
-                }
-                Control::Loop { .. } => {
-                    let kind = block.statements.iter().find_map(|s| match s.kind {
-                        StatementKind::While { .. } => Some(Opener::While),
-                        StatementKind::For { .. } => Some(Opener::For),
-                        StatementKind::Loop => Some(Opener::Loop),
-                        StatementKind::Repeat { .. } => Some(Opener::Repeat),
-                        _ => None,
-                    });
-                    if let Some(kind) = kind {
-                        stack.push((kind, line, None));
-                    }
-                }
-                Control::None => {}
-            }
-            for statement in &block.statements {
-                match statement.kind {
-                    StatementKind::EndIf => close(&mut stack, Opener::If, &mut structure.ends),
-                    StatementKind::EndWhile => {
-                        close(&mut stack, Opener::While, &mut structure.ends)
-                    }
-                    StatementKind::EndFor => close(&mut stack, Opener::For, &mut structure.ends),
-                    StatementKind::EndLoop => close(&mut stack, Opener::Loop, &mut structure.ends),
-                    StatementKind::Until { .. } => {
-                        close(&mut stack, Opener::Repeat, &mut structure.ends)
-                    }
-                    _ => {}
-                }
-            }
+            });
         }
         for &(else_line, end) in structure.ends.values() {
             if let Some(else_line) = else_line {
@@ -266,7 +197,7 @@ impl Structure {
         for (line, goto) in jumps {
             let target = match (&goto.kind, &goto.target) {
                 (crate::syntax::tree::GotoKind::Start, _) => Some(0),
-                (kind, Some(target)) => structure.resolve(source, target, *kind, line),
+                (kind, Some(target)) => structure.resolve(model, target, *kind, line),
                 _ => None,
             };
             if let Some(target) = target.filter(|&t| t <= line) {
@@ -293,10 +224,7 @@ impl Structure {
                 if at >= lines.len() {
                     return None;
                 }
-                match lines.parse(at).kind {
-                    LineKind::Block(block) => Some(block),
-                    _ => None,
-                }
+                lines.block(at).map(Cow::into_owned)
             };
             let count = frames::emitted_blocks(source, block);
             self.emitted.extend(line + 1..line + 1 + count);
@@ -333,22 +261,23 @@ impl Structure {
     /// The line a jump from `from` lands on, searching as its kind says.
     pub(crate) fn resolve(
         &self,
-        source: &[u8],
+        model: &Model,
         target: &GotoTarget,
         kind: crate::syntax::tree::GotoKind,
         from: usize,
     ) -> Option<usize> {
         use crate::syntax::tree::GotoKind;
-        let lines: Cow<[usize]> = match (target.block_number(source), target) {
+        let source = model.source;
+        let lines: Vec<usize> = match (target.block_number(source), target) {
             (Some(number), _) => {
                 let first = self.numbers.partition_point(|&(n, _)| n < number);
                 let numbered = self.numbers[first..]
                     .iter()
                     .take_while(|&&(n, _)| n == number);
-                Cow::Owned(numbered.map(|&(_, line)| line).collect())
+                numbered.map(|&(_, line)| line).collect()
             }
             (None, GotoTarget::Label(name)) => {
-                Cow::Borrowed(self.labels.get(&upper(name.text(source)))?)
+                model.labels.rows(&upper(name.text(source))).collect()
             }
             (None, _) => return None,
         };

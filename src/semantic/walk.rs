@@ -11,6 +11,7 @@
 //! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
 //! subprogram does beyond possibly changing R parameters.
 
+use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
 use crate::diagnostic::Diagnostic;
@@ -21,14 +22,13 @@ use crate::semantic::env::{Active, Env, Supplied};
 use crate::semantic::eval::{evaluate, key, variable_key};
 use crate::semantic::frames::{self, FrameEffect, FrameSeen};
 use crate::semantic::head_def::Heads;
+use crate::semantic::model::Model;
 use crate::semantic::structure::{control, sync_writes, Control, Structure};
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
 use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::upper;
-use crate::syntax::tree::{
-    Block, Call, Expr, Initializer, LineKind, Statement, StatementKind, TypeKind,
-};
+use crate::syntax::tree::{Block, Call, Expr, Initializer, Statement, StatementKind, TypeKind};
 use crate::syntax::visit::{collect_variables, for_each_expression};
 use crate::syntax::Lines;
 
@@ -72,14 +72,9 @@ pub struct Analysis {
     pub result_reads: Vec<ResultRead>,
 }
 
-/// Walks the program in `source`, parsing each line as it is reached.
-pub fn analyze(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
-    run(source, supplied, heads).0
-}
-
-/// [`analyze`] on a line table the caller keeps (for its syntax diagnostics).
-pub fn analyze_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
-    run_lines(lines, supplied, heads).0
+/// Walks the program its model describes.
+pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
+    run(model, supplied, heads).0
 }
 
 /// The walk, and the state it ends in: what the program leaves in its
@@ -92,18 +87,15 @@ pub fn analyze_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) 
 /// sees what the repeated walk sees: the repetition is what makes the
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
-pub fn run(source: &[u8], supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    run_lines(&Lines::new(source), supplied, heads)
-}
-
-/// [`run`] on a line table.
-fn run_lines(lines: &Lines, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let source = lines.source;
-    let structure = Structure::build(lines);
+pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
+    let lines = &model.lines;
+    let source = model.source;
+    let structure = model.structure();
     let mut modes = HashMap::new();
     loop {
         let mut walker = Walker {
-            structure: &structure,
+            model,
+            structure,
             lines,
             source,
             supplied,
@@ -156,6 +148,7 @@ impl CallSite {
 }
 
 struct Walker<'a> {
+    model: &'a Model<'a>,
     lines: &'a Lines<'a>,
     source: &'a [u8],
     supplied: &'a Supplied,
@@ -183,11 +176,8 @@ struct Walker<'a> {
 pub const MAX_NESTING: usize = 512;
 
 impl<'a> Walker<'a> {
-    fn block(&self, line: usize) -> Option<Block> {
-        match self.lines.parse(line).kind {
-            LineKind::Block(block) => Some(block),
-            _ => None,
-        }
+    fn block(&self, line: usize) -> Option<Cow<'a, Block>> {
+        self.lines.block(line)
     }
 
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
@@ -343,7 +333,7 @@ impl<'a> Walker<'a> {
                     let target = goto
                         .target
                         .as_ref()
-                        .and_then(|t| self.structure.resolve(self.source, t, goto.kind, pc));
+                        .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
                     targets.push((target, certain));
                 }
                 StatementKind::Case(case) => {
@@ -365,15 +355,16 @@ impl<'a> Walker<'a> {
                     });
                     match chosen {
                         Some(goto) => {
-                            let target = goto.target.as_ref().and_then(|t| {
-                                self.structure.resolve(self.source, t, goto.kind, pc)
-                            });
+                            let target = goto
+                                .target
+                                .as_ref()
+                                .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
                             targets.push((target, true));
                         }
                         None => {
                             for goto in case.branches.iter().map(|(_, g)| g).chain(&case.default) {
                                 let target = goto.target.as_ref().and_then(|t| {
-                                    self.structure.resolve(self.source, t, goto.kind, pc)
+                                    self.structure.resolve(self.model, t, goto.kind, pc)
                                 });
                                 targets.push((target, false));
                             }
@@ -810,11 +801,9 @@ impl<'a> Walker<'a> {
             .any(|argument| match &argument.value {
                 Err(Unknown::Variables(vars)) => vars.iter().any(|(_, origin)| match origin {
                     // `line` is 1-based: the measurement is at index line - 1.
-                    Origin::Measured { line, .. } => !self
-                        .structure
-                        .stopre_lines
-                        .iter()
-                        .any(|&s| s + 1 > *line && s < pc),
+                    Origin::Measured { line, .. } => {
+                        !self.model.stopre.iter().any(|&s| s + 1 > *line && s < pc)
+                    }
                     _ => false,
                 }),
                 _ => false,

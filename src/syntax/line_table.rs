@@ -1,17 +1,19 @@
-//! A program's line table: where lines start and which are plain, so that
-//! a pass (the CYCLE600 walk, the rewrite) can go to any line and parse it
-//! when it needs its tree.
+//! A program's line table: where lines start, which are plain, and the
+//! trees of the others, so that a pass (the CYCLE600 walk, the rewrite) can
+//! go to any line and read its tree without parsing it again.
 
+use std::borrow::Cow;
 use std::cell::Cell;
 
 use crate::syntax::lines::RawLine;
-use crate::syntax::tree::Line;
+use crate::syntax::tree::{Block, Line, LineKind};
 use crate::syntax::{lines, parse_line_kind, plain};
 
-/// A program's lines, each parsed when asked for: memory holds where every
-/// [`STRIDE`]th line starts and a bit a line for whether it is plain (a
-/// quarter of a byte a line), never the whole tree nor every line's start,
-/// however large the program.
+/// A program's lines: memory holds where every [`STRIDE`]th line starts, a
+/// bit a line for whether it is plain (a quarter of a byte a line), and the
+/// trees of the lines that are not plain up to [`KEPT_TREES`] bytes of their
+/// source. A plain line, or one past that budget, is parsed when asked for:
+/// it costs a byte scan, and a CAM program's millions of them would not fit.
 pub struct Lines<'src> {
     pub source: &'src [u8],
     len: usize,
@@ -24,10 +26,17 @@ pub struct Lines<'src> {
     /// The line found last and where it starts: the passes over the lines go
     /// forward, so the next line asked for is mostly read on from there.
     last: Cell<(usize, usize)>,
+    /// (line, tree) of the lines not plain, in line order.
+    trees: Vec<(usize, Line)>,
 }
 
 /// One line in this many has its start kept.
 const STRIDE: usize = 32;
+
+/// Source bytes of lines whose trees are kept: a tree costs about 50 bytes a
+/// byte of source, so this is about 50 MiB, against 5 MiB for the largest
+/// hand-written program met (93 KB). Past it, lines are parsed again when asked.
+pub const KEPT_TREES: usize = 1 << 20;
 
 impl<'src> Lines<'src> {
     pub fn new(source: &'src [u8]) -> Self {
@@ -67,11 +76,40 @@ impl<'src> Lines<'src> {
         lines::line_from(self.source, start)
     }
 
-    /// The tree of line `index` (0-based).
-    pub fn parse(&self, index: usize) -> Line {
+    /// The tree of line `index` (0-based): kept, or parsed now.
+    pub fn line(&self, index: usize) -> Cow<'_, Line> {
+        if !self.is_plain(index) {
+            if let Ok(at) = self.trees.binary_search_by_key(&index, |(row, _)| *row) {
+                return Cow::Borrowed(&self.trees[at].1);
+            }
+        }
         let raw = self.raw(index);
         let (kind, _) = parse_line_kind(raw.content.of(self.source), raw.content.start);
-        Line { raw, kind }
+        Cow::Owned(Line { raw, kind })
+    }
+
+    /// The block of line `index`, if the line is one (not a `%` header or
+    /// `;$PATH=` line).
+    pub fn block(&self, index: usize) -> Option<Cow<'_, Block>> {
+        match self.line(index) {
+            Cow::Borrowed(Line {
+                kind: LineKind::Block(block),
+                ..
+            }) => Some(Cow::Borrowed(block)),
+            Cow::Owned(Line {
+                kind: LineKind::Block(block),
+                ..
+            }) => Some(Cow::Owned(block)),
+            _ => None,
+        }
+    }
+
+    /// The lines that are not plain, in order, with their trees: the lines
+    /// that can hold anything but address words with numbers.
+    pub fn other_lines(&self) -> impl Iterator<Item = (usize, Cow<'_, Line>)> + '_ {
+        (0..self.len)
+            .filter(|&index| !self.is_plain(index))
+            .map(|index| (index, self.line(index)))
     }
 }
 
@@ -82,6 +120,9 @@ pub struct LinesRecorder {
     len: usize,
     strided_starts: Vec<usize>,
     plain: Vec<u64>,
+    trees: Vec<(usize, Line)>,
+    /// Source bytes of the kept trees.
+    kept: usize,
 }
 
 impl LinesRecorder {
@@ -100,14 +141,30 @@ impl LinesRecorder {
         self.len += 1;
     }
 
+    /// Keeps the tree of the line recorded last, if it is not plain and the
+    /// budget allows: the passes after this one read it instead of parsing.
+    pub fn keep(&mut self, line: Line) {
+        let Some(index) = self.len.checked_sub(1) else {
+            return;
+        };
+        let plain = self.plain[index / 64] & (1 << (index % 64)) != 0;
+        let len = line.raw.content.len();
+        if !plain && self.kept + len <= KEPT_TREES {
+            self.kept += len;
+            self.trees.push((index, line));
+        }
+    }
+
     /// The table of the lines recorded, which must be all of `source`'s.
-    pub fn finish(self, source: &[u8]) -> Lines<'_> {
+    pub fn finish(mut self, source: &[u8]) -> Lines<'_> {
+        self.trees.shrink_to_fit();
         Lines {
             source,
             len: self.len,
             strided_starts: self.strided_starts,
             plain: self.plain,
             last: Cell::new((0, 0)),
+            trees: self.trees,
         }
     }
 }

@@ -82,14 +82,6 @@ pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
     diagnostics_of(source, lines)
 }
 
-impl Lines<'_> {
-    /// [`diagnostics`] from the line table: no second scan of the file.
-    pub fn diagnostics(&self) -> Vec<Diagnostic> {
-        let lines = (0..self.len()).map(|index| (!self.is_plain(index)).then(|| self.raw(index)));
-        diagnostics_of(self.source, lines)
-    }
-}
-
 /// The diagnostics of `lines`, `None` for a plain one.
 fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();

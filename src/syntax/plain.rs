@@ -377,7 +377,7 @@ pub fn digits_value(digits: &[u8]) -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::syntax::tree::{LineKind, StatementKind, WordValue};
+    use crate::syntax::tree::{StatementKind, WordValue};
     use crate::syntax::Lines;
 
     #[test]
@@ -412,8 +412,8 @@ mod tests {
             let source = text.as_bytes();
             let lines = Lines::new(source);
             let mut expected: Vec<(u64, usize)> = (0..lines.len())
-                .filter_map(|row| match lines.parse(row).kind {
-                    LineKind::Block(block) => block
+                .filter_map(|row| match lines.block(row) {
+                    Some(block) => block
                         .number
                         .filter(|n| !n.main)
                         .and_then(|n| digits_value(n.digits.of(source)))
@@ -456,7 +456,7 @@ mod tests {
                 proptest::prop_assert!(crate::syntax::diagnostics(text.as_bytes()).is_empty());
                 let lines = Lines::new(text.as_bytes());
                 for index in 0..lines.len() {
-                    let LineKind::Block(block) = lines.parse(index).kind else {
+                    let Some(block) = lines.block(index) else {
                         continue;
                     };
                     proptest::prop_assert!(block.label.is_none() && block.unparsed.is_none());

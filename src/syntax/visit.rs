@@ -1,7 +1,9 @@
 //! Walking a tree's expressions: what a statement reads, for the rules, the
 //! walk and the rewrite alike.
 
-use crate::syntax::tree::{Expr, ExprKind, StatementKind, Variable, WordValue};
+use crate::syntax::tree::{
+    Block, Expr, ExprKind, Goto, Initializer, Statement, StatementKind, Variable, WordValue,
+};
 
 /// Every expression directly in a statement, for collecting reads.
 pub fn for_each_expression<'e>(kind: &'e StatementKind, visit: &mut dyn FnMut(&'e Expr)) {
@@ -76,4 +78,42 @@ pub fn collect_variables<'e>(expr: &'e Expr, out: &mut Vec<&'e Variable>) {
             ExprKind::Number(_) | ExprKind::String => {}
         }
     }
+}
+
+/// Variables a statement reads (DEF initialisers and indices included).
+pub fn reads(statement: &Statement) -> Vec<&Variable> {
+    let mut out = Vec::new();
+    for_each_expression(&statement.kind, &mut |expr| {
+        collect_variables(expr, &mut out)
+    });
+    if let StatementKind::Def(def) = &statement.kind {
+        for declarator in &def.variables {
+            if let Some(Initializer::Expr(expr)) = &declarator.init {
+                collect_variables(expr, &mut out);
+            }
+            for dimension in declarator
+                .dimensions
+                .iter()
+                .filter_map(|d| d.value.as_ref())
+            {
+                collect_variables(dimension, &mut out);
+            }
+        }
+    }
+    out
+}
+
+/// Every jump of a block (GOTO statements and CASE branches).
+pub fn gotos(block: &Block) -> Vec<&Goto> {
+    let mut out = Vec::new();
+    for statement in &block.statements {
+        match &statement.kind {
+            StatementKind::Goto(goto) => out.push(goto),
+            StatementKind::Case(case) => {
+                out.extend(case.branches.iter().map(|(_, g)| g).chain(&case.default))
+            }
+            _ => {}
+        }
+    }
+    out
 }

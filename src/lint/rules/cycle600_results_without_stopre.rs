@@ -3,6 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
+use crate::semantic::model::is_stopre;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -39,7 +40,7 @@ impl Check for Checker {
         };
         for (index, statement) in block.statements.iter().enumerate() {
             match &statement.kind {
-                StatementKind::Command(n) if n.is(file.source, "STOPRE") => self.pending = None,
+                _ if is_stopre(file.source, statement) => self.pending = None,
                 StatementKind::Call(call) if call.name.is(file.source, "CYCLE600") => {
                     self.pending = Some(row)
                 }

@@ -3,10 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
-use crate::lint::rules::support::*;
-use crate::span::Span;
-use crate::syntax::tree::StatementKind;
+use crate::lint::rule::{Check, FileContext};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N007",
@@ -28,37 +25,27 @@ DEF INT ANG
 Remove one definition or rename one variable."#,
 };
 
+/// The definitions are the model's ([`crate::semantic::Model::symbols`]).
 #[derive(Default)]
-pub struct Checker {
-    seen: HashMap<String, usize>,
-}
+pub struct Checker;
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block else {
-            return;
-        };
-        for statement in &block.statements {
-            let names: Vec<Span> = match &statement.kind {
-                StatementKind::Def(def) => def.variables.iter().map(|d| d.name.span).collect(),
-                StatementKind::Proc(proc) => proc
-                    .parameters
-                    .iter()
-                    .map(|p| p.declarator.name.span)
-                    .collect(),
-                _ => continue,
-            };
-            for span in names {
-                let name = upper(file.source, span);
-                if let Some(first) = self.seen.get(&name) {
-                    out.push(
-                        RULE.at(span)
-                            .message(format!("`{name}` is already defined on line {}", first + 1))
-                            .label("defined again")
-                            .help("remove one definition, or rename one of the variables"),
-                    );
-                } else {
-                    self.seen.insert(name, row);
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let mut first: HashMap<&str, usize> = HashMap::new();
+        for symbol in &file.model().symbols {
+            match first.get(symbol.name.as_str()) {
+                Some(row) => out.push(
+                    RULE.at(symbol.span)
+                        .message(format!(
+                            "`{}` is already defined on line {}",
+                            symbol.name,
+                            row + 1
+                        ))
+                        .label("defined again")
+                        .help("remove one definition, or rename one of the variables"),
+                ),
+                None => {
+                    first.insert(&symbol.name, symbol.row);
                 }
             }
         }

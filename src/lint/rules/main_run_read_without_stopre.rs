@@ -3,6 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::rules::support::*;
+use crate::semantic::model::is_stopre;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -75,7 +76,7 @@ impl Check for Checker {
             return;
         }
         for (index, statement) in block.statements.iter().enumerate() {
-            if matches!(&statement.kind, StatementKind::Command(n) if n.is(file.source, "STOPRE")) {
+            if is_stopre(file.source, statement) {
                 self.stopped = true;
                 continue;
             }

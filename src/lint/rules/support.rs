@@ -3,10 +3,8 @@
 
 use crate::lint::rule::FileContext;
 use crate::span::Span;
-use crate::syntax::tree::{
-    Block, Goto, GotoTarget, Initializer, Statement, StatementKind, Variable,
-};
-use crate::syntax::visit::{collect_variables, for_each_expression};
+use crate::syntax::tree::{Block, Goto, GotoTarget};
+pub use crate::syntax::visit::{gotos, reads};
 
 /// The upper-case text of `span`.
 pub fn upper(source: &[u8], span: Span) -> String {
@@ -35,21 +33,6 @@ pub fn label(source: &[u8], block: &Block) -> Option<(String, Span)> {
     block.label.map(|l| (upper(source, l.span), l.span))
 }
 
-/// Every jump of a block (GOTO statements and CASE branches).
-pub fn gotos(block: &Block) -> Vec<&Goto> {
-    let mut out = Vec::new();
-    for statement in &block.statements {
-        match &statement.kind {
-            StatementKind::Goto(goto) => out.push(goto),
-            StatementKind::Case(case) => {
-                out.extend(case.branches.iter().map(|(_, g)| g).chain(&case.default))
-            }
-            _ => {}
-        }
-    }
-    out
-}
-
 /// Where a jump goes; `None` for computed targets. A block number is
 /// announced to the file, which reads only announced numbers' rows.
 pub fn target(file: &FileContext, goto: &Goto) -> Option<(Target, Span)> {
@@ -68,29 +51,6 @@ pub fn target(file: &FileContext, goto: &Goto) -> Option<(Target, Span)> {
         file.want_block_number(number);
     }
     Some((target, span))
-}
-
-/// Variables a statement reads (DEF initialisers and indices included).
-pub fn reads(statement: &Statement) -> Vec<&Variable> {
-    let mut out = Vec::new();
-    for_each_expression(&statement.kind, &mut |expr| {
-        collect_variables(expr, &mut out)
-    });
-    if let StatementKind::Def(def) = &statement.kind {
-        for declarator in &def.variables {
-            if let Some(Initializer::Expr(expr)) = &declarator.init {
-                collect_variables(expr, &mut out);
-            }
-            for dimension in declarator
-                .dimensions
-                .iter()
-                .filter_map(|d| d.value.as_ref())
-            {
-                collect_variables(dimension, &mut out);
-            }
-        }
-    }
-    out
 }
 
 /// A name a user could have defined: two leading letters (or `_` after a

@@ -2,8 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
-use crate::span::Span;
-use crate::syntax::tree::StatementKind;
+use crate::semantic::blocks::{BlockMatcher, Event};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N004",
@@ -28,27 +27,10 @@ N30 ENDIF          ; closes nothing: the WHILE stays open
 Add or correct the closing keyword."#,
 };
 
+/// The matching is the model's ([`BlockMatcher`]), shared with the walk.
 #[derive(Default)]
 pub struct Checker {
-    open: Vec<(&'static str, &'static str, Span, usize)>,
-}
-
-/// (opener, its closer) of a block's first control statement.
-fn opener(block: &crate::syntax::tree::Block) -> Option<(&'static str, &'static str, Span)> {
-    let is_jump = block
-        .statements
-        .iter()
-        .any(|s| matches!(s.kind, StatementKind::Goto(_)));
-    block.statements.iter().find_map(|s| match &s.kind {
-        StatementKind::If { .. } if !is_jump => Some(("IF", "ENDIF", s.span)),
-        StatementKind::While { .. } => Some(("WHILE", "ENDWHILE", s.span)),
-        StatementKind::For { .. } => Some(("FOR", "ENDFOR", s.span)),
-        StatementKind::Loop => Some(("LOOP", "ENDLOOP", s.span)),
-        StatementKind::Repeat { targets, .. } if targets.is_empty() => {
-            Some(("REPEAT", "UNTIL", s.span))
-        }
-        _ => None,
-    })
+    blocks: BlockMatcher,
 }
 
 impl Check for Checker {
@@ -62,68 +44,47 @@ impl Check for Checker {
         let Some(block) = line.block.filter(|_| !line.plain) else {
             return;
         };
-        if let Some((keyword, closer, span)) = opener(block) {
-            self.open.push((keyword, closer, span, row));
-            return;
-        }
-        for statement in &block.statements {
-            let closer = match statement.kind {
-                StatementKind::EndIf => "ENDIF",
-                StatementKind::EndWhile => "ENDWHILE",
-                StatementKind::EndFor => "ENDFOR",
-                StatementKind::EndLoop => "ENDLOOP",
-                StatementKind::Until { .. } => "UNTIL",
-                StatementKind::Else => {
-                    if self.open.last().is_none_or(|(k, ..)| *k != "IF") {
-                        out.push(
-                            RULE.at(statement.span)
-                                .message("ELSE without an open IF")
-                                .label("no IF to belong to")
-                                .help("add the IF, or remove the ELSE"),
-                        );
-                    }
-                    continue;
-                }
-                _ => continue,
-            };
-            match self.open.iter().rposition(|(_, c, ..)| *c == closer) {
-                Some(index) => {
-                    for (keyword, expected, span, _) in self
-                        .open
-                        .drain(index..)
-                        .skip(1)
-                        .collect::<Vec<_>>()
-                        .into_iter()
-                        .rev()
-                    {
-                        out.push(
-                            RULE.at(span)
-                                .message(format!(
-                                    "{keyword} is not closed before {closer} on line {}",
-                                    row + 1
-                                ))
-                                .label(format!("{keyword} opened here"))
-                                .help(format!("add {expected} before line {}", row + 1)),
-                        );
-                    }
-                }
-                None => out.push(
-                    RULE.at(statement.span)
-                        .message(format!("{closer} without its opening block"))
-                        .label("closes nothing")
-                        .help(format!("remove {closer}, or add the block it should close")),
-                ),
+        self.blocks.line(row, block, &mut |event| match event {
+            Event::Closed { .. } => {}
+            Event::LeftOpen { open, closer, row } => {
+                let keyword = open.opener.keyword();
+                out.push(
+                    RULE.at(open.span)
+                        .message(format!(
+                            "{keyword} is not closed before {closer} on line {}",
+                            row + 1
+                        ))
+                        .label(format!("{keyword} opened here"))
+                        .help(format!(
+                            "add {} before line {}",
+                            open.opener.closer(),
+                            row + 1
+                        )),
+                )
             }
-        }
+            Event::Stray { closer, span } => out.push(
+                RULE.at(span)
+                    .message(format!("{closer} without its opening block"))
+                    .label("closes nothing")
+                    .help(format!("remove {closer}, or add the block it should close")),
+            ),
+            Event::StrayElse { span } => out.push(
+                RULE.at(span)
+                    .message("ELSE without an open IF")
+                    .label("no IF to belong to")
+                    .help("add the IF, or remove the ELSE"),
+            ),
+        });
     }
 
     fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for (keyword, closer, span, _) in self.open.drain(..) {
+        for open in std::mem::take(&mut self.blocks).finish() {
+            let keyword = open.opener.keyword();
             out.push(
-                RULE.at(span)
+                RULE.at(open.span)
                     .message(format!("{keyword} is never closed"))
                     .label(format!("{keyword} opened here"))
-                    .help(format!("add {closer} where the block ends")),
+                    .help(format!("add {} where the block ends", open.opener.closer())),
             );
         }
     }

@@ -1,0 +1,406 @@
+//! The model of one program: what its lines define, name and jump to,
+//! learned in the one pass that parses them and read by every later pass
+//! (the linter's rules, the CYCLE600 walk, the rewrite).
+//!
+//! The pass is [`ModelBuilder`]'s: `check` drives it line by line, showing
+//! each line to its rules on the way; [`Model::build`] drives it alone. Plain
+//! lines (address words with numbers) are scanned, never parsed; the trees of
+//! the others are kept in the line table (up to [`crate::syntax::line_table::KEPT_TREES`]
+//! bytes of source), so no pass parses a line twice.
+
+use std::cell::OnceCell;
+use std::collections::HashSet;
+
+use crate::diagnostic::Diagnostic;
+use crate::semantic::labels::Labels;
+use crate::semantic::structure::Structure;
+use crate::span::Span;
+use crate::syntax::lines::RawLine;
+use crate::syntax::plain::{scanned_lines, PlainFacts, Scanned};
+use crate::syntax::tree::{
+    upper, Block, DataType, Line, LineKind, Statement, StatementKind, Variable, Word, WordValue,
+};
+use crate::syntax::visit::reads;
+use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
+
+/// A name a DEF or a PROC parameter list defines.
+#[derive(Clone, Debug)]
+pub struct Symbol {
+    /// Upper case.
+    pub name: String,
+    /// The name as it is written where it is defined.
+    pub span: Span,
+    /// 0-based.
+    pub row: usize,
+    pub data_type: DataType,
+    /// `NCK` or `CHAN` (a GUD variable); `None` for a local one.
+    pub global: bool,
+    pub parameter: bool,
+}
+
+/// The program, as every pass after the parse sees it.
+pub struct Model<'src> {
+    pub source: &'src [u8],
+    pub kind: ProgramKind,
+    /// Every line; the trees of those not plain.
+    pub lines: Lines<'src>,
+    /// Syntax errors, in line order.
+    pub syntax: Vec<Diagnostic>,
+    pub labels: Labels,
+    /// Defined names, in the order they are defined.
+    pub symbols: Vec<Symbol>,
+    /// Every name a statement reads (upper case), once.
+    pub read_names: HashSet<String>,
+    /// Lines with a STOPRE, in order.
+    pub stopre: Vec<usize>,
+    /// The first block that executes anything: (row, where its content starts).
+    pub first_executable: Option<(usize, usize)>,
+    /// Where the line of the last declaration before it ends.
+    pub declarations_end: Option<usize>,
+    structure: OnceCell<Structure>,
+}
+
+impl<'src> Model<'src> {
+    /// The model of `source`, its kind read from its first blocks.
+    pub fn of(source: &'src [u8]) -> Self {
+        Self::build(source, crate::syntax::program_kind(None, source))
+    }
+
+    /// The model of `source`, in a pass of its own.
+    pub fn build(source: &'src [u8], kind: ProgramKind) -> Self {
+        let mut builder = ModelBuilder::new(source);
+        for line in scanned_lines(source) {
+            match line {
+                Scanned::Plain(plain) => builder.plain(&line, &plain.facts()),
+                Scanned::Other(raw) => {
+                    let tree = builder.parse(&line, raw);
+                    builder.learn(&LineView::new(&tree));
+                    builder.keep(tree);
+                }
+            }
+        }
+        builder.finish(kind)
+    }
+
+    /// Where DEF lines added to the program go: after the last declaration
+    /// before the first executable block, else before that block, else at
+    /// the end.
+    pub fn declarations_insertion(&self) -> usize {
+        self.declarations_end
+            .or(self.first_executable.map(|(_, start)| start))
+            .unwrap_or(self.source.len())
+    }
+
+    /// The block structure the walk follows, built when first asked for.
+    pub(crate) fn structure(&self) -> &Structure {
+        self.structure.get_or_init(|| Structure::build(self))
+    }
+
+    /// The first variable whose name is `R<n>` for an `n` in `range`, read or
+    /// written anywhere.
+    pub fn first_r_parameter(&self, range: std::ops::Range<u32>) -> Option<(u32, Span)> {
+        for (_, line) in self.lines.other_lines() {
+            let LineKind::Block(block) = &line.kind else {
+                continue;
+            };
+            for statement in &block.statements {
+                let mut variables = reads(statement);
+                if let StatementKind::Assign(assign) = &statement.kind {
+                    variables.insert(0, &assign.target);
+                }
+                for variable in variables {
+                    let number = std::str::from_utf8(variable.name.text(self.source))
+                        .ok()
+                        .and_then(|t| t.strip_prefix(['R', 'r']))
+                        .and_then(|d| d.parse::<u32>().ok());
+                    if let Some(n) = number.filter(|n| range.contains(n)) {
+                        return Some((n, variable.span));
+                    }
+                }
+            }
+        }
+        None
+    }
+}
+
+/// Whether `statement` is STOPRE.
+pub fn is_stopre(source: &[u8], statement: &Statement) -> bool {
+    matches!(&statement.kind, StatementKind::Command(name) if name.is(source, "STOPRE"))
+}
+
+/// Whether `statement` only declares (it may stand before the first
+/// executable block, where DEF must be): DEF, PROC, REDEF, access levels,
+/// EXTERN, DEFINE.
+pub fn is_declaration(statement: &Statement) -> bool {
+    matches!(
+        statement.kind,
+        StatementKind::Def(_)
+            | StatementKind::Proc(_)
+            | StatementKind::Redef { .. }
+            | StatementKind::AccessLevels(_)
+            | StatementKind::Extern { .. }
+            | StatementKind::Define { .. }
+    )
+}
+
+/// One line as the rules and the model see it, with what each statement
+/// reads collected once: five rules need it, and walking every statement's
+/// expressions once per rule cost a tenth of `check`'s time.
+pub struct LineView<'l> {
+    pub raw: RawLine,
+    /// The block, when the line is one.
+    pub block: Option<&'l Block>,
+    /// Every statement is an address word with a number (`G1 X-12.5`): the
+    /// line defines, reads, calls and jumps nowhere. Most blocks of a CAM
+    /// program are such, and most rules have nothing to do there.
+    pub plain: bool,
+    /// (statement index, variable read), in statement order.
+    reads: Vec<(usize, &'l Variable)>,
+}
+
+impl<'l> LineView<'l> {
+    pub fn new(line: &'l Line) -> Self {
+        let block = match &line.kind {
+            LineKind::Block(block) => Some(block),
+            _ => None,
+        };
+        let mut all_reads = Vec::new();
+        let mut plain = true;
+        for (index, statement) in block.iter().flat_map(|b| b.statements.iter().enumerate()) {
+            if let StatementKind::Word(Word {
+                value: WordValue::Number(_),
+                ..
+            }) = statement.kind
+            {
+                continue;
+            }
+            plain = false;
+            all_reads.extend(
+                reads(statement)
+                    .into_iter()
+                    .map(|variable| (index, variable)),
+            );
+        }
+        Self {
+            raw: line.raw,
+            block,
+            plain,
+            reads: all_reads,
+        }
+    }
+
+    /// The variables statement `index` of the block reads (DEF initialisers
+    /// and indices included).
+    pub fn reads(&self, index: usize) -> impl Iterator<Item = &'l Variable> + '_ {
+        self.reads
+            .iter()
+            .filter(move |(i, _)| *i == index)
+            .map(|(_, variable)| *variable)
+    }
+}
+
+/// Builds a [`Model`] from the lines in order: each plain line passed with
+/// [`Self::plain`], each other one parsed by [`Self::parse`], learned from
+/// with [`Self::learn`] and kept with [`Self::keep`].
+pub struct ModelBuilder<'src> {
+    source: &'src [u8],
+    table: LinesRecorder,
+    parser: LineParser,
+    row: usize,
+    syntax: Vec<Diagnostic>,
+    labels: Labels,
+    symbols: Vec<Symbol>,
+    read_names: HashSet<String>,
+    stopre: Vec<usize>,
+    first_executable: Option<(usize, usize)>,
+    declarations_end: Option<usize>,
+}
+
+impl<'src> ModelBuilder<'src> {
+    pub fn new(source: &'src [u8]) -> Self {
+        Self {
+            source,
+            table: LinesRecorder::default(),
+            parser: LineParser::default(),
+            row: 0,
+            syntax: Vec::new(),
+            labels: Labels::default(),
+            symbols: Vec::new(),
+            read_names: HashSet::new(),
+            stopre: Vec::new(),
+            first_executable: None,
+            declarations_end: None,
+        }
+    }
+
+    /// The next line, a plain one: only its words matter.
+    pub fn plain(&mut self, line: &Scanned, facts: &PlainFacts) {
+        self.table.record(line);
+        self.parser.pass_plain_line();
+        if facts.has_words && self.first_executable.is_none() {
+            self.first_executable = Some((self.row, line.raw().content.start));
+        }
+        self.row += 1;
+    }
+
+    /// The next line, one that is not plain: its tree, its syntax error kept.
+    pub fn parse(&mut self, line: &Scanned, raw: RawLine) -> Line {
+        self.table.record(line);
+        let (tree, error) = self.parser.parse_line(self.source, raw);
+        self.syntax.extend(error);
+        self.row += 1;
+        tree
+    }
+
+    /// What the line just parsed defines, reads and marks.
+    pub fn learn(&mut self, view: &LineView) {
+        let row = self.row - 1;
+        let source = self.source;
+        let Some(block) = view.block else {
+            return;
+        };
+        if let Some(label) = block.label {
+            self.labels.record(source, row, label.span);
+        }
+        if block.statements.is_empty() {
+            return;
+        }
+        if self.first_executable.is_none() {
+            if block.statements.iter().all(is_declaration) {
+                self.declarations_end = Some(view.raw.full().end);
+            } else {
+                self.first_executable = Some((row, view.raw.content.start));
+            }
+        }
+        if view.plain {
+            return;
+        }
+        for (index, statement) in block.statements.iter().enumerate() {
+            self.read_names
+                .extend(view.reads(index).map(|v| upper(v.name.text(source))));
+            let symbol = |declarator: &crate::syntax::tree::Declarator,
+                          data_type: &DataType,
+                          global: bool,
+                          parameter: bool| Symbol {
+                name: upper(declarator.name.text(source)),
+                span: declarator.name.span,
+                row,
+                data_type: data_type.clone(),
+                global,
+                parameter,
+            };
+            match &statement.kind {
+                StatementKind::Def(def) => self.symbols.extend(
+                    def.variables
+                        .iter()
+                        .map(|d| symbol(d, &def.data_type, def.scope.is_some(), false)),
+                ),
+                StatementKind::Proc(proc) => self.symbols.extend(
+                    proc.parameters
+                        .iter()
+                        .map(|p| symbol(&p.declarator, &p.data_type, false, true)),
+                ),
+                _ if is_stopre(source, statement) => self.stopre.push(row),
+                _ => {}
+            }
+        }
+    }
+
+    /// Keeps the tree of the line just parsed for the passes after this one.
+    pub fn keep(&mut self, line: Line) {
+        self.table.keep(line);
+    }
+
+    pub fn finish(self, kind: ProgramKind) -> Model<'src> {
+        Model {
+            source: self.source,
+            kind,
+            lines: self.table.finish(self.source),
+            syntax: self.syntax,
+            labels: self.labels.sorted(),
+            symbols: self.symbols,
+            read_names: self.read_names,
+            stopre: self.stopre,
+            first_executable: self.first_executable,
+            declarations_end: self.declarations_end,
+            structure: OnceCell::new(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::tree::TypeKind;
+
+    const PROGRAM: &str = "PROC PART(REAL DEPTH)\nDEF REAL _X, COUNT\nEXTERN SUB(INT)\nDEF NCK INT LIMIT\nSTART:\nG0 X10\nSTOPRE\nR1=DEPTH+_X\nIF R1>0 GOTOB START\nM17\n";
+
+    #[test]
+    fn the_model_knows_symbols_labels_stopre_and_where_declarations_end() {
+        let model = Model::of(PROGRAM.as_bytes());
+        assert_eq!(model.kind, ProgramKind::Subprogram);
+        let symbols: Vec<(&str, usize, TypeKind, bool, bool)> = model
+            .symbols
+            .iter()
+            .map(|s| {
+                (
+                    s.name.as_str(),
+                    s.row,
+                    s.data_type.kind,
+                    s.global,
+                    s.parameter,
+                )
+            })
+            .collect();
+        assert_eq!(
+            symbols,
+            [
+                ("DEPTH", 0, TypeKind::Real, false, true),
+                ("_X", 1, TypeKind::Real, false, false),
+                ("COUNT", 1, TypeKind::Real, false, false),
+                ("LIMIT", 3, TypeKind::Int, true, false),
+            ]
+        );
+        assert_eq!(model.labels.rows("START").collect::<Vec<_>>(), [4]);
+        assert_eq!(model.stopre, [6]);
+        assert!(model.read_names.contains("DEPTH") && model.read_names.contains("_X"));
+        assert!(!model.read_names.contains("COUNT"));
+        // EXTERN declares, and a label alone executes nothing: added DEF lines go
+        // after the last DEF, and the first executable block is `G0 X10`.
+        let after_limit = PROGRAM.find("START:").expect("in the program");
+        assert_eq!(model.declarations_insertion(), after_limit);
+        assert_eq!(model.first_executable.map(|(row, _)| row), Some(5));
+        assert_eq!(model.first_r_parameter(1..2).map(|(n, _)| n), Some(1));
+        assert_eq!(model.first_r_parameter(2..10), None);
+        assert!(model.syntax.is_empty());
+    }
+
+    #[test]
+    fn without_declarations_they_go_before_the_first_executable_block_or_at_the_end() {
+        let model = Model::of(b"; a comment\nG1 X1 F100\nM30\n");
+        assert_eq!(model.declarations_insertion(), 12);
+        let model = Model::of(b"; only a comment\n");
+        assert_eq!(model.declarations_insertion(), 17);
+    }
+
+    proptest::proptest! {
+        /// Every tree the model gives back, kept or parsed again, is the one
+        /// a fresh parse of the whole program builds.
+        #[test]
+        fn the_kept_trees_are_the_parsed_ones(
+            lines in proptest::collection::vec(
+                "(N[0-9]{1,3} )?(G1 X[0-9]|R1=R2\\+1|DEF REAL A[0-9]|L[A-Z]: X1|IF R1==1 GOTOF LA|IF R1|ENDIF|; c|X=\\(|)",
+                0..40,
+            ),
+        ) {
+            let text = lines.join("\n");
+            let model = Model::of(text.as_bytes());
+            let program = crate::syntax::parse(text.as_bytes());
+            proptest::prop_assert_eq!(model.lines.len(), program.lines.len());
+            for (index, expected) in program.lines.iter().enumerate() {
+                proptest::prop_assert_eq!(&*model.lines.line(index), expected);
+            }
+            proptest::prop_assert_eq!(&model.syntax, &program.diagnostics);
+        }
+    }
+}
