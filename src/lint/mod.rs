@@ -120,13 +120,13 @@ pub fn check_with(
     };
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
-    let mut model = ModelBuilder::new(source);
+    let walk = crate::semantic::mentions_cycle600(source);
+    let mut model = ModelBuilder::new(source, walk);
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) => {
                 // No syntax error, and only a few rules care: no tree to build.
                 let facts = plain.facts();
-                model.plain(&line, &facts);
                 if let Some(comment) = plain.comment {
                     suppressions.read(source, row, comment);
                 }
@@ -136,13 +136,13 @@ pub fn check_with(
                     facts,
                 });
                 if plain_run.lines.len() == PlainRun::LINES {
-                    plain_run.give(&file, &mut checkers, &mut found);
+                    plain_run.give(&file, &mut model, &mut checkers, &mut found);
                 }
                 continue;
             }
             Scanned::Other(raw) => raw,
         };
-        plain_run.give(&file, &mut checkers, &mut found);
+        plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(&line, raw);
         if let LineKind::Block(block) = &tree.kind {
             if let Some(comment) = block.comment {
@@ -156,14 +156,14 @@ pub fn check_with(
         }
         model.keep(tree);
     }
-    plain_run.give(&file, &mut checkers, &mut found);
+    plain_run.give(&file, &mut model, &mut checkers, &mut found);
     file.complete(model.finish(kind));
     let model = file.model();
     found.extend(model.syntax.iter().cloned());
     for checker in &mut checkers {
         checker.finish(&file, &mut found);
     }
-    if crate::semantic::mentions_cycle600(source) {
+    if walk {
         found.extend(cycle600_findings(model, supplied, heads));
     }
 
@@ -195,12 +195,14 @@ impl PlainRun {
     fn give(
         &mut self,
         file: &FileContext,
+        model: &mut ModelBuilder,
         checkers: &mut [Box<dyn Check>],
         found: &mut Vec<Diagnostic>,
     ) {
         if self.lines.is_empty() {
             return;
         }
+        model.plain_lines(&self.lines);
         for &n in &self.watchers {
             checkers[n].plain_lines(file, &self.lines, found);
         }

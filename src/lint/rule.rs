@@ -6,10 +6,8 @@ use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::labels::Labels;
-pub use crate::semantic::model::LineView;
+pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::Model;
-use crate::syntax::lines::RawLine;
-use crate::syntax::plain::PlainFacts;
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at.
@@ -70,16 +68,6 @@ impl<'a> FileContext<'a> {
             crate::syntax::plain::block_numbers(self.source, &self.wanted_numbers.borrow())
         })
     }
-}
-
-/// A line [`crate::syntax::plain::is_plain`] accepts (most lines of a CAM
-/// program), as the rules see it without a tree: its words are address
-/// letters with numbers, which define, read, call and jump nowhere.
-pub struct PlainLine {
-    /// 0-based.
-    pub row: usize,
-    pub raw: RawLine,
-    pub facts: PlainFacts,
 }
 
 /// A checker: fed every line in order, then told the file is over. Rules

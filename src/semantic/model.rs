@@ -68,17 +68,25 @@ impl<'src> Model<'src> {
 
     /// The model of `source`, in a pass of its own.
     pub fn build(source: &'src [u8], kind: ProgramKind) -> Self {
-        let mut builder = ModelBuilder::new(source);
-        for line in scanned_lines(source) {
+        let mut builder = ModelBuilder::new(source, true);
+        let mut plain = Vec::new();
+        for (row, line) in scanned_lines(source).enumerate() {
             match line {
-                Scanned::Plain(plain) => builder.plain(&line, &plain.facts()),
+                Scanned::Plain(line) => plain.push(PlainLine {
+                    row,
+                    raw: line.raw,
+                    facts: line.facts(),
+                }),
                 Scanned::Other(raw) => {
+                    builder.plain_lines(&plain);
+                    plain.clear();
                     let tree = builder.parse(&line, raw);
                     builder.learn(&LineView::new(&tree));
                     builder.keep(tree);
                 }
             }
         }
+        builder.plain_lines(&plain);
         builder.finish(kind)
     }
 
@@ -199,11 +207,22 @@ impl<'l> LineView<'l> {
     }
 }
 
-/// Builds a [`Model`] from the lines in order: each plain line passed with
-/// [`Self::plain`], each other one parsed by [`Self::parse`], learned from
+/// A line [`crate::syntax::plain::is_plain`] accepts (most lines of a CAM
+/// program), as the rules see it without a tree: its words are address
+/// letters with numbers, which define, read, call and jump nowhere.
+pub struct PlainLine {
+    /// 0-based.
+    pub row: usize,
+    pub raw: RawLine,
+    pub facts: PlainFacts,
+}
+
+/// Builds a [`Model`] from the lines in order: each run of plain lines passed
+/// with [`Self::plain_lines`], each other line parsed by [`Self::parse`], learned from
 /// with [`Self::learn`] and kept with [`Self::keep`].
 pub struct ModelBuilder<'src> {
     source: &'src [u8],
+    keep_trees: bool,
     table: LinesRecorder,
     parser: LineParser,
     row: usize,
@@ -217,9 +236,12 @@ pub struct ModelBuilder<'src> {
 }
 
 impl<'src> ModelBuilder<'src> {
-    pub fn new(source: &'src [u8]) -> Self {
+    /// A builder that keeps the trees it is given ([`Self::keep`]) when
+    /// `keep_trees`: `check` keeps them only for the CYCLE600 walk.
+    pub fn new(source: &'src [u8], keep_trees: bool) -> Self {
         Self {
             source,
+            keep_trees,
             table: LinesRecorder::default(),
             parser: LineParser::default(),
             row: 0,
@@ -233,14 +255,19 @@ impl<'src> ModelBuilder<'src> {
         }
     }
 
-    /// The next line, a plain one: only its words matter.
-    pub fn plain(&mut self, line: &Scanned, facts: &PlainFacts) {
-        self.table.record(line);
-        self.parser.pass_plain_line();
-        if facts.has_words && self.first_executable.is_none() {
-            self.first_executable = Some((self.row, line.raw().content.start));
+    /// The next lines, plain ones: only their words matter. Taken a run at
+    /// a time, since a CAM program is millions of them.
+    pub fn plain_lines(&mut self, lines: &[PlainLine]) {
+        debug_assert!(lines.first().is_none_or(|line| line.row == self.row));
+        self.table
+            .record_plain_run(lines.len(), |n| lines[n].raw.content.start);
+        self.parser.pass_plain_lines(lines.len());
+        if self.first_executable.is_none() {
+            if let Some(line) = lines.iter().find(|line| line.facts.has_words) {
+                self.first_executable = Some((line.row, line.raw.content.start));
+            }
         }
-        self.row += 1;
+        self.row += lines.len();
     }
 
     /// The next line, one that is not plain: its tree, its syntax error kept.
@@ -306,9 +333,12 @@ impl<'src> ModelBuilder<'src> {
         }
     }
 
-    /// Keeps the tree of the line just parsed for the passes after this one.
+    /// Keeps the tree of the line just parsed for the passes after this one
+    /// (if the builder keeps trees; passes asking for a line not kept parse it).
     pub fn keep(&mut self, line: Line) {
-        self.table.keep(line);
+        if self.keep_trees {
+            self.table.keep(line);
+        }
     }
 
     pub fn finish(self, kind: ProgramKind) -> Model<'src> {

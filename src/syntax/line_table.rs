@@ -128,17 +128,45 @@ pub struct LinesRecorder {
 impl LinesRecorder {
     /// The next line, in order from the first.
     pub fn record(&mut self, line: &plain::Scanned) {
+        let start = line.raw().content.start;
+        if let plain::Scanned::Plain(_) = line {
+            return self.record_plain_run(1, |_| start);
+        }
         let index = self.len;
         if index.is_multiple_of(STRIDE) {
-            self.strided_starts.push(line.raw().content.start);
+            self.strided_starts.push(start);
         }
         if index.is_multiple_of(64) {
             self.plain.push(0);
         }
-        if let (plain::Scanned::Plain(_), Some(word)) = (line, self.plain.last_mut()) {
-            *word |= 1 << (index % 64);
-        }
         self.len += 1;
+    }
+
+    /// The next `count` lines, all plain, the start of the `n`th of them
+    /// given by `start_of(n)`: a run is recorded at a cost of a few words,
+    /// not of a few steps a line.
+    pub fn record_plain_run(&mut self, count: usize, start_of: impl Fn(usize) -> usize) {
+        let first = self.len;
+        let end = first + count;
+        let mut strided = first.next_multiple_of(STRIDE);
+        while strided < end {
+            self.strided_starts.push(start_of(strided - first));
+            strided += STRIDE;
+        }
+        self.plain.resize(end.div_ceil(64), 0);
+        let mut at = first;
+        while at < end {
+            let (word, bit) = (at / 64, at % 64);
+            let bits = (64 - bit).min(end - at);
+            let mask = if bits == 64 {
+                u64::MAX
+            } else {
+                ((1 << bits) - 1) << bit
+            };
+            self.plain[word] |= mask;
+            at += bits;
+        }
+        self.len = end;
     }
 
     /// Keeps the tree of the line recorded last, if it is not plain and the
@@ -179,7 +207,7 @@ mod tests {
         /// endings included, and so are their plain bits.
         #[test]
         fn the_line_table_gives_back_every_line(
-            text in "[aN1 ;\r\n]{0,60}|([aN1 X;]{0,6}(\r\n|\n|\r)){0,200}[aN1 ]{0,3}",
+            text in "[aN1 ;\r\n]{0,60}|([aN1 X;]{0,6}(\r\n|\n|\r)){0,200}[aN1 ]{0,3}|(X1\n){60,140}a\n(X1\n){0,70}",
             order in proptest::collection::vec(proptest::prelude::any::<usize>(), 0..300),
         ) {
             let source = text.as_bytes();
@@ -193,6 +221,24 @@ mod tests {
                 let plain = matches!(expected[index], plain::Scanned::Plain(_));
                 proptest::prop_assert_eq!(lines.is_plain(index), plain);
             }
+            // Plain lines recorded a run at a time make the same table.
+            let mut runs = LinesRecorder::default();
+            let mut run: Vec<usize> = Vec::new();
+            for line in &expected {
+                match line {
+                    plain::Scanned::Plain(p) => run.push(p.raw.content.start),
+                    other => {
+                        runs.record_plain_run(run.len(), |n| run[n]);
+                        run.clear();
+                        runs.record(other);
+                    }
+                }
+            }
+            runs.record_plain_run(run.len(), |n| run[n]);
+            let runs = runs.finish(source);
+            proptest::prop_assert_eq!(&runs.strided_starts, &lines.strided_starts);
+            proptest::prop_assert_eq!(&runs.plain, &lines.plain);
+            proptest::prop_assert_eq!(runs.len(), lines.len());
         }
     }
 }

@@ -115,8 +115,15 @@ struct OpenCall {
 impl LineParser {
     /// Steps over a line [`plain::is_plain`] accepts, as parsing it would.
     pub fn pass_plain_line(&mut self) {
-        self.row += 1;
-        self.open_call = None;
+        self.pass_plain_lines(1);
+    }
+
+    /// Steps over `count` lines [`plain::is_plain`] accepts.
+    pub fn pass_plain_lines(&mut self, count: usize) {
+        self.row += count;
+        if count > 0 {
+            self.open_call = None;
+        }
     }
 
     pub fn parse_line(&mut self, source: &[u8], raw: RawLine) -> (Line, Option<Diagnostic>) {
