@@ -7,6 +7,7 @@
 
 use std::borrow::Cow;
 
+use crate::edit::Edit;
 use crate::span::Span;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
@@ -39,6 +40,46 @@ pub struct Diagnostic {
     /// of findings, all held until they are sorted.
     pub label: Cow<'static, str>,
     pub help: Option<Cow<'static, str>>,
+    /// The edit that answers the finding, when one is known (boxed: most
+    /// findings have none).
+    pub fix: Option<Box<Fix>>,
+}
+
+/// Whether a fix may be applied without a person reading it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Applicability {
+    /// The program means what it meant: `check --fix` applies it.
+    Safe,
+    /// A guess at what was meant (a did-you-mean): applied only with
+    /// `--unsafe-fixes`, offered by an editor.
+    Unsafe,
+}
+
+/// Edits that answer a finding.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Fix {
+    /// What the fix does, as an editor's code action names it.
+    pub title: String,
+    pub applicability: Applicability,
+    /// Non-overlapping, in any order.
+    pub edits: Vec<Edit>,
+}
+
+impl Fix {
+    /// A fix that replaces `span` with `text`.
+    pub fn replace(
+        title: impl Into<String>,
+        applicability: Applicability,
+        span: Span,
+        text: impl Into<Vec<u8>>,
+    ) -> Self {
+        Self {
+            title: title.into(),
+            applicability,
+            edits: vec![Edit::replace(span, text)],
+        }
+    }
 }
 
 impl Diagnostic {
@@ -53,7 +94,13 @@ impl Diagnostic {
             span,
             label: Cow::Borrowed(""),
             help: None,
+            fix: None,
         }
+    }
+
+    pub fn fix(mut self, fix: Fix) -> Self {
+        self.fix = Some(Box::new(fix));
+        self
     }
 
     pub fn message(mut self, message: impl Into<String>) -> Self {

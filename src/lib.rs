@@ -10,7 +10,9 @@
 //!
 //! Modules:
 //! - [`span`]: byte ranges and their line/column positions.
-//! - [`diagnostic`]: the one diagnostic type for syntax errors, findings and refusals.
+//! - [`diagnostic`]: the one diagnostic type for syntax errors, findings and refusals,
+//!   with the fix a finding may carry.
+//! - [`edit`]: text edits (span, new bytes) and applying them.
 //! - [`registry`]: every rule's code, name, severity and docs below the linter; diagnostics are
 //!   built from them.
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
@@ -24,6 +26,7 @@
 
 pub mod cli;
 pub mod diagnostic;
+pub mod edit;
 pub mod emit;
 pub mod lint;
 pub mod registry;

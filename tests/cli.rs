@@ -391,3 +391,129 @@ fn convert_from_stdin_refuses_a_bad_line_without_partial_output() {
         assert!(stderr.contains(message), "{stderr}");
     }
 }
+
+/// A directory of its own for one test, emptied first.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("sinuprep-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    dir
+}
+
+const FIXABLE: &str =
+    "DEF REAL Depth\nR1=DEPTH+1 ; sinuprep: ignore N005, N016\nR2=DEPTHH\nGOTOF ENDE\nEND1:\nM30\n";
+
+#[test]
+fn check_fix_applies_the_safe_fixes_and_reports_what_remains() {
+    let dir = scratch("fix");
+    let path = dir.join("PART.MPF");
+    std::fs::write(&path, FIXABLE).expect("write");
+    let name = path.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "check", "--fix", "--select", "N,N015", "--format", "short", name,
+        ],
+        b"",
+    );
+    assert_exit(&output, 1);
+    let fixed = std::fs::read_to_string(&path).expect("read");
+    // N015 (capitals of the DEF) and N099 (the unused codes) are safe; the
+    // did-you-mean corrections are not.
+    assert_eq!(
+        fixed,
+        "DEF REAL Depth\nR1=Depth+1\nR2=DEPTHH\nGOTOF ENDE\nEND1:\nM30\n"
+    );
+    let report = stdout(&output);
+    assert!(
+        report.contains("N005") && report.contains("N001"),
+        "{report}"
+    );
+    assert!(
+        !report.contains("N099") && !report.contains("N015"),
+        "{report}"
+    );
+    assert!(String::from_utf8_lossy(&output.stderr).contains("fixed 3 findings"));
+
+    let output = run(
+        &[
+            "check",
+            "--fix",
+            "--unsafe-fixes",
+            "--format",
+            "short",
+            name,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert_eq!(
+        std::fs::read_to_string(&path).expect("read"),
+        "DEF REAL Depth\nR1=Depth+1\nR2=DEPTH\nGOTOF END1\nEND1:\nM30\n"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_fix_leaves_a_file_with_syntax_errors_and_refuses_stdin() {
+    let dir = scratch("fix-syntax");
+    let path = dir.join("PART.MPF");
+    let text = format!("{FIXABLE}IFF R1==1\n");
+    std::fs::write(&path, &text).expect("write");
+    let name = path.to_str().expect("utf-8");
+    let output = run(&["check", "--fix", "--unsafe-fixes", name], b"");
+    assert_exit(&output, 1);
+    assert_eq!(std::fs::read_to_string(&path).expect("read"), text);
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains("not fixed, because of its syntax errors")
+    );
+
+    let output = run(&["check", "--fix", "-"], FIXABLE.as_bytes());
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("standard input"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn json_findings_carry_their_fixes() {
+    let output = run(&["check", "--format", "json", "-"], FIXABLE.as_bytes());
+    let document: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let fixes: Vec<(String, String, String)> = document["files"][0]["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .filter(|d| !d["fix"].is_null())
+        .map(|d| {
+            let edit = &d["fix"]["edits"][0];
+            let (offset, length) = (
+                edit["offset"].as_u64().unwrap_or(0) as usize,
+                edit["length"].as_u64().unwrap_or(0) as usize,
+            );
+            (
+                d["code"].as_str().unwrap_or("").to_string(),
+                d["fix"]["applicability"].as_str().unwrap_or("").to_string(),
+                format!(
+                    "{} -> {}",
+                    &FIXABLE[offset..offset + length],
+                    edit["text"].as_str().unwrap_or("")
+                ),
+            )
+        })
+        .collect();
+    assert_eq!(
+        fixes,
+        [
+            (
+                "N099".into(),
+                "safe".into(),
+                " ; sinuprep: ignore N005, N016 -> ".into()
+            ),
+            (
+                "N099".into(),
+                "safe".into(),
+                " ; sinuprep: ignore N005, N016 -> ".into()
+            ),
+            ("N005".into(), "unsafe".into(), "DEPTHH -> DEPTH".into()),
+            ("N001".into(), "unsafe".into(), "ENDE -> END1".into()),
+        ]
+    );
+}

@@ -9,7 +9,7 @@ use std::path::Path;
 use sinuprep::cli::render::{human, short, FileReport};
 use sinuprep::lint::{self, Selection};
 use sinuprep::semantic::{Heads, Supplied};
-use sinuprep::syntax::program_kind;
+use sinuprep::syntax::{program_kind, ProgramKind};
 use support::{assert_exit, run, stdout};
 
 fn sample_heads() -> Heads {
@@ -314,5 +314,43 @@ proptest::proptest! {
     ) {
         let source = lines.join(&ending);
         assert_shortcut_agrees("RANDOM.MPF", source.as_bytes());
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+
+    /// Every fix, safe and unsafe, applied to random programs: the fixed
+    /// program has no more syntax errors than the original, and after the
+    /// safe fixes a second run finds nothing more to fix safely (safe fixes
+    /// never overlap: names in the code, directives in comments).
+    #[test]
+    fn fixes_answer_their_findings_and_break_nothing(
+        lines in proptest::collection::vec(proptest::prop_oneof![
+            "DEF REAL (Depth|DEPTH|Count)",
+            "R1=(DEPTH|depth|Count|COUNTT|DEPTHH)\\+1( ; sinuprep: ignore (N005|N016|N015)(, N00[0-9])?)?",
+            "GOTOF (ENDE|END1|END2)",
+            "(END1|ENDE):",
+            "IFF R1==1",
+            "; sinuprep: ignore-file N01[0-9]",
+            "G1 X1",
+            "M30",
+        ], 0..16),
+        ending in proptest::prop_oneof!["\n", "\r\n"],
+    ) {
+        let source = lines.join(&ending);
+        let select = Selection { select: vec!["N".into(), "S".into(), "N015".into()], ..Selection::default() };
+        let run = |bytes: &[u8]| lint::check(bytes, "RANDOM.MPF", ProgramKind::Main, &select, &Supplied::default(), None);
+        let before = run(source.as_bytes());
+        for unsafe_fixes in [false, true] {
+            let (edits, _) = lint::fix::applicable(&before, unsafe_fixes);
+            let fixed = sinuprep::edit::apply(source.as_bytes(), &edits);
+            proptest::prop_assert!(support::syntax_errors(&fixed).len() <= support::syntax_errors(source.as_bytes()).len());
+            if !unsafe_fixes {
+                let again = run(&fixed);
+                let (more, _) = lint::fix::applicable(&again, false);
+                proptest::prop_assert!(more.is_empty(), "{:?}", String::from_utf8_lossy(&fixed));
+            }
+        }
     }
 }

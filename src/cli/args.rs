@@ -60,6 +60,12 @@ pub struct CheckArgs {
     /// The name of the program read from stdin, for paths in reports, HEAD_DEF and sinuprep.toml lookup.
     #[arg(long, value_name = "NAME")]
     pub stdin_filename: Option<PathBuf>,
+    /// Apply the safe fixes to the files, each rewritten atomically (a file with syntax errors is left alone), then report what remains.
+    #[arg(long)]
+    pub fix: bool,
+    /// With --fix, apply the unsafe fixes too (did-you-mean corrections of names, labels and keywords).
+    #[arg(long, requires = "fix")]
+    pub unsafe_fixes: bool,
     #[command(flatten)]
     pub input: InputArgs,
 }

@@ -10,10 +10,12 @@ use crate::cli::analysis::Inputs;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::config::Config;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read};
+use crate::cli::input::{expand, read, Bytes, SourceFile};
+use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
 use crate::cli::{write_stdout, ExitStatus};
-use crate::diagnostic::Severity;
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::edit::apply;
 use crate::lint::{self, Selection};
 use crate::syntax::program_kind;
 
@@ -107,6 +109,8 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
 }
 
 fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, CliError> {
+    // Refused before anything is read: stdin, a FIFO, a device.
+    let fix_target = args.fix.then(|| in_place_target(path)).transpose()?;
     let mut file = read(path)?;
     // stdin with --stdin-filename: report and look things up as that file.
     let named = match (&args.stdin_filename, path == Path::new("-")) {
@@ -145,14 +149,23 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
             .map_or(Severity::Info, Severity::from),
     };
     let kind = program_kind(Some(&file.name), &file.bytes);
-    let diagnostics = lint::check(
-        &file.bytes,
-        &file.name,
-        kind,
-        &selection,
-        &inputs.supplied,
-        inputs.heads.as_ref(),
-    );
+    let check = |bytes: &[u8]| {
+        lint::check(
+            bytes,
+            &file.name,
+            kind,
+            &selection,
+            &inputs.supplied,
+            inputs.heads.as_ref(),
+        )
+    };
+    let mut diagnostics = check(&file.bytes);
+    if let Some(target) = fix_target {
+        if let Some(fixed) = fix(&target, &file, &diagnostics, args.unsafe_fixes)? {
+            diagnostics = check(&fixed);
+            file.bytes = Bytes::Read(fixed);
+        }
+    }
     let deny_warnings = args.deny_warnings || config.deny_warnings == Some(true);
     let fails = diagnostics.iter().any(|d| {
         d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
@@ -176,6 +189,30 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         report: Report::Text(text),
         fails,
     })
+}
+
+/// Applies the fixes `--fix` takes to `file` and writes it to `target`
+/// atomically: the fixed bytes, or `None` when there was nothing to fix or
+/// the file has syntax errors (its trees may not be what was meant).
+fn fix(
+    target: &Path,
+    file: &SourceFile,
+    diagnostics: &[Diagnostic],
+    unsafe_fixes: bool,
+) -> Result<Option<Vec<u8>>, CliError> {
+    let (edits, answered) = lint::fix::applicable(diagnostics, unsafe_fixes);
+    if edits.is_empty() {
+        return Ok(None);
+    }
+    if diagnostics.iter().any(|d| d.code.starts_with('S')) {
+        eprintln!("{}: not fixed, because of its syntax errors", file.name);
+        return Ok(None);
+    }
+    let fixed = apply(&file.bytes, &edits);
+    write_atomically(target, |out| out.write_all(&fixed), None)?;
+    let s = if answered == 1 { "" } else { "s" };
+    eprintln!("{}: fixed {answered} finding{s}", file.name);
+    Ok(Some(fixed))
 }
 
 /// `list` as rule codes: trimmed, upper case, each naming a rule or a family.

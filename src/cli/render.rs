@@ -8,7 +8,7 @@ use miette::{
     SourceCode, SourceSpan, SpanContents,
 };
 
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, Severity};
 use crate::span::{
     line_end, line_start, next_line_start, previous_line_end, LineIndex, Position, Span,
 };
@@ -244,6 +244,41 @@ struct JsonDiagnostic<'a> {
     end_location: Position,
     offset: usize,
     length: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fix: Option<JsonFix<'a>>,
+}
+
+#[derive(serde::Serialize)]
+struct JsonFix<'a> {
+    title: &'a str,
+    applicability: Applicability,
+    /// Byte offsets into the file as read; the text replaces `length` bytes.
+    edits: Vec<JsonEdit>,
+}
+
+#[derive(serde::Serialize)]
+struct JsonEdit {
+    offset: usize,
+    length: usize,
+    text: String,
+}
+
+impl<'a> JsonFix<'a> {
+    fn of(fix: &'a Fix) -> Self {
+        Self {
+            title: &fix.title,
+            applicability: fix.applicability,
+            edits: fix
+                .edits
+                .iter()
+                .map(|edit| JsonEdit {
+                    offset: edit.span.start,
+                    length: edit.span.len(),
+                    text: String::from_utf8_lossy(&edit.text).into_owned(),
+                })
+                .collect(),
+        }
+    }
 }
 
 /// One file's diagnostics with their start and end positions: what the
@@ -277,6 +312,13 @@ impl Located {
     }
 }
 
+fn applicability(applicability: Applicability) -> &'static str {
+    match applicability {
+        Applicability::Safe => "safe",
+        Applicability::Unsafe => "unsafe",
+    }
+}
+
 /// One JSON document for all files.
 pub fn json(reports: &[Located]) -> String {
     let files = reports
@@ -294,6 +336,7 @@ pub fn json(reports: &[Located]) -> String {
                     end_location: end,
                     offset: d.span.start,
                     length: d.span.len(),
+                    fix: d.fix.as_deref().map(JsonFix::of),
                 })
                 .collect();
             JsonFile {
@@ -369,18 +412,35 @@ pub fn sarif(reports: &[Located]) -> String {
         .collect();
     let mut results = Vec::new();
     for report in reports {
+        let uri = report.name.replace('\\', "/");
         for (d, start, end) in report.each() {
-            results.push(serde_json::json!({
+            let mut result = serde_json::json!({
                 "ruleId": d.code,
                 "level": level(d.severity),
                 "message": { "text": match &d.help { Some(help) => format!("{} ({help})", d.message), None => d.message.clone() } },
                 "locations": [{
                     "physicalLocation": {
-                        "artifactLocation": { "uri": report.name.replace('\\', "/") },
+                        "artifactLocation": { "uri": uri },
                         "region": { "startLine": start.row, "startColumn": start.column, "endLine": end.row, "endColumn": end.column, "byteOffset": d.span.start, "byteLength": d.span.len() }
                     }
                 }],
-            }));
+            });
+            if let Some(fix) = &d.fix {
+                // SARIF's own fix object: byte regions replaced by text.
+                let replacements: Vec<_> = fix
+                    .edits
+                    .iter()
+                    .map(|edit| serde_json::json!({
+                        "deletedRegion": { "byteOffset": edit.span.start, "byteLength": edit.span.len() },
+                        "insertedContent": { "text": String::from_utf8_lossy(&edit.text) }
+                    }))
+                    .collect();
+                result["fixes"] = serde_json::json!([{
+                    "description": { "text": format!("{} ({})", fix.title, applicability(fix.applicability)) },
+                    "artifactChanges": [{ "artifactLocation": { "uri": uri }, "replacements": replacements }]
+                }]);
+            }
+            results.push(result);
         }
     }
     let document = serde_json::json!({

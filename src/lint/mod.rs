@@ -10,6 +10,7 @@
 //! runs on it without parsing again. It reports diagnostics; printing them is the CLI's job.
 
 pub mod codes;
+pub mod fix;
 pub mod rule;
 pub mod rules;
 pub mod suppression;
@@ -174,7 +175,7 @@ pub fn check_with(
         .filter(|d| !suppressions.covers(d, || index.position(d.span.start).row - 1))
         .collect();
     if selection.enables("N099") && Severity::Info >= selection.severity_min {
-        kept.extend(suppressions.unused(|code| selection.enables(code)));
+        kept.extend(suppressions.unused(source, |code| selection.enables(code)));
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
     kept

@@ -4,7 +4,7 @@
 //! that covers nothing is reported (N099), as is a misspelt directive
 //! (`ignor`) or a code that names no rule.
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Applicability, Diagnostic, Fix};
 use crate::lint::rules::unused_suppression;
 use crate::span::Span;
 use crate::syntax::lexer::find_ignoring_case;
@@ -15,11 +15,25 @@ struct Suppression {
     code: String,
     span: Span,
     used: bool,
+    /// Index of its directive in [`Suppressions::directives`].
+    directive: usize,
+}
+
+/// One `sinuprep: ignore ...` text, for the fix that drops codes from it.
+struct Directive {
+    comment: Span,
+    /// From `sinuprep:` to the end of its last code.
+    span: Span,
+    /// `ignore` or `ignore-file`.
+    word: String,
+    /// It names a code no rule has: no fix is offered to rewrite it.
+    broken: bool,
 }
 
 #[derive(Default)]
 pub struct Suppressions {
     list: Vec<Suppression>,
+    directives: Vec<Directive>,
     /// Suppressions that cannot work: what is wrong, where, and the fix.
     broken: Vec<(Span, String, String)>,
 }
@@ -69,6 +83,13 @@ impl Suppressions {
             }
         };
         position += word_length;
+        let directive = self.directives.len();
+        self.directives.push(Directive {
+            comment,
+            span: Span::new(comment.start + at, comment.start + position),
+            word: word.clone(),
+            broken: false,
+        });
         // Codes: ASCII letters and digits, separated by commas and blanks.
         loop {
             while text
@@ -98,6 +119,8 @@ impl Suppressions {
                     help,
                 ));
                 position += length;
+                self.directives[directive].broken = true;
+                self.directives[directive].span.end = start + length;
                 continue;
             }
             self.list.push(Suppression {
@@ -105,8 +128,10 @@ impl Suppressions {
                 code,
                 span: Span::new(start, start + length),
                 used: false,
+                directive,
             });
             position += length;
+            self.directives[directive].span.end = start + length;
         }
     }
 
@@ -132,21 +157,26 @@ impl Suppressions {
     /// (one for a rule not checked now may well be needed).
     pub fn unused<'a>(
         &'a self,
-        enabled: impl Fn(&str) -> bool + 'a,
+        source: &'a [u8],
+        enabled: impl Fn(&str) -> bool + Copy + 'a,
     ) -> impl Iterator<Item = Diagnostic> + 'a {
         let unused = self
             .list
             .iter()
             .filter(move |s| !s.used && enabled(&s.code))
-            .map(|s| {
-                unused_suppression::RULE
+            .map(move |s| {
+                let diagnostic = unused_suppression::RULE
                     .at(s.span)
                     .message(format!(
                         "`; sinuprep: ignore {}` suppresses nothing here",
                         s.code
                     ))
                     .label("nothing to suppress")
-                    .help("remove it")
+                    .help("remove it");
+                match self.without_unused(source, s.directive, enabled) {
+                    Some(fix) => diagnostic.fix(fix),
+                    None => diagnostic,
+                }
             });
         let broken = self.broken.iter().map(|(span, message, help)| {
             unused_suppression::RULE
@@ -156,5 +186,61 @@ impl Suppressions {
                 .help(help.clone())
         });
         unused.chain(broken)
+    }
+}
+
+impl Suppressions {
+    /// The fix that rewrites directive `index` without the codes that
+    /// suppress nothing (kept: those used, and those of rules not checked
+    /// now), or removes it when none is left. Every unused code of one
+    /// directive gets the same fix, applied once.
+    fn without_unused(
+        &self,
+        source: &[u8],
+        index: usize,
+        enabled: impl Fn(&str) -> bool,
+    ) -> Option<Fix> {
+        let directive = &self.directives[index];
+        if directive.broken {
+            return None;
+        }
+        let kept: Vec<&str> = self
+            .list
+            .iter()
+            .filter(|s| s.directive == index && (s.used || !enabled(&s.code)))
+            .map(|s| s.code.as_str())
+            .collect();
+        if !kept.is_empty() {
+            let text = format!("sinuprep: {} {}", directive.word, kept.join(", "));
+            return Some(Fix::replace(
+                "remove the codes that suppress nothing",
+                Applicability::Safe,
+                directive.span,
+                text,
+            ));
+        }
+        // A comment that is only the directive goes, with the blanks before it.
+        let comment = directive.comment;
+        let before = &source[comment.start..directive.span.start];
+        let after = &source[directive.span.end..comment.end];
+        let alone = before.first() == Some(&b';')
+            && before[1..].iter().all(|b| matches!(b, b' ' | b'\t'))
+            && after.iter().all(|b| matches!(b, b' ' | b'\t'));
+        let span = if alone {
+            let blanks = source[..comment.start]
+                .iter()
+                .rev()
+                .take_while(|b| matches!(b, b' ' | b'\t'))
+                .count();
+            Span::new(comment.start - blanks, comment.end)
+        } else {
+            directive.span
+        };
+        Some(Fix::replace(
+            "remove the suppression",
+            Applicability::Safe,
+            span,
+            "",
+        ))
     }
 }

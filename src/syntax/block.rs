@@ -120,13 +120,14 @@ const KEYWORDS_WITH_OPERANDS: [&str; 20] = [
 ];
 
 /// The keyword a broken block's first word was probably meant to be.
-fn misspelt_keyword(line: &Input, block: &Block) -> Option<&'static str> {
+fn misspelt_keyword(line: &Input, block: &Block) -> Option<(&'static str, crate::span::Span)> {
     let StatementKind::Command(name) = &block.statements.first()?.kind else {
         return None;
     };
     let word = std::str::from_utf8(text_in(line, name.span)).ok()?;
     let most = if word.len() <= 4 { 1 } else { 2 };
-    crate::suggest::closest(word, &KEYWORDS_WITH_OPERANDS, most).copied()
+    let keyword = crate::suggest::closest(word, &KEYWORDS_WITH_OPERANDS, most)?;
+    Some((keyword, name.span))
 }
 
 /// Statements that stand alone in their block (Siemens, Job Planning,

@@ -2,7 +2,7 @@
 //! diagnostic at the offending bytes, with what was expected, what was found
 //! and how to fix it.
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Applicability, Diagnostic, Fix};
 use crate::registry;
 use crate::span::Span;
 use crate::syntax::expr;
@@ -13,9 +13,16 @@ use crate::syntax::lines::RawLine;
 pub(crate) fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
     let diagnostic = describe(source, raw, error);
     match error.meant {
-        Some(keyword) => diagnostic.help(format!(
-            "did you mean `{keyword}`? The block's first word is no keyword, so it reads as a subprogram call"
-        )),
+        Some((keyword, word)) => diagnostic
+            .help(format!(
+                "did you mean `{keyword}`? The block's first word is no keyword, so it reads as a subprogram call"
+            ))
+            .fix(Fix::replace(
+                format!("write `{keyword}`"),
+                Applicability::Unsafe,
+                word,
+                keyword,
+            )),
         None => diagnostic,
     }
 }

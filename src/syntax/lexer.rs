@@ -20,8 +20,9 @@ pub type PResult<'a, T> = IResult<Input<'a>, T, SyntaxError>;
 pub struct SyntaxError {
     pub at: usize,
     pub kind: SyntaxErrorKind,
-    /// A keyword the block's first word looks like: `IFF R1==1` was meant as `IF`.
-    pub meant: Option<&'static str>,
+    /// A keyword the block's first word looks like, and that word's span:
+    /// `IFF R1==1` was meant as `IF`.
+    pub meant: Option<(&'static str, Span)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::syntax::tree::StatementKind;
 
@@ -25,7 +25,7 @@ N10 LAYER_HEIGHT=2.5
 ```
 
 ## Fix
-Write the name as it is defined."#,
+Write the name as it is defined. `check --fix` does it (a safe fix: the control ignores case)."#,
 };
 
 #[derive(Default)]
@@ -62,11 +62,18 @@ impl Check for Checker {
                 let text = String::from_utf8_lossy(variable.name.span.of(file.source));
                 if let Some(defined) = self.spelling.get(&text.to_ascii_uppercase()) {
                     if *defined != text {
+                        // The control ignores case: the fix changes nothing it runs.
                         out.push(
                             RULE.at(variable.name.span)
                                 .message(format!("`{text}` is defined as `{defined}`"))
                                 .label("other capitals")
-                                .help(format!("write `{defined}`")),
+                                .help(format!("write `{defined}`"))
+                                .fix(Fix::replace(
+                                    format!("write `{defined}`"),
+                                    Applicability::Safe,
+                                    variable.name.span,
+                                    defined.as_bytes(),
+                                )),
                         );
                     }
                 }

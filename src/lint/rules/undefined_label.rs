@@ -1,6 +1,6 @@
 //! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
 
-use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::span::Span;
@@ -25,7 +25,8 @@ N20 ENDE: M30      ; label is ENDE, the jump says ENDE... in another file it say
 ```
 
 ## Fix
-Correct the label's spelling (the help suggests the nearest existing label) or add the label."#,
+Correct the label's spelling (the help suggests the nearest existing label) or add the label.
+The nearest label is offered as an unsafe fix (`check --fix --unsafe-fixes`): it is a guess."#,
 };
 
 /// The labels are the file's ([`FileContext::labels`]).
@@ -71,7 +72,8 @@ impl Check for Checker {
             }
             let wanted = target.to_string();
             let names: Vec<_> = file.labels().names().collect();
-            let help = match closest(&wanted, &names, 2) {
+            let meant = closest(&wanted, &names, 2);
+            let help = match meant {
                 Some(label) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
                 None => format!("add the label `{wanted}:` where the jump should land, or correct the jump"),
             };
@@ -82,6 +84,14 @@ impl Check for Checker {
                 ))
                 .label("no such label")
                 .help(help);
+            if let Some(label) = meant {
+                diagnostic = diagnostic.fix(Fix::replace(
+                    format!("jump to `{label}`"),
+                    Applicability::Unsafe,
+                    *span,
+                    label.as_bytes(),
+                ));
+            }
             if *tolerant {
                 diagnostic.severity = Severity::Warning;
                 diagnostic

@@ -2,9 +2,11 @@
 
 use std::collections::HashSet;
 
-use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
+use crate::span::Span;
+use crate::suggest::closest;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -26,7 +28,9 @@ N10 Z=IC(LAYER_HIGHT)   ; typo
 
 ## Fix
 Declare the variable with DEF (or correct its spelling). Names of R parameters, system variables
-(`$...`), cycle data (`_...`) and one-letter addresses are not checked."#,
+(`$...`), cycle data (`_...`) and one-letter addresses are not checked. A name defined before it
+within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
+unsafe fix (`check --fix --unsafe-fixes`)."#,
 };
 
 #[derive(Default)]
@@ -53,12 +57,7 @@ impl Check for Checker {
                     && !self.defined.contains(&name)
                     && self.reported.insert(name.clone())
                 {
-                    out.push(
-                        RULE.at(variable.name.span)
-                            .message(format!("`{name}` is read before any DEF or assignment"))
-                            .label("not defined yet")
-                            .help(format!("declare it, as `DEF REAL {name}`, before this block (or it must be a global defined elsewhere)")),
-                    );
+                    out.push(self.undefined(name, variable.name.span));
                 }
             }
             match &statement.kind {
@@ -81,6 +80,29 @@ impl Check for Checker {
                 }
                 _ => {}
             }
+        }
+    }
+}
+
+impl Checker {
+    /// The finding for `name` at `span`, with the defined name it may have
+    /// been meant as (`DEPTHH` for a defined `DEPTH`).
+    fn undefined(&self, name: String, span: Span) -> Diagnostic {
+        let most = if name.len() <= 4 { 1 } else { 2 };
+        let diagnostic = RULE
+            .at(span)
+            .message(format!("`{name}` is read before any DEF or assignment"))
+            .label("not defined yet");
+        match closest(&name, &self.defined, most) {
+            Some(meant) => diagnostic
+                .help(format!("did you mean `{meant}`? Otherwise declare it, as `DEF REAL {name}`, before this block"))
+                .fix(Fix::replace(
+                    format!("write `{meant}`"),
+                    Applicability::Unsafe,
+                    span,
+                    meant.as_bytes(),
+                )),
+            None => diagnostic.help(format!("declare it, as `DEF REAL {name}`, before this block (or it must be a global defined elsewhere)")),
         }
     }
 }

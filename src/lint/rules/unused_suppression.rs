@@ -23,5 +23,7 @@ N20 X=UNDEFINED_NAME ; sinuprep: ignor N005
 ```
 
 ## Fix
-Remove the suppression (or the code from its list), or correct its spelling."#,
+Remove the suppression (or the code from its list), or correct its spelling. `check --fix` removes
+the codes that suppress nothing (a safe fix; codes of rules not checked in the run are kept), and
+the comment when it held only the suppression."#,
 };
