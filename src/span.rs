@@ -47,18 +47,33 @@ impl std::fmt::Debug for Span {
     }
 }
 
-/// A 1-based position: `row` is the line, `column` counts characters.
+/// A 1-based position: `row` is the line, `column` counts characters (or the
+/// unit [`LineIndex::position_in`] is asked for).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Position {
     pub row: usize,
     pub column: usize,
 }
 
-/// Maps byte offsets to rows and columns.
+/// What a column counts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColumnUnit {
+    /// Characters (Unicode scalar values): what people, miette, SARIF and
+    /// the JSON output count.
+    CodePoints,
+    /// UTF-16 code units: what the Language Server Protocol counts by
+    /// default (a character beyond the Basic Multilingual Plane is two).
+    Utf16,
+    Bytes,
+}
+
+/// Maps byte offsets to rows and columns, and back.
 ///
 /// Columns count characters: UTF-8 scalar values when the whole file is valid
-/// UTF-8, otherwise bytes (the file is read as Latin-1 / Windows-1252, where one
-/// byte is one character). Tabs count as one column.
+/// UTF-8, otherwise bytes. A file that is not UTF-8 is in a single-byte code
+/// page (Latin-1, Windows-1252, Windows-1251 on Russian controls), where
+/// every byte is one character of the Basic Multilingual Plane: one code
+/// point and one UTF-16 unit, whichever the page. Tabs count as one column.
 pub struct LineIndex<'a> {
     source: &'a [u8],
     /// The line ends before each `BLOCK`-byte block: a row is found by
@@ -97,22 +112,90 @@ impl<'a> LineIndex<'a> {
         rows[block]
     }
 
+    /// The position of `offset`, its column in characters.
     pub fn position(&self, offset: usize) -> Position {
+        self.position_in(offset, ColumnUnit::CodePoints)
+    }
+
+    /// The position of `offset`, its column in `unit`.
+    pub fn position_in(&self, offset: usize, unit: ColumnUnit) -> Position {
         let offset = offset.min(self.source.len());
         let block = offset / BLOCK;
         let row = self.rows_before(block) + line_ends(self.source, block * BLOCK..offset);
         let before = &self.source[line_start(self.source, offset)..offset];
-        // Only a line with other bytes than ASCII asks how the file is
-        // encoded: the question reads the whole file.
-        let column = if before.is_ascii() || !self.is_utf8() {
-            before.len()
-        } else {
-            before.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
-        };
         Position {
             row: row + 1,
-            column: column + 1,
+            column: self.width(before, unit) + 1,
         }
+    }
+
+    /// The byte offset of `position` (its column in `unit`): the inverse of
+    /// [`Self::position_in`]. A column past the end of its line is the
+    /// line's end; a row past the last line is the end of the file; a column
+    /// inside a UTF-8 sequence or a UTF-16 pair is the character's start.
+    pub fn offset_of(&self, position: Position, unit: ColumnUnit) -> usize {
+        let start = self.row_start(position.row.saturating_sub(1));
+        let end = line_end(self.source, start);
+        let wanted = position.column.saturating_sub(1);
+        let mut at = start;
+        let mut column = 0;
+        while at < end {
+            let width = self.width(&self.source[at..at + self.char_len(at)], unit);
+            if column + width > wanted {
+                break;
+            }
+            column += width;
+            at += self.char_len(at);
+        }
+        at
+    }
+
+    /// The columns `bytes` (a part of one line) take in `unit`.
+    fn width(&self, bytes: &[u8], unit: ColumnUnit) -> usize {
+        // Only a line with other bytes than ASCII asks how the file is
+        // encoded: the question reads the whole file.
+        if unit == ColumnUnit::Bytes || bytes.is_ascii() || !self.is_utf8() {
+            return bytes.len();
+        }
+        let starts = bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count();
+        match unit {
+            ColumnUnit::Utf16 => starts + bytes.iter().filter(|&&b| b >= 0xF0).count(),
+            _ => starts,
+        }
+    }
+
+    /// The length in bytes of the character at `at`.
+    fn char_len(&self, at: usize) -> usize {
+        let lead = self.source[at];
+        if lead < 0x80 || !self.is_utf8() {
+            return 1;
+        }
+        match lead {
+            0xF0.. => 4,
+            0xE0.. => 3,
+            _ => 2,
+        }
+    }
+
+    /// Where 0-based line `row` starts (the end of the file past the last).
+    fn row_start(&self, row: usize) -> usize {
+        if row == 0 {
+            return 0;
+        }
+        let blocks = self.source.len().div_ceil(BLOCK);
+        self.rows_before(blocks);
+        // The block holding the end of line `row - 1`.
+        let rows = self.rows_before_block.borrow();
+        let block = rows[..=blocks]
+            .partition_point(|&before| before < row)
+            .saturating_sub(1);
+        let (mut at, mut seen) = (block * BLOCK, rows[block]);
+        drop(rows);
+        while seen < row && at < self.source.len() {
+            at = next_line_start(self.source, line_end(self.source, at));
+            seen += 1;
+        }
+        at.min(self.source.len())
     }
 }
 
@@ -242,6 +325,68 @@ mod tests {
             let row = starts.iter().filter(|&&s| s <= offset).count();
             let column = offset - starts[row - 1] + 1;
             proptest::prop_assert_eq!(LineIndex::new(source).position(offset), Position { row, column });
+        }
+    }
+
+    #[test]
+    fn columns_in_every_unit_and_back() {
+        // `ä` is 2 bytes, one UTF-16 unit; `𝛼` 4 bytes, two units.
+        let source = "X=1\näY=\"𝛼\" Z\r\nW".as_bytes();
+        let index = LineIndex::new(source);
+        let z = source.iter().position(|&b| b == b'Z').expect("Z");
+        let at = |unit| index.position_in(z, unit);
+        assert_eq!(at(ColumnUnit::CodePoints), Position { row: 2, column: 8 });
+        assert_eq!(at(ColumnUnit::Utf16), Position { row: 2, column: 9 });
+        assert_eq!(at(ColumnUnit::Bytes), Position { row: 2, column: 12 });
+        for unit in [ColumnUnit::CodePoints, ColumnUnit::Utf16, ColumnUnit::Bytes] {
+            assert_eq!(index.offset_of(at(unit), unit), z, "{unit:?}");
+        }
+        // Past the line's end, past the last line, inside a pair.
+        assert_eq!(
+            index.offset_of(Position { row: 1, column: 40 }, ColumnUnit::Utf16),
+            3
+        );
+        assert_eq!(
+            index.offset_of(Position { row: 9, column: 1 }, ColumnUnit::Utf16),
+            source.len()
+        );
+        let alpha = z - 6;
+        assert_eq!(
+            index.offset_of(Position { row: 2, column: 6 }, ColumnUnit::Utf16),
+            alpha
+        );
+        let latin1 = LineIndex::new(b"\xe4\xe4=1");
+        assert_eq!(latin1.position_in(2, ColumnUnit::Utf16).column, 3);
+        assert_eq!(
+            latin1.offset_of(Position { row: 1, column: 3 }, ColumnUnit::Utf16),
+            2
+        );
+    }
+
+    proptest::proptest! {
+        /// Every character start maps to a position and back, in every
+        /// unit, over texts across several blocks.
+        #[test]
+        fn offsets_and_positions_are_inverse(
+            text in "([aä𝛼 ]{0,30}(\r\n|\n|\r)){0,400}",
+            picks in proptest::collection::vec(0usize..20_000, 1..20),
+        ) {
+            let source = text.as_bytes();
+            let index = LineIndex::new(source);
+            for pick in picks {
+                let mut offset = pick.min(source.len());
+                while offset < source.len() && source[offset] & 0xC0 == 0x80 {
+                    offset += 1;
+                }
+                // A CRLF's LF is not a character start of its own line's text.
+                if offset > 0 && source.get(offset) == Some(&b'\n') && source[offset - 1] == b'\r' {
+                    offset -= 1;
+                }
+                for unit in [ColumnUnit::CodePoints, ColumnUnit::Utf16, ColumnUnit::Bytes] {
+                    let position = index.position_in(offset, unit);
+                    proptest::prop_assert_eq!(index.offset_of(position, unit), offset);
+                }
+            }
         }
     }
 
