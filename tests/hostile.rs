@@ -5,7 +5,7 @@ mod support;
 
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Options};
-use sinuprep::lint::{self, Selection};
+use sinuprep::lint;
 use sinuprep::semantic::{analyze, Heads, Model, Supplied};
 use sinuprep::syntax::{parse, program_kind};
 use support::{assert_exit, run};
@@ -18,14 +18,11 @@ fn survive(name: &str, source: &[u8]) -> Vec<&'static str> {
         "HEAD_DEF".into(),
         b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
     );
-    let findings = lint::check(
-        source,
-        name,
-        program_kind(Some(name), source),
-        &Selection::default(),
-        &Supplied::default(),
-        Some(&heads),
-    );
+    let settings = lint::Settings {
+        heads: Some(heads.clone()),
+        ..lint::Settings::default()
+    };
+    let findings = lint::check(source, name, program_kind(Some(name), source), &settings);
     for finding in &findings {
         assert!(
             finding.span.end <= source.len(),

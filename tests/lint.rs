@@ -8,7 +8,7 @@ use std::path::Path;
 
 use sinuprep::cli::render::{human, short, FileReport};
 use sinuprep::lint::{self, Selection};
-use sinuprep::semantic::{Heads, Supplied};
+use sinuprep::semantic::Heads;
 use sinuprep::syntax::{program_kind, ProgramKind};
 use support::{assert_exit, run, stdout};
 
@@ -29,18 +29,15 @@ fn lint_fixture(path: &Path) {
     } else {
         vec![code.to_string()]
     };
-    let selection = Selection {
-        select,
-        ..Selection::default()
+    let settings = lint::Settings {
+        selection: Selection {
+            select,
+            ..Selection::default()
+        },
+        heads,
+        ..lint::Settings::default()
     };
-    let diagnostics = lint::check(
-        &source,
-        name,
-        program_kind(Some(name), &source),
-        &selection,
-        &Supplied::default(),
-        heads.as_ref(),
-    );
+    let diagnostics = lint::check(&source, name, program_kind(Some(name), &source), &settings);
     let fired = diagnostics.iter().any(|d| d.code == code);
     let diagnostics: Vec<_> = diagnostics.into_iter().filter(|d| d.code == code).collect();
     assert_eq!(fired, triggers, "{name}: {diagnostics:#?}");
@@ -247,6 +244,20 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
     );
     assert_exit(&output, 1);
     assert!(stdout(&output).starts_with(stdin_name));
+    // The machine's axis names are no undefined variables.
+    std::fs::write(&program, "N10 POS[XC]=10 FA[AX1]=500\nN20 M30\n").expect("program");
+    let args = [
+        "check",
+        "--format",
+        "short",
+        "--select",
+        "N005",
+        program.to_str().expect("utf-8"),
+    ];
+    assert!(stdout(&run(&args, b"")).contains("`XC` is read before any DEF"));
+    std::fs::write(dir.join("sinuprep.toml"), "axes = [\"xc\", \"AX1\"]\n").expect("config");
+    let output = run(&args, b"");
+    assert_exit(&output, 0);
     std::fs::write(dir.join("sinuprep.toml"), "selct = [\"N\"]\n").expect("config");
     let output = run(&["check", program.to_str().expect("utf-8")], b"");
     assert_exit(&output, 2);
@@ -256,21 +267,14 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
 
 /// `check` against `check` parsing every line, all rules on.
 fn assert_shortcut_agrees(name: &str, source: &[u8]) {
-    let heads = sample_heads();
     let kind = program_kind(Some(name), source);
-    let selection = Selection::default();
-    let supplied = Supplied::default();
-    let fast = lint::check(source, name, kind, &selection, &supplied, Some(&heads));
+    let settings = lint::Settings {
+        heads: Some(sample_heads()),
+        ..lint::Settings::default()
+    };
+    let fast = lint::check(source, name, kind, &settings);
     let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
-    let reference = lint::check_with(
-        every_line,
-        source,
-        name,
-        kind,
-        &selection,
-        &supplied,
-        Some(&heads),
-    );
+    let reference = lint::check_with(every_line, source, name, kind, &settings);
     assert_eq!(fast, reference, "{name}");
 }
 
@@ -339,8 +343,11 @@ proptest::proptest! {
         ending in proptest::prop_oneof!["\n", "\r\n"],
     ) {
         let source = lines.join(&ending);
-        let select = Selection { select: vec!["N".into(), "S".into(), "N015".into()], ..Selection::default() };
-        let run = |bytes: &[u8]| lint::check(bytes, "RANDOM.MPF", ProgramKind::Main, &select, &Supplied::default(), None);
+        let settings = lint::Settings {
+            selection: Selection { select: vec!["N".into(), "S".into(), "N015".into()], ..Selection::default() },
+            ..lint::Settings::default()
+        };
+        let run = |bytes: &[u8]| lint::check(bytes, "RANDOM.MPF", ProgramKind::Main, &settings);
         let before = run(source.as_bytes());
         for unsafe_fixes in [false, true] {
             let (edits, _) = lint::fix::applicable(&before, unsafe_fixes);

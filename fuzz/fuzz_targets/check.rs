@@ -7,9 +7,9 @@
 use libfuzzer_sys::fuzz_target;
 use sinuprep::cli::render::{human, short, FileReport};
 use sinuprep::diagnostic::Diagnostic;
-use sinuprep::lint::{check, check_with, Selection};
+use sinuprep::lint::{check, check_with, Settings};
 use sinuprep::span::Span;
-use sinuprep::semantic::{Heads, Supplied};
+use sinuprep::semantic::Heads;
 use sinuprep::syntax::plain::PlainScanner;
 use sinuprep::syntax::program_kind;
 
@@ -19,18 +19,13 @@ fuzz_target!(|data: &[u8]| {
         b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
     );
     let kind = program_kind(None, data);
-    let (selection, supplied) = (Selection::default(), Supplied::default());
-    let findings = check(data, "FUZZ.MPF", kind, &selection, &supplied, Some(&heads));
+    let settings = Settings {
+        heads: Some(heads),
+        ..Settings::default()
+    };
+    let findings = check(data, "FUZZ.MPF", kind, &settings);
     let every_line = PlainScanner::ParseEveryLine;
-    let reference = check_with(
-        every_line,
-        data,
-        "FUZZ.MPF",
-        kind,
-        &selection,
-        &supplied,
-        Some(&heads),
-    );
+    let reference = check_with(every_line, data, "FUZZ.MPF", kind, &settings);
     assert_eq!(findings, reference);
     for finding in &findings {
         assert!(

@@ -17,6 +17,7 @@ use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint::{self, Selection};
+use crate::semantic::Environment;
 use crate::syntax::program_kind;
 
 /// One file's outcome, with what its report needs of the source taken out
@@ -149,16 +150,13 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
             .map_or(Severity::Info, Severity::from),
     };
     let kind = program_kind(Some(&file.name), &file.bytes);
-    let check = |bytes: &[u8]| {
-        lint::check(
-            bytes,
-            &file.name,
-            kind,
-            &selection,
-            &inputs.supplied,
-            inputs.heads.as_ref(),
-        )
+    let settings = lint::Settings {
+        selection,
+        supplied: inputs.supplied,
+        heads: inputs.heads,
+        environment: Environment::with_axes(config.axes.iter().flatten()),
     };
+    let check = |bytes: &[u8]| lint::check(bytes, &file.name, kind, &settings);
     let mut diagnostics = check(&file.bytes);
     if let Some(target) = fix_target {
         if let Some(fixed) = fix(&target, &file, &diagnostics, args.unsafe_fixes)? {

@@ -28,6 +28,9 @@ pub struct Config {
     pub values: Option<PathBuf>,
     pub emit_runtime: Option<bool>,
     pub runtime_r: Option<u32>,
+    /// The machine's axis names (channel and machine axes: `["X", "XC", "AX1"]`),
+    /// which a program may use where a variable could stand.
+    pub axes: Option<Vec<String>>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -118,7 +121,7 @@ mod tests {
     #[test]
     fn every_key_reads_and_unknown_keys_are_named() {
         let config: Config = toml::from_str(
-            "select = [\"N\", \"C6\"]\nignore = [\"N014\"]\nseverity-min = \"warning\"\ndeny-warnings = true\nemit = \"frames\"\nprecision = 4\nheads = \"HEAD_DEF.SPF\"\nvalues = \"probe.values\"\nemit-runtime = true\nruntime-r = 100\n",
+            "select = [\"N\", \"C6\"]\nignore = [\"N014\"]\nseverity-min = \"warning\"\ndeny-warnings = true\nemit = \"frames\"\nprecision = 4\nheads = \"HEAD_DEF.SPF\"\nvalues = \"probe.values\"\nemit-runtime = true\nruntime-r = 100\naxes = [\"XC\", \"AX1\"]\n",
         )
         .expect("valid");
         assert_eq!(config.emit, Some(Form::Frames));

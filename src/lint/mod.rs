@@ -19,7 +19,7 @@ use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
 use crate::semantic::model::ModelBuilder;
-use crate::semantic::{analyze, Heads, Model, Supplied};
+use crate::semantic::{analyze, Environment, Heads, Model, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
@@ -66,6 +66,18 @@ impl Selection {
     }
 }
 
+/// What a program is checked with besides its text.
+#[derive(Clone, Debug, Default)]
+pub struct Settings {
+    pub selection: Selection,
+    /// Measured values, for the CYCLE600 walk.
+    pub supplied: Supplied,
+    /// HEAD_DEF, for the CYCLE600 walk.
+    pub heads: Option<Heads>,
+    /// Names the machine defines (axes).
+    pub environment: Environment,
+}
+
 /// The documentation of `code`, if it is one.
 pub fn rule(code: &str) -> Option<&'static RuleInfo> {
     rules::all()
@@ -75,23 +87,8 @@ pub fn rule(code: &str) -> Option<&'static RuleInfo> {
 }
 
 /// Everything `check` reports for one program, in source order.
-pub fn check(
-    source: &[u8],
-    name: &str,
-    kind: ProgramKind,
-    selection: &Selection,
-    supplied: &Supplied,
-    heads: Option<&Heads>,
-) -> Vec<Diagnostic> {
-    check_with(
-        PlainScanner::Scan,
-        source,
-        name,
-        kind,
-        selection,
-        supplied,
-        heads,
-    )
+pub fn check(source: &[u8], name: &str, kind: ProgramKind, settings: &Settings) -> Vec<Diagnostic> {
+    check_with(PlainScanner::Scan, source, name, kind, settings)
 }
 
 /// [`check`] with the plain-line scanner given: [`PlainScanner::ParseEveryLine`]
@@ -103,11 +100,16 @@ pub fn check_with(
     source: &[u8],
     name: &str,
     kind: ProgramKind,
-    selection: &Selection,
-    supplied: &Supplied,
-    heads: Option<&Heads>,
+    settings: &Settings,
 ) -> Vec<Diagnostic> {
-    let file = FileContext::new(source, name, kind);
+    let Settings {
+        selection,
+        supplied,
+        heads,
+        environment,
+    } = settings;
+    let heads = heads.as_ref();
+    let file = FileContext::new(source, name, kind, environment);
     let mut checkers: Vec<_> = rules::all()
         .into_iter()
         .filter(|r| selection.enables(r.info.code))

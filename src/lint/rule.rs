@@ -7,7 +7,7 @@ use std::collections::HashSet;
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::labels::Labels;
 pub use crate::semantic::model::{LineView, PlainLine};
-use crate::semantic::Model;
+use crate::semantic::{Environment, Model};
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at.
@@ -16,6 +16,8 @@ pub struct FileContext<'a> {
     /// The file's name as given (`<stdin>` or `--stdin-filename`).
     pub name: &'a str,
     pub kind: ProgramKind,
+    /// Names the machine defines.
+    pub environment: &'a Environment,
     /// Block numbers some jump names, announced during the line pass.
     wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
@@ -24,11 +26,17 @@ pub struct FileContext<'a> {
 }
 
 impl<'a> FileContext<'a> {
-    pub fn new(source: &'a [u8], name: &'a str, kind: ProgramKind) -> Self {
+    pub fn new(
+        source: &'a [u8],
+        name: &'a str,
+        kind: ProgramKind,
+        environment: &'a Environment,
+    ) -> Self {
         Self {
             source,
             name,
             kind,
+            environment,
             wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
             model: OnceCell::new(),

@@ -9,6 +9,7 @@ pub mod blocks;
 pub mod calls;
 pub mod cycle600;
 pub mod env;
+pub mod environment;
 pub mod eval;
 pub mod frames;
 pub mod head_def;
@@ -19,6 +20,7 @@ pub mod value;
 pub mod walk;
 
 pub use env::Supplied;
+pub use environment::Environment;
 pub use head_def::Heads;
 pub use model::Model;
 pub use walk::{analyze, Analysis, CallSite};

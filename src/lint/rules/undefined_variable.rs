@@ -1,13 +1,13 @@
 //! N005 `undefined-variable`: Finds a user variable read before any DEF, PROC parameter or assignment defines it.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::suggest::closest;
-use crate::syntax::tree::StatementKind;
+use crate::syntax::tree::{Expr, ExprKind, Initializer, Statement, StatementKind, TypeKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N005",
@@ -28,15 +28,62 @@ N10 Z=IC(LAYER_HIGHT)   ; typo
 
 ## Fix
 Declare the variable with DEF (or correct its spelling). Names of R parameters, system variables
-(`$...`), cycle data (`_...`) and one-letter addresses are not checked. A name defined before it
+(`$...`), cycle data (`_...`), one-letter addresses, global R parameters (`RG1`), the
+orientation names of `PO[...]` (`PHI`, `PSI`, `THT`, `XH`, `YH`, `ZH`), the machine's axis names
+(`axes = ["XC", "AX1"]` in sinuprep.toml) and a bare name given to an AXIS variable
+(`DEF AXIS _AX` then `_AX=AX1`) are not checked. A name defined before it
 within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
 unsafe fix (`check --fix --unsafe-fixes`)."#,
 };
 
 #[derive(Default)]
 pub struct Checker {
-    defined: HashSet<String>,
+    /// Names defined so far, with their type when a DEF or parameter gave one.
+    defined: HashMap<String, Option<TypeKind>>,
     reported: HashSet<String>,
+}
+
+/// Names that read like user variables but are the language's own: the
+/// orientation angles and vector components of `PO[...]`, `ORIVECT` and
+/// the like (Siemens, Job Planning, "Orientation programming").
+const PREDEFINED: [&str; 6] = ["PHI", "PSI", "THT", "XH", "YH", "ZH"];
+
+/// `RG<n>`: an NCK-global R parameter (MD18156), like `R<n>` no variable of
+/// the program's own.
+fn is_global_r_parameter(name: &str) -> bool {
+    name.strip_prefix("RG")
+        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+}
+
+/// The value of an assignment to an AXIS variable, or of its DEF, when it is
+/// a bare name (`_AX=AX1`, `DEF AXIS _AX=XC`): an axis identifier, not a read.
+fn axis_value(
+    source: &[u8],
+    statement: &Statement,
+    defined: &HashMap<String, Option<TypeKind>>,
+) -> Vec<Span> {
+    let bare = |expr: &Expr| match &expr.kind {
+        ExprKind::Variable(v) if v.indices.is_empty() => Some(v.name.span),
+        _ => None,
+    };
+    match &statement.kind {
+        StatementKind::Assign(assign) => {
+            let target = upper(source, assign.target.name.span);
+            if defined.get(&target) == Some(&Some(TypeKind::Axis)) {
+                return bare(&assign.value).into_iter().collect();
+            }
+            Vec::new()
+        }
+        StatementKind::Def(def) if def.data_type.kind == TypeKind::Axis => def
+            .variables
+            .iter()
+            .filter_map(|d| match &d.init {
+                Some(Initializer::Expr(expr)) => bare(expr),
+                _ => None,
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
 }
 
 impl Check for Checker {
@@ -51,10 +98,17 @@ impl Check for Checker {
             return;
         };
         for (index, statement) in block.statements.iter().enumerate() {
+            let axes = axis_value(file.source, statement, &self.defined);
             for variable in line.reads(index) {
+                if axes.contains(&variable.name.span) {
+                    continue;
+                }
                 let name = upper(file.source, variable.name.span);
                 if is_user_name(&name)
-                    && !self.defined.contains(&name)
+                    && !self.defined.contains_key(&name)
+                    && !file.environment.is_axis(&name)
+                    && !PREDEFINED.contains(&name.as_str())
+                    && !is_global_r_parameter(&name)
                     && self.reported.insert(name.clone())
                 {
                     out.push(self.undefined(name, variable.name.span));
@@ -64,19 +118,21 @@ impl Check for Checker {
                 StatementKind::Def(def) => self.defined.extend(
                     def.variables
                         .iter()
-                        .map(|d| upper(file.source, d.name.span)),
+                        .map(|d| (upper(file.source, d.name.span), Some(def.data_type.kind))),
                 ),
-                StatementKind::Proc(proc) => self.defined.extend(
-                    proc.parameters
-                        .iter()
-                        .map(|p| upper(file.source, p.declarator.name.span)),
-                ),
+                StatementKind::Proc(proc) => self.defined.extend(proc.parameters.iter().map(|p| {
+                    let name = upper(file.source, p.declarator.name.span);
+                    (name, Some(p.data_type.kind))
+                })),
                 StatementKind::Assign(assign) => {
                     self.defined
-                        .insert(upper(file.source, assign.target.name.span));
+                        .entry(upper(file.source, assign.target.name.span))
+                        .or_insert(None);
                 }
                 StatementKind::For { variable, .. } => {
-                    self.defined.insert(upper(file.source, variable.span));
+                    self.defined
+                        .entry(upper(file.source, variable.span))
+                        .or_insert(None);
                 }
                 _ => {}
             }
@@ -93,7 +149,7 @@ impl Checker {
             .at(span)
             .message(format!("`{name}` is read before any DEF or assignment"))
             .label("not defined yet");
-        match closest(&name, &self.defined, most) {
+        match closest(&name, self.defined.keys(), most) {
             Some(meant) => diagnostic
                 .help(format!("did you mean `{meant}`? Otherwise declare it, as `DEF REAL {name}`, before this block"))
                 .fix(Fix::replace(
