@@ -579,5 +579,16 @@ mod tests {
     }
 
     #[test]
-    fn the_prefix_is_found_in_any_case() {}
+    fn the_prefix_and_the_r_parameters_are_found_in_any_case() {
+        let model = Model::of(b"N10 snp_a1=1\nN20 r105=2\n");
+        let clash = collision(&model, &Names::new(None)).expect("SNP_ in lower case");
+        assert_eq!(clash.span, Span::new(4, 8));
+        let mut r = Names::new(Some(100));
+        for name in ["S1", "C1", "S2", "C2", "S3", "C3"] {
+            r.get(name);
+        }
+        let clash = collision(&model, &r).expect("r105 in R100 to R105");
+        assert_eq!(clash.span, Span::new(17, 21));
+        assert!(collision(&Model::of(b"R99=1\n"), &r).is_none());
+    }
 }

@@ -98,5 +98,16 @@ mod tests {
         let (edits, answered) = applicable(&findings, false);
         assert_eq!(answered, 2);
         assert_eq!(apply(b"012345", &edits), b"xyza345");
+        // Edits that touch both apply; one reaching into another waits.
+        let findings = [
+            finding(Applicability::Safe, &[(4, 6, "ab")]),
+            finding(Applicability::Safe, &[(3, 5, "c")]),
+            finding(Applicability::Safe, &[(0, 4, "d")]),
+            finding(Applicability::Safe, &[(5, 6, "e")]),
+            finding(Applicability::Safe, &[(6, 6, "f")]),
+        ];
+        let (edits, answered) = applicable(&findings, false);
+        assert_eq!(answered, 3);
+        assert_eq!(apply(b"012345", &edits), b"dabf");
     }
 }
