@@ -1,9 +1,13 @@
-//! N013 `main-run-read-without-stopre`: Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
+//! N013 `main-run-read-without-stopre`: Finds a read, during preprocessing, of a variable a synchronized action writes in the main run, with no STOPRE between them.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use std::collections::HashMap;
+
+use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
+use crate::semantic::eval::key;
 use crate::semantic::model::is_stopre;
+use crate::semantic::structure::sync_writes;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -11,92 +15,79 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "main-run-read-without-stopre",
     severity: Severity::Warning,
     docs: r#"## What it does
-Finds reads of main-run variables (`$A...`: `$AA_IW`, `$AA_MW`, `$AC_...`) in the part program with
-no STOPRE since the last motion or call.
+Finds a read, in the part program, of a variable a synchronized action of the program writes in the
+main run (`DO $R1=...`, then `R2=R1`), with no STOPRE between the synchronized action and the read.
 
 ## Why it matters
-The control prepares blocks ahead of the main run. Reading a main-run value forces an implicit
-preprocessing stop, but relying on it hides the intent, and a value read in the wrong place (for
-instance a measured one before the measurement has run) is stale.
+The control prepares (preprocesses) blocks ahead of the main run. A synchronized action writes in the
+main run, at a time preprocessing cannot know: a block prepared before that reads the value the
+variable had before. STOPRE makes preprocessing wait until the main run has caught up.
+
+Reading a main-run variable itself (`$AA_IW`, `$AA_MW`, `$AC_PARAM`, `$A_IN`, ...) is not reported:
+the control stops preprocessing for such a read on its own (an implicit preprocessing stop; Siemens
+machine data text: "run-in/main-run synchronization block (e.g. STOPRE, $Variable)"). Nor are
+reads inside synchronized actions, which run in the main run.
 
 ## Example
 ```
-N10 G1 Z=IC(2)
-N20 R1=$AA_IW[Z]
+N10 WHEN $AA_IW[Z]>10 DO $R1=$AA_IW[X]
+N20 G1 Z20 F100
+N30 R2=R1*2          ; R1 as it was before N10's action ran
 ```
 
 ## Fix
-Write STOPRE in its own block before the read."#,
+Write STOPRE in its own block before the read. (A value written at an unknown time may still be
+written after the STOPRE: the read then sees the main run's value at the STOPRE.)"#,
 };
 
+/// The variables synchronized actions wrote (in the walk's keys), each with
+/// the line of the action, since the last STOPRE.
+#[derive(Default)]
 pub struct Checker {
-    stopped: bool,
-}
-
-impl Default for Checker {
-    fn default() -> Self {
-        Self { stopped: true }
-    }
+    written: HashMap<String, usize>,
 }
 
 impl Check for Checker {
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    /// An address word is motion (or may be): values read after it need a
-    /// new STOPRE.
-    fn plain_lines(
-        &mut self,
-        _file: &FileContext,
-        lines: &[PlainLine],
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        if lines.iter().any(|line| line.facts.has_words) {
-            self.stopped = false;
-        }
-    }
-
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        let Some(block) = line.block.filter(|_| !line.plain) else {
             return;
         };
-        // Synchronized actions read main-run values in the main run: that is their purpose.
-        if block
-            .statements
-            .iter()
-            .any(|s| matches!(s.kind, StatementKind::SyncAction(_)))
-        {
-            return;
-        }
         for (index, statement) in block.statements.iter().enumerate() {
             if is_stopre(file.source, statement) {
-                self.stopped = true;
+                self.written.clear();
+                continue;
+            }
+            if let StatementKind::SyncAction(sync) = &statement.kind {
+                for name in sync_writes(file.source, sync) {
+                    self.written.insert(name, row);
+                }
+                continue;
+            }
+            if self.written.is_empty() {
                 continue;
             }
             for variable in line.reads(index) {
                 let name = upper(file.source, variable.name.span);
-                if name.starts_with("$A") && !self.stopped {
-                    out.push(
-                        RULE.at(variable.span)
-                            .message(format!("`{name}` is a main-run value, read without STOPRE since the last motion"))
-                            .label("read during preprocessing")
-                            .help("write STOPRE in its own block before this one"),
-                    );
-                    self.stopped = true;
+                if name.starts_with('$') {
+                    continue;
                 }
-            }
-            if matches!(
-                statement.kind,
-                StatementKind::Word(_) | StatementKind::Call(_) | StatementKind::Command(_)
-            ) {
-                self.stopped = false;
+                let read = if variable.indices.is_empty() {
+                    key(&name, &[])
+                } else {
+                    name
+                };
+                let Some(action) = self.written.remove(&read) else {
+                    continue;
+                };
+                out.push(
+                    RULE.at(variable.span)
+                        .message(format!(
+                            "`{read}` is written in the main run by the synchronized action on line {}, and read here without STOPRE",
+                            action + 1
+                        ))
+                        .label("may read the value before the action wrote it")
+                        .help("write STOPRE in its own block before this one"),
+                );
             }
         }
     }
