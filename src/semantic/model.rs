@@ -158,6 +158,8 @@ pub struct LineView<'l> {
     pub raw: RawLine,
     /// The block, when the line is one.
     pub block: Option<&'l Block>,
+    /// The name after `%` when the line is a program header (`%_N_PART_MPF`).
+    pub header: Option<Span>,
     /// Every statement is an address word with a number (`G1 X-12.5`): the
     /// line defines, reads, calls and jumps nowhere. Most blocks of a CAM
     /// program are such, and most rules have nothing to do there.
@@ -168,9 +170,10 @@ pub struct LineView<'l> {
 
 impl<'l> LineView<'l> {
     pub fn new(line: &'l Line) -> Self {
-        let block = match &line.kind {
-            LineKind::Block(block) => Some(block),
-            _ => None,
+        let (block, header) = match &line.kind {
+            LineKind::Block(block) => (Some(block), None),
+            LineKind::Header { name } => (None, Some(*name)),
+            LineKind::Path { .. } => (None, None),
         };
         let mut all_reads = Vec::new();
         let mut plain = true;
@@ -192,6 +195,7 @@ impl<'l> LineView<'l> {
         Self {
             raw: line.raw,
             block,
+            header,
             plain,
             reads: all_reads,
         }

@@ -12,7 +12,10 @@ Finds a label defined twice in one program.
 
 ## Why it matters
 A jump goes to the first label found in its search direction, so which block runs depends on
-where the jump stands: rarely what was meant. (Repeated block numbers are allowed and not reported.)
+where the jump stands: rarely what was meant. Not reported: repeated block numbers, and `ENDLABEL`,
+the predefined label that ends a section `REPEAT` repeats, which the manual lets stand as often as
+there are sections (Siemens, Job Planning, "Program section repetition (REPEAT, REPEATB,
+ENDLABEL, P)").
 
 ## Example
 ```
@@ -31,7 +34,8 @@ pub struct Checker;
 
 impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for (span, name, first) in file.labels().repeated() {
+        let repeated = file.labels().repeated();
+        for (span, name, first) in repeated.into_iter().filter(|(_, n, _)| n != "ENDLABEL") {
             out.push(
                 RULE.at(span)
                     .message(format!(

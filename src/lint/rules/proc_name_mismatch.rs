@@ -10,7 +10,9 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "proc-name-mismatch",
     severity: Severity::Warning,
     docs: r#"## What it does
-Finds a PROC whose name differs from its file's name.
+Finds a PROC whose name differs from its file's name. In a file that holds several programs, each
+after its `%_N_NAME_SPF` header (an archive in text form), the first PROC after a header is
+compared with that header's name; only a program's first PROC is its header.
 
 ## Why it matters
 The control calls a subprogram by its file name; a PROC header with another name is refused or
@@ -26,8 +28,26 @@ PROC ALIGN_HEAD(REAL _A) SAVE
 Rename the PROC or the file so that both match."#,
 };
 
+/// The program the lines belong to: the file, or the last `%_N_NAME_SPF`
+/// header of a file that holds several programs (an archive in text form).
 #[derive(Default)]
-pub struct Checker;
+pub struct Checker {
+    /// The name of the program the last header starts.
+    program: Option<String>,
+    /// Its PROC was met: later ones are no header of this program's.
+    proc_seen: bool,
+}
+
+/// `NAME` of a header `_N_NAME_SPF` (or a file stem written that way).
+fn program_name(text: &str) -> &str {
+    let Some(name) = text.strip_prefix("_N_") else {
+        return text;
+    };
+    ["_SPF", "_MPF"]
+        .iter()
+        .find_map(|suffix| name.strip_suffix(suffix))
+        .unwrap_or(name)
+}
 
 impl Check for Checker {
     fn line(
@@ -37,6 +57,11 @@ impl Check for Checker {
         line: &LineView,
         out: &mut Vec<Diagnostic>,
     ) {
+        if let Some(header) = line.header {
+            self.program = Some(program_name(&upper(file.source, header)).to_string());
+            self.proc_seen = false;
+            return;
+        }
         let Some(block) = line.block else {
             return;
         };
@@ -44,21 +69,26 @@ impl Check for Checker {
             let StatementKind::Proc(proc) = &statement.kind else {
                 continue;
             };
-            let Some(stem) = std::path::Path::new(file.name)
-                .file_stem()
-                .and_then(|s| s.to_str())
-            else {
-                continue;
-            };
-            if file.name == "<stdin>" {
+            if std::mem::replace(&mut self.proc_seen, true) {
                 continue;
             }
+            let stem = match &self.program {
+                Some(program) => program.clone(),
+                None => {
+                    let Some(stem) = std::path::Path::new(file.name)
+                        .file_stem()
+                        .and_then(|s| s.to_str())
+                    else {
+                        continue;
+                    };
+                    if file.name == "<stdin>" {
+                        continue;
+                    }
+                    program_name(&stem.to_ascii_uppercase()).to_string()
+                }
+            };
+            let stem = stem.as_str();
             let name = upper(file.source, proc.name.span);
-            let stem = stem.to_ascii_uppercase();
-            let stem = stem
-                .strip_prefix("_N_")
-                .map(|s| s.trim_end_matches("_SPF"))
-                .unwrap_or(&stem);
             if name != stem {
                 // A file name that is no NC name (`3_KATUSHKA`) cannot be the PROC's.
                 let help = if is_nc_name(stem) {
@@ -66,9 +96,14 @@ impl Check for Checker {
                 } else {
                     format!("rename the file to `{name}.SPF` (`{stem}` is not a valid NC name: two letters or `_` first)")
                 };
+                let container = if self.program.is_some() {
+                    "program"
+                } else {
+                    "file"
+                };
                 out.push(
                     RULE.at(proc.name.span)
-                        .message(format!("PROC `{name}` is in a file named `{stem}`"))
+                        .message(format!("PROC `{name}` is in a {container} named `{stem}`"))
                         .label("differs from the file name")
                         .help(help),
                 );
