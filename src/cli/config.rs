@@ -72,9 +72,15 @@ impl Config {
             path: path.to_path_buf(),
             source,
         })?;
-        let mut config: Config = toml::from_str(&text).map_err(|error| CliError::Config {
-            path: path.to_path_buf(),
-            why: error.message().to_string(),
+        let mut config: Config = toml::from_str(&text).map_err(|error| {
+            let at = error.span().map_or(0, |span| span.start);
+            let position = crate::span::LineIndex::new(text.as_bytes()).position(at);
+            CliError::Config {
+                path: path.to_path_buf(),
+                line: position.row,
+                column: position.column,
+                why: error.message().to_string(),
+            }
         })?;
         config.path = Some(path.to_path_buf());
         Ok(config)

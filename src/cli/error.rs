@@ -23,9 +23,14 @@ pub enum CliError {
     )]
     IsDirectory { path: PathBuf },
 
-    #[error("{path}: {why}")]
-    #[diagnostic(code(sinuprep::config), help("the keys are select, ignore, severity-min, deny-warnings, emit, precision, heads, values, emit-runtime, runtime-r"))]
-    Config { path: PathBuf, why: String },
+    #[error("{path}:{line}:{column}: {why}")]
+    #[diagnostic(code(sinuprep::config), help("the keys are select, ignore, severity-min, deny-warnings, emit, precision, heads, values, emit-runtime, runtime-r, axes"))]
+    Config {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+        why: String,
+    },
 
     #[error("{origin}: no rule has the code `{code}`{}", did_you_mean.map(|c| format!(" (did you mean `{c}`?)")).unwrap_or_default())]
     #[diagnostic(
