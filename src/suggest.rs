@@ -1,23 +1,39 @@
 //! Did-you-mean: the nearest of some candidates to a word the program got
 //! wrong (a keyword, a label, an accessory), compared without case.
 
+use std::collections::{HashMap, HashSet};
+
 /// Levenshtein distance between `a` and `b`, by characters.
 pub fn distance(a: &str, b: &str) -> usize {
+    within(a, b, usize::MAX).unwrap_or(usize::MAX)
+}
+
+/// The distance between `a` and `b` if it is at most `most`. Stops as soon
+/// as every way on is longer, and does not start when the lengths alone
+/// differ by more: a did-you-mean over thousands of names costs a length
+/// comparison for most of them.
+fn within(a: &str, b: &str, most: usize) -> Option<usize> {
     let b: Vec<char> = b.chars().collect();
+    let a_len = a.chars().count();
+    if a_len.abs_diff(b.len()) > most {
+        return None;
+    }
     let mut previous: Vec<usize> = (0..=b.len()).collect();
+    let mut current = vec![0; b.len() + 1];
     for (i, ca) in a.chars().enumerate() {
-        let mut current = vec![i + 1];
+        current[0] = i + 1;
         for (j, cb) in b.iter().enumerate() {
             let cost = usize::from(!ca.eq_ignore_ascii_case(cb));
-            current.push(
-                (previous[j] + cost)
-                    .min(previous[j + 1] + 1)
-                    .min(current[j] + 1),
-            );
+            current[j + 1] = (previous[j] + cost)
+                .min(previous[j + 1] + 1)
+                .min(current[j] + 1);
         }
-        previous = current;
+        if current.iter().min().is_some_and(|&m| m > most) {
+            return None;
+        }
+        std::mem::swap(&mut previous, &mut current);
     }
-    previous[b.len()]
+    Some(previous[b.len()]).filter(|&d| d <= most)
 }
 
 /// The candidate nearest to `word`, if at most `most` edits away and not
@@ -29,10 +45,94 @@ pub fn closest<'c, S: AsRef<str> + ?Sized>(
 ) -> Option<&'c S> {
     candidates
         .into_iter()
-        .map(|c| (distance(word, c.as_ref()), c))
-        .filter(|&(d, _)| d > 0 && d <= most)
+        .filter_map(|c| Some((within(word, c.as_ref(), most)?, c)))
+        .filter(|&(d, _)| d > 0)
         .min_by_key(|&(d, _)| d)
         .map(|(_, c)| c)
+}
+
+/// Names to suggest from, however many: a list searched name by name while
+/// it is short, and once it is long, an index of every way to delete up to
+/// [`Nearest::MOST`] characters from each name (two words within `k` edits
+/// share a form with at most `k` characters deleted from each), so that a
+/// search costs the word's own deletions, not the list's length. Thousands
+/// of findings over thousands of names stay linear.
+#[derive(Default)]
+pub struct Nearest {
+    /// Upper case, in the order given.
+    names: Vec<String>,
+    /// Deleted form -> indices into `names`; built at the first search of a
+    /// long list.
+    index: Option<HashMap<String, Vec<u32>>>,
+}
+
+impl Nearest {
+    /// The most edits a search may ask for.
+    pub const MOST: usize = 2;
+    /// Lists up to this long are searched name by name.
+    const SCAN: usize = 64;
+
+    pub fn push(&mut self, name: &str) {
+        let name = name.to_ascii_uppercase();
+        let at = self.names.len() as u32;
+        if let Some(index) = &mut self.index {
+            for form in deletions(&name, Self::MOST) {
+                index.entry(form).or_default().push(at);
+            }
+        }
+        self.names.push(name);
+    }
+
+    /// The name nearest to `word`, at most `most` (at most [`Self::MOST`])
+    /// edits away and not `word` itself; of equals, the first given.
+    pub fn closest(&mut self, word: &str, most: usize) -> Option<&str> {
+        let most = most.min(Self::MOST);
+        if self.names.len() <= Self::SCAN {
+            return closest(word, self.names.iter(), most).map(String::as_str);
+        }
+        let names = &self.names;
+        let index = self.index.get_or_insert_with(|| {
+            let mut index: HashMap<String, Vec<u32>> = HashMap::new();
+            for (at, name) in names.iter().enumerate() {
+                for form in deletions(name, Self::MOST) {
+                    index.entry(form).or_default().push(at as u32);
+                }
+            }
+            index
+        });
+        let mut found: Option<(usize, u32)> = None;
+        for form in deletions(&word.to_ascii_uppercase(), most) {
+            for &at in index.get(&form).into_iter().flatten() {
+                let Some(d) = within(word, &names[at as usize], most).filter(|&d| d > 0) else {
+                    continue;
+                };
+                if found.is_none_or(|best| (d, at) < best) {
+                    found = Some((d, at));
+                }
+            }
+        }
+        found.map(|(_, at)| names[at as usize].as_str())
+    }
+}
+
+/// `word` and every form of it with up to `most` characters deleted, once each.
+fn deletions(word: &str, most: usize) -> HashSet<String> {
+    let mut forms = HashSet::from([word.to_string()]);
+    let mut last = vec![word.to_string()];
+    for _ in 0..most {
+        let mut next = Vec::new();
+        for form in &last {
+            for (at, c) in form.char_indices() {
+                let mut shorter = form.clone();
+                shorter.replace_range(at..at + c.len_utf8(), "");
+                if forms.insert(shorter.clone()) {
+                    next.push(shorter);
+                }
+            }
+        }
+        last = next;
+    }
+    forms
 }
 
 #[cfg(test)]
@@ -44,6 +144,38 @@ mod tests {
         assert_eq!(distance("UFK600", "UFK060"), 2);
         assert_eq!(distance("", "ABC"), 3);
         assert_eq!(distance("endif", "ENDIF"), 0);
+        assert_eq!(within("UFK600", "UFK060", 1), None);
+        assert_eq!(within("UFK600", "UFK060", 2), Some(2));
+        assert_eq!(within("AB", "ABCD", 1), None, "lengths alone too far apart");
+    }
+
+    proptest::proptest! {
+        /// Searched through the index or name by name, the nearest name is
+        /// the same: the first of the nearest.
+        #[test]
+        fn the_index_finds_what_the_scan_finds(
+            names in proptest::collection::vec("[abc]{1,6}", 65..120),
+            word in "[abcd]{0,7}",
+            most in 0usize..3,
+        ) {
+            let mut nearest = Nearest::default();
+            for name in &names {
+                nearest.push(name);
+            }
+            let upper: Vec<String> = names.iter().map(|n| n.to_ascii_uppercase()).collect();
+            let scanned = closest(&word, upper.iter(), most).cloned();
+            proptest::prop_assert_eq!(nearest.closest(&word, most).map(str::to_string), scanned);
+            // Names pushed once the index is built are found as well.
+            nearest.push("ABCDDD");
+            proptest::prop_assert_eq!(nearest.closest("ABCDD", 1), Some("ABCDDD"));
+        }
+
+        /// Cut short or not, the distance is the full computation's.
+        #[test]
+        fn the_bounded_distance_is_the_distance(a in "[abAB]{0,8}", b in "[abc]{0,8}", most in 0usize..10) {
+            let full = distance(&a, &b);
+            proptest::prop_assert_eq!(within(&a, &b, most), (full <= most).then_some(full));
+        }
     }
 
     #[test]

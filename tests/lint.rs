@@ -262,7 +262,10 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
     let output = run(&["check", program.to_str().expect("utf-8")], b"");
     assert_exit(&output, 2);
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(stderr.contains("sinuprep.toml:1:1: unknown field `selct`"), "{stderr}");
+    assert!(
+        stderr.contains("sinuprep.toml:1:1: unknown field `selct`"),
+        "{stderr}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

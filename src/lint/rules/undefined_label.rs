@@ -4,7 +4,7 @@ use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::span::Span;
-use crate::suggest::closest;
+use crate::suggest::Nearest;
 use crate::syntax::tree::GotoKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -58,6 +58,8 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        // Collected at the first jump that needs a did-you-mean.
+        let mut names: Option<Nearest> = None;
         for (target, span, tolerant) in &self.jumps {
             let exists = match target {
                 Target::Label(name) => file.labels().contains(name),
@@ -71,9 +73,13 @@ impl Check for Checker {
                 continue;
             }
             let wanted = target.to_string();
-            let names: Vec<_> = file.labels().names().collect();
-            let meant = closest(&wanted, &names, 2);
-            let help = match meant {
+            let names = names.get_or_insert_with(|| {
+                let mut nearest = Nearest::default();
+                file.labels().names().for_each(|name| nearest.push(&name));
+                nearest
+            });
+            let meant = names.closest(&wanted, 2).map(str::to_string);
+            let help = match &meant {
                 Some(label) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
                 None => format!("add the label `{wanted}:` where the jump should land, or correct the jump"),
             };
@@ -84,7 +90,7 @@ impl Check for Checker {
                 ))
                 .label("no such label")
                 .help(help);
-            if let Some(label) = meant {
+            if let Some(label) = &meant {
                 diagnostic = diagnostic.fix(Fix::replace(
                     format!("jump to `{label}`"),
                     Applicability::Unsafe,

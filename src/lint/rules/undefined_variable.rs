@@ -6,7 +6,7 @@ use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::span::Span;
-use crate::suggest::closest;
+use crate::suggest::Nearest;
 use crate::syntax::tree::{Expr, ExprKind, Initializer, Statement, StatementKind, TypeKind};
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -40,6 +40,8 @@ unsafe fix (`check --fix --unsafe-fixes`)."#,
 pub struct Checker {
     /// Names defined so far, with their type when a DEF or parameter gave one.
     defined: HashMap<String, Option<TypeKind>>,
+    /// The same names, for the did-you-mean.
+    nearest: Nearest,
     reported: HashSet<String>,
 }
 
@@ -115,24 +117,22 @@ impl Check for Checker {
                 }
             }
             match &statement.kind {
-                StatementKind::Def(def) => self.defined.extend(
-                    def.variables
-                        .iter()
-                        .map(|d| (upper(file.source, d.name.span), Some(def.data_type.kind))),
-                ),
-                StatementKind::Proc(proc) => self.defined.extend(proc.parameters.iter().map(|p| {
-                    let name = upper(file.source, p.declarator.name.span);
-                    (name, Some(p.data_type.kind))
-                })),
+                StatementKind::Def(def) => {
+                    for d in &def.variables {
+                        self.define(upper(file.source, d.name.span), Some(def.data_type.kind));
+                    }
+                }
+                StatementKind::Proc(proc) => {
+                    for p in &proc.parameters {
+                        let name = upper(file.source, p.declarator.name.span);
+                        self.define(name, Some(p.data_type.kind));
+                    }
+                }
                 StatementKind::Assign(assign) => {
-                    self.defined
-                        .entry(upper(file.source, assign.target.name.span))
-                        .or_insert(None);
+                    self.define(upper(file.source, assign.target.name.span), None)
                 }
                 StatementKind::For { variable, .. } => {
-                    self.defined
-                        .entry(upper(file.source, variable.span))
-                        .or_insert(None);
+                    self.define(upper(file.source, variable.span), None)
                 }
                 _ => {}
             }
@@ -141,15 +141,31 @@ impl Check for Checker {
 }
 
 impl Checker {
+    /// `name` is defined from here on; a type given later (a DEF after an
+    /// assignment) is kept.
+    fn define(&mut self, name: String, data_type: Option<TypeKind>) {
+        match self.defined.get_mut(&name) {
+            Some(known) => {
+                if data_type.is_some() {
+                    *known = data_type;
+                }
+            }
+            None => {
+                self.nearest.push(&name);
+                self.defined.insert(name, data_type);
+            }
+        }
+    }
+
     /// The finding for `name` at `span`, with the defined name it may have
     /// been meant as (`DEPTHH` for a defined `DEPTH`).
-    fn undefined(&self, name: String, span: Span) -> Diagnostic {
+    fn undefined(&mut self, name: String, span: Span) -> Diagnostic {
         let most = if name.len() <= 4 { 1 } else { 2 };
         let diagnostic = RULE
             .at(span)
             .message(format!("`{name}` is read before any DEF or assignment"))
             .label("not defined yet");
-        match closest(&name, self.defined.keys(), most) {
+        match self.nearest.closest(&name, most).map(str::to_string) {
             Some(meant) => diagnostic
                 .help(format!("did you mean `{meant}`? Otherwise declare it, as `DEF REAL {name}`, before this block"))
                 .fix(Fix::replace(
