@@ -229,8 +229,15 @@ mod tests {
     }
 
     #[test]
-    fn a_conditional_jump_opens_nothing() {
-        let (found, open) = events("IF R1==1 GOTOF LBL\nLBL:\n");
-        assert!(found.is_empty() && open.is_empty());
+    fn a_conditional_jump_and_a_section_repetition_open_nothing() {
+        let (found, open) = events("IF R1==1 GOTOF LBL\nLBL:\nREPEAT LBL P=2\n");
+        assert!(found.is_empty() && open.is_empty(), "{found:?} {open:?}");
+    }
+
+    #[test]
+    fn an_else_belongs_to_an_if_only() {
+        let (found, open) = events("WHILE R1<3\nELSE\nENDWHILE\n");
+        assert_eq!(found, ["stray ELSE", "WHILE 0..2 else None"]);
+        assert!(open.is_empty());
     }
 }
