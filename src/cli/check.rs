@@ -129,21 +129,18 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
     let config = Config::find(args.input.config.as_deref(), &lookup)?;
     let inputs = Inputs::load(&args.input, &config, &named)?;
     let in_config = |what: &str| format!("{} ({what})", config.describe());
-    let mut ignore = codes(&args.ignore, "--ignore")?;
-    ignore.extend(codes(
-        config.ignore.as_deref().unwrap_or_default(),
-        &in_config("ignore"),
-    )?);
-    let selection = Selection {
-        select: if args.select.is_empty() {
-            codes(
-                config.select.as_deref().unwrap_or_default(),
-                &in_config("select"),
-            )?
+    // A list on the command line replaces the file's (both are checked).
+    let list = |given: &[String], flag: &str, file: &Option<Vec<String>>, key: &str| {
+        let from_file = codes(file.as_deref().unwrap_or_default(), &in_config(key))?;
+        if given.is_empty() {
+            Ok(from_file)
         } else {
-            codes(&args.select, "--select")?
-        },
-        ignore,
+            codes(given, flag)
+        }
+    };
+    let selection = Selection {
+        select: list(&args.select, "--select", &config.select, "select")?,
+        ignore: list(&args.ignore, "--ignore", &config.ignore, "ignore")?,
         severity_min: args
             .severity_min
             .or(config.severity_min)

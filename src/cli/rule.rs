@@ -35,11 +35,14 @@ pub fn run(args: &RuleArgs) -> Result<ExitStatus, CliError> {
     Ok(ExitStatus::Success)
 }
 
-/// `, off by default: --select N015` for a rule that runs only when selected.
+/// How `check` runs the rule where that is not its plain severity: off by
+/// default (`, off by default: --select N015`), or at another severity.
 fn off_note(code: &str) -> String {
     if lint::off_by_default(code) {
-        format!(", off by default: --select {code}")
-    } else {
-        String::new()
+        return format!(", off by default: --select {code}");
+    }
+    match lint::severity_in_check(code) {
+        Some(note) => format!(", {note}"),
+        None => String::new(),
     }
 }

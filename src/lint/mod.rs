@@ -78,6 +78,20 @@ pub struct Settings {
     pub environment: Environment,
 }
 
+/// Where `check` reports a rule at another severity than its own, how: a
+/// CYCLE600 argument known only on the machine is no error for the linter
+/// (the rewrite computes it on the control), and GOTOC goes on without an
+/// alarm where its label is missing.
+pub fn severity_in_check(code: &str) -> Option<&'static str> {
+    match code {
+        c if c == crate::registry::cycle600_unknown_argument::RULE.code => {
+            Some("info in check; rewrite refuses the call unless --emit-runtime")
+        }
+        c if c == rules::undefined_label::RULE.code => Some("a warning for GOTOC"),
+        _ => None,
+    }
+}
+
 /// The documentation of `code`, if it is one.
 pub fn rule(code: &str) -> Option<&'static RuleInfo> {
     rules::all()
