@@ -231,7 +231,14 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
     assert!(!stdout(&output).contains("N014"), "{}", stdout(&output));
     // --ignore replaces the file's list, as --select does.
     let replaced = run(
-        &["check", "--format", "short", "--ignore", "N016", program.to_str().expect("utf-8")],
+        &[
+            "check",
+            "--format",
+            "short",
+            "--ignore",
+            "N016",
+            program.to_str().expect("utf-8"),
+        ],
         b"",
     );
     assert!(stdout(&replaced).contains("N014"), "{}", stdout(&replaced));

@@ -28,15 +28,28 @@ pub struct Inputs {
 impl Inputs {
     pub fn load(args: &InputArgs, config: &Config, program: &Path) -> Result<Inputs, CliError> {
         let mut supplied = Supplied::default();
-        let values = args
-            .values
-            .clone()
-            .or_else(|| config.values.as_ref().map(|v| config.resolve(v)));
-        if let Some(path) = &values {
-            let bytes = std::fs::read(path).map_err(|source| CliError::Read {
-                path: path.clone(),
-                source,
-            })?;
+        // A path the command line gives, or the one sinuprep.toml gives under `key`.
+        let setting =
+            |given: &Option<PathBuf>, file: &Option<PathBuf>, key: &'static str| match given {
+                Some(path) => Some((path.clone(), None)),
+                None => file.as_ref().map(|p| (config.resolve(p), Some(key))),
+            };
+        let read = |path: &Path, key: Option<&'static str>| {
+            std::fs::read(path).map_err(|source| match key {
+                Some(key) => CliError::ReadSetting {
+                    path: path.to_path_buf(),
+                    key,
+                    config: config.describe(),
+                    source,
+                },
+                None => CliError::Read {
+                    path: path.to_path_buf(),
+                    source,
+                },
+            })
+        };
+        if let Some((path, key)) = &setting(&args.values, &config.values, "values") {
+            let bytes = read(path, *key)?;
             let assignments = assignments(&bytes).map_err(|(line, why)| CliError::Values {
                 path: path.clone(),
                 line,
@@ -61,17 +74,11 @@ impl Inputs {
                 supplied.insert(key, value, format!("--set {text}"));
             }
         }
-        let heads_path = args
-            .heads
-            .clone()
-            .or_else(|| config.heads.as_ref().map(|h| config.resolve(h)))
-            .or_else(|| beside(program));
+        let heads_path = setting(&args.heads, &config.heads, "heads")
+            .or_else(|| beside(program).map(|path| (path, None)));
         let heads = match heads_path {
-            Some(path) => {
-                let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
-                    path: path.clone(),
-                    source,
-                })?;
+            Some((path, key)) => {
+                let bytes = read(&path, key)?;
                 Some(Heads::read(path.display().to_string(), &bytes))
             }
             None => None,

@@ -79,7 +79,7 @@ impl Config {
                 path: path.to_path_buf(),
                 line: position.row,
                 column: position.column,
-                why: error.message().to_string(),
+                why: with_did_you_mean(error.message()),
             }
         })?;
         config.path = Some(path.to_path_buf());
@@ -99,6 +99,35 @@ impl Config {
             Some(dir) if path.is_relative() => dir.join(path),
             _ => path.to_path_buf(),
         }
+    }
+}
+
+/// The keys of the file.
+const KEYS: [&str; 11] = [
+    "select",
+    "ignore",
+    "severity-min",
+    "deny-warnings",
+    "emit",
+    "precision",
+    "heads",
+    "values",
+    "emit-runtime",
+    "runtime-r",
+    "axes",
+];
+
+/// The parser's message, with the key an unknown one was probably meant as.
+fn with_did_you_mean(message: &str) -> String {
+    let Some((key, rest)) = message
+        .strip_prefix("unknown field `")
+        .and_then(|rest| rest.split_once('`'))
+    else {
+        return message.to_string();
+    };
+    match crate::suggest::closest(key, &KEYS, 2) {
+        Some(meant) => format!("unknown field `{key}` (did you mean `{meant}`?){rest}"),
+        None => message.to_string(),
     }
 }
 
@@ -134,5 +163,18 @@ mod tests {
         assert_eq!(config.severity_min, Some(SeverityName::Warning));
         let error = toml::from_str::<Config>("selct = [\"N\"]").expect_err("unknown key");
         assert!(error.message().contains("selct"), "{}", error.message());
+        assert!(with_did_you_mean(error.message())
+            .starts_with("unknown field `selct` (did you mean `select`?), expected one of"));
+        // Every key the file reads is one the did-you-mean knows.
+        for key in KEYS {
+            let text = format!("{key} = 0");
+            let message = toml::from_str::<Config>(&text)
+                .err()
+                .map(|e| e.message().to_string());
+            assert!(
+                !message.unwrap_or_default().contains("unknown field"),
+                "{key}"
+            );
+        }
     }
 }

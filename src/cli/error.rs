@@ -16,6 +16,18 @@ pub enum CliError {
         source: std::io::Error,
     },
 
+    #[error("cannot read {path}, named by `{key}` in {config}")]
+    #[diagnostic(
+        code(sinuprep::read),
+        help("correct `{key}` in {config}: its paths are relative to the file")
+    )]
+    ReadSetting {
+        path: PathBuf,
+        key: &'static str,
+        config: String,
+        source: std::io::Error,
+    },
+
     #[error("{path} is a directory")]
     #[diagnostic(
         code(sinuprep::read),
@@ -24,7 +36,10 @@ pub enum CliError {
     IsDirectory { path: PathBuf },
 
     #[error("{path}:{line}:{column}: {why}")]
-    #[diagnostic(code(sinuprep::config), help("the keys are select, ignore, severity-min, deny-warnings, emit, precision, heads, values, emit-runtime, runtime-r, axes"))]
+    #[diagnostic(
+        code(sinuprep::config),
+        help("every key and its type: the Configuration section of the README")
+    )]
     Config {
         path: PathBuf,
         line: usize,
