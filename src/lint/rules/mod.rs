@@ -3,6 +3,7 @@
 pub mod argument_count_mismatch;
 pub mod block_numbers_backwards;
 pub mod block_too_long;
+pub mod call_shares_block;
 pub mod cycle600_results_without_stopre;
 pub mod cycle800_arguments;
 pub mod cycle800_fed_extrinsic;
@@ -107,6 +108,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &argument_count_mismatch::RULE,
             checker: Some(checker::<argument_count_mismatch::Checker>),
+        },
+        Rule {
+            info: &call_shares_block::RULE,
+            checker: Some(checker::<call_shares_block::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,
