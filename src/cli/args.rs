@@ -63,6 +63,9 @@ pub struct CheckArgs {
     /// Apply the safe fixes to the files, each rewritten atomically (a file with syntax errors is left alone), then report what remains.
     #[arg(long)]
     pub fix: bool,
+    /// No summary line (`3 errors, 2 warnings in 5 files`) after the human and short reports.
+    #[arg(long, short)]
+    pub quiet: bool,
     /// With --fix, apply the unsafe fixes too (did-you-mean corrections of names, labels and keywords).
     #[arg(long, requires = "fix")]
     pub unsafe_fixes: bool,

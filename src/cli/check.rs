@@ -26,6 +26,60 @@ use crate::syntax::program_kind;
 struct Checked {
     report: Report,
     fails: bool,
+    counts: Counts,
+}
+
+/// Findings by severity, for the summary line.
+#[derive(Default, Clone, Copy)]
+struct Counts {
+    errors: usize,
+    warnings: usize,
+    infos: usize,
+}
+
+impl Counts {
+    fn of(diagnostics: &[Diagnostic]) -> Self {
+        let count = |severity| {
+            diagnostics
+                .iter()
+                .filter(|d| d.severity == severity)
+                .count()
+        };
+        Self {
+            errors: count(Severity::Error),
+            warnings: count(Severity::Warning),
+            infos: count(Severity::Info),
+        }
+    }
+
+    fn add(&mut self, other: Counts) {
+        self.errors += other.errors;
+        self.warnings += other.warnings;
+        self.infos += other.infos;
+    }
+
+    /// `3 errors, 2 warnings in 5 files`, as ruff and clippy sum up.
+    fn summary(self, files: usize) -> String {
+        let plural = |n: usize, word: &str| match n {
+            1 => format!("1 {word}"),
+            n => format!("{n} {word}s"),
+        };
+        let parts: Vec<String> = [
+            (self.errors, "error"),
+            (self.warnings, "warning"),
+            (self.infos, "info"),
+        ]
+        .into_iter()
+        .filter(|&(n, _)| n > 0)
+        .map(|(n, word)| plural(n, word))
+        .collect();
+        let found = if parts.is_empty() {
+            "no findings".to_string()
+        } else {
+            parts.join(", ")
+        };
+        format!("{found} in {}", plural(files, "file"))
+    }
 }
 
 enum Report {
@@ -75,10 +129,14 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut fails = false;
     let mut text = String::new();
     let mut located = Vec::new();
+    let mut counts = Counts::default();
+    let mut files = 0;
     for slot in results {
         match slot.into_inner().ok().flatten() {
             Some(Ok(checked)) => {
                 fails |= checked.fails;
+                counts.add(checked.counts);
+                files += 1;
                 match checked.report {
                     // One file's report (the common case) is taken, not copied.
                     Report::Text(part) if text.is_empty() => text = part,
@@ -99,6 +157,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         Format::Short | Format::Github | Format::Human => text,
     };
     write_stdout(out.as_bytes())?;
+    // For people: on stderr, so that what tools read stays the findings.
+    if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
+        eprintln!("{}", counts.summary(files));
+    }
 
     Ok(if failed {
         ExitStatus::Error
@@ -162,6 +224,7 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         }
     }
     let deny_warnings = args.deny_warnings || config.deny_warnings == Some(true);
+    let counts = Counts::of(&diagnostics);
     let fails = diagnostics.iter().any(|d| {
         d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
     });
@@ -177,12 +240,17 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         Format::Human => human(&file_report, colour, &mut text),
         Format::Json | Format::Sarif => {
             let report = Report::Located(Located::new(&file.name, &file.bytes, diagnostics));
-            return Ok(Checked { report, fails });
+            return Ok(Checked {
+                report,
+                fails,
+                counts,
+            });
         }
     }
     Ok(Checked {
         report: Report::Text(text),
         fails,
+        counts,
     })
 }
 

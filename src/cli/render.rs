@@ -406,13 +406,14 @@ pub fn sarif(reports: &[Located]) -> String {
                 "name": info.name,
                 "shortDescription": { "text": summary },
                 "fullDescription": { "text": info.docs },
+                "help": { "text": info.docs, "markdown": info.docs },
                 "defaultConfiguration": { "level": level(info.severity) },
             })
         })
         .collect();
     let mut results = Vec::new();
     for report in reports {
-        let uri = report.name.replace('\\', "/");
+        let location = artifact(&report.name);
         for (d, start, end) in report.each() {
             let mut result = serde_json::json!({
                 "ruleId": d.code,
@@ -420,7 +421,7 @@ pub fn sarif(reports: &[Located]) -> String {
                 "message": { "text": match &d.help { Some(help) => format!("{} ({help})", d.message), None => d.message.clone() } },
                 "locations": [{
                     "physicalLocation": {
-                        "artifactLocation": { "uri": uri },
+                        "artifactLocation": location,
                         "region": { "startLine": start.row, "startColumn": start.column, "endLine": end.row, "endColumn": end.column, "byteOffset": d.span.start, "byteLength": d.span.len() }
                     }
                 }],
@@ -437,7 +438,7 @@ pub fn sarif(reports: &[Located]) -> String {
                     .collect();
                 result["fixes"] = serde_json::json!([{
                     "description": { "text": format!("{} ({})", fix.title, applicability(fix.applicability)) },
-                    "artifactChanges": [{ "artifactLocation": { "uri": uri }, "replacements": replacements }]
+                    "artifactChanges": [{ "artifactLocation": location, "replacements": replacements }]
                 }]);
             }
             results.push(result);
@@ -449,12 +450,55 @@ pub fn sarif(reports: &[Located]) -> String {
         "runs": [{
             "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
             "columnKind": "unicodeCodePoints",
+            "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
             "results": results,
         }],
     });
     let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
     text.push('\n');
     text
+}
+
+/// The base the relative paths of a SARIF log are read against: the
+/// directory `check` ran in.
+const SOURCE_ROOT: &str = "%SRCROOT%";
+
+/// A file as a SARIF artifact location: a relative path against
+/// [`SOURCE_ROOT`], an absolute one as a `file://` URI; percent-encoded.
+fn artifact(name: &str) -> serde_json::Value {
+    let path = name.replace('\\', "/");
+    if path.starts_with('/') {
+        serde_json::json!({ "uri": format!("file://{}", percent_encoded(&path)) })
+    } else {
+        let relative = path.strip_prefix("./").unwrap_or(&path);
+        serde_json::json!({ "uri": percent_encoded(relative), "uriBaseId": SOURCE_ROOT })
+    }
+}
+
+/// The working directory as a `file://` URI ending in `/`.
+fn working_directory() -> String {
+    let dir = std::env::current_dir().unwrap_or_default();
+    let dir = dir.to_string_lossy().replace('\\', "/");
+    let dir = if dir.starts_with('/') {
+        dir
+    } else {
+        format!("/{dir}")
+    };
+    let slash = if dir.ends_with('/') { "" } else { "/" };
+    format!("file://{}{slash}", percent_encoded(&dir))
+}
+
+/// RFC 3986: every byte but the unreserved characters and `/` as `%XX`.
+fn percent_encoded(path: &str) -> String {
+    let mut out = String::with_capacity(path.len());
+    for byte in path.bytes() {
+        if byte.is_ascii_alphanumeric() || matches!(byte, b'-' | b'.' | b'_' | b'~' | b'/') {
+            out.push(byte as char);
+        } else {
+            out.push_str(&format!("%{byte:02X}"));
+        }
+    }
+    out
 }
 
 fn level(severity: Severity) -> &'static str {
