@@ -21,7 +21,9 @@ pub struct Args {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Report syntax errors in NC programs (files, directories, or `-` for stdin).
+    /// Lint NC programs (files, directories, or `-` for stdin): syntax errors,
+    /// CYCLE600 findings and the general NC rules (`sinuprep rule --all`);
+    /// `--fix` applies the safe fixes.
     Check(CheckArgs),
     /// Rewrite CYCLE600 calls as native CYCLE800 / frames / TRAORI code; every
     /// other byte stays as it is.
