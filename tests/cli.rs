@@ -517,3 +517,17 @@ fn json_findings_carry_their_fixes() {
         ]
     );
 }
+
+#[test]
+fn a_folder_without_programs_is_an_error_unless_allowed() {
+    let dir = scratch("empty");
+    std::fs::write(dir.join("notes.txt"), "no program here\n").expect("write");
+    let name = dir.to_str().expect("utf-8");
+    let output = run(&["check", name], b"");
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("holds no program"));
+    let output = run(&["check", "--allow-empty", name], b"");
+    assert_exit(&output, 0);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("no findings in 0 files"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

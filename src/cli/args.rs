@@ -65,6 +65,9 @@ pub struct CheckArgs {
     /// Apply the safe fixes to the files, each rewritten atomically (a file with syntax errors is left alone), then report what remains.
     #[arg(long)]
     pub fix: bool,
+    /// A directory without programs is no error (by default it is: exit 2).
+    #[arg(long)]
+    pub allow_empty: bool,
     /// No summary line (`3 errors, 2 warnings in 5 files`) after the human and short reports.
     #[arg(long, short)]
     pub quiet: bool,

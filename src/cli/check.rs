@@ -92,7 +92,7 @@ enum Report {
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     codes(&args.select, "--select")?;
     codes(&args.ignore, "--ignore")?;
-    let paths = expand(&args.paths);
+    let paths = expand(&args.paths, args.allow_empty)?;
     let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
         paths.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);

@@ -28,6 +28,13 @@ pub enum CliError {
         source: std::io::Error,
     },
 
+    #[error("{path} holds no program (.mpf or .spf, any case)")]
+    #[diagnostic(
+        code(sinuprep::no_programs),
+        help("check the path; with --allow-empty a folder without programs is no error")
+    )]
+    NoPrograms { path: PathBuf },
+
     #[error("{path} is a directory")]
     #[diagnostic(
         code(sinuprep::read),

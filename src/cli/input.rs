@@ -38,17 +38,27 @@ impl Deref for Bytes {
 /// Every file and directory is taken once, by its device and inode, so
 /// symlinks that loop (`a -> .`, `up -> ..`) or name a file twice do not
 /// repeat it.
-pub fn expand(paths: &[PathBuf]) -> Vec<Result<PathBuf, CliError>> {
+///
+/// A directory that holds no program is an error unless `allow_empty`: a
+/// CI run over a mistyped or emptied folder must not pass in silence.
+pub fn expand(
+    paths: &[PathBuf],
+    allow_empty: bool,
+) -> Result<Vec<Result<PathBuf, CliError>>, CliError> {
     let mut out = Vec::new();
     let mut seen = HashSet::new();
     for path in paths {
         if path.is_dir() {
+            let before = out.len();
             walk(path, &mut seen, &mut out);
+            if out.len() == before && !allow_empty {
+                return Err(CliError::NoPrograms { path: path.clone() });
+            }
         } else if first_time(path, &mut seen) {
             out.push(Ok(path.clone()));
         }
     }
-    out
+    Ok(out)
 }
 
 /// Whether `path` has not been met before (a path that cannot be read is
