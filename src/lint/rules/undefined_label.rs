@@ -1,27 +1,29 @@
-//! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
+//! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have, and REPEAT labels it does not have.
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::suggest::Nearest;
-use crate::syntax::tree::GotoKind;
+use crate::syntax::tree::{GotoKind, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N001",
     name: "undefined-label",
     severity: Severity::Error,
     docs: r#"## What it does
-Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have.
+Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not
+have, and the labels of a REPEAT (`REPEAT START END P=2`, `REPEATB LBL`) it does not have.
 
 ## Why it matters
-The control stops with alarm 14080 ("jump destination not found") when the jump is taken; GOTOC
-suppresses the alarm and simply goes on, which hides the mistake (reported as a warning).
+The control stops with alarm 14080 ("jump destination not found") when the jump is taken or the
+section to repeat is searched; GOTOC suppresses the alarm and simply goes on, which hides the
+mistake (reported as a warning).
 
 ## Example
 ```
 N10 GOTOF ENDE
-N20 ENDE: M30      ; label is ENDE, the jump says ENDE... in another file it says END
+N20 END: M30       ; the label is END
 ```
 
 ## Fix
@@ -32,7 +34,17 @@ The nearest label is offered as an unsafe fix (`check --fix --unsafe-fixes`): it
 /// The labels are the file's ([`FileContext::labels`]).
 #[derive(Default)]
 pub struct Checker {
-    jumps: Vec<(Target, Span, bool)>,
+    jumps: Vec<Jump>,
+}
+
+/// A jump (or a REPEAT) to a place the program must have.
+struct Jump {
+    target: Target,
+    span: Span,
+    /// GOTOC: goes on without an alarm when the target is missing.
+    tolerant: bool,
+    /// A label a REPEAT names, not a GOTO's.
+    repeat: bool,
 }
 
 impl Check for Checker {
@@ -51,8 +63,22 @@ impl Check for Checker {
         }
         for goto in gotos(block) {
             if let Some((target, span)) = target(file, goto) {
-                self.jumps
-                    .push((target, span, goto.kind == GotoKind::Conditional));
+                self.jumps.push(Jump {
+                    target,
+                    span,
+                    tolerant: goto.kind == GotoKind::Conditional,
+                    repeat: false,
+                });
+            }
+        }
+        for statement in &block.statements {
+            if let StatementKind::Repeat { targets, .. } = &statement.kind {
+                self.jumps.extend(targets.iter().map(|name| Jump {
+                    target: Target::Label(upper(file.source, name.span)),
+                    span: name.span,
+                    tolerant: false,
+                    repeat: true,
+                }));
             }
         }
     }
@@ -60,7 +86,13 @@ impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         // Collected at the first jump that needs a did-you-mean.
         let mut names: Option<Nearest> = None;
-        for (target, span, tolerant) in &self.jumps {
+        for Jump {
+            target,
+            span,
+            tolerant,
+            repeat,
+        } in &self.jumps
+        {
             let exists = match target {
                 Target::Label(name) => file.labels().contains(name),
                 // Read from the file on first use: most programs never jump to one.
@@ -85,9 +117,13 @@ impl Check for Checker {
             };
             let mut diagnostic = RULE
                 .at(*span)
-                .message(format!(
-                    "jump to `{wanted}`, which is not a label or block number of this program"
-                ))
+                .message(if *repeat {
+                    format!("REPEAT names `{wanted}`, which is not a label of this program")
+                } else {
+                    format!(
+                        "jump to `{wanted}`, which is not a label or block number of this program"
+                    )
+                })
                 .label("no such label")
                 .help(help);
             if let Some(label) = &meant {
