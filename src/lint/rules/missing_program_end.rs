@@ -2,6 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rules::empty_program::is_definition_file;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{LineKind, StatementKind, WordValue};
@@ -75,14 +76,8 @@ impl Check for Checker {
         let Some(raw) = self.last else {
             return;
         };
-        let extension = std::path::Path::new(file.name)
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("");
-        if ["DEF", "INI", "GUD", "COM"]
-            .iter()
-            .any(|e| extension.eq_ignore_ascii_case(e))
-        {
+        // A program with nothing to execute is N020's, once.
+        if is_definition_file(file.name) || file.model().first_executable.is_none() {
             return;
         }
         let (line, _) = LineParser::default().parse_line(file.source, raw);

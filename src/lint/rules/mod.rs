@@ -10,6 +10,7 @@ pub mod cycle800_fed_extrinsic;
 pub mod def_after_executable;
 pub mod duplicate_def;
 pub mod duplicate_label;
+pub mod empty_program;
 pub mod identifier_too_long;
 pub mod inconsistent_case;
 pub mod jump_direction;
@@ -112,6 +113,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &call_shares_block::RULE,
             checker: Some(checker::<call_shares_block::Checker>),
+        },
+        Rule {
+            info: &empty_program::RULE,
+            checker: Some(checker::<empty_program::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,
