@@ -51,12 +51,13 @@ pub fn closest<'c, S: AsRef<str> + ?Sized>(
         .map(|(_, c)| c)
 }
 
-/// Names to suggest from, however many: a list searched name by name while
-/// it is short, and once it is long, an index of every way to delete up to
-/// [`Nearest::MOST`] characters from each name (two words within `k` edits
-/// share a form with at most `k` characters deleted from each), so that a
-/// search costs the word's own deletions, not the list's length. Thousands
-/// of findings over thousands of names stay linear.
+/// Names to suggest from, however many: searched name by name while the
+/// list is short or searches are few, and past that through an index of
+/// every way to delete up to [`Nearest::MOST`] characters from each name
+/// (two words within `k` edits share a form with at most `k` characters
+/// deleted from each), so that a search costs the word's own deletions, not
+/// the list's length. Thousands of findings over thousands of names stay
+/// linear, and a program with a few findings never pays for the index.
 #[derive(Default)]
 pub struct Nearest {
     /// Upper case, in the order given.
@@ -64,6 +65,7 @@ pub struct Nearest {
     /// Deleted form -> indices into `names`; built at the first search of a
     /// long list.
     index: Option<HashMap<String, Vec<u32>>>,
+    searches: usize,
 }
 
 impl Nearest {
@@ -71,6 +73,8 @@ impl Nearest {
     pub const MOST: usize = 2;
     /// Lists up to this long are searched name by name.
     const SCAN: usize = 64;
+    /// Searches made name by name before the index is built.
+    const SCANNED_SEARCHES: usize = 16;
 
     pub fn push(&mut self, name: &str) {
         let name = name.to_ascii_uppercase();
@@ -87,7 +91,10 @@ impl Nearest {
     /// edits away and not `word` itself; of equals, the first given.
     pub fn closest(&mut self, word: &str, most: usize) -> Option<&str> {
         let most = most.min(Self::MOST);
-        if self.names.len() <= Self::SCAN {
+        self.searches += 1;
+        if self.index.is_none()
+            && (self.names.len() <= Self::SCAN || self.searches <= Self::SCANNED_SEARCHES)
+        {
             return closest(word, self.names.iter(), most).map(String::as_str);
         }
         let names = &self.names;
@@ -164,7 +171,11 @@ mod tests {
             }
             let upper: Vec<String> = names.iter().map(|n| n.to_ascii_uppercase()).collect();
             let scanned = closest(&word, upper.iter(), most).cloned();
-            proptest::prop_assert_eq!(nearest.closest(&word, most).map(str::to_string), scanned);
+            // The first searches scan; later ones go through the index.
+            for _ in 0..=Nearest::SCANNED_SEARCHES {
+                proptest::prop_assert_eq!(nearest.closest(&word, most).map(str::to_string), scanned.clone());
+            }
+            proptest::prop_assert!(nearest.index.is_some());
             // Names pushed once the index is built are found as well.
             nearest.push("ABCDDD");
             proptest::prop_assert_eq!(nearest.closest("ABCDD", 1), Some("ABCDDD"));

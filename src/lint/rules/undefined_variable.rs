@@ -42,6 +42,8 @@ pub struct Checker {
     defined: HashMap<String, Option<TypeKind>>,
     /// The same names, for the did-you-mean.
     nearest: Nearest,
+    /// An AXIS variable is among them.
+    axis_variables: bool,
     reported: HashSet<String>,
 }
 
@@ -59,17 +61,20 @@ fn is_global_r_parameter(name: &str) -> bool {
 
 /// The value of an assignment to an AXIS variable, or of its DEF, when it is
 /// a bare name (`_AX=AX1`, `DEF AXIS _AX=XC`): an axis identifier, not a read.
+/// `axis_variables`: whether any AXIS variable is defined (most programs
+/// have none, and then no assignment's target is looked up).
 fn axis_value(
     source: &[u8],
     statement: &Statement,
     defined: &HashMap<String, Option<TypeKind>>,
+    axis_variables: bool,
 ) -> Vec<Span> {
     let bare = |expr: &Expr| match &expr.kind {
         ExprKind::Variable(v) if v.indices.is_empty() => Some(v.name.span),
         _ => None,
     };
     match &statement.kind {
-        StatementKind::Assign(assign) => {
+        StatementKind::Assign(assign) if axis_variables => {
             let target = upper(source, assign.target.name.span);
             if defined.get(&target) == Some(&Some(TypeKind::Axis)) {
                 return bare(&assign.value).into_iter().collect();
@@ -100,7 +105,7 @@ impl Check for Checker {
             return;
         };
         for (index, statement) in block.statements.iter().enumerate() {
-            let axes = axis_value(file.source, statement, &self.defined);
+            let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
             for variable in line.reads(index) {
                 if axes.contains(&variable.name.span) {
                     continue;
@@ -144,6 +149,7 @@ impl Checker {
     /// `name` is defined from here on; a type given later (a DEF after an
     /// assignment) is kept.
     fn define(&mut self, name: String, data_type: Option<TypeKind>) {
+        self.axis_variables |= data_type == Some(TypeKind::Axis);
         match self.defined.get_mut(&name) {
             Some(known) => {
                 if data_type.is_some() {
