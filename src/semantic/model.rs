@@ -415,6 +415,18 @@ mod tests {
         assert_eq!(model.declarations_insertion(), 12);
         let model = Model::of(b"; only a comment\n");
         assert_eq!(model.declarations_insertion(), 17);
+        // An assignment executes: a DEF after it is no declaration of the head.
+        let model = Model::of(b"DEF REAL A\nR1=5\nDEF REAL B\nG0 X1\n");
+        assert_eq!(model.first_executable, Some((1, 11)));
+        assert_eq!(model.declarations_insertion(), 11);
+    }
+
+    #[test]
+    fn the_trees_of_lines_not_plain_are_kept_and_plain_ones_parsed_when_asked() {
+        let model = Model::of(b"R1=5\nG1 X1\n");
+        assert!(matches!(model.lines.line(0), std::borrow::Cow::Borrowed(_)));
+        assert!(matches!(model.lines.line(1), std::borrow::Cow::Owned(_)));
+        assert!(!model.lines.is_empty() && Model::of(b"").lines.is_empty());
     }
 
     proptest::proptest! {
