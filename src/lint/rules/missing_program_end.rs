@@ -4,9 +4,8 @@ use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::rules::empty_program::is_definition_file;
 use crate::span::Span;
-use crate::syntax::lines::RawLine;
-use crate::syntax::tree::{LineKind, StatementKind, WordValue};
-use crate::syntax::{LineParser, ProgramKind};
+use crate::syntax::tree::{StatementKind, WordValue};
+use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N010",
@@ -34,18 +33,18 @@ N20 G1 X100 F500 M5
 End a main program with `M30` (or `M2`), a subprogram with `M17` or `RET`."#,
 };
 
-/// Remembers only where the last block is; `finish` reads it again, so that
-/// the millions of blocks before it cost nothing.
+/// Remembers only which line the last block is; `finish` takes its tree
+/// from the model, so that the millions of blocks before it cost nothing.
 #[derive(Default)]
 pub struct Checker {
-    last: Option<RawLine>,
+    last: Option<usize>,
 }
 
 impl Check for Checker {
     fn line(
         &mut self,
         _file: &FileContext,
-        _row: usize,
+        row: usize,
         line: &LineView,
         _out: &mut Vec<Diagnostic>,
     ) {
@@ -53,7 +52,7 @@ impl Check for Checker {
             .block
             .is_some_and(|block| !block.statements.is_empty() || block.unparsed.is_some())
         {
-            self.last = Some(line.raw);
+            self.last = Some(row);
         }
     }
 
@@ -68,22 +67,23 @@ impl Check for Checker {
         _out: &mut Vec<Diagnostic>,
     ) {
         if let Some(line) = lines.iter().rev().find(|line| line.facts.has_words) {
-            self.last = Some(line.raw);
+            self.last = Some(line.row);
         }
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let Some(raw) = self.last else {
+        let Some(row) = self.last else {
             return;
         };
         // A program with nothing to execute is N020's, once.
         if is_definition_file(file.name) || file.model().first_executable.is_none() {
             return;
         }
-        let (line, _) = LineParser::default().parse_line(file.source, raw);
-        let LineKind::Block(block) = &line.kind else {
+        let model = file.model();
+        let Some(block) = model.lines.block(row) else {
             return;
         };
+        let raw = model.lines.raw(row);
         let m_words: Vec<f64> = block
             .statements
             .iter()
