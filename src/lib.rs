@@ -22,10 +22,14 @@
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
 //! - [`suggest`]: did-you-mean, shared by the parser's and the rules' messages.
-//! - [`cli`]: the command line; the only place that prints.
+//! - [`document`]: the front door: a program in, its findings and its rewrite out, for the
+//!   command line and an editor alike.
+//! - [`cli`]: the command line (settings from sinuprep.toml and options); the only place that
+//!   prints.
 
 pub mod cli;
 pub mod diagnostic;
+pub mod document;
 pub mod edit;
 pub mod emit;
 pub mod lint;

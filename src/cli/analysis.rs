@@ -1,5 +1,6 @@
 //! What `check`, `rewrite` and `eval` share: measured values from the user,
-//! HEAD_DEF, settings from sinuprep.toml, the walk, and the rewrite.
+//! HEAD_DEF and settings from sinuprep.toml, handed to the library's
+//! [`Document`].
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -9,14 +10,15 @@ use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::SourceFile;
 use crate::cli::render::{human, short, FileReport};
-use crate::diagnostic::{Diagnostic, Severity};
-use crate::emit::cycle600::{rewrite, Options, Rewrite};
+use crate::document::{Document, Rewritten};
+use crate::emit::cycle600::Options;
+use crate::lint::Settings;
 use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, variable_key};
 use crate::semantic::value::Value;
-use crate::semantic::{analyze, Analysis, Heads, Model, Supplied};
+use crate::semantic::{Heads, Supplied};
+use crate::syntax::parse;
 use crate::syntax::tree::{LineKind, StatementKind};
-use crate::syntax::{parse, program_kind};
 
 /// Measured values and accessory definitions for one program, from the
 /// command line first and sinuprep.toml second.
@@ -104,62 +106,29 @@ pub fn options(args: &AnalysisArgs, config: &Config) -> Options {
     }
 }
 
-pub struct Analyzed {
-    pub analysis: Analysis,
-    pub rewrite: Rewrite,
-    /// Syntax errors, the HEAD_DEF note, and every refusal or warning.
-    pub diagnostics: Vec<Diagnostic>,
+/// Prints a rewrite's diagnostics on stderr, in the format asked for.
+pub fn report(rewritten: &Rewritten, file: &SourceFile, format: MessageFormat) {
+    let report = FileReport {
+        name: &file.name,
+        source: &file.bytes,
+        diagnostics: &rewritten.diagnostics,
+    };
+    let mut text = String::new();
+    match format {
+        MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
+        MessageFormat::Short => short(&report, &mut text),
+    }
+    eprint!("{text}");
 }
 
-impl Analyzed {
-    pub fn has_errors(&self) -> bool {
-        self.diagnostics
-            .iter()
-            .any(|d| d.severity == Severity::Error)
-    }
-
-    /// Prints the diagnostics on stderr, in the format asked for.
-    pub fn report(&self, file: &SourceFile, format: MessageFormat) {
-        let report = FileReport {
-            name: &file.name,
-            source: &file.bytes,
-            diagnostics: &self.diagnostics,
-        };
-        let mut text = String::new();
-        match format {
-            MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
-            MessageFormat::Short => short(&report, &mut text),
-        }
-        eprint!("{text}");
-    }
-}
-
-pub fn run(file: &SourceFile, inputs: &Inputs, options: &Options) -> Analyzed {
-    // A program that never names CYCLE600 has nothing to rewrite: it needs
-    // only the streaming syntax pass, not the whole tree in memory.
-    if !crate::semantic::mentions_cycle600(&file.bytes) {
-        let diagnostics = crate::syntax::diagnostics(&file.bytes);
-        return Analyzed {
-            analysis: Analysis::default(),
-            rewrite: Rewrite::default(),
-            diagnostics,
-        };
-    }
-    // One parse for the syntax diagnostics, the walk and the rewrite.
-    let model = Model::build(&file.bytes, program_kind(Some(&file.name), &file.bytes));
-    let analysis = analyze(&model, &inputs.supplied, inputs.heads.as_ref());
-    let rewrite = rewrite(&model, &analysis, options);
-    let mut diagnostics = model.syntax;
-    if inputs.heads.is_none() && !analysis.calls.is_empty() {
-        diagnostics.push(crate::semantic::head_def::not_found());
-    }
-    diagnostics.extend(rewrite.diagnostics.iter().cloned());
-    diagnostics.sort_by_key(|d| (d.span.start, d.code));
-    Analyzed {
-        analysis,
-        rewrite,
-        diagnostics,
-    }
+/// The program rewritten as `options` asks, with the values and HEAD_DEF given.
+pub fn run(file: &SourceFile, inputs: Inputs, options: &Options) -> Rewritten {
+    let settings = Settings {
+        supplied: inputs.supplied,
+        heads: inputs.heads,
+        ..Settings::default()
+    };
+    Document::new(&file.name, &file.bytes).rewrite(&settings, options)
 }
 
 /// A supplied value: its variable's key, the value, the line it was given on.

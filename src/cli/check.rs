@@ -15,6 +15,7 @@ use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
+use crate::document::Document;
 use crate::edit::apply;
 use crate::lint::{self, Selection};
 use crate::semantic::Environment;
@@ -215,7 +216,14 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         heads: inputs.heads,
         environment: Environment::with_axes(config.axes.iter().flatten()),
     };
-    let check = |bytes: &[u8]| lint::check(bytes, &file.name, kind, &settings);
+    let check = |source: &[u8]| {
+        let document = Document {
+            name: &file.name,
+            source,
+            kind,
+        };
+        document.check(&settings)
+    };
     let mut diagnostics = check(&file.bytes);
     if let Some(target) = fix_target {
         if let Some(fixed) = fix(&target, &file, &diagnostics, args.unsafe_fixes)? {

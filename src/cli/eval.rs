@@ -19,7 +19,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
     let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
     let options = analysis::options(&args.analysis, &config);
-    let analyzed = analysis::run(&file, &inputs, &options);
+    let analyzed = analysis::run(&file, inputs, &options);
     let index = LineIndex::new(&file.bytes);
     let text = if args.json {
         let calls: Vec<serde_json::Value> = analyzed
@@ -41,7 +41,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
         }
-        analyzed.report(&file, args.analysis.message_format);
+        analysis::report(&analyzed, &file, args.analysis.message_format);
         text
     };
     write_stdout(text.as_bytes())?;

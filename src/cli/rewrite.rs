@@ -34,8 +34,8 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         inline_results: args.inline_results,
         ..analysis::options(&args.analysis, &config)
     };
-    let analyzed = analysis::run(&file, &inputs, &options);
-    analyzed.report(&file, args.analysis.message_format);
+    let analyzed = analysis::run(&file, inputs, &options);
+    analysis::report(&analyzed, &file, args.analysis.message_format);
 
     let edits = &analyzed.rewrite.edits;
     let changed = !edits.is_empty();

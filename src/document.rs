@@ -1,0 +1,81 @@
+//! The library's front door: one program in, what sinuprep finds in it and
+//! writes for it out. The command line and an editor's server call these,
+//! so both report the same findings from the same analysis.
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::emit::cycle600::{rewrite, Options, Rewrite};
+use crate::lint::{self, Settings};
+use crate::semantic::{analyze, Analysis, Model};
+use crate::syntax::{program_kind, ProgramKind};
+
+/// A program: its name (a path, `<stdin>`, an editor's URI) and its bytes.
+pub struct Document<'src> {
+    pub name: &'src str,
+    pub source: &'src [u8],
+    pub kind: ProgramKind,
+}
+
+/// What a rewrite makes of a program.
+pub struct Rewritten {
+    /// How each CYCLE600 call evaluated.
+    pub analysis: Analysis,
+    /// The edits, and the calls rewritten and refused.
+    pub rewrite: Rewrite,
+    /// Syntax errors, the HEAD_DEF note, and every refusal or warning, in
+    /// source order.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Rewritten {
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics
+            .iter()
+            .any(|d| d.severity == Severity::Error)
+    }
+}
+
+impl<'src> Document<'src> {
+    /// The program `name` holds, its kind read from its name and first blocks.
+    pub fn new(name: &'src str, source: &'src [u8]) -> Self {
+        Self {
+            name,
+            source,
+            kind: program_kind(Some(name), source),
+        }
+    }
+
+    /// Everything `check` reports, in source order.
+    pub fn check(&self, settings: &Settings) -> Vec<Diagnostic> {
+        lint::check(self.source, self.name, self.kind, settings)
+    }
+
+    /// The CYCLE600 calls rewritten as `options` asks, with the measured
+    /// values and HEAD_DEF of `settings`.
+    pub fn rewrite(&self, settings: &Settings, options: &Options) -> Rewritten {
+        // A program that never names CYCLE600 has nothing to rewrite: it
+        // needs only the streaming syntax pass, not its trees in memory.
+        if !crate::semantic::mentions_cycle600(self.source) {
+            return Rewritten {
+                analysis: Analysis::default(),
+                rewrite: Rewrite::default(),
+                diagnostics: crate::syntax::diagnostics(self.source),
+            };
+        }
+        // One parse for the syntax diagnostics, the walk and the rewrite.
+        let model = Model::build(self.source, self.kind);
+        let heads = settings.heads.as_ref();
+        let analysis = analyze(&model, &settings.supplied, heads);
+        let rewrite = rewrite(&model, &analysis, options);
+        let mut diagnostics = model.syntax;
+        if heads.is_none() && !analysis.calls.is_empty() {
+            diagnostics.push(crate::semantic::head_def::not_found());
+        }
+        diagnostics.extend(rewrite.diagnostics.iter().cloned());
+        diagnostics.sort_by_key(|d| (d.span.start, d.code));
+        Rewritten {
+            analysis,
+            rewrite,
+            diagnostics,
+        }
+    }
+}
