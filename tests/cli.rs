@@ -531,3 +531,44 @@ fn a_folder_without_programs_is_an_error_unless_allowed() {
     assert!(String::from_utf8_lossy(&output.stderr).contains("no findings in 0 files"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn globals_and_macros_of_definition_files_are_defined() {
+    let dir = scratch("definitions");
+    std::fs::write(
+        dir.join("MGUD.DEF"),
+        "DEF NCK REAL ZERO_X\nDEF CHAN INT PART_COUNT\n",
+    )
+    .expect("write");
+    std::fs::write(dir.join("SMAC.DEF"), "DEFINE SAFE_Z AS 250\n").expect("write");
+    let program = dir.join("PART.MPF");
+    std::fs::write(&program, "N10 X=ZERO_X+PART_COUNT Z=SAFE_Z\nN20 M30\n").expect("write");
+    let name = program.to_str().expect("utf-8");
+    let args = ["check", "--format", "short", "--select", "N005", name];
+    let output = run(&args, b"");
+    assert_exit(&output, 0);
+    assert_eq!(
+        stdout(&output).matches("N005").count(),
+        3,
+        "{}",
+        stdout(&output)
+    );
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "definitions = [\"MGUD.DEF\", \"SMAC.DEF\"]\n",
+    )
+    .expect("toml");
+    let output = run(&args, b"");
+    assert_exit(&output, 0);
+    assert!(!stdout(&output).contains("N005"), "{}", stdout(&output));
+    // A broken definition file is a tool error at its line and column.
+    std::fs::write(dir.join("SMAC.DEF"), "DEFINE SAFE_Z AS 250\nDEF REAL (\n").expect("write");
+    let output = run(&args, b"");
+    assert_exit(&output, 2);
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains("SMAC.DEF:2:"),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

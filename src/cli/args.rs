@@ -65,6 +65,9 @@ pub struct CheckArgs {
     /// Apply the safe fixes to the files, each rewritten atomically (a file with syntax errors is left alone), then report what remains.
     #[arg(long)]
     pub fix: bool,
+    /// A definition file (GUD variables, macros) the programs use, as the control holds it (repeatable; also `definitions = [...]` in sinuprep.toml).
+    #[arg(long = "definitions", value_name = "FILE")]
+    pub definitions: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,

@@ -214,7 +214,7 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         selection,
         supplied: inputs.supplied,
         heads: inputs.heads,
-        environment: Environment::with_axes(config.axes.iter().flatten()),
+        environment: environment(args, &config)?,
     };
     let check = |source: &[u8]| {
         let document = Document {
@@ -260,6 +260,37 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         fails,
         counts,
     })
+}
+
+/// The machine's names: axes from sinuprep.toml, globals and macros from
+/// the definition files of the command line (or else of sinuprep.toml).
+fn environment(args: &CheckArgs, config: &Config) -> Result<Environment, CliError> {
+    let mut environment = Environment::with_axes(config.axes.iter().flatten());
+    let files: Vec<PathBuf> = if args.definitions.is_empty() {
+        let listed = config.definitions.iter().flatten();
+        listed.map(|path| config.resolve(path)).collect()
+    } else {
+        args.definitions.clone()
+    };
+    for path in files {
+        let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
+            path: path.clone(),
+            source,
+        })?;
+        if let Err(errors) = environment.read_definitions(&bytes) {
+            let Some(first) = errors.first() else {
+                continue;
+            };
+            let position = crate::span::LineIndex::new(&bytes).position(first.span.start);
+            return Err(CliError::Definitions {
+                path,
+                line: position.row,
+                column: position.column,
+                why: first.message.clone(),
+            });
+        }
+    }
+    Ok(environment)
 }
 
 /// Applies the fixes `--fix` takes to `file` and writes it to `target`

@@ -31,6 +31,9 @@ pub struct Config {
     /// The machine's axis names (channel and machine axes: `["X", "XC", "AX1"]`),
     /// which a program may use where a variable could stand.
     pub axes: Option<Vec<String>>,
+    /// Definition files (GUD, macros) whose globals and macros programs use,
+    /// relative to the configuration file.
+    pub definitions: Option<Vec<PathBuf>>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -103,7 +106,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 11] = [
+const KEYS: [&str; 12] = [
     "select",
     "ignore",
     "severity-min",
@@ -115,6 +118,7 @@ const KEYS: [&str; 11] = [
     "emit-runtime",
     "runtime-r",
     "axes",
+    "definitions",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

@@ -28,6 +28,18 @@ pub enum CliError {
         source: std::io::Error,
     },
 
+    #[error("{path}:{line}:{column}: {why}")]
+    #[diagnostic(
+        code(sinuprep::definitions),
+        help("a definition file is read as the control reads it; correct it, or leave it out of `definitions`")
+    )]
+    Definitions {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+        why: String,
+    },
+
     #[error("{path} holds no program (.mpf or .spf, any case)")]
     #[diagnostic(
         code(sinuprep::no_programs),

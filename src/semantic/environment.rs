@@ -6,12 +6,21 @@
 
 use std::collections::HashSet;
 
+use crate::diagnostic::Diagnostic;
+use crate::semantic::Model;
+use crate::syntax::tree::{LineKind, StatementKind};
+
 /// Names defined outside the program.
 #[derive(Clone, Debug, Default)]
 pub struct Environment {
     /// Axis names (upper case), as machine data names them: channel axes
     /// (`X`, `XC`), machine axes (`X1`, `AX1`), ...
     pub axes: HashSet<String>,
+    /// Global variables of definition files (GUD: `DEF NCK REAL _ZERO`),
+    /// upper case.
+    pub variables: HashSet<String>,
+    /// Macros of definition files (`DEFINE M_ON AS M3`), upper case.
+    pub macros: HashSet<String>,
 }
 
 impl Environment {
@@ -22,11 +31,57 @@ impl Environment {
                 .into_iter()
                 .map(|n| n.as_ref().trim().to_ascii_uppercase())
                 .collect(),
+            ..Self::default()
         }
     }
 
-    /// Whether `name` (upper case) is an axis of the machine.
-    pub fn is_axis(&self, name: &str) -> bool {
-        self.axes.contains(name)
+    /// Whether the environment defines `name` (upper case): an axis, a
+    /// global variable or a macro.
+    pub fn defines(&self, name: &str) -> bool {
+        self.axes.contains(name) || self.variables.contains(name) || self.macros.contains(name)
+    }
+
+    /// Learns the variables and macros of a definition file (GUD or macro
+    /// `.DEF`), read with the project's own parser; its syntax errors, if
+    /// any, are given back (nothing is learned from a broken file).
+    pub fn read_definitions(&mut self, source: &[u8]) -> Result<(), Vec<Diagnostic>> {
+        let model = Model::of(source);
+        if !model.syntax.is_empty() {
+            return Err(model.syntax);
+        }
+        self.variables
+            .extend(model.symbols.iter().map(|symbol| symbol.name.clone()));
+        for (_, line) in model.lines.other_lines() {
+            let LineKind::Block(block) = &line.kind else {
+                continue;
+            };
+            for statement in &block.statements {
+                if let StatementKind::Define { name, .. } = &statement.kind {
+                    self.macros
+                        .insert(crate::syntax::tree::upper(name.text(source)));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn definition_files_give_variables_and_macros() {
+        let mut environment = Environment::with_axes(["xc"]);
+        let gud = b"%_N_MGUD_DEF\n;$PATH=/_N_DEF_DIR\nDEF NCK REAL _ZERO_X, _ZERO_Y\nDEF CHAN INT PART_COUNT\nM30\n";
+        environment.read_definitions(gud).expect("valid");
+        environment
+            .read_definitions(b"DEFINE M_ON AS M3\n")
+            .expect("valid");
+        for name in ["XC", "_ZERO_Y", "PART_COUNT", "M_ON"] {
+            assert!(environment.defines(name), "{name}");
+        }
+        assert!(!environment.defines("ZERO_X"));
+        assert!(environment.read_definitions(b"DEF NCK REAL (\n").is_err());
     }
 }

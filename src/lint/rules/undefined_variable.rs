@@ -30,7 +30,8 @@ N10 Z=IC(LAYER_HIGHT)   ; typo
 Declare the variable with DEF (or correct its spelling). Names of R parameters, system variables
 (`$...`), cycle data (`_...`), one-letter addresses, global R parameters (`RG1`), the
 orientation names of `PO[...]` (`PHI`, `PSI`, `THT`, `XH`, `YH`, `ZH`), the machine's axis names
-(`axes = ["XC", "AX1"]` in sinuprep.toml) and a bare name given to an AXIS variable
+(`axes = ["XC", "AX1"]` in sinuprep.toml), the globals and macros of the definition files given
+(`--definitions MGUD.DEF`, `definitions = [...]` in sinuprep.toml) and a bare name given to an AXIS variable
 (`DEF AXIS _AX` then `_AX=AX1`) are not checked. A name defined before it
 within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
 unsafe fix (`check --fix --unsafe-fixes`)."#,
@@ -113,7 +114,7 @@ impl Check for Checker {
                 let name = upper(file.source, variable.name.span);
                 if is_user_name(&name)
                     && !self.defined.contains_key(&name)
-                    && !file.environment.is_axis(&name)
+                    && !file.environment.defines(&name)
                     && !PREDEFINED.contains(&name.as_str())
                     && !is_global_r_parameter(&name)
                     && self.reported.insert(name.clone())
@@ -180,7 +181,7 @@ impl Checker {
                     span,
                     meant.as_bytes(),
                 )),
-            None => diagnostic.help(format!("declare it, as `DEF REAL {name}`, before this block (or it must be a global defined elsewhere)")),
+            None => diagnostic.help(format!("declare it, as `DEF REAL {name}`, before this block (a global of a GUD file: name the file with --definitions or in sinuprep.toml)")),
         }
     }
 }
