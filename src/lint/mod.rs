@@ -74,7 +74,7 @@ pub struct Settings {
     pub supplied: Supplied,
     /// HEAD_DEF, for the CYCLE600 walk.
     pub heads: Option<Heads>,
-    /// Names the machine defines (axes).
+    /// Names the machine defines: axes, GUD globals, macros.
     pub environment: Environment,
 }
 

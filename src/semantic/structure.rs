@@ -1,7 +1,8 @@
-//! The program's block structure, built once before the walk: where each IF
-//! and loop ends, labels and block numbers, the regions backward jumps
-//! repeat, STOPRE lines, what each line writes, and the lines sinuprep wrote
-//! itself (a `; sinuprep:` call and the blocks emitted for it).
+//! The program's block structure, built once before the walk from the
+//! model: where each IF and loop ends (the model's block matching), block
+//! numbers jumps name, the regions backward jumps repeat, what each line
+//! writes, and the lines sinuprep wrote itself (a `; sinuprep:` call and the
+//! blocks emitted for it). Labels and STOPRE lines are the model's.
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
