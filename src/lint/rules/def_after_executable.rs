@@ -2,6 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::semantic::model::is_declaration;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -72,11 +73,7 @@ impl Check for Checker {
                         );
                     }
                 }
-                StatementKind::Proc(_)
-                | StatementKind::Redef { .. }
-                | StatementKind::AccessLevels(_)
-                | StatementKind::Extern { .. }
-                | StatementKind::Define { .. } => {}
+                _ if is_declaration(statement) => {}
                 _ => {
                     self.first_executable.get_or_insert(row);
                 }
