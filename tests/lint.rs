@@ -332,6 +332,7 @@ proptest::proptest! {
             "M30",
             "M17",
             "N[0-9]{1,2} X1(0){600}",
+            "(M[0-9]{1,2} ?){4,7}( ; M M)?",
             " *",
         ], 0..24),
         ending in proptest::prop_oneof!["\n", "\r\n"],

@@ -18,6 +18,7 @@ pub mod main_run_read_without_stopre;
 pub mod missing_program_end;
 pub mod proc_name_mismatch;
 pub mod support;
+pub mod too_many_m_functions;
 pub mod traori_at_end;
 pub mod unclosed_block;
 pub mod undefined_label;
@@ -117,6 +118,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &empty_program::RULE,
             checker: Some(checker::<empty_program::Checker>),
+        },
+        Rule {
+            info: &too_many_m_functions::RULE,
+            checker: Some(checker::<too_many_m_functions::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,
