@@ -1,6 +1,7 @@
 //! `sinuprep check`: lint every program named, in parallel, and report in a
 //! stable order.
 
+use std::collections::HashMap;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -97,12 +98,13 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
         paths.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
+    let definitions = Definitions::default();
     let colour = std::io::stdout().is_terminal();
     let work = || loop {
         let index = next.fetch_add(1, Ordering::Relaxed);
         let Some(path) = paths.get(index) else { break };
         let outcome = match path {
-            Ok(path) => check_file(path, args, colour),
+            Ok(path) => check_file(path, args, colour, &definitions),
             Err(error) => Err(CliError::Read {
                 path: PathBuf::new(),
                 source: std::io::Error::other(error.to_string()),
@@ -172,7 +174,12 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     })
 }
 
-fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, CliError> {
+fn check_file(
+    path: &Path,
+    args: &CheckArgs,
+    colour: bool,
+    definitions: &Definitions,
+) -> Result<Checked, CliError> {
     // Refused before anything is read: stdin, a FIFO, a device.
     let fix_target = args.fix.then(|| in_place_target(path)).transpose()?;
     let mut file = read(path)?;
@@ -214,7 +221,7 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
         selection,
         supplied: inputs.supplied,
         heads: inputs.heads,
-        environment: environment(args, &config)?,
+        environment: environment(args, &config, definitions)?,
     };
     let check = |source: &[u8]| {
         let document = Document {
@@ -264,15 +271,41 @@ fn check_file(path: &Path, args: &CheckArgs, colour: bool) -> Result<Checked, Cl
 
 /// The machine's names: axes from sinuprep.toml, globals and macros from
 /// the definition files of the command line (or else of sinuprep.toml).
-fn environment(args: &CheckArgs, config: &Config) -> Result<Environment, CliError> {
-    let mut environment = Environment::with_axes(config.axes.iter().flatten());
+/// The definition files are read once a run for all programs that name
+/// the same ones (`read`), not once a program.
+fn environment(
+    args: &CheckArgs,
+    config: &Config,
+    read: &Definitions,
+) -> Result<Environment, CliError> {
     let files: Vec<PathBuf> = if args.definitions.is_empty() {
         let listed = config.definitions.iter().flatten();
         listed.map(|path| config.resolve(path)).collect()
     } else {
         args.definitions.clone()
     };
-    for path in files {
+    let known = read.lock().ok().and_then(|r| r.get(&files).cloned());
+    let mut environment = match known {
+        Some(environment) => environment,
+        None => {
+            let environment = definitions(&files)?;
+            if let Ok(mut read) = read.lock() {
+                read.insert(files, environment.clone());
+            }
+            environment
+        }
+    };
+    environment.axes = Environment::with_axes(config.axes.iter().flatten()).axes;
+    Ok(environment)
+}
+
+/// Definition files read so far, by the list of files.
+type Definitions = Mutex<HashMap<Vec<PathBuf>, Environment>>;
+
+/// What the definition files `files` define.
+fn definitions(files: &[PathBuf]) -> Result<Environment, CliError> {
+    let mut environment = Environment::default();
+    for path in files.iter().cloned() {
         let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
             path: path.clone(),
             source,

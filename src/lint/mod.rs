@@ -160,7 +160,7 @@ pub fn check_with(
             Scanned::Other(raw) => raw,
         };
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
-        let tree = model.parse(&line, raw);
+        let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
             if let Some(comment) = block.comment {
                 suppressions.read(source, row, comment);

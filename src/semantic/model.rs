@@ -80,7 +80,7 @@ impl<'src> Model<'src> {
                 Scanned::Other(raw) => {
                     builder.plain_lines(&plain);
                     plain.clear();
-                    let tree = builder.parse(&line, raw);
+                    let tree = builder.parse(raw);
                     builder.learn(&LineView::new(&tree));
                     builder.keep(tree);
                 }
@@ -275,8 +275,8 @@ impl<'src> ModelBuilder<'src> {
     }
 
     /// The next line, one that is not plain: its tree, its syntax error kept.
-    pub fn parse(&mut self, line: &Scanned, raw: RawLine) -> Line {
-        self.table.record(line);
+    pub fn parse(&mut self, raw: RawLine) -> Line {
+        self.table.record_other(raw.content.start);
         let (tree, error) = self.parser.parse_line(self.source, raw);
         self.syntax.extend(error);
         self.row += 1;

@@ -30,7 +30,6 @@ use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::upper;
 use crate::syntax::tree::{Block, Call, Expr, Initializer, Statement, StatementKind, TypeKind};
 use crate::syntax::visit::{collect_variables, for_each_expression};
-use crate::syntax::Lines;
 
 /// One CYCLE600 call met on the walk.
 #[derive(Debug)]
@@ -88,7 +87,6 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let lines = &model.lines;
     let source = model.source;
     let structure = model.structure();
     let mut modes = HashMap::new();
@@ -96,7 +94,6 @@ pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analys
         let mut walker = Walker {
             model,
             structure,
-            lines,
             source,
             supplied,
             heads,
@@ -109,7 +106,7 @@ pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analys
             too_deep: HashSet::new(),
         };
         let mut env = Env::default();
-        walker.walk(0, lines.len(), &mut env);
+        walker.walk(0, model.lines.len(), &mut env);
         let learned: Vec<(usize, Mode)> = walker
             .analysis
             .calls
@@ -149,7 +146,6 @@ impl CallSite {
 
 struct Walker<'a> {
     model: &'a Model<'a>,
-    lines: &'a Lines<'a>,
     source: &'a [u8],
     supplied: &'a Supplied,
     heads: Option<&'a Heads>,
@@ -177,7 +173,7 @@ pub const MAX_NESTING: usize = 512;
 
 impl<'a> Walker<'a> {
     fn block(&self, line: usize) -> Option<Cow<'a, Block>> {
-        self.lines.block(line)
+        self.model.lines.block(line)
     }
 
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
@@ -212,7 +208,7 @@ impl<'a> Walker<'a> {
                 self.replay(pc, statement, env);
             }
             // Motion blocks change nothing the walk tracks: no need to parse them.
-            if self.lines.is_plain(pc) {
+            if self.model.lines.is_plain(pc) {
                 pc += 1;
                 continue;
             }
@@ -652,7 +648,7 @@ impl<'a> Walker<'a> {
     fn site(&self, pc: usize, statement: &Statement, active: Active, env: &Env) -> CallSite {
         CallSite {
             line: pc,
-            content: self.lines.raw(pc).content,
+            content: self.model.lines.raw(pc).content,
             statement: statement.span,
             bound: None,
             evaluation: None,

@@ -129,9 +129,14 @@ impl LinesRecorder {
     /// The next line, in order from the first.
     pub fn record(&mut self, line: &plain::Scanned) {
         let start = line.raw().content.start;
-        if let plain::Scanned::Plain(_) = line {
-            return self.record_plain_run(1, |_| start);
+        match line {
+            plain::Scanned::Plain(_) => self.record_plain_run(1, |_| start),
+            plain::Scanned::Other(_) => self.record_other(start),
         }
+    }
+
+    /// The next line, one that is not plain, starting at `start`.
+    pub fn record_other(&mut self, start: usize) {
         let index = self.len;
         if index.is_multiple_of(STRIDE) {
             self.strided_starts.push(start);

@@ -2,6 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext};
+use crate::lint::rules::support::is_definition_file;
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -30,17 +31,6 @@ Write the program, or remove the file."#,
 /// Reads the model's first executable block once the pass is over.
 #[derive(Default)]
 pub struct Checker;
-
-/// Files that hold declarations only, by their extension.
-pub fn is_definition_file(name: &str) -> bool {
-    let extension = std::path::Path::new(name)
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("");
-    ["DEF", "INI", "GUD", "COM"]
-        .iter()
-        .any(|e| extension.eq_ignore_ascii_case(e))
-}
 
 impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {

@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::empty_program::is_definition_file;
+use crate::lint::rules::support::is_definition_file;
 use crate::span::Span;
 use crate::syntax::tree::{StatementKind, WordValue};
 use crate::syntax::ProgramKind;

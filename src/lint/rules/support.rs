@@ -63,3 +63,14 @@ pub fn is_user_name(name: &str) -> bool {
         && (bytes[1].is_ascii_alphabetic() || bytes[1] == b'_')
         && !matches!(name, "TRUE" | "FALSE" | "TR" | "RT" | "SC" | "MI" | "FI")
 }
+
+/// Files that hold declarations only, by their extension.
+pub fn is_definition_file(name: &str) -> bool {
+    let extension = std::path::Path::new(name)
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("");
+    ["DEF", "INI", "GUD", "COM"]
+        .iter()
+        .any(|e| extension.eq_ignore_ascii_case(e))
+}
