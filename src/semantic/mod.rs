@@ -5,6 +5,7 @@
 //! and binds and evaluates each CYCLE600 call. It produces values and
 //! diagnostics, never text: rewriting is `emit`'s job.
 
+pub mod addresses;
 pub mod blocks;
 pub mod calls;
 pub mod cycle600;
@@ -14,6 +15,7 @@ pub mod eval;
 pub mod frames;
 pub mod head_def;
 pub mod labels;
+pub mod modal;
 pub mod model;
 pub mod structure;
 pub mod value;

@@ -12,6 +12,7 @@ use std::cell::OnceCell;
 use std::collections::HashSet;
 
 use crate::diagnostic::Diagnostic;
+use crate::semantic::addresses::{self, Address};
 use crate::semantic::labels::Labels;
 use crate::semantic::structure::Structure;
 use crate::span::Span;
@@ -166,6 +167,8 @@ pub struct LineView<'l> {
     pub plain: bool,
     /// (statement index, variable read), in statement order.
     reads: Vec<(usize, &'l Variable)>,
+    /// The block's address words, read when a rule first asks.
+    addresses: OnceCell<Vec<Address>>,
 }
 
 impl<'l> LineView<'l> {
@@ -198,7 +201,17 @@ impl<'l> LineView<'l> {
             header,
             plain,
             reads: all_reads,
+            addresses: OnceCell::new(),
         }
+    }
+
+    /// The block's address words (see [`addresses::of_block`]), read once
+    /// for all the rules that ask; none for a line that is no block.
+    pub fn addresses(&self, source: &[u8]) -> &[Address] {
+        self.addresses.get_or_init(|| match self.block {
+            Some(block) => addresses::of_block(source, block),
+            None => Vec::new(),
+        })
     }
 
     /// The variables statement `index` of the block reads (DEF initialisers
@@ -267,7 +280,7 @@ impl<'src> ModelBuilder<'src> {
             .record_plain_run(lines.len(), |n| lines[n].raw.content.start);
         self.parser.pass_plain_lines(lines.len());
         if self.first_executable.is_none() {
-            if let Some(line) = lines.iter().find(|line| line.facts.has_words) {
+            if let Some(line) = lines.iter().find(|line| line.facts.has_words()) {
                 self.first_executable = Some((line.row, line.raw.content.start));
             }
         }

@@ -34,7 +34,9 @@ pub struct Plain {
     /// small because the syntax pass and the walk copy every `Plain` and
     /// never ask.
     number: Option<(usize, usize)>,
-    has_words: bool,
+    letters: Letters,
+    repeats: bool,
+    motions: Motions,
 }
 
 impl Plain {
@@ -46,7 +48,9 @@ impl Plain {
                 main: false,
                 digits: Span::new(letter + 1, end),
             }),
-            has_words: self.has_words,
+            letters: self.letters,
+            repeats: self.repeats,
+            motions: self.motions,
         }
     }
 }
@@ -71,7 +75,9 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
         number: words
             .number
             .map(|(letter, end)| (start + letter, start + end)),
-        has_words: words.has_words,
+        letters: words.letters,
+        repeats: words.repeats,
+        motions: words.motions,
     })
 }
 
@@ -81,8 +87,114 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
 pub struct PlainFacts {
     /// The block number it starts with (`N10`).
     pub number: Option<BlockNumber>,
+    /// The address letters of its words, the block number's not counted.
+    pub letters: Letters,
+    /// Some letter starts more than one of its words (`G90 G54`, `X1 X2`).
+    pub repeats: bool,
+    /// The motion G functions (G0 to G3) among its words.
+    pub motions: Motions,
+}
+
+impl PlainFacts {
     /// It holds at least one word besides the block number.
-    pub has_words: bool,
+    pub fn has_words(&self) -> bool {
+        !self.letters.is_empty()
+    }
+}
+
+/// A set of address letters, case folded (`x` is `X`): what the scan of a
+/// plain line learns of its words at the cost of an OR per word, so that the
+/// rules look closer only at the lines that hold the letters they ask about.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Letters(u32);
+
+impl Letters {
+    /// `letters`, each an ASCII letter.
+    pub fn of(letters: &[u8]) -> Self {
+        Self(letters.iter().fold(0, |set, &letter| set | bit(letter)))
+    }
+
+    pub fn contains(self, letter: u8) -> bool {
+        self.0 & bit(letter) != 0
+    }
+
+    /// Whether any of `other` is in the set.
+    pub fn meets(self, other: Letters) -> bool {
+        self.0 & other.0 != 0
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+}
+
+/// An ASCII letter's bit: its low five bits, the same for either case.
+#[inline(always)]
+fn bit(letter: u8) -> u32 {
+    1 << (letter & 31)
+}
+
+/// The motion G functions G0 to G3 (group 1) a plain line writes, one bit
+/// each: what the modal state and the circle rule ask of every CAM block.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Motions(u8);
+
+impl Motions {
+    /// `G<number>` is among them (`number` 0 to 3).
+    pub fn contains(self, number: u32) -> bool {
+        number < 4 && self.0 & (1 << number) != 0
+    }
+}
+
+/// The bit of the motion G function (G0 to G3, `G01` alike) whose letter is
+/// at `at`, 0 for any other word.
+#[inline(always)]
+fn motion_bit(bytes: &[u8], at: usize) -> u8 {
+    if bytes[at] | 0x20 != b'g' {
+        return 0;
+    }
+    let mut next = at + 1;
+    while bytes.get(next) == Some(&b'0') {
+        next += 1;
+    }
+    let digit = match bytes.get(next) {
+        Some(&d @ b'0'..=b'3') => d - b'0',
+        // `G0`, `G00`: the last zero is the number.
+        _ if next > at + 1 => {
+            next -= 1;
+            0
+        }
+        _ => return 0,
+    };
+    match bytes.get(next + 1) {
+        Some(b'0'..=b'9' | b'.') => 0,
+        _ => 1 << digit,
+    }
+}
+
+/// The letters of the words read so far, how many words, and their motions.
+#[derive(Clone, Copy, Default)]
+struct LetterCount {
+    seen: u32,
+    words: u32,
+    motions: u8,
+}
+
+impl LetterCount {
+    /// The word whose letter is at `at` of `bytes`.
+    #[inline(always)]
+    fn add(&mut self, bytes: &[u8], at: usize) {
+        self.seen |= bit(bytes[at]);
+        self.motions |= motion_bit(bytes, at);
+        self.words += 1;
+    }
+
+    /// Some letter starts more than one word: fewer letters than words. A
+    /// count rather than a second set, since few lines repeat a letter and
+    /// the rules read those again.
+    fn repeats(self) -> bool {
+        self.seen.count_ones() < self.words
+    }
 }
 
 /// Whether [`scanned_lines_with`] looks for plain lines.
@@ -164,8 +276,23 @@ struct Words {
     /// digits alone (a sign or a point makes it an address word); where its
     /// letter is and where its digits end.
     number: Option<(usize, usize)>,
-    /// A word other than the block number.
-    has_words: bool,
+    /// The letters of the words other than the block number.
+    letters: Letters,
+    /// Some letter starts more than one of them.
+    repeats: bool,
+    motions: Motions,
+}
+
+impl Words {
+    fn new(stop: usize, number: Option<(usize, usize)>, count: LetterCount) -> Self {
+        Self {
+            stop,
+            number,
+            letters: Letters(count.seen),
+            repeats: count.repeats(),
+            motions: Motions(count.motions),
+        }
+    }
 }
 
 /// Reads address words up to a `;`, a line end or the end of `bytes`; `None`
@@ -182,35 +309,26 @@ fn scan_words(bytes: &[u8]) -> Option<Words> {
 fn scan_words_bytewise(bytes: &[u8]) -> Option<Words> {
     // The first word is read apart because only it can be the block number:
     // a test per word inside the loop cost about 2 M more instructions per MB.
+    let mut count = LetterCount::default();
     let (number, mut at) = match next_word(bytes, 0)? {
-        Step::Stop(stop) => {
-            return Some(Words {
-                stop,
-                number: None,
-                has_words: false,
-            })
-        }
+        Step::Stop(stop) => return Some(Words::new(stop, None, count)),
         Step::Word {
             letter,
             end,
             digits_only,
         } => {
             let is_number = digits_only && bytes[letter].eq_ignore_ascii_case(&b'N');
+            if !is_number {
+                count.add(bytes, letter);
+            }
             (is_number.then_some((letter, end)), end)
         }
     };
-    let mut has_words = number.is_none();
     loop {
         match next_word(bytes, at)? {
-            Step::Stop(stop) => {
-                return Some(Words {
-                    stop,
-                    number,
-                    has_words,
-                })
-            }
-            Step::Word { end, .. } => {
-                has_words = true;
+            Step::Stop(stop) => return Some(Words::new(stop, number, count)),
+            Step::Word { letter, end, .. } => {
+                count.add(bytes, letter);
                 at = end;
             }
         }
@@ -451,6 +569,7 @@ mod tests {
         fn a_plain_line_parses_into_number_words(text in proptest::prop_oneof![
             "[NGXYZEx0-9 .;+=:(-]{0,40}",
             "([NGXYZEx][-+]?[0-9.]{0,5} ?){0,8}(;[A-Z=]{0,3})?",
+            "([Gg][-+]?0{0,2}[0-4]{1,2}\\.?[0-9]? ?|X1 ){1,5}",
         ]) {
             if is_plain(text.as_bytes()) {
                 proptest::prop_assert!(crate::syntax::diagnostics(text.as_bytes()).is_empty());
@@ -465,7 +584,23 @@ mod tests {
                     proptest::prop_assert_eq!(plain.raw, lines.raw(index));
                     proptest::prop_assert_eq!(plain.comment, block.comment);
                     proptest::prop_assert_eq!(plain.facts().number, block.number);
-                    proptest::prop_assert_eq!(plain.facts().has_words, !block.statements.is_empty());
+                    proptest::prop_assert_eq!(plain.facts().has_words(), !block.statements.is_empty());
+                    let letters: Vec<u8> = block.statements.iter().filter_map(|s| match &s.kind {
+                        StatementKind::Word(word) => Some(word.address.text(text.as_bytes())[0]),
+                        _ => None,
+                    }).collect();
+                    proptest::prop_assert_eq!(plain.facts().letters, Letters::of(&letters));
+                    let repeats = letters.iter().any(|l| letters.iter().filter(|o| o.eq_ignore_ascii_case(l)).count() > 1);
+                    proptest::prop_assert_eq!(plain.facts().repeats, repeats);
+                    let motions: Vec<u32> = crate::semantic::addresses::of_block(text.as_bytes(), &block)
+                        .iter()
+                        .filter(|a| a.is(text.as_bytes(), "G"))
+                        .filter_map(|a| a.whole(text.as_bytes()))
+                        .filter(|&n| n < 4)
+                        .collect();
+                    for n in 0..4 {
+                        proptest::prop_assert_eq!(plain.facts().motions.contains(n), motions.contains(&n), "G{}", n);
+                    }
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,

@@ -43,7 +43,7 @@ impl Check for Checker {
         lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
-        if let Some(line) = lines.iter().find(|line| line.facts.has_words) {
+        if let Some(line) = lines.iter().find(|line| line.facts.has_words()) {
             self.first_executable.get_or_insert(line.row);
         }
     }

@@ -66,7 +66,7 @@ impl Check for Checker {
         lines: &[PlainLine],
         _out: &mut Vec<Diagnostic>,
     ) {
-        if let Some(line) = lines.iter().rev().find(|line| line.facts.has_words) {
+        if let Some(line) = lines.iter().rev().find(|line| line.facts.has_words()) {
             self.last = Some(line.row);
         }
     }

@@ -1,6 +1,7 @@
 //! Every rule: one file each, registered here in code order.
 
 pub mod argument_count_mismatch;
+pub mod block_after_program_end;
 pub mod block_numbers_backwards;
 pub mod block_too_long;
 pub mod call_shares_block;
@@ -11,12 +12,17 @@ pub mod def_after_executable;
 pub mod duplicate_def;
 pub mod duplicate_label;
 pub mod empty_program;
+pub mod g_group_conflict;
 pub mod identifier_too_long;
+pub mod incomplete_circle;
 pub mod inconsistent_case;
 pub mod jump_direction;
+pub mod m_group_conflict;
 pub mod main_run_read_without_stopre;
+pub mod missing_feed_rate;
 pub mod missing_program_end;
 pub mod proc_name_mismatch;
+pub mod repeated_address;
 pub mod support;
 pub mod too_many_m_functions;
 pub mod traori_at_end;
@@ -122,6 +128,30 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &too_many_m_functions::RULE,
             checker: Some(checker::<too_many_m_functions::Checker>),
+        },
+        Rule {
+            info: &repeated_address::RULE,
+            checker: Some(checker::<repeated_address::Checker>),
+        },
+        Rule {
+            info: &g_group_conflict::RULE,
+            checker: Some(checker::<g_group_conflict::Checker>),
+        },
+        Rule {
+            info: &m_group_conflict::RULE,
+            checker: Some(checker::<m_group_conflict::Checker>),
+        },
+        Rule {
+            info: &incomplete_circle::RULE,
+            checker: Some(checker::<incomplete_circle::Checker>),
+        },
+        Rule {
+            info: &missing_feed_rate::RULE,
+            checker: Some(checker::<missing_feed_rate::Checker>),
+        },
+        Rule {
+            info: &block_after_program_end::RULE,
+            checker: Some(checker::<block_after_program_end::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,

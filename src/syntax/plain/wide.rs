@@ -9,7 +9,7 @@
 //! older CPUs go byte by byte. Property-tested to agree with the byte-by-byte
 //! scan on every input.
 
-use super::Words;
+use super::{bit, motion_bit, LetterCount, Words};
 
 /// One bit per byte of the window (bit `i` = byte `i`), for each class the
 /// grammar needs.
@@ -29,7 +29,10 @@ struct Classes {
 /// `None` when they do not stop within the window (the caller then reads
 /// byte by byte).
 pub(super) fn scan_words(window: &[u8; 64]) -> Option<Option<Words>> {
-    if !std::arch::is_x86_feature_detected!("avx2") {
+    if !(std::arch::is_x86_feature_detected!("avx2")
+        && std::arch::is_x86_feature_detected!("bmi1")
+        && std::arch::is_x86_feature_detected!("popcnt"))
+    {
         return None;
     }
     // SAFETY: the CPU has AVX2 (checked above; the answer is cached).
@@ -45,7 +48,7 @@ pub(super) fn scan_words(window: &[u8; 64]) -> Option<Option<Words>> {
 ///
 /// The CPU must have AVX2.
 #[allow(unsafe_code)]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,bmi1,popcnt")]
 unsafe fn scan_words_avx2(window: &[u8; 64]) -> Option<Option<Words>> {
     let classes = classify(window);
     if classes.stops == 0 {
@@ -103,11 +106,7 @@ fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Wor
     }
 
     let Some(first) = lowest_bit(letters) else {
-        return Some(Words {
-            stop,
-            number: None,
-            has_words: false,
-        });
+        return Some(Words::new(stop, None, LetterCount::default()));
     };
     // The block number: a first word N with digits alone.
     let digits_from = first + 1;
@@ -115,12 +114,28 @@ fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Wor
     let digits = ((1u64 << digits_end) - 1) & !((1u64 << digits_from) - 1);
     let signed = signs & (1u64 << digits_from) != 0;
     let is_number = window[first].eq_ignore_ascii_case(&b'N') && !signed && points & digits == 0;
-    let more_letters = letters & (letters - 1) != 0;
-    Some(Words {
+    let words = if is_number {
+        letters & (letters - 1)
+    } else {
+        letters
+    };
+    let mut count = LetterCount {
+        seen: 0,
+        words: words.count_ones(),
+        motions: 0,
+    };
+    let mut rest = words;
+    while rest != 0 {
+        let at = rest.trailing_zeros() as usize;
+        count.seen |= bit(window[at]);
+        count.motions |= motion_bit(window, at);
+        rest &= rest - 1;
+    }
+    Some(Words::new(
         stop,
-        number: is_number.then_some((first, digits_end)),
-        has_words: !is_number || more_letters,
-    })
+        is_number.then_some((first, digits_end)),
+        count,
+    ))
 }
 
 fn lowest_bit(mask: u64) -> Option<usize> {

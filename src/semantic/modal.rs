@@ -1,0 +1,150 @@
+//! The modal state a block leaves behind: which G function of each group is
+//! in force and whether a feed rate was programmed, with the groups of the G
+//! and M functions the control knows (Siemens, Programming Manual
+//! Fundamentals, "List of G functions"; Function Manual Basic Functions,
+//! "Auxiliary function outputs": the predefined groups).
+//!
+//! Read line by line from the [`Address`]es of each block, tree or plain, so
+//! that a CAM program's plain lines need no tree.
+
+use crate::semantic::addresses::Address;
+
+/// The group of a G function written as a number (`G1`, `G641`), as the
+/// Programming Manual numbers them; `None` for numbers it does not list.
+pub fn g_group(number: u32) -> Option<u8> {
+    Some(match number {
+        0..=3 | 33..=35 | 331 | 332 => 1,
+        4 | 5 | 7 | 63 | 74 | 75 | 147 | 148 | 247 | 248 | 347 | 348 => 2,
+        25 | 26 | 58 | 59 | 110..=112 => 3,
+        17..=19 => 6,
+        40..=42 => 7,
+        54..=57 | 500 | 505..=599 => 8,
+        53 | 153 => 9,
+        60 | 64 | 641..=645 => 10,
+        9 => 11,
+        601..=603 => 12,
+        70 | 71 | 700 | 710 => 13,
+        90 | 91 => 14,
+        93..=97 | 931 | 942 | 952 | 961 | 962 | 971..=973 => 15,
+        450 | 451 => 18,
+        810..=819 => 31,
+        820..=829 => 32,
+        140..=143 => 43,
+        340 | 341 => 44,
+        290 | 291 => 47,
+        460..=462 => 48,
+        62 | 621 => 57,
+        _ => return None,
+    })
+}
+
+/// The groups whose G function shapes the block's syntax (motions, dwell and
+/// the non-modal special motions, programmable frames): one of them rules how
+/// the block's other addresses are read.
+pub fn is_syntax_defining(group: u8) -> bool {
+    (1..=3).contains(&group)
+}
+
+/// The predefined group of an M function: 1 for the program's stops and ends
+/// (M0, M1, M2, M17, M30), 2 for a spindle's functions (M3, M4, M5, M19, M70).
+/// Machine data can assign other functions to groups; those are unknown here.
+pub fn m_group(number: u32) -> Option<u8> {
+    match number {
+        0 | 1 | 2 | 17 | 30 => Some(1),
+        3 | 4 | 5 | 19 | 70 => Some(2),
+        _ => None,
+    }
+}
+
+/// G functions of group 1 that move at the programmed feed rate.
+pub fn is_feed_motion(number: u32) -> bool {
+    matches!(number, 1..=3)
+}
+
+/// The addresses that name an axis by its default name (Programming Manual
+/// Fundamentals: geometry axes X, Y, Z; rotary axes A, B, C; further linear
+/// axes U, V, W).
+pub fn is_axis_letter(letter: u8) -> bool {
+    matches!(
+        letter,
+        b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W'
+    )
+}
+
+/// What the blocks so far have left in force.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Modal {
+    /// The group 1 G function last programmed (`G1` is 1), `None` before the
+    /// first: the machine's reset value then holds, which the program cannot
+    /// see.
+    pub motion: Option<u32>,
+    /// A path feed rate (F) was programmed.
+    pub feed: bool,
+}
+
+impl Modal {
+    /// The state after a block with these addresses.
+    pub fn apply(&mut self, source: &[u8], addresses: &[Address]) {
+        for address in addresses {
+            match address.letter(source) {
+                b'G' if address.name.len() == 1 => {
+                    if let Some(number) = address.whole(source).filter(|&n| g_group(n) == Some(1)) {
+                        self.motion = Some(number);
+                    }
+                }
+                b'F' if address.name.len() == 1 && address.extension.is_none() => self.feed = true,
+                _ => {}
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::semantic::addresses::of_block;
+    use crate::syntax::Lines;
+
+    #[test]
+    fn groups_as_the_manual_lists_them() {
+        assert_eq!(g_group(0), g_group(1));
+        assert_eq!(g_group(2), Some(1));
+        assert_eq!(g_group(331), Some(1));
+        assert_eq!(g_group(4), Some(2));
+        assert_eq!(g_group(17), Some(6));
+        assert_eq!(g_group(54), g_group(599));
+        assert_eq!(g_group(641), g_group(64));
+        assert_eq!(g_group(90), Some(14));
+        assert_eq!(g_group(95), g_group(961));
+        assert_eq!(g_group(8), None);
+        assert_eq!(g_group(504), None);
+        assert!(is_syntax_defining(3) && !is_syntax_defining(6));
+        assert_eq!(m_group(30), m_group(0));
+        assert_eq!(m_group(3), m_group(70));
+        assert_eq!(m_group(6), None);
+    }
+
+    #[test]
+    fn motion_and_feed_carry_over_blocks() {
+        let source = b"G90 G0 X0\nG1 Z5\nX10 F=R1\nG641 Y5\nF2=100\n";
+        let lines = Lines::new(source);
+        let states: Vec<Modal> = (0..lines.len())
+            .scan(Modal::default(), |modal, row| {
+                let block = lines.block(row).expect("a block");
+                modal.apply(source, &of_block(source, &block));
+                Some(*modal)
+            })
+            .collect();
+        let motions: Vec<_> = states.iter().map(|m| (m.motion, m.feed)).collect();
+        assert_eq!(
+            motions,
+            [
+                (Some(0), false),
+                (Some(1), false),
+                (Some(1), true),
+                (Some(1), true),
+                (Some(1), true)
+            ]
+        );
+    }
+}
