@@ -2,7 +2,8 @@
 //!
 //! It evaluates expressions with Sinumerik semantics, walks the program
 //! tracking variables (known, unknown, measured, supplied), reads HEAD_DEF,
-//! and binds and evaluates each CYCLE600 call. It produces values and
+//! and binds and evaluates each CYCLE600 call; it holds the facts the rules
+//! share (the model, address words, the modal state). It produces values and
 //! diagnostics, never text: rewriting is `emit`'s job.
 
 pub mod addresses;
