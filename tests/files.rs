@@ -332,3 +332,68 @@ fn concurrent_in_place_rewrites_leave_one_whole_version_and_the_original_as_back
     }
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// A folder of programs: `--check` names each that would change and fails,
+/// `-o DIR` mirrors the tree, `--in-place` rewrites each file that can be
+/// (one with errors stays as it was, and the status says so), one that fails
+/// stops none of the others, and several programs with nowhere to go are
+/// refused before anything is read.
+#[test]
+fn a_folder_is_rewritten_file_by_file() {
+    let dir = scratch("folder");
+    let heads = heads();
+    fs::create_dir_all(dir.join("in/sub")).expect("dirs");
+    fs::write(dir.join("in/A.MPF"), PROGRAM).expect("A");
+    fs::write(dir.join("in/sub/B.MPF"), PROGRAM).expect("B");
+    fs::write(dir.join("in/sub/BAD.MPF"), REFUSED).expect("BAD");
+    fs::write(dir.join("in/sub/PLAIN.SPF"), b"G1 X1 F100\nM17\n").expect("PLAIN");
+
+    let output = run_in(&dir, &["rewrite", "--heads", &heads, "in"]);
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("4 programs to rewrite"));
+
+    let output = run_in(&dir, &["rewrite", "--check", "--heads", &heads, "in"]);
+    assert_exit(&output, 1);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    for name in ["in/A.MPF: would rewrite 1", "in/sub/B.MPF: would rewrite 1"] {
+        assert!(stderr.contains(name), "{stderr}");
+    }
+    assert!(!stderr.contains("PLAIN.SPF: would"), "{stderr}");
+
+    let output = run_in(&dir, &["rewrite", "--heads", &heads, "-o", "out", "in"]);
+    assert_exit(&output, 1); // BAD.MPF's refused call is an error
+    let rewritten = fs::read(dir.join("out/sub/B.MPF")).expect("mirrored");
+    assert!(rewritten != PROGRAM && rewritten.windows(8).any(|w| w == b"CYCLE800"));
+    assert_eq!(fs::read(dir.join("out/A.MPF")).expect("A"), rewritten);
+    assert_eq!(
+        fs::read(dir.join("out/sub/PLAIN.SPF")).expect("PLAIN"),
+        b"G1 X1 F100\nM17\n"
+    );
+
+    fs::write(dir.join("in/sub/GONE.MPF"), b"").expect("GONE");
+    fs::set_permissions(
+        dir.join("in/sub/GONE.MPF"),
+        fs::Permissions::from_mode(0o000),
+    )
+    .expect("mode");
+    let root = fs::read(dir.join("in/sub/GONE.MPF")).is_ok(); // root reads anything
+    let output = run_in(&dir, &["rewrite", "--in-place", "--heads", &heads, "in"]);
+    assert_exit(&output, if root { 1 } else { 2 });
+    assert_eq!(fs::read(dir.join("in/A.MPF")).expect("A"), rewritten);
+    assert_eq!(fs::read(dir.join("in/sub/B.MPF")).expect("B"), rewritten);
+    assert_eq!(fs::read(dir.join("in/sub/BAD.MPF")).expect("BAD"), REFUSED);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("BAD.MPF: not rewritten in place"));
+
+    let output = run_in(
+        &dir,
+        &["rewrite", "--heads", &heads, "empty-dir-that-is-not-there"],
+    );
+    assert_exit(&output, 2);
+    fs::create_dir_all(dir.join("empty")).expect("empty");
+    assert_exit(&run_in(&dir, &["rewrite", "--check", "empty"]), 2);
+    assert_exit(
+        &run_in(&dir, &["rewrite", "--check", "--allow-empty", "empty"]),
+        0,
+    );
+    let _ = fs::remove_dir_all(&dir);
+}

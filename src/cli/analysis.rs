@@ -106,8 +106,8 @@ pub fn options(args: &AnalysisArgs, config: &Config) -> Options {
     }
 }
 
-/// Prints a rewrite's diagnostics on stderr, in the format asked for.
-pub fn report(rewritten: &Rewritten, file: &SourceFile, format: MessageFormat) {
+/// A rewrite's diagnostics as text for stderr, in the format asked for.
+pub fn report(rewritten: &Rewritten, file: &SourceFile, format: MessageFormat) -> String {
     let report = FileReport {
         name: &file.name,
         source: &file.bytes,
@@ -118,7 +118,7 @@ pub fn report(rewritten: &Rewritten, file: &SourceFile, format: MessageFormat) {
         MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
         MessageFormat::Short => short(&report, &mut text),
     }
-    eprint!("{text}");
+    text
 }
 
 /// The program rewritten as `options` asks, with the values and HEAD_DEF given.

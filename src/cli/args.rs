@@ -156,9 +156,13 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// The program to rewrite; `-` reads stdin.
+    /// Programs or directories (searched recursively for .mpf/.spf); `-` reads stdin.
+    /// Several programs need --in-place, -o DIR, --check or --diff.
     #[arg(default_value = "-")]
-    pub path: PathBuf,
+    pub paths: Vec<PathBuf>,
+    /// A directory without programs is no error (by default it is: exit 2).
+    #[arg(long)]
+    pub allow_empty: bool,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// Do not keep the original call as a `; sinuprep:` comment above the new code.
@@ -167,8 +171,9 @@ pub struct RewriteArgs {
     /// Replace later reads of `_CYC600_n` by their values, until the next CYCLE600.
     #[arg(long)]
     pub inline_results: bool,
-    /// Write the result to FILE (atomically) instead of stdout.
-    #[arg(short, long, value_name = "FILE", conflicts_with = "in_place")]
+    /// Write the result to FILE (atomically) instead of stdout; with several programs
+    /// or a directory, to the directory DIR, mirroring the input tree.
+    #[arg(short, long, value_name = "FILE|DIR", conflicts_with = "in_place")]
     pub output: Option<PathBuf>,
     /// Rewrite the file itself: a temporary file in its directory, synced, renamed over it; a `.bak` is kept.
     #[arg(long)]

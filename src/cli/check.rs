@@ -4,7 +4,6 @@
 use std::collections::HashMap;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use crate::cli::analysis::Inputs;
@@ -13,6 +12,7 @@ use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read, Bytes, SourceFile};
 use crate::cli::output::{in_place_target, write_atomically};
+use crate::cli::parallel;
 use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
@@ -95,38 +95,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     codes(&args.select, "--select")?;
     codes(&args.ignore, "--ignore")?;
     let paths = expand(&args.paths, args.allow_empty)?;
-    let results: Vec<Mutex<Option<Result<Checked, CliError>>>> =
-        paths.iter().map(|_| Mutex::new(None)).collect();
-    let next = AtomicUsize::new(0);
     let definitions = Definitions::default();
     let colour = std::io::stdout().is_terminal();
-    let work = || loop {
-        let index = next.fetch_add(1, Ordering::Relaxed);
-        let Some(path) = paths.get(index) else { break };
-        let outcome = match path {
-            Ok(path) => check_file(path, args, colour, &definitions),
-            Err(error) => Err(CliError::Read {
-                path: PathBuf::new(),
-                source: std::io::Error::other(error.to_string()),
-            }),
-        };
-        if let Ok(mut slot) = results[index].lock() {
-            *slot = Some(outcome);
-        }
-    };
-    if paths.len() <= 1 {
-        // The editor-on-save case: no thread to start, no cgroup files to read.
-        work();
-    } else {
-        let workers = std::thread::available_parallelism()
-            .map_or(1, |n| n.get())
-            .min(paths.len());
-        std::thread::scope(|scope| {
-            for _ in 0..workers {
-                scope.spawn(work);
-            }
-        });
-    }
+    let results = parallel::each(paths.len(), |index| match &paths[index] {
+        Ok(path) => check_file(path, args, colour, &definitions),
+        Err(error) => Err(CliError::Read {
+            path: PathBuf::new(),
+            source: std::io::Error::other(error.to_string()),
+        }),
+    });
 
     let mut failed = false;
     let mut fails = false;
@@ -134,9 +111,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut located = Vec::new();
     let mut counts = Counts::default();
     let mut files = 0;
-    for slot in results {
-        match slot.into_inner().ok().flatten() {
-            Some(Ok(checked)) => {
+    for result in results {
+        match result {
+            Ok(checked) => {
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 files += 1;
@@ -147,11 +124,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                     Report::Located(file) => located.push(file),
                 }
             }
-            Some(Err(error)) => {
+            Err(error) => {
                 failed = true;
                 eprintln!("{:?}", miette::Report::new(error));
             }
-            None => failed = true,
         }
     }
     let out = match args.format {

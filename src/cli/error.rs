@@ -47,10 +47,19 @@ pub enum CliError {
     )]
     NoPrograms { path: PathBuf },
 
+    #[error("{count} programs to rewrite, and only one standard output")]
+    #[diagnostic(
+        code(sinuprep::usage),
+        help("give --in-place, -o DIR (the tree is mirrored there), --check or --diff")
+    )]
+    SeveralToStdout { count: usize },
+
     #[error("{path} is a directory")]
     #[diagnostic(
         code(sinuprep::read),
-        help("`rewrite` takes one program file; `check` takes directories")
+        help(
+            "give the directory's programs, or the directory to a command that takes directories"
+        )
     )]
     IsDirectory { path: PathBuf },
 

@@ -41,7 +41,10 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
         }
-        analysis::report(&analyzed, &file, args.analysis.message_format);
+        eprint!(
+            "{}",
+            analysis::report(&analyzed, &file, args.analysis.message_format)
+        );
         text
     };
     write_stdout(text.as_bytes())?;

@@ -10,6 +10,7 @@ mod eval;
 mod input;
 mod mapped;
 mod output;
+mod parallel;
 pub mod render;
 mod rewrite;
 mod rule;

@@ -1,79 +1,175 @@
 //! `sinuprep rewrite`: CYCLE600 calls become native code; every other byte
 //! stays. A call that cannot be evaluated stays as it was, with a diagnostic.
+//! Several programs (or directories) are rewritten on all cores, each on its
+//! own: one that fails never stops the others, and the exit status is the
+//! worst of them.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
 
 use crate::cli::analysis::{self, Inputs};
 use crate::cli::args::RewriteArgs;
 use crate::cli::config::Config;
 use crate::cli::error::CliError;
-use crate::cli::input::read;
+use crate::cli::input::{expand, read};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
+use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::cycle600::Options;
-use std::io::Write;
-use std::path::Path;
-
 use crate::emit::{diff, write_applied};
 
+/// Where a program's rewrite goes.
+enum Target {
+    Stdout,
+    /// A file named by `-o`, or the mirror of the program under `-o DIR`.
+    File(PathBuf),
+    /// The program itself (canonical path).
+    InPlace(PathBuf),
+}
+
+/// What one program's rewrite printed, kept so that the programs' outputs
+/// come in their order whatever thread did the work.
+struct Outcome {
+    status: ExitStatus,
+    stdout: Vec<u8>,
+    stderr: String,
+}
+
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
-    // `-o` naming the program itself is a rewrite in place, with its rules.
-    let onto_itself = args
-        .output
-        .as_deref()
-        .is_some_and(|output| args.path != Path::new("-") && same_file(&args.path, output));
-    // Refused before anything is read: stdin, a FIFO, a device.
-    let in_place = if args.in_place || onto_itself {
-        Some(in_place_target(&args.path)?)
+    let paths = expand(&args.paths, args.allow_empty)?;
+    let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
+    let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
+    if several && !writes_files {
+        return Err(CliError::SeveralToStdout { count: paths.len() });
+    }
+    let outcomes = parallel::each(paths.len(), |index| {
+        let path = match &paths[index] {
+            Ok(path) => path,
+            Err(error) => return failed(error.to_string()),
+        };
+        rewrite_file(path, args, several)
+            .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
+    });
+    let mut worst = ExitStatus::Success;
+    for outcome in outcomes {
+        eprint!("{}", outcome.stderr);
+        write_stdout(&outcome.stdout)?;
+        worst = worse(worst, outcome.status);
+    }
+    Ok(worst)
+}
+
+/// A program that could not be rewritten at all (exit 2).
+fn failed(message: String) -> Outcome {
+    Outcome {
+        status: ExitStatus::Error,
+        stdout: Vec::new(),
+        stderr: format!("{message}\n"),
+    }
+}
+
+fn worse(a: ExitStatus, b: ExitStatus) -> ExitStatus {
+    if (b as u8) > (a as u8) {
+        b
     } else {
-        None
-    };
-    let file = read(&args.path)?;
-    let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
-    let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
+        a
+    }
+}
+
+/// Where `path`'s rewrite goes, refused before anything is read when it
+/// cannot be written in place (stdin, a FIFO, a device).
+fn target(path: &Path, args: &RewriteArgs, several: bool) -> Result<Target, CliError> {
+    // `-o` naming the program itself is a rewrite in place, with its rules.
+    let onto_itself = !several
+        && args
+            .output
+            .as_deref()
+            .is_some_and(|output| path != Path::new("-") && same_file(path, output));
+    if args.in_place || onto_itself {
+        return Ok(Target::InPlace(in_place_target(path)?));
+    }
+    Ok(match &args.output {
+        Some(dir) if several => Target::File(mirror(dir, &args.paths, path)),
+        Some(file) => Target::File(file.clone()),
+        None => Target::Stdout,
+    })
+}
+
+/// `path` under `dir` as it lies under the directory given for it (a file
+/// given by itself lands directly in `dir`).
+fn mirror(dir: &Path, given: &[PathBuf], path: &Path) -> PathBuf {
+    let relative = given
+        .iter()
+        .filter(|root| root.is_dir())
+        .find_map(|root| path.strip_prefix(root).ok())
+        .map(Path::to_path_buf)
+        .or_else(|| path.file_name().map(PathBuf::from))
+        .unwrap_or_else(|| PathBuf::from("-"));
+    dir.join(relative)
+}
+
+fn rewrite_file(path: &Path, args: &RewriteArgs, several: bool) -> Result<Outcome, CliError> {
+    let target = target(path, args, several)?;
+    let file = read(path)?;
+    let config = Config::find(args.analysis.input.config.as_deref(), path)?;
+    let inputs = Inputs::load(&args.analysis.input, &config, path)?;
     let options = Options {
         keep_original: !args.no_original,
         inline_results: args.inline_results,
         ..analysis::options(&args.analysis, &config)
     };
     let analyzed = analysis::run(&file, inputs, &options);
-    analysis::report(&analyzed, &file, args.analysis.message_format);
-
+    let mut outcome = Outcome {
+        status: status(analyzed.has_errors()),
+        stdout: Vec::new(),
+        stderr: analysis::report(&analyzed, &file, args.analysis.message_format),
+    };
     let edits = &analyzed.rewrite.edits;
     let changed = !edits.is_empty();
-    let errors = analyzed.has_errors();
     if args.check {
         if changed {
-            eprintln!(
-                "{}: would rewrite {} CYCLE600 call(s)",
+            outcome.stderr.push_str(&format!(
+                "{}: would rewrite {} CYCLE600 call(s)\n",
                 file.name, analyzed.rewrite.rewritten
-            );
+            ));
         }
-        return Ok(status(errors || changed));
+        outcome.status = status(analyzed.has_errors() || changed);
+        return Ok(outcome);
     }
     if args.diff {
-        write_stdout(diff::unified(&file.name, &file.bytes, edits).as_bytes())?;
-        return Ok(status(errors));
+        outcome.stdout = diff::unified(&file.name, &file.bytes, edits).into_bytes();
+        return Ok(outcome);
     }
     let output = |out: &mut dyn Write| write_applied(&file.bytes, edits, out);
-    if let Some(target) = in_place {
-        if errors {
-            eprintln!(
-                "{}: not rewritten in place, because of the errors above",
-                file.name
-            );
-            return Ok(ExitStatus::Failure);
+    match target {
+        Target::InPlace(target) => {
+            if analyzed.has_errors() {
+                outcome.stderr.push_str(&format!(
+                    "{}: not rewritten in place, because of the errors above\n",
+                    file.name
+                ));
+                return Ok(outcome);
+            }
+            if changed {
+                // The backup holds the bytes this run read and rewrote.
+                let backup = (!args.no_backup).then_some(&file.bytes[..]);
+                write_atomically(&target, output, backup)?;
+            }
+            outcome.status = ExitStatus::Success;
         }
-        if changed {
-            // The backup holds the bytes this run read and rewrote.
-            let backup = (!args.no_backup).then_some(&file.bytes[..]);
-            write_atomically(&target, output, backup)?;
+        Target::File(path) => {
+            if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+                std::fs::create_dir_all(parent).map_err(|source| CliError::WriteFile {
+                    path: path.clone(),
+                    source,
+                })?;
+            }
+            write_atomically(&path, output, None)?;
         }
-        return Ok(ExitStatus::Success);
+        // One program: several are refused before any is read.
+        Target::Stdout => write_stdout_with(output)?,
     }
-    match &args.output {
-        Some(path) => write_atomically(path, output, None)?,
-        None => write_stdout_with(output)?,
-    }
-    Ok(status(errors))
+    Ok(outcome)
 }
 
 fn status(failure: bool) -> ExitStatus {
