@@ -333,7 +333,7 @@ fn concurrent_in_place_rewrites_leave_one_whole_version_and_the_original_as_back
     let _ = fs::remove_dir_all(&dir);
 }
 
-/// A folder of programs: `--check` names each that would change and fails,
+/// A folder of programs: `eval` reports each in order, `--check` names each that would change and fails,
 /// `-o DIR` mirrors the tree, `--in-place` rewrites each file that can be
 /// (one with errors stays as it was, and the status says so), one that fails
 /// stops none of the others, and several programs with nowhere to go are
@@ -359,6 +359,25 @@ fn a_folder_is_rewritten_file_by_file() {
         assert!(stderr.contains(name), "{stderr}");
     }
     assert!(!stderr.contains("PLAIN.SPF: would"), "{stderr}");
+
+    // eval over the folder: one JSON array, a document per program in order.
+    let output = run_in(&dir, &["eval", "--json", "--heads", &heads, "in"]);
+    let documents: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let paths: Vec<&str> = documents
+        .as_array()
+        .expect("an array for a folder")
+        .iter()
+        .filter_map(|d| d["path"].as_str())
+        .collect();
+    assert_eq!(
+        paths,
+        [
+            "in/A.MPF",
+            "in/sub/B.MPF",
+            "in/sub/BAD.MPF",
+            "in/sub/PLAIN.SPF"
+        ]
+    );
 
     let output = run_in(&dir, &["rewrite", "--heads", &heads, "-o", "out", "in"]);
     assert_exit(&output, 1); // BAD.MPF's refused call is an error

@@ -191,9 +191,12 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct EvalArgs {
-    /// The program; `-` reads stdin.
+    /// Programs or directories (searched recursively for .mpf/.spf); `-` reads stdin.
     #[arg(default_value = "-")]
-    pub path: PathBuf,
+    pub paths: Vec<PathBuf>,
+    /// A directory without programs is no error (by default it is: exit 2).
+    #[arg(long)]
+    pub allow_empty: bool,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// Print one JSON document instead of the tables.

@@ -5,7 +5,8 @@ use crate::cli::analysis::{self, Inputs};
 use crate::cli::args::EvalArgs;
 use crate::cli::config::Config;
 use crate::cli::error::CliError;
-use crate::cli::input::read;
+use crate::cli::input::{expand, read};
+use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -13,26 +14,77 @@ use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
+use std::path::{Path, PathBuf};
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
-    let file = read(&args.path)?;
-    let config = Config::find(args.analysis.input.config.as_deref(), &args.path)?;
-    let inputs = Inputs::load(&args.analysis.input, &config, &args.path)?;
+    let paths = expand(&args.paths, args.allow_empty)?;
+    let outcomes = parallel::each(paths.len(), |index| match &paths[index] {
+        Ok(path) => eval_file(path, args),
+        Err(error) => Err(CliError::Read {
+            path: PathBuf::new(),
+            source: std::io::Error::other(error.to_string()),
+        }),
+    });
+    let several = paths.len() > 1;
+    let mut worst = ExitStatus::Success;
+    let mut documents = Vec::new();
+    for outcome in outcomes {
+        match outcome {
+            Ok(evaluated) => {
+                eprint!("{}", evaluated.diagnostics);
+                if evaluated.failed {
+                    worst = worst.max(ExitStatus::Failure);
+                }
+                match evaluated.output {
+                    Output::Text(text) => write_stdout(text.as_bytes())?,
+                    Output::Json(document) => documents.push(document),
+                }
+            }
+            Err(error) => {
+                eprintln!("{:?}", miette::Report::new(error));
+                worst = ExitStatus::Error;
+            }
+        }
+    }
+    if args.json {
+        // One program: its document; several: an array of them, in order.
+        let value = match documents.len() {
+            1 if !several => documents.swap_remove(0),
+            _ => serde_json::Value::Array(documents),
+        };
+        let text = serde_json::to_string_pretty(&value).unwrap_or_default();
+        write_stdout(format!("{text}\n").as_bytes())?;
+    }
+    Ok(worst)
+}
+
+enum Output {
+    Text(String),
+    Json(serde_json::Value),
+}
+
+/// One program's evaluation, kept so that the programs come in their order.
+struct Evaluated {
+    output: Output,
+    diagnostics: String,
+    failed: bool,
+}
+
+fn eval_file(path: &Path, args: &EvalArgs) -> Result<Evaluated, CliError> {
+    let file = read(path)?;
+    let config = Config::find(args.analysis.input.config.as_deref(), path)?;
+    let inputs = Inputs::load(&args.analysis.input, &config, path)?;
     let options = analysis::options(&args.analysis, &config);
     let analyzed = analysis::run(&file, inputs, &options);
     let index = LineIndex::new(&file.bytes);
-    let text = if args.json {
+    let output = if args.json {
         let calls: Vec<serde_json::Value> = analyzed
             .analysis
             .calls
             .iter()
             .map(|site| json(site, &file.bytes, &options))
             .collect();
-        format!(
-            "{}\n",
-            serde_json::to_string_pretty(&serde_json::json!({ "path": file.name, "calls": calls }))
-                .unwrap_or_default()
-        )
+        Output::Json(serde_json::json!({ "path": file.name, "calls": calls }))
     } else {
         let mut text = String::new();
         for site in &analyzed.analysis.calls {
@@ -41,17 +93,12 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
         }
-        eprint!(
-            "{}",
-            analysis::report(&analyzed, &file, args.analysis.message_format)
-        );
-        text
+        Output::Text(text)
     };
-    write_stdout(text.as_bytes())?;
-    Ok(if analyzed.has_errors() {
-        ExitStatus::Failure
-    } else {
-        ExitStatus::Success
+    Ok(Evaluated {
+        output,
+        diagnostics: analysis::report(&analyzed, &file, args.analysis.message_format),
+        failed: analyzed.has_errors(),
     })
 }
 

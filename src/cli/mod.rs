@@ -19,7 +19,7 @@ pub use args::Args;
 pub use error::CliError;
 
 /// 0 clean, 1 findings, 2 the tool failed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum ExitStatus {
     Success = 0,
     Failure = 1,

@@ -54,7 +54,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     for outcome in outcomes {
         eprint!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
-        worst = worse(worst, outcome.status);
+        worst = worst.max(outcome.status);
     }
     Ok(worst)
 }
@@ -65,14 +65,6 @@ fn failed(message: String) -> Outcome {
         status: ExitStatus::Error,
         stdout: Vec::new(),
         stderr: format!("{message}\n"),
-    }
-}
-
-fn worse(a: ExitStatus, b: ExitStatus) -> ExitStatus {
-    if (b as u8) > (a as u8) {
-        b
-    } else {
-        a
     }
 }
 
