@@ -1,4 +1,4 @@
-//! N010 `missing-program-end`: Finds a program whose last block holds no end command (M30, M2, M17, RET).
+//! N010 `missing-program-end`: Finds a program whose last block neither ends it (M30, M2, M17, RET) nor jumps unconditionally.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
@@ -12,8 +12,8 @@ pub static RULE: RuleInfo = RuleInfo {
     name: "missing-program-end",
     severity: Severity::Warning,
     docs: r#"## What it does
-Finds a program whose last block holds no end command (M30, M2, M17, RET).
-A main program may end with M17 or RET as a subprogram does (it can be called as one; the
+Finds a program whose last block neither ends it (M30, M2, M17, RET) nor jumps unconditionally.
+Blocks after the end that jumps reach often end with a jump back (`GOTOB LOOP`). A main program may end with M17 or RET as a subprogram does (it can be called as one; the
 Programming Manual allows M2, M17 or M30 as the last block), and a subprogram with M30 or M2.
 Files that are not programs (`.DEF` definition files, `.INI` setup data) are not checked. When
 the last block has a syntax error, the finding stands at that block, unless an end command is
@@ -96,7 +96,19 @@ impl Check for Checker {
                 _ => None,
             })
             .collect();
-        let ends = m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
+        // An unconditional jump never lets the program run past the file's
+        // end: blocks after M30 reached by jumps often end with `GOTOB`.
+        let conditional = block
+            .statements
+            .iter()
+            .any(|s| matches!(s.kind, StatementKind::If { .. }));
+        let jumps = !conditional
+            && block
+                .statements
+                .iter()
+                .any(|s| matches!(s.kind, StatementKind::Goto(_)));
+        let ends = jumps
+            || m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
             || block.statements.iter().any(|s| match &s.kind {
                 StatementKind::Command(n) => n.is(file.source, "RET"),
                 StatementKind::Call(call) => call.name.is(file.source, "RET"),
