@@ -23,6 +23,8 @@ struct Classes {
     allowed: u64,
     /// CR, LF and `;`: where the words stop.
     stops: u64,
+    /// `G` and `g`: where a motion G function may stand.
+    g: u64,
 }
 
 /// The words of `window` as [`scan_words`](super::scan_words) reads them;
@@ -126,10 +128,14 @@ fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Wor
     };
     let mut rest = words;
     while rest != 0 {
-        let at = rest.trailing_zeros() as usize;
-        count.seen |= bit(window[at]);
-        count.motions |= motion_bit(window, at);
+        count.seen |= bit(window[rest.trailing_zeros() as usize]);
         rest &= rest - 1;
+    }
+    // The G words apart: one in most CAM blocks, and no test on the others.
+    let mut g_words = words & classes.g;
+    while g_words != 0 {
+        count.motions |= motion_bit(window, g_words.trailing_zeros() as usize);
+        g_words &= g_words - 1;
     }
     Some(Words::new(
         stop,
@@ -163,6 +169,7 @@ unsafe fn classify(window: &[u8; 64]) -> Classes {
         points: join(3),
         allowed: join(4),
         stops: join(5),
+        g: join(6),
     }
 }
 
@@ -174,7 +181,7 @@ unsafe fn classify(window: &[u8; 64]) -> Classes {
 #[allow(unsafe_code)]
 #[inline]
 #[target_feature(enable = "avx2")]
-unsafe fn classify_32(bytes: &[u8; 32]) -> [u32; 6] {
+unsafe fn classify_32(bytes: &[u8; 32]) -> [u32; 7] {
     use std::arch::x86_64::*;
 
     // Reads the 32 bytes the type guarantees.
@@ -199,7 +206,8 @@ unsafe fn classify_32(bytes: &[u8; 32]) -> [u32; 6] {
         _mm256_or_si256(number, blank),
     );
     let stop = _mm256_or_si256(_mm256_or_si256(eq(b'\n'), eq(b'\r')), eq(b';'));
-    [letter, sign, number, point, allowed, stop].map(|mask| _mm256_movemask_epi8(mask) as u32)
+    let g = _mm256_cmpeq_epi8(_mm256_or_si256(v, splat(0x20)), splat(b'g'));
+    [letter, sign, number, point, allowed, stop, g].map(|mask| _mm256_movemask_epi8(mask) as u32)
 }
 
 #[cfg(test)]
