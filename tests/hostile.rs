@@ -146,8 +146,14 @@ fn the_cli_on_empty_input_and_on_a_directory() {
     assert_exit(&empty, 0);
     assert!(empty.stdout.is_empty());
     assert_exit(&run(&["check", "--format", "short", "-"], b""), 0);
-    assert_exit(&run(&["rewrite", "samples"], b""), 2);
-    assert_exit(&run(&["eval", "samples"], b""), 2);
+    // A directory is several programs: rewrite has only stdout for them and
+    // refuses; eval tells each (PROBE_ALIGN's measured angles are errors).
+    let rewrite = run(&["rewrite", "samples"], b"");
+    assert_exit(&rewrite, 2);
+    assert!(String::from_utf8_lossy(&rewrite.stderr).contains("programs to rewrite"));
+    let eval = run(&["eval", "samples"], b"");
+    assert_exit(&eval, 1);
+    assert!(String::from_utf8_lossy(&eval.stdout).contains("samples/PROBE_ALIGN.MPF"));
 }
 
 /// A large program with a CYCLE600, so that an in-place rewrite has work to do.

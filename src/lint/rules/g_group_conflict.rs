@@ -1,10 +1,8 @@
 //! N023 `g-group-conflict`: Finds two G functions of one group in a block (`G0 G1`).
 
-use std::collections::HashMap;
-
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{both, each_plain_line};
+use crate::lint::rules::support::{both, each_plain_line, group_conflicts};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::{g_group, is_syntax_defining};
 
@@ -71,21 +69,11 @@ fn grouped(source: &[u8], address: &Address) -> Option<(u32, u8)> {
 }
 
 /// One finding per group, from its first word to the first other function
-/// of the group; linear in the block's words.
+/// One finding per group, from its first function to the first other one.
 fn check(file: &FileContext, addresses: &[Address], out: &mut Vec<Diagnostic>) {
     let source = file.source;
-    // group -> its first function, and whether it was reported.
-    let mut first_of: HashMap<u8, (&Address, u32, bool)> = HashMap::new();
-    for second in addresses {
-        let Some((number, group)) = grouped(source, second) else {
-            continue;
-        };
-        let (first, first_number, reported) =
-            first_of.entry(group).or_insert((second, number, false));
-        if *first_number == number || *reported {
-            continue;
-        }
-        *reported = true;
+    let grouped = |a: &Address| grouped(source, a).map(|(number, group)| (group, number));
+    for (group, first, second) in group_conflicts(addresses, grouped) {
         let (first_text, second_text) = both(source, first, second);
         let consequence = if is_syntax_defining(group) {
             "the control refuses the block"

@@ -2,12 +2,11 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::each_plain_line;
+use crate::lint::rules::support::{each_plain_line, moves_a_named_axis};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::is_axis_letter;
 use crate::span::Span;
 use crate::syntax::plain::Letters;
-use crate::syntax::tree::{Block, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N025",
@@ -114,17 +113,6 @@ impl Check for Checker {
             check(&Circle::of(file.source, addresses), out)
         });
     }
-}
-
-/// The block assigns a position to an axis the machine names (`XC=10`).
-fn moves_a_named_axis(file: &FileContext, block: &Block) -> bool {
-    !file.environment.axes.is_empty()
-        && block.statements.iter().any(|s| match &s.kind {
-            StatementKind::Assign(assign) => file.environment.axes.contains(
-                &String::from_utf8_lossy(assign.target.name.text(file.source)).to_ascii_uppercase(),
-            ),
-            _ => false,
-        })
 }
 
 fn check(circle: &Circle, out: &mut Vec<Diagnostic>) {

@@ -1,10 +1,8 @@
 //! N024 `m-group-conflict`: Finds two M functions of one group in a block (`M3 M4`).
 
-use std::collections::HashMap;
-
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{both, each_plain_line};
+use crate::lint::rules::support::{both, each_plain_line, group_conflicts};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::m_group;
 
@@ -76,22 +74,14 @@ fn grouped(source: &[u8], address: &Address) -> Option<(u32, Option<u32>, u8)> {
 }
 
 /// One finding per group and extension, from its first word to the first
-/// other function of the group; linear in the block's words.
+/// One finding per group and extension, from its first function to the
+/// first other one.
 fn check(file: &FileContext, addresses: &[Address], out: &mut Vec<Diagnostic>) {
     let source = file.source;
-    // (group, extension) -> its first function, and whether it was reported.
-    let mut first_of: HashMap<(u8, Option<u32>), (&Address, u32, bool)> = HashMap::new();
-    for second in addresses {
-        let Some((number, extension, group)) = grouped(source, second) else {
-            continue;
-        };
-        let (first, first_number, reported) = first_of
-            .entry((group, extension))
-            .or_insert((second, number, false));
-        if *first_number == number || *reported {
-            continue;
-        }
-        *reported = true;
+    let grouped = |a: &Address| {
+        grouped(source, a).map(|(number, extension, group)| ((group, extension), number))
+    };
+    for ((group, _), first, second) in group_conflicts(addresses, grouped) {
         let (first_text, second_text) = both(source, first, second);
         let what = match group {
             1 => "stop or end the program",

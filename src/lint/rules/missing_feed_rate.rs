@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{is_definition_file, upper};
+use crate::lint::rules::support::{is_definition_file, moves_a_named_axis, upper};
 use crate::semantic::addresses::{self, Address};
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::modal::{is_axis_letter, is_feed_motion, Modal};
@@ -75,13 +75,7 @@ impl Check for Checker {
             self.done = true;
             return;
         }
-        let moves = block.statements.iter().any(|s| match &s.kind {
-            StatementKind::Assign(assign) => file
-                .environment
-                .axes
-                .contains(&upper(file.source, assign.target.name.span)),
-            _ => false,
-        });
+        let moves = moves_a_named_axis(file, block);
         self.step(file, addresses, moves, out);
     }
 

@@ -4,7 +4,7 @@
 use crate::lint::rule::{FileContext, PlainLine};
 use crate::semantic::addresses::{self, Address};
 use crate::span::Span;
-use crate::syntax::tree::{Block, Goto, GotoTarget};
+use crate::syntax::tree::{Block, Goto, GotoTarget, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
 
 /// The upper-case text of `span`.
@@ -94,4 +94,40 @@ pub fn each_plain_line(
 pub fn both(source: &[u8], first: &Address, second: &Address) -> (String, String) {
     let text = |a: &Address| String::from_utf8_lossy(a.span.of(source)).into_owned();
     (text(first), text(second))
+}
+
+/// The block assigns a position to an axis the machine names (`XC=10`, with
+/// `axes = ["XC"]`): an axis word the one-letter addresses do not show.
+pub fn moves_a_named_axis(file: &FileContext, block: &Block) -> bool {
+    !file.environment.axes.is_empty()
+        && block.statements.iter().any(|s| match &s.kind {
+            StatementKind::Assign(assign) => file
+                .environment
+                .axes
+                .contains(&upper(file.source, assign.target.name.span)),
+            _ => false,
+        })
+}
+
+/// Functions that exclude each other in one block: for each group (as
+/// `grouped` gives a word's group and number), its first function and the
+/// first later one with another number. Linear in the block's words.
+pub fn group_conflicts<G: Copy + Eq + std::hash::Hash>(
+    addresses: &[Address],
+    grouped: impl Fn(&Address) -> Option<(G, u32)>,
+) -> Vec<(G, &Address, &Address)> {
+    // group -> its first function, and whether a conflict was found.
+    let mut first_of: std::collections::HashMap<G, (&Address, u32, bool)> = Default::default();
+    let mut conflicts = Vec::new();
+    for second in addresses {
+        let Some((group, number)) = grouped(second) else {
+            continue;
+        };
+        let (first, first_number, found) = first_of.entry(group).or_insert((second, number, false));
+        if *first_number != number && !*found {
+            *found = true;
+            conflicts.push((group, *first, second));
+        }
+    }
+    conflicts
 }
