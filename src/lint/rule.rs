@@ -5,9 +5,12 @@ use std::cell::{OnceCell, RefCell};
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
+use crate::semantic::addresses::{self, Address};
 use crate::semantic::labels::Labels;
 pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::{Environment, Model};
+use crate::syntax::plain::PlainFacts;
+use crate::syntax::tree::Block;
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at.
@@ -106,6 +109,57 @@ pub trait Check {
     ) {
     }
     fn finish(&mut self, _file: &FileContext, _out: &mut Vec<Diagnostic>) {}
+}
+
+/// A rule that looks at each block's address words alone, whatever came
+/// before it (N022-N025): [`EachBlock`] is its checker.
+pub trait BlockWords {
+    /// Whether a plain line with these scanned facts can hold a finding: the
+    /// facts decide for most lines of a CAM program without reading a word.
+    fn may_find(facts: &PlainFacts) -> bool;
+    /// The findings of one block; `block` is its tree, `None` for a plain line.
+    fn check(
+        file: &FileContext,
+        block: Option<&Block>,
+        addresses: &[Address],
+        out: &mut Vec<Diagnostic>,
+    );
+}
+
+/// The checker of a [`BlockWords`] rule: a tree line's words as the line
+/// view read them once for every rule, a plain line's from its bytes when
+/// its facts allow a finding.
+pub struct EachBlock<R>(std::marker::PhantomData<R>);
+
+impl<R> Default for EachBlock<R> {
+    fn default() -> Self {
+        Self(std::marker::PhantomData)
+    }
+}
+
+impl<R: BlockWords> Check for EachBlock<R> {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        if let Some(block) = line.block {
+            R::check(file, Some(block), line.addresses(file.source), out);
+        }
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        for line in lines.iter().filter(|line| R::may_find(&line.facts)) {
+            let addresses = addresses::of_plain(file.source, line.raw.content);
+            R::check(file, None, &addresses, out);
+        }
+    }
 }
 
 /// A rule with the checker that implements it; rules whose findings come

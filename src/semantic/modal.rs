@@ -86,14 +86,12 @@ impl Modal {
     /// The state after a block with these addresses.
     pub fn apply(&mut self, source: &[u8], addresses: &[Address]) {
         for address in addresses {
-            match address.letter(source) {
-                b'G' if address.name.len() == 1 => {
-                    if let Some(number) = address.whole(source).filter(|&n| g_group(n) == Some(1)) {
-                        self.motion = Some(number);
-                    }
+            if address.is(source, "G") {
+                if let Some(number) = address.whole(source).filter(|&n| g_group(n) == Some(1)) {
+                    self.motion = Some(number);
                 }
-                b'F' if address.name.len() == 1 && address.extension.is_none() => self.feed = true,
-                _ => {}
+            } else if address.is(source, "F") && address.extension.is_none() {
+                self.feed = true;
             }
         }
     }

@@ -122,18 +122,18 @@ impl Check for Checker {
             if !line.facts.has_words() {
                 continue;
             }
-            if let Some(end) = self.end.take() {
-                let words = addresses::of_plain(source, line.raw.content);
-                let span = match (words.first(), words.last()) {
-                    (Some(first), Some(last)) => first.span.to(last.span),
-                    _ => line.raw.content,
-                };
-                self.after
-                    .push((span, number_of(source, line.facts.number), end));
+            let after_end = self.end.take();
+            let may_end = self.depth == 0 && line.facts.letters.contains(b'M');
+            if after_end.is_none() && !may_end {
+                continue; // nearly every CAM line: no word read
             }
-            if self.depth == 0 && line.facts.letters.contains(b'M') {
-                let addresses = addresses::of_plain(source, line.raw.content);
-                if let Some(end) = addresses.iter().find(|a| is_end_word(source, a)) {
+            let words = addresses::of_plain(source, line.raw.content);
+            if let (Some(end), Some(first), Some(last)) = (after_end, words.first(), words.last()) {
+                let number = number_of(source, line.facts.number);
+                self.after.push((first.span.to(last.span), number, end));
+            }
+            if may_end {
+                if let Some(end) = words.iter().find(|a| is_end_word(source, a)) {
                     self.end = Some(end.span);
                 }
             }

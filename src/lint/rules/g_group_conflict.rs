@@ -1,10 +1,12 @@
 //! N023 `g-group-conflict`: Finds two G functions of one group in a block (`G0 G1`).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{both, each_plain_line, group_conflicts};
+use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rules::support::{both, group_conflicts};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::{g_group, is_syntax_defining};
+use crate::syntax::plain::PlainFacts;
+use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N023",
@@ -31,62 +33,45 @@ N20 G90 G91 X5
 Keep the G function that was meant."#,
 };
 
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn line(
-        &mut self,
+impl BlockWords for Checker {
+    fn may_find(facts: &PlainFacts) -> bool {
+        facts.repeats && facts.letters.contains(b'G')
+    }
+
+    /// One finding per group, from its first function to the first other one.
+    fn check(
         file: &FileContext,
-        _row: usize,
-        line: &LineView,
+        _block: Option<&Block>,
+        addresses: &[Address],
         out: &mut Vec<Diagnostic>,
     ) {
-        check(file, line.addresses(file.source), out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        each_plain_line(
-            file,
-            lines,
-            |line| line.facts.repeats && line.facts.letters.contains(b'G'),
-            |_, addresses| check(file, addresses, out),
-        );
+        let source = file.source;
+        for (group, first, second) in group_conflicts(addresses, |a| grouped(source, a)) {
+            let (first_text, second_text) = both(source, first, second);
+            let consequence = if is_syntax_defining(group) {
+                "the control refuses the block"
+            } else {
+                "the control refuses the block, or keeps the last one"
+            };
+            out.push(
+                RULE.at(first.span.to(second.span))
+                    .message(format!(
+                        "`{first_text}` and `{second_text}` are both of G group {group} and exclude each other: {consequence}"
+                    ))
+                    .label(format!("two functions of group {group}"))
+                    .help(format!("keep `{first_text}` or `{second_text}`, the one that was meant")),
+            );
+        }
     }
 }
 
-/// The G function's number and group.
-fn grouped(source: &[u8], address: &Address) -> Option<(u32, u8)> {
+/// The G function's group and number.
+fn grouped(source: &[u8], address: &Address) -> Option<(u8, u32)> {
     if !address.is(source, "G") || address.extension.is_some() {
         return None;
     }
     let number = address.whole(source)?;
-    Some((number, g_group(number)?))
-}
-
-/// One finding per group, from its first word to the first other function
-/// One finding per group, from its first function to the first other one.
-fn check(file: &FileContext, addresses: &[Address], out: &mut Vec<Diagnostic>) {
-    let source = file.source;
-    let grouped = |a: &Address| grouped(source, a).map(|(number, group)| (group, number));
-    for (group, first, second) in group_conflicts(addresses, grouped) {
-        let (first_text, second_text) = both(source, first, second);
-        let consequence = if is_syntax_defining(group) {
-            "the control refuses the block"
-        } else {
-            "the control refuses the block, or keeps the last one"
-        };
-        out.push(
-            RULE.at(first.span.to(second.span))
-                .message(format!(
-                    "`{first_text}` and `{second_text}` are both of G group {group} and exclude each other: {consequence}"
-                ))
-                .label(format!("two functions of group {group}"))
-                .help(format!("keep `{first_text}` or `{second_text}`, the one that was meant")),
-        );
-    }
+    Some((g_group(number)?, number))
 }

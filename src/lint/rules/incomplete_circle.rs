@@ -1,12 +1,13 @@
 //! N025 `incomplete-circle`: Finds a circle (`G2`, `G3`) without its centre or radius, or with a radius and no end point.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{each_plain_line, moves_a_named_axis};
+use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rules::support::moves_a_named_axis;
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::is_axis_letter;
 use crate::span::Span;
-use crate::syntax::plain::Letters;
+use crate::syntax::plain::{Letters, PlainFacts};
+use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N025",
@@ -76,46 +77,36 @@ impl Circle {
     }
 }
 
-#[derive(Default)]
+/// The default axis names, and what gives a plain line's circle its centre
+/// or (ISO) radius.
+const AXES: Letters = Letters::of(b"XYZABCUVW");
+const CENTRE_OR_RADIUS: Letters = Letters::of(b"IJKR");
+
 pub struct Checker;
 
-impl Check for Checker {
-    fn line(
-        &mut self,
+impl BlockWords for Checker {
+    /// A plain line cannot hold CR: with a centre or an ISO radius it is
+    /// complete, without an axis it has no end point.
+    fn may_find(facts: &PlainFacts) -> bool {
+        (facts.motions.contains(2) || facts.motions.contains(3))
+            && facts.letters.meets(AXES)
+            && !facts.letters.meets(CENTRE_OR_RADIUS)
+    }
+
+    fn check(
         file: &FileContext,
-        _row: usize,
-        line: &LineView,
+        block: Option<&Block>,
+        addresses: &[Address],
         out: &mut Vec<Diagnostic>,
     ) {
-        if let Some(block) = line.block {
-            let mut circle = Circle::of(file.source, line.addresses(file.source));
-            circle.end |= moves_a_named_axis(file, block);
-            check(&circle, out);
-        }
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        // A plain line cannot hold CR: with a centre or an ISO radius it is
-        // complete, without an axis it has no end point.
-        let complete = Letters::of(b"IJKR");
-        let axes = Letters::of(b"XYZABCUVW");
-        let wanted = |line: &PlainLine| {
-            let facts = &line.facts;
-            (facts.motions.contains(2) || facts.motions.contains(3))
-                && facts.letters.meets(axes)
-                && !facts.letters.meets(complete)
-        };
-        each_plain_line(file, lines, wanted, |_, addresses| {
-            check(&Circle::of(file.source, addresses), out)
-        });
+        let mut circle = Circle::of(file.source, addresses);
+        circle.end |= block.is_some_and(|block| moves_a_named_axis(file, block));
+        report(&circle, out);
     }
 }
 
-fn check(circle: &Circle, out: &mut Vec<Diagnostic>) {
+/// The finding of a circle block that lacks what it needs.
+fn report(circle: &Circle, out: &mut Vec<Diagnostic>) {
     let Some(words) = circle.circle else {
         return;
     };

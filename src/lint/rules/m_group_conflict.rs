@@ -1,10 +1,12 @@
 //! N024 `m-group-conflict`: Finds two M functions of one group in a block (`M3 M4`).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{both, each_plain_line, group_conflicts};
+use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rules::support::{both, group_conflicts};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::m_group;
+use crate::syntax::plain::PlainFacts;
+use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N024",
@@ -32,36 +34,42 @@ N10 S2000 M3 M4
 Keep the M function that was meant."#,
 };
 
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn line(
-        &mut self,
+impl BlockWords for Checker {
+    fn may_find(facts: &PlainFacts) -> bool {
+        facts.repeats && facts.letters.contains(b'M')
+    }
+
+    /// One finding per group and extension, from its first function to the
+    /// first other one.
+    fn check(
         file: &FileContext,
-        _row: usize,
-        line: &LineView,
+        _block: Option<&Block>,
+        addresses: &[Address],
         out: &mut Vec<Diagnostic>,
     ) {
-        check(file, line.addresses(file.source), out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        each_plain_line(
-            file,
-            lines,
-            |line| line.facts.repeats && line.facts.letters.contains(b'M'),
-            |_, addresses| check(file, addresses, out),
-        );
+        let source = file.source;
+        for ((group, _), first, second) in group_conflicts(addresses, |a| grouped(source, a)) {
+            let (first_text, second_text) = both(source, first, second);
+            let what = match group {
+                1 => "stop or end the program",
+                _ => "set what the spindle does",
+            };
+            out.push(
+                RULE.at(first.span.to(second.span))
+                    .message(format!(
+                        "`{first_text}` and `{second_text}` both {what} (M function group {group}): the control refuses the block"
+                    ))
+                    .label(format!("two functions of group {group}"))
+                    .help(format!("keep `{first_text}` or `{second_text}`, the one that was meant")),
+            );
+        }
     }
 }
 
-/// The M function's number, extension and group.
-fn grouped(source: &[u8], address: &Address) -> Option<(u32, Option<u32>, u8)> {
+/// The M function's group with its extension (the spindle), and its number.
+fn grouped(source: &[u8], address: &Address) -> Option<((u8, Option<u32>), u32)> {
     if !address.is(source, "M") {
         return None;
     }
@@ -70,30 +78,5 @@ fn grouped(source: &[u8], address: &Address) -> Option<(u32, Option<u32>, u8)> {
         Some(_) => Some(address.extension_value(source)?),
         None => None,
     };
-    Some((number, extension, m_group(number)?))
-}
-
-/// One finding per group and extension, from its first word to the first
-/// One finding per group and extension, from its first function to the
-/// first other one.
-fn check(file: &FileContext, addresses: &[Address], out: &mut Vec<Diagnostic>) {
-    let source = file.source;
-    let grouped = |a: &Address| {
-        grouped(source, a).map(|(number, extension, group)| ((group, extension), number))
-    };
-    for ((group, _), first, second) in group_conflicts(addresses, grouped) {
-        let (first_text, second_text) = both(source, first, second);
-        let what = match group {
-            1 => "stop or end the program",
-            _ => "set what the spindle does",
-        };
-        out.push(
-            RULE.at(first.span.to(second.span))
-                .message(format!(
-                    "`{first_text}` and `{second_text}` both {what} (M function group {group}): the control refuses the block"
-                ))
-                .label(format!("two functions of group {group}"))
-                .help(format!("keep `{first_text}` or `{second_text}`, the one that was meant")),
-        );
-    }
+    Some(((m_group(number)?, extension), number))
 }

@@ -126,12 +126,9 @@ impl Checker {
                     || a.is(source, "AP")
                     || a.is(source, "RP")
             });
-        let (Some(first), Some(last)) = (addresses.first(), addresses.last()) else {
+        let (true, Some(first), Some(last)) = (moves, addresses.first(), addresses.last()) else {
             return;
         };
-        if !moves {
-            return;
-        }
         self.done = true;
         out.push(
             RULE.at(Span::new(first.span.start, last.span.end))

@@ -32,7 +32,7 @@ pub mod undefined_variable;
 pub mod unused_suppression;
 pub mod unused_variable;
 
-use crate::lint::rule::{Check, Rule};
+use crate::lint::rule::{Check, EachBlock, Rule};
 
 fn checker<C: Check + Default + 'static>() -> Box<dyn Check> {
     Box::new(C::default())
@@ -131,19 +131,19 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &repeated_address::RULE,
-            checker: Some(checker::<repeated_address::Checker>),
+            checker: Some(checker::<EachBlock<repeated_address::Checker>>),
         },
         Rule {
             info: &g_group_conflict::RULE,
-            checker: Some(checker::<g_group_conflict::Checker>),
+            checker: Some(checker::<EachBlock<g_group_conflict::Checker>>),
         },
         Rule {
             info: &m_group_conflict::RULE,
-            checker: Some(checker::<m_group_conflict::Checker>),
+            checker: Some(checker::<EachBlock<m_group_conflict::Checker>>),
         },
         Rule {
             info: &incomplete_circle::RULE,
-            checker: Some(checker::<incomplete_circle::Checker>),
+            checker: Some(checker::<EachBlock<incomplete_circle::Checker>>),
         },
         Rule {
             info: &missing_feed_rate::RULE,

@@ -3,10 +3,11 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{both, each_plain_line};
+use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rules::support::both;
 use crate::semantic::addresses::Address;
-use crate::syntax::plain::Letters;
+use crate::syntax::plain::{Letters, PlainFacts};
+use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N022",
@@ -35,76 +36,61 @@ Keep one word of the address, or move the other to the block it belongs to."#,
 
 /// The one-letter addresses a block takes once.
 const ONCE: &[u8] = b"XYZABCUVWIJKFTDS";
+const ONCE_LETTERS: Letters = Letters::of(ONCE);
 
 /// Every named address (see [`addresses::of_block`]) is taken once.
 fn taken_once(source: &[u8], address: &Address) -> bool {
     address.name.len() > 1 || ONCE.contains(&address.letter(source))
 }
 
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn line(
-        &mut self,
+impl BlockWords for Checker {
+    fn may_find(facts: &PlainFacts) -> bool {
+        facts.repeats && facts.letters.meets(ONCE_LETTERS)
+    }
+
+    /// One finding per repeated address, at its second word (a third one is the
+    /// same mistake). Linear in the block's words: a block may hold thousands.
+    fn check(
         file: &FileContext,
-        _row: usize,
-        line: &LineView,
+        _block: Option<&Block>,
+        addresses: &[Address],
         out: &mut Vec<Diagnostic>,
     ) {
-        check(file, line.addresses(file.source), out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        let once = Letters::of(ONCE);
-        each_plain_line(
-            file,
-            lines,
-            |line| line.facts.repeats && line.facts.letters.meets(once),
-            |_, addresses| check(file, addresses, out),
-        );
+        let source = file.source;
+        if !may_repeat(source, addresses) {
+            return;
+        }
+        // The first word of each address, and whether it was reported.
+        let mut seen: HashMap<Key, (&Address, bool)> = HashMap::new();
+        for second in addresses.iter().filter(|a| taken_once(source, a)) {
+            let key = (
+                second.name.of(source).to_ascii_uppercase(),
+                second.extension.map(|_| second.extension_value(source)),
+            );
+            let (first, reported) = seen.entry(key).or_insert((second, false));
+            if std::ptr::eq(*first, second) || *reported {
+                continue;
+            }
+            *reported = true;
+            let (first_text, second_text) = both(source, first, second);
+            let name = String::from_utf8_lossy(second.name.of(source)).to_ascii_uppercase();
+            out.push(
+                RULE.at(second.span)
+                    .message(format!(
+                        "address {name} is programmed twice in this block (`{first_text}` and `{second_text}`): the control takes it once"
+                    ))
+                    .label(format!("second {name}"))
+                    .help(format!("keep one {name} word, or move `{second_text}` to the block it belongs to")),
+            );
+        }
     }
 }
 
 /// An address as the control tells addresses apart: its name in upper case
 /// and its extension's value, if it has one.
 type Key = (Vec<u8>, Option<Option<u32>>);
-
-/// One finding per repeated address, at its second word (a third one is the
-/// same mistake). Linear in the block's words: a block may hold thousands.
-fn check(file: &FileContext, addresses: &[Address], out: &mut Vec<Diagnostic>) {
-    let source = file.source;
-    if !may_repeat(source, addresses) {
-        return;
-    }
-    // The first word of each address, and whether it was reported.
-    let mut seen: HashMap<Key, (&Address, bool)> = HashMap::new();
-    for second in addresses.iter().filter(|a| taken_once(source, a)) {
-        let key = (
-            second.name.of(source).to_ascii_uppercase(),
-            second.extension.map(|_| second.extension_value(source)),
-        );
-        let (first, reported) = seen.entry(key).or_insert((second, false));
-        if std::ptr::eq(*first, second) || *reported {
-            continue;
-        }
-        *reported = true;
-        let (first_text, second_text) = both(source, first, second);
-        let name = String::from_utf8_lossy(second.name.of(source)).to_ascii_uppercase();
-        out.push(
-            RULE.at(second.span)
-                .message(format!(
-                    "address {name} is programmed twice in this block (`{first_text}` and `{second_text}`): the control takes it once"
-                ))
-                .label(format!("second {name}"))
-                .help(format!("keep one {name} word, or move `{second_text}` to the block it belongs to")),
-        );
-    }
-}
 
 /// Whether some address taken once may appear twice: a set of letters for
 /// the one-letter words without an extension (nearly all), a list for the

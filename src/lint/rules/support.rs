@@ -1,8 +1,8 @@
 //! Small helpers the rules share: what a block jumps to, which names an
 //! expression reads, whether a name is a user variable.
 
-use crate::lint::rule::{FileContext, PlainLine};
-use crate::semantic::addresses::{self, Address};
+use crate::lint::rule::FileContext;
+use crate::semantic::addresses::Address;
 use crate::span::Span;
 use crate::syntax::tree::{Block, Goto, GotoTarget, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
@@ -74,20 +74,6 @@ pub fn is_definition_file(name: &str) -> bool {
     ["DEF", "INI", "GUD", "COM"]
         .iter()
         .any(|e| extension.eq_ignore_ascii_case(e))
-}
-
-/// Calls `check` with the address words of every plain line that `wanted`
-/// accepts: the scanned facts (letters, a repeat) decide for most lines of a
-/// CAM program without reading their words.
-pub fn each_plain_line(
-    file: &FileContext,
-    lines: &[PlainLine],
-    wanted: impl Fn(&PlainLine) -> bool,
-    mut check: impl FnMut(&PlainLine, &[Address]),
-) {
-    for line in lines.iter().filter(|line| wanted(line)) {
-        check(line, &addresses::of_plain(file.source, line.raw.content));
-    }
 }
 
 /// The words of two addresses, for a message: `X10` and `X20`.
