@@ -24,8 +24,9 @@
 //! - [`suggest`]: did-you-mean, shared by the parser's and the rules' messages.
 //! - [`document`]: the front door: a program in, its findings and its rewrite out, for the
 //!   command line and an editor alike.
-//! - [`cli`]: the command line (settings from sinuprep.toml and options); the only place that
-//!   prints.
+//! - [`workspace`]: a program's settings: sinuprep.toml, the caller's options, measured values,
+//!   HEAD_DEF and definition files, resolved once for the command line and a server alike.
+//! - [`cli`]: the command line (options, files, reports); the only place that prints.
 
 pub mod cli;
 pub mod diagnostic;
@@ -39,3 +40,4 @@ pub mod semantic;
 pub mod span;
 pub mod suggest;
 pub mod syntax;
+pub mod workspace;

@@ -4,9 +4,9 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
-use crate::cli::config::SeverityName;
 use crate::emit::cycle600::Form;
 use crate::rotation::Sequence;
+use crate::workspace::SeverityName;
 
 #[derive(Debug, Parser)]
 #[command(

@@ -1,14 +1,11 @@
 //! `sinuprep check`: lint every program named, in parallel, and report in a
 //! stable order.
 
-use std::collections::HashMap;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
 
-use crate::cli::analysis::Inputs;
+use crate::cli::analysis;
 use crate::cli::args::{CheckArgs, Format};
-use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read, Bytes, SourceFile};
 use crate::cli::output::{in_place_target, write_atomically};
@@ -18,9 +15,9 @@ use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::document::Document;
 use crate::edit::apply;
-use crate::lint::{self, Selection};
-use crate::semantic::Environment;
+use crate::lint;
 use crate::syntax::program_kind;
+use crate::workspace::Workspace;
 
 /// One file's outcome, with what its report needs of the source taken out
 /// in the worker: the source is dropped as soon as its file is checked, so
@@ -92,13 +89,11 @@ enum Report {
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
-    codes(&args.select, "--select")?;
-    codes(&args.ignore, "--ignore")?;
+    let workspace = Workspace::new(analysis::given_to_check(args))?;
     let paths = expand(&args.paths, args.allow_empty)?;
-    let definitions = Definitions::default();
     let colour = std::io::stdout().is_terminal();
     let results = parallel::each(paths.len(), |index| match &paths[index] {
-        Ok(path) => check_file(path, args, colour, &definitions),
+        Ok(path) => check_file(path, args, colour, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
@@ -154,7 +149,7 @@ fn check_file(
     path: &Path,
     args: &CheckArgs,
     colour: bool,
-    definitions: &Definitions,
+    workspace: &Workspace,
 ) -> Result<Checked, CliError> {
     // Refused before anything is read: stdin, a FIFO, a device.
     let fix_target = args.fix.then(|| in_place_target(path)).transpose()?;
@@ -167,38 +162,9 @@ fn check_file(
         }
         _ => path.to_path_buf(),
     };
-    let lookup = if named == Path::new("-") {
-        PathBuf::from(".")
-    } else {
-        named.clone()
-    };
-    let config = Config::find(args.input.config.as_deref(), &lookup)?;
-    let inputs = Inputs::load(&args.input, &config, &named)?;
-    let in_config = |what: &str| format!("{} ({what})", config.describe());
-    // A list on the command line replaces the file's (both are checked).
-    let list = |given: &[String], flag: &str, file: &Option<Vec<String>>, key: &str| {
-        let from_file = codes(file.as_deref().unwrap_or_default(), &in_config(key))?;
-        if given.is_empty() {
-            Ok(from_file)
-        } else {
-            codes(given, flag)
-        }
-    };
-    let selection = Selection {
-        select: list(&args.select, "--select", &config.select, "select")?,
-        ignore: list(&args.ignore, "--ignore", &config.ignore, "ignore")?,
-        severity_min: args
-            .severity_min
-            .or(config.severity_min)
-            .map_or(Severity::Info, Severity::from),
-    };
+    let resolved = workspace.for_check(&named)?;
     let kind = program_kind(Some(&file.name), &file.bytes);
-    let settings = lint::Settings {
-        selection,
-        supplied: inputs.supplied,
-        heads: inputs.heads,
-        environment: environment(args, &config, definitions)?,
-    };
+    let settings = resolved.settings;
     let check = |source: &[u8]| {
         let document = Document {
             name: &file.name,
@@ -214,7 +180,7 @@ fn check_file(
             file.bytes = Bytes::Read(fixed);
         }
     }
-    let deny_warnings = args.deny_warnings || config.deny_warnings == Some(true);
+    let deny_warnings = resolved.deny_warnings;
     let counts = Counts::of(&diagnostics);
     let fails = diagnostics.iter().any(|d| {
         d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
@@ -245,63 +211,6 @@ fn check_file(
     })
 }
 
-/// The machine's names: axes from sinuprep.toml, globals and macros from
-/// the definition files of the command line (or else of sinuprep.toml).
-/// The definition files are read once a run for all programs that name
-/// the same ones (`read`), not once a program.
-fn environment(
-    args: &CheckArgs,
-    config: &Config,
-    read: &Definitions,
-) -> Result<Environment, CliError> {
-    let files: Vec<PathBuf> = if args.definitions.is_empty() {
-        let listed = config.definitions.iter().flatten();
-        listed.map(|path| config.resolve(path)).collect()
-    } else {
-        args.definitions.clone()
-    };
-    let known = read.lock().ok().and_then(|r| r.get(&files).cloned());
-    let mut environment = match known {
-        Some(environment) => environment,
-        None => {
-            let environment = definitions(&files)?;
-            if let Ok(mut read) = read.lock() {
-                read.insert(files, environment.clone());
-            }
-            environment
-        }
-    };
-    environment.axes = Environment::with_axes(config.axes.iter().flatten()).axes;
-    Ok(environment)
-}
-
-/// Definition files read so far, by the list of files.
-type Definitions = Mutex<HashMap<Vec<PathBuf>, Environment>>;
-
-/// What the definition files `files` define.
-fn definitions(files: &[PathBuf]) -> Result<Environment, CliError> {
-    let mut environment = Environment::default();
-    for path in files.iter().cloned() {
-        let bytes = std::fs::read(&path).map_err(|source| CliError::Read {
-            path: path.clone(),
-            source,
-        })?;
-        if let Err(errors) = environment.read_definitions(&bytes) {
-            let Some(first) = errors.first() else {
-                continue;
-            };
-            let position = crate::span::LineIndex::new(&bytes).position(first.span.start);
-            return Err(CliError::Definitions {
-                path,
-                line: position.row,
-                column: position.column,
-                why: first.message.clone(),
-            });
-        }
-    }
-    Ok(environment)
-}
-
 /// Applies the fixes `--fix` takes to `file` and writes it to `target`
 /// atomically: the fixed bytes, or `None` when there was nothing to fix or
 /// the file has syntax errors (its trees may not be what was meant).
@@ -324,13 +233,4 @@ fn fix(
     let s = if answered == 1 { "" } else { "s" };
     eprintln!("{}: fixed {answered} finding{s}", file.name);
     Ok(Some(fixed))
-}
-
-/// `list` as rule codes: trimmed, upper case, each naming a rule or a family.
-fn codes(list: &[String], origin: &str) -> Result<Vec<String>, CliError> {
-    lint::codes::normalize(list).map_err(|unknown| CliError::UnknownCode {
-        origin: origin.to_string(),
-        code: unknown.code,
-        did_you_mean: unknown.did_you_mean,
-    })
 }

@@ -16,30 +16,6 @@ pub enum CliError {
         source: std::io::Error,
     },
 
-    #[error("cannot read {path}, named by `{key}` in {config}")]
-    #[diagnostic(
-        code(sinuprep::read),
-        help("correct `{key}` in {config}: its paths are relative to the file")
-    )]
-    ReadSetting {
-        path: PathBuf,
-        key: &'static str,
-        config: String,
-        source: std::io::Error,
-    },
-
-    #[error("{path}:{line}:{column}: {why}")]
-    #[diagnostic(
-        code(sinuprep::definitions),
-        help("a definition file is read as the control reads it; correct it, or leave it out of `definitions`")
-    )]
-    Definitions {
-        path: PathBuf,
-        line: usize,
-        column: usize,
-        why: String,
-    },
-
     #[error("{path} holds no program (.mpf or .spf, any case)")]
     #[diagnostic(
         code(sinuprep::no_programs),
@@ -63,44 +39,9 @@ pub enum CliError {
     )]
     IsDirectory { path: PathBuf },
 
-    #[error("{path}:{line}:{column}: {why}")]
-    #[diagnostic(
-        code(sinuprep::config),
-        help("every key and its type: the Configuration section of the README")
-    )]
-    Config {
-        path: PathBuf,
-        line: usize,
-        column: usize,
-        why: String,
-    },
-
-    #[error("{origin}: no rule has the code `{code}`{}", did_you_mean.map(|c| format!(" (did you mean `{c}`?)")).unwrap_or_default())]
-    #[diagnostic(
-        code(sinuprep::code),
-        help("`sinuprep rule --all` lists every code; a prefix (`N`, `C6`) selects a family")
-    )]
-    UnknownCode {
-        origin: String,
-        code: String,
-        did_you_mean: Option<&'static str>,
-    },
-
     #[error("no rule has the code `{0}`")]
     #[diagnostic(code(sinuprep::rule), help("`sinuprep rule --all` lists every rule"))]
     UnknownRule(String),
-
-    #[error("`--set {text}`: {why}")]
-    #[diagnostic(code(sinuprep::set), help("write one NC assignment with a constant value, as `--set R10=0.215` or `--set _OVR[16]=-0.113`"))]
-    Set { text: String, why: String },
-
-    #[error("{path}:{line}: {why}")]
-    #[diagnostic(code(sinuprep::values), help("a values file holds NC assignments with constant values, one or more per line (`R10=0.215`), and `;` comments"))]
-    Values {
-        path: PathBuf,
-        line: usize,
-        why: String,
-    },
 
     #[error("no angles given, and stdin is a terminal")]
     #[diagnostic(code(sinuprep::angles), help("give three angles, as `sinuprep convert 30 45 60 --from e:XYZ --to i:ZXY`, or pipe one triple per line into stdin"))]
@@ -127,6 +68,10 @@ pub enum CliError {
         path: PathBuf,
         source: std::io::Error,
     },
+
+    #[error(transparent)]
+    #[diagnostic(transparent)]
+    Settings(#[from] crate::workspace::SettingsError),
 
     #[error("cannot write the output")]
     #[diagnostic(code(sinuprep::write))]

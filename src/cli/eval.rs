@@ -1,25 +1,27 @@
 //! `sinuprep eval`: for each CYCLE600 call, what it evaluates to and why, so
 //! a user can check the numbers before the program goes to the control.
 
-use crate::cli::analysis::{self, Inputs};
+use crate::cli::analysis;
 use crate::cli::args::EvalArgs;
-use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
+use crate::document::Document;
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
 use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
+use crate::workspace::Workspace;
 use std::path::{Path, PathBuf};
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths, args.allow_empty)?;
+    let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
     let outcomes = parallel::each(paths.len(), |index| match &paths[index] {
-        Ok(path) => eval_file(path, args),
+        Ok(path) => eval_file(path, args, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
@@ -70,12 +72,11 @@ struct Evaluated {
     failed: bool,
 }
 
-fn eval_file(path: &Path, args: &EvalArgs) -> Result<Evaluated, CliError> {
+fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
     let file = read(path)?;
-    let config = Config::find(args.analysis.input.config.as_deref(), path)?;
-    let inputs = Inputs::load(&args.analysis.input, &config, path)?;
-    let options = analysis::options(&args.analysis, &config);
-    let analyzed = analysis::run(&file, inputs, &options);
+    let resolved = workspace.for_rewrite(path)?;
+    let options = resolved.options;
+    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&resolved.settings, &options);
     let index = LineIndex::new(&file.bytes);
     let output = if args.json {
         let calls: Vec<serde_json::Value> = analyzed

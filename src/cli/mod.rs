@@ -3,7 +3,6 @@
 mod analysis;
 pub mod args;
 mod check;
-pub mod config;
 mod convert;
 pub mod error;
 mod eval;

@@ -7,16 +7,17 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::cli::analysis::{self, Inputs};
+use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
-use crate::cli::config::Config;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
+use crate::document::Document;
 use crate::emit::cycle600::Options;
 use crate::emit::{diff, write_applied};
+use crate::workspace::Workspace;
 
 /// Where a program's rewrite goes.
 enum Target {
@@ -42,12 +43,13 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     if several && !writes_files {
         return Err(CliError::SeveralToStdout { count: paths.len() });
     }
+    let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
     let outcomes = parallel::each(paths.len(), |index| {
         let path = match &paths[index] {
             Ok(path) => path,
             Err(error) => return failed(error.to_string()),
         };
-        rewrite_file(path, args, several)
+        rewrite_file(path, args, &workspace, several)
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
     });
     let mut worst = ExitStatus::Success;
@@ -100,17 +102,21 @@ fn mirror(dir: &Path, given: &[PathBuf], path: &Path) -> PathBuf {
     dir.join(relative)
 }
 
-fn rewrite_file(path: &Path, args: &RewriteArgs, several: bool) -> Result<Outcome, CliError> {
+fn rewrite_file(
+    path: &Path,
+    args: &RewriteArgs,
+    workspace: &Workspace,
+    several: bool,
+) -> Result<Outcome, CliError> {
     let target = target(path, args, several)?;
     let file = read(path)?;
-    let config = Config::find(args.analysis.input.config.as_deref(), path)?;
-    let inputs = Inputs::load(&args.analysis.input, &config, path)?;
+    let resolved = workspace.for_rewrite(path)?;
     let options = Options {
         keep_original: !args.no_original,
         inline_results: args.inline_results,
-        ..analysis::options(&args.analysis, &config)
+        ..resolved.options
     };
-    let analyzed = analysis::run(&file, inputs, &options);
+    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&resolved.settings, &options);
     let mut outcome = Outcome {
         status: status(analyzed.has_errors()),
         stdout: Vec::new(),

@@ -4,9 +4,9 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::cli::error::CliError;
 use crate::diagnostic::Severity;
 use crate::emit::cycle600::Form;
+use crate::workspace::SettingsError;
 
 pub const FILE_NAME: &str = "sinuprep.toml";
 
@@ -59,7 +59,7 @@ impl From<SeverityName> for Severity {
 
 impl Config {
     /// `--config FILE`, or the nearest `sinuprep.toml` from `start` upward.
-    pub fn find(explicit: Option<&Path>, start: &Path) -> Result<Config, CliError> {
+    pub fn find(explicit: Option<&Path>, start: &Path) -> Result<Config, SettingsError> {
         let path = match explicit {
             Some(path) => Some(path.to_path_buf()),
             None => nearest(start),
@@ -70,15 +70,15 @@ impl Config {
         }
     }
 
-    pub fn read(path: &Path) -> Result<Config, CliError> {
-        let text = std::fs::read_to_string(path).map_err(|source| CliError::Read {
+    pub fn read(path: &Path) -> Result<Config, SettingsError> {
+        let text = std::fs::read_to_string(path).map_err(|source| SettingsError::Read {
             path: path.to_path_buf(),
             source,
         })?;
         let mut config: Config = toml::from_str(&text).map_err(|error| {
             let at = error.span().map_or(0, |span| span.start);
             let position = crate::span::LineIndex::new(text.as_bytes()).position(at);
-            CliError::Config {
+            SettingsError::Config {
                 path: path.to_path_buf(),
                 line: position.row,
                 column: position.column,
@@ -97,7 +97,7 @@ impl Config {
     }
 
     /// A path written in the file, taken relative to the file's directory.
-    pub fn resolve(&self, path: &Path) -> PathBuf {
+    pub(crate) fn resolve(&self, path: &Path) -> PathBuf {
         match self.path.as_ref().and_then(|p| p.parent()) {
             Some(dir) if path.is_relative() => dir.join(path),
             _ => path.to_path_buf(),

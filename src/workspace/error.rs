@@ -1,0 +1,78 @@
+//! What can be wrong with a program's settings: a file they name that cannot
+//! be read, `sinuprep.toml` itself, a rule code, a measured value. Each
+//! names the file, line and key it comes from.
+
+use std::path::PathBuf;
+
+#[derive(Debug, thiserror::Error, miette::Diagnostic)]
+pub enum SettingsError {
+    // The cause is `source`, which miette prints below the message.
+    #[error("cannot read {path}")]
+    #[diagnostic(
+        code(sinuprep::read),
+        help("check that the path exists and is readable")
+    )]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+
+    #[error("cannot read {path}, named by `{key}` in {config}")]
+    #[diagnostic(
+        code(sinuprep::read),
+        help("correct `{key}` in {config}: its paths are relative to the file")
+    )]
+    ReadSetting {
+        path: PathBuf,
+        key: &'static str,
+        config: String,
+        source: std::io::Error,
+    },
+
+    #[error("{path}:{line}:{column}: {why}")]
+    #[diagnostic(
+        code(sinuprep::definitions),
+        help("a definition file is read as the control reads it; correct it, or leave it out of `definitions`")
+    )]
+    Definitions {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+        why: String,
+    },
+
+    #[error("{path}:{line}:{column}: {why}")]
+    #[diagnostic(
+        code(sinuprep::config),
+        help("every key and its type: the Configuration section of the README")
+    )]
+    Config {
+        path: PathBuf,
+        line: usize,
+        column: usize,
+        why: String,
+    },
+
+    #[error("{origin}: no rule has the code `{code}`{}", did_you_mean.map(|c| format!(" (did you mean `{c}`?)")).unwrap_or_default())]
+    #[diagnostic(
+        code(sinuprep::code),
+        help("`sinuprep rule --all` lists every code; a prefix (`N`, `C6`) selects a family")
+    )]
+    UnknownCode {
+        origin: String,
+        code: String,
+        did_you_mean: Option<&'static str>,
+    },
+
+    #[error("`--set {text}`: {why}")]
+    #[diagnostic(code(sinuprep::set), help("write one NC assignment with a constant value, as `--set R10=0.215` or `--set _OVR[16]=-0.113`"))]
+    Set { text: String, why: String },
+
+    #[error("{path}:{line}: {why}")]
+    #[diagnostic(code(sinuprep::values), help("a values file holds NC assignments with constant values, one or more per line (`R10=0.215`), and `;` comments"))]
+    Values {
+        path: PathBuf,
+        line: usize,
+        why: String,
+    },
+}

@@ -1,0 +1,364 @@
+//! The settings a program is checked and rewritten with, resolved in one
+//! place for the command line and an editor's server alike: what the caller
+//! gives ([`Given`]: options, an editor's settings) over the nearest
+//! `sinuprep.toml` ([`Config`]), the measured values, HEAD_DEF beside the
+//! program, and the machine's definition files (read once for every program
+//! that names the same ones).
+//!
+//! ```text
+//! Given + sinuprep.toml + files they name -> Resolved { lint::Settings, emit Options }
+//!                                         -> Document::check / Document::rewrite
+//! ```
+
+mod config;
+mod error;
+mod values;
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+pub use config::{Config, SeverityName, FILE_NAME};
+pub use error::SettingsError;
+
+use crate::diagnostic::Severity;
+use crate::emit::cycle600::{Form, Options};
+use crate::lint::{self, Selection, Settings};
+use crate::semantic::{Environment, Heads, Supplied};
+
+/// What the caller sets over `sinuprep.toml`; each field left empty falls
+/// back to the file. A list given here replaces the file's list.
+#[derive(Debug, Default, Clone)]
+pub struct Given {
+    /// The settings file; by default the nearest `sinuprep.toml` from the
+    /// program's directory upward.
+    pub config: Option<PathBuf>,
+    /// A file of measured values (NC assignments).
+    pub values: Option<PathBuf>,
+    /// Measured values, one NC assignment each (`R10=0.215`).
+    pub set: Vec<String>,
+    /// HEAD_DEF; by default `HEAD_DEF.SPF` beside the program, any case.
+    pub heads: Option<PathBuf>,
+    pub select: Vec<String>,
+    pub ignore: Vec<String>,
+    pub severity_min: Option<Severity>,
+    pub deny_warnings: bool,
+    /// Definition files (GUD, macros).
+    pub definitions: Vec<PathBuf>,
+    pub emit: Option<Form>,
+    pub precision: Option<u8>,
+    pub emit_runtime: bool,
+    pub runtime_r: Option<u32>,
+}
+
+/// One program's settings.
+pub struct Resolved {
+    /// The `sinuprep.toml` that applies (empty when there is none).
+    pub config: Config,
+    /// What [`crate::document::Document`] checks and rewrites with.
+    pub settings: Settings,
+    /// How a rewrite writes its code.
+    pub options: Options,
+    /// Whether warnings fail the program.
+    pub deny_warnings: bool,
+}
+
+/// The settings of a run over many programs: [`Given`], and the definition
+/// files read so far, by the list that names them.
+#[derive(Default)]
+pub struct Workspace {
+    given: Given,
+    definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
+}
+
+impl Workspace {
+    /// Refuses a rule code that names no rule before any program is read.
+    pub fn new(given: Given) -> Result<Self, SettingsError> {
+        codes(&given.select, "--select")?;
+        codes(&given.ignore, "--ignore")?;
+        Ok(Self {
+            given,
+            definitions: Mutex::default(),
+        })
+    }
+
+    /// What `check` needs for `program` (a path, `-` for stdin): the
+    /// values and HEAD_DEF, the rules to report and the machine's names.
+    pub fn for_check(&self, program: &Path) -> Result<Resolved, SettingsError> {
+        let mut resolved = self.for_rewrite(program)?;
+        let config = &resolved.config;
+        let given = &self.given;
+        let in_config = |key: &str| format!("{} ({key})", config.describe());
+        // A list given replaces the file's (both are checked).
+        let list = |given: &[String], flag: &str, file: &Option<Vec<String>>, key: &str| {
+            let from_file = codes(file.as_deref().unwrap_or_default(), &in_config(key))?;
+            if given.is_empty() {
+                Ok(from_file)
+            } else {
+                codes(given, flag)
+            }
+        };
+        resolved.settings.selection = Selection {
+            select: list(&given.select, "--select", &config.select, "select")?,
+            ignore: list(&given.ignore, "--ignore", &config.ignore, "ignore")?,
+            severity_min: given
+                .severity_min
+                .or(config.severity_min.map(Severity::from))
+                .unwrap_or(Severity::Info),
+        };
+        resolved.settings.environment = self.environment(config)?;
+        Ok(resolved)
+    }
+
+    /// What `rewrite` and `eval` need for `program`: the values, HEAD_DEF
+    /// and how the code is written.
+    pub fn for_rewrite(&self, program: &Path) -> Result<Resolved, SettingsError> {
+        let given = &self.given;
+        let start = if program == Path::new("-") {
+            Path::new(".")
+        } else {
+            program
+        };
+        let config = Config::find(given.config.as_deref(), start)?;
+        let (supplied, heads) = self.inputs(&config, program)?;
+        let options = self.options(&config);
+        let deny_warnings = given.deny_warnings || config.deny_warnings == Some(true);
+        Ok(Resolved {
+            config,
+            settings: Settings {
+                supplied,
+                heads,
+                ..Settings::default()
+            },
+            options,
+            deny_warnings,
+        })
+    }
+
+    /// Measured values and HEAD_DEF: given first, then `sinuprep.toml`.
+    fn inputs(
+        &self,
+        config: &Config,
+        program: &Path,
+    ) -> Result<(Supplied, Option<Heads>), SettingsError> {
+        let given = &self.given;
+        // A path given, or the one sinuprep.toml gives under `key`.
+        let setting =
+            |given: &Option<PathBuf>, file: &Option<PathBuf>, key: &'static str| match given {
+                Some(path) => Some((path.clone(), None)),
+                None => file.as_ref().map(|p| (config.resolve(p), Some(key))),
+            };
+        let read = |path: &Path, key: Option<&'static str>| {
+            std::fs::read(path).map_err(|source| match key {
+                Some(key) => SettingsError::ReadSetting {
+                    path: path.to_path_buf(),
+                    key,
+                    config: config.describe(),
+                    source,
+                },
+                None => SettingsError::Read {
+                    path: path.to_path_buf(),
+                    source,
+                },
+            })
+        };
+        let mut supplied = Supplied::default();
+        if let Some((path, key)) = &setting(&given.values, &config.values, "values") {
+            values::read_file(path, &read(path, *key)?, &mut supplied)?;
+        }
+        for text in &given.set {
+            values::read_set(text, &mut supplied)?;
+        }
+        let heads = match setting(&given.heads, &config.heads, "heads")
+            .or_else(|| heads_beside(program).map(|path| (path, None)))
+        {
+            Some((path, key)) => Some(Heads::read(path.display().to_string(), &read(&path, key)?)),
+            None => None,
+        };
+        Ok((supplied, heads))
+    }
+
+    /// The rewrite's options: given, then sinuprep.toml, then defaults.
+    fn options(&self, config: &Config) -> Options {
+        let given = &self.given;
+        let runtime = if given.emit_runtime || given.runtime_r.is_some() {
+            Some(given.runtime_r)
+        } else if config.emit_runtime == Some(true) || config.runtime_r.is_some() {
+            Some(config.runtime_r)
+        } else {
+            None
+        };
+        Options {
+            form: given.emit.or(config.emit).unwrap_or_default(),
+            precision: usize::from(given.precision.or(config.precision).unwrap_or(6)),
+            runtime,
+            ..Options::default()
+        }
+    }
+
+    /// The machine's names: axes from sinuprep.toml, globals and macros from
+    /// the definition files given (or else sinuprep.toml's), each list read
+    /// once a run.
+    fn environment(&self, config: &Config) -> Result<Environment, SettingsError> {
+        let files: Vec<PathBuf> = if self.given.definitions.is_empty() {
+            let listed = config.definitions.iter().flatten();
+            listed.map(|path| config.resolve(path)).collect()
+        } else {
+            self.given.definitions.clone()
+        };
+        let known = self
+            .definitions
+            .lock()
+            .ok()
+            .and_then(|read| read.get(&files).cloned());
+        let mut environment = match known {
+            Some(environment) => environment,
+            None => {
+                let environment = definitions(&files)?;
+                if let Ok(mut read) = self.definitions.lock() {
+                    read.insert(files, environment.clone());
+                }
+                environment
+            }
+        };
+        environment.axes = Environment::with_axes(config.axes.iter().flatten()).axes;
+        Ok(environment)
+    }
+}
+
+/// What the definition files `files` define.
+fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
+    let mut environment = Environment::default();
+    for path in files.iter().cloned() {
+        let bytes = std::fs::read(&path).map_err(|source| SettingsError::Read {
+            path: path.clone(),
+            source,
+        })?;
+        if let Err(errors) = environment.read_definitions(&bytes) {
+            let Some(first) = errors.first() else {
+                continue;
+            };
+            let position = crate::span::LineIndex::new(&bytes).position(first.span.start);
+            return Err(SettingsError::Definitions {
+                path,
+                line: position.row,
+                column: position.column,
+                why: first.message.clone(),
+            });
+        }
+    }
+    Ok(environment)
+}
+
+/// `list` as rule codes: trimmed, upper case, each naming a rule or a family.
+fn codes(list: &[String], origin: &str) -> Result<Vec<String>, SettingsError> {
+    lint::codes::normalize(list).map_err(|unknown| SettingsError::UnknownCode {
+        origin: origin.to_string(),
+        code: unknown.code,
+        did_you_mean: unknown.did_you_mean,
+    })
+}
+
+/// A HEAD_DEF.SPF (any case) beside the program (in the current directory for stdin).
+fn heads_beside(program: &Path) -> Option<PathBuf> {
+    let dir = if program == Path::new("-") {
+        PathBuf::from(".")
+    } else {
+        program.parent().map(|p| {
+            if p.as_os_str().is_empty() {
+                PathBuf::from(".")
+            } else {
+                p.to_path_buf()
+            }
+        })?
+    };
+    std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok())
+        .map(|e| e.path())
+        .find(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF"))
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A directory of its own under the temporary directory.
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("sinuprep-ws-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("parts")).expect("scratch directory");
+        dir
+    }
+
+    #[test]
+    fn given_settings_win_over_the_nearest_file_and_its_paths_are_its_own() {
+        let dir = scratch("resolve");
+        std::fs::write(
+            dir.join(FILE_NAME),
+            "ignore = [\"n016\"]\nseverity-min = \"warning\"\nvalues = \"probe.values\"\naxes = [\"XC\"]\nprecision = 3\n",
+        )
+        .expect("config");
+        std::fs::write(dir.join("probe.values"), "R10=0.25\n").expect("values");
+        std::fs::write(dir.join("parts/head_def.spf"), "PROC HEAD_DEF\nM17\n").expect("heads");
+        let program = dir.join("parts/PART.MPF");
+
+        let from_file = Workspace::new(Given::default()).expect("no codes given");
+        let resolved = from_file.for_check(&program).expect("settings");
+        assert_eq!(resolved.settings.selection.ignore, ["N016"]);
+        assert_eq!(resolved.settings.selection.severity_min, Severity::Warning);
+        assert_eq!(resolved.options.precision, 3);
+        assert!(
+            resolved.settings.heads.is_some(),
+            "HEAD_DEF beside the program"
+        );
+        assert!(resolved.settings.environment.axes.contains("XC"));
+        assert!(resolved.config.path.is_some());
+
+        let given = Given {
+            ignore: vec![" n005 ".into()],
+            severity_min: Some(Severity::Error),
+            precision: Some(5),
+            ..Given::default()
+        };
+        let resolved = Workspace::new(given)
+            .expect("known code")
+            .for_check(&program)
+            .expect("settings");
+        assert_eq!(resolved.settings.selection.ignore, ["N005"]);
+        assert_eq!(resolved.settings.selection.severity_min, Severity::Error);
+        assert_eq!(resolved.options.precision, 5);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_code_that_names_no_rule_is_refused_before_any_program_is_read() {
+        let given = Given {
+            select: vec!["N05".into()],
+            ..Given::default()
+        };
+        let Err(error) = Workspace::new(given) else {
+            panic!("N05 names no rule");
+        };
+        assert_eq!(
+            error.to_string(),
+            "--select: no rule has the code `N05` (did you mean `N005`?)"
+        );
+    }
+
+    #[test]
+    fn a_missing_file_named_by_the_settings_names_its_key() {
+        let dir = scratch("missing");
+        std::fs::write(dir.join(FILE_NAME), "heads = \"nowhere.spf\"\n").expect("config");
+        let workspace = Workspace::new(Given::default()).expect("no codes");
+        let Err(error) = workspace.for_rewrite(&dir.join("parts/PART.MPF")) else {
+            panic!("the HEAD_DEF named does not exist");
+        };
+        assert!(error.to_string().contains("named by `heads` in"), "{error}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
