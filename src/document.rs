@@ -3,7 +3,7 @@
 //! so both report the same findings from the same analysis.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::emit::cycle600::{rewrite, Options, Rewrite};
+use crate::emit::cycle600::{rewrite, Rewrite};
 use crate::lint::{self, Settings};
 use crate::semantic::{analyze, Analysis, Model};
 use crate::syntax::{program_kind, ProgramKind};
@@ -49,9 +49,9 @@ impl<'src> Document<'src> {
         lint::check(self.source, self.name, self.kind, settings)
     }
 
-    /// The CYCLE600 calls rewritten as `options` asks, with the measured
-    /// values and HEAD_DEF of `settings`.
-    pub fn rewrite(&self, settings: &Settings, options: &Options) -> Rewritten {
+    /// The CYCLE600 calls rewritten as `settings.emit` asks, with the
+    /// measured values and HEAD_DEF of `settings`.
+    pub fn rewrite(&self, settings: &Settings) -> Rewritten {
         // A program that never names CYCLE600 has nothing to rewrite: it
         // needs only the streaming syntax pass, not its trees in memory.
         if !crate::semantic::mentions_cycle600(self.source) {
@@ -65,7 +65,7 @@ impl<'src> Document<'src> {
         let model = Model::build(self.source, self.kind);
         let heads = settings.heads.as_ref();
         let analysis = analyze(&model, &settings.supplied, heads);
-        let rewrite = rewrite(&model, &analysis, options);
+        let rewrite = rewrite(&model, &analysis, &settings.emit);
         let mut diagnostics = model.syntax;
         if heads.is_none() && !analysis.calls.is_empty() {
             diagnostics.push(crate::semantic::head_def::not_found());

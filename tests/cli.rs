@@ -453,6 +453,40 @@ fn check_fix_applies_the_safe_fixes_and_reports_what_remains() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// C619's fix is the rewrite's own code: `check --select C619 --fix` writes
+/// what `rewrite` prints, with the emit settings of sinuprep.toml.
+#[test]
+fn the_cycle600_fix_writes_what_rewrite_writes() {
+    let dir = scratch("fix-cycle600");
+    let samples = support::repo().join("samples");
+    for name in ["PAPER_EXAMPLE3.MPF", "HEAD_DEF.SPF"] {
+        std::fs::copy(samples.join(name), dir.join(name)).expect("copy");
+    }
+    std::fs::write(dir.join("sinuprep.toml"), "precision = 4\n").expect("config");
+    let path = dir.join("PAPER_EXAMPLE3.MPF");
+    let name = path.to_str().expect("utf-8");
+    let rewritten = run(&["rewrite", name], b"");
+    assert_exit(&rewritten, 0);
+    let text = stdout(&rewritten);
+    assert!(
+        text.contains("_CYC600_2=37.7923 "),
+        "4 decimals as sinuprep.toml says: {text}"
+    );
+
+    let unasked = run(&["check", "--format", "short", name], b"");
+    assert!(!stdout(&unasked).contains("C619"), "off by default");
+    let output = run(
+        &[
+            "check", "--select", "C619", "--fix", "--format", "short", name,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert_eq!(std::fs::read(&path).expect("read"), rewritten.stdout);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("fixed 2 findings"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn check_fix_leaves_a_file_with_syntax_errors_and_refuses_stdin() {
     let dir = scratch("fix-syntax");

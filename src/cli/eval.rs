@@ -74,22 +74,22 @@ struct Evaluated {
 
 fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
     let file = read(path)?;
-    let resolved = workspace.for_rewrite(path)?;
-    let options = resolved.options;
-    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&resolved.settings, &options);
+    let settings = workspace.for_rewrite(path)?.settings;
+    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&settings);
+    let options = &settings.emit;
     let index = LineIndex::new(&file.bytes);
     let output = if args.json {
         let calls: Vec<serde_json::Value> = analyzed
             .analysis
             .calls
             .iter()
-            .map(|site| json(site, &file.bytes, &options))
+            .map(|site| json(site, &file.bytes, options))
             .collect();
         Output::Json(serde_json::json!({ "path": file.name, "calls": calls }))
     } else {
         let mut text = String::new();
         for site in &analyzed.analysis.calls {
-            table(site, &file.name, &file.bytes, &index, &options, &mut text);
+            table(site, &file.name, &file.bytes, &index, options, &mut text);
         }
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));

@@ -15,7 +15,6 @@ use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::document::Document;
-use crate::emit::cycle600::Options;
 use crate::emit::{diff, write_applied};
 use crate::workspace::Workspace;
 
@@ -110,13 +109,10 @@ fn rewrite_file(
 ) -> Result<Outcome, CliError> {
     let target = target(path, args, several)?;
     let file = read(path)?;
-    let resolved = workspace.for_rewrite(path)?;
-    let options = Options {
-        keep_original: !args.no_original,
-        inline_results: args.inline_results,
-        ..resolved.options
-    };
-    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&resolved.settings, &options);
+    let mut settings = workspace.for_rewrite(path)?.settings;
+    settings.emit.keep_original = !args.no_original;
+    settings.emit.inline_results = args.inline_results;
+    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&settings);
     let mut outcome = Outcome {
         status: status(analyzed.has_errors()),
         stdout: Vec::new(),

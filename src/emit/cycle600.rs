@@ -179,6 +179,23 @@ pub fn rewrite(model: &Model, analysis: &Analysis, options: &Options) -> Rewrite
     out
 }
 
+/// The edits that rewrite one call evaluated offline, as [`rewrite`] writes
+/// them; `None` for a call it would refuse or compute at run time (whose
+/// code shares DEF lines with the program's other such calls).
+pub fn call_edits(model: &Model, site: &CallSite, options: &Options) -> Option<Vec<Edit>> {
+    let evaluation = site.evaluation.as_ref()?;
+    if site
+        .diagnostics
+        .iter()
+        .any(|d| d.severity == Severity::Error)
+    {
+        return None;
+    }
+    let blocks = code(site, evaluation, options).ok()?;
+    let eol = dominant_ending(model.source).as_bytes();
+    Some(edits(model.source, site, &blocks, options, eol))
+}
+
 fn literal(value: &Value, precision: usize) -> String {
     match value {
         Value::Number(n) => format(*n, precision),

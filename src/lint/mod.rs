@@ -15,11 +15,14 @@ pub mod rule;
 pub mod rules;
 pub mod suppression;
 
-use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
+use crate::edit::Edit;
+use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
+use crate::registry::cycle600_rewritable;
 use crate::semantic::model::ModelBuilder;
-use crate::semantic::{analyze, Environment, Heads, Model, Supplied};
+use crate::semantic::{analyze, CallSite, Environment, Heads, Model, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
@@ -46,8 +49,9 @@ impl Default for Selection {
 
 /// Rules that run only when `--select` (or `select` in sinuprep.toml) names
 /// their code in full: N015, since the control ignores case and users of
-/// other Sinumerik tools do not want case findings unasked.
-pub const OFF_BY_DEFAULT: [&str; 1] = ["N015"];
+/// other Sinumerik tools do not want case findings unasked; C619, since a
+/// program that keeps CYCLE600 for the control is not wrong.
+pub const OFF_BY_DEFAULT: [&str; 2] = ["N015", "C619"];
 
 /// Whether `code` is a rule that runs only when selected by its full code.
 pub fn off_by_default(code: &str) -> bool {
@@ -76,6 +80,8 @@ pub struct Settings {
     pub heads: Option<Heads>,
     /// Names the machine defines: axes, GUD globals, macros.
     pub environment: Environment,
+    /// How rewritten code is written: by `rewrite`, and by C619's fix.
+    pub emit: Options,
 }
 
 /// Where `check` reports a rule at another severity than its own, how: a
@@ -118,11 +124,9 @@ pub fn check_with(
 ) -> Vec<Diagnostic> {
     let Settings {
         selection,
-        supplied,
-        heads,
         environment,
+        ..
     } = settings;
-    let heads = heads.as_ref();
     let file = FileContext::new(source, name, kind, environment);
     let mut checkers: Vec<_> = rules::all()
         .into_iter()
@@ -181,7 +185,7 @@ pub fn check_with(
         checker.finish(&file, &mut found);
     }
     if walk {
-        found.extend(cycle600_findings(model, supplied, heads));
+        found.extend(cycle600_findings(model, settings));
     }
 
     let index = LineIndex::new(source);
@@ -229,9 +233,11 @@ impl PlainRun {
 
 /// The CYCLE600 walk's findings, as `check` reports them: an argument only
 /// the machine knows is information here (the rewrite can compute it on the
-/// control), not an error.
-fn cycle600_findings(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Vec<Diagnostic> {
-    let analysis = analyze(model, supplied, heads);
+/// control), not an error. When C619 is selected, each call the rewrite can
+/// replace offline says so, with the rewrite's own edits as its fix.
+fn cycle600_findings(model: &Model, settings: &Settings) -> Vec<Diagnostic> {
+    let heads = settings.heads.as_ref();
+    let analysis = analyze(model, &settings.supplied, heads);
     let mut out: Vec<Diagnostic> = analysis
         .calls
         .iter()
@@ -245,5 +251,33 @@ fn cycle600_findings(model: &Model, supplied: &Supplied, heads: Option<&Heads>) 
     if heads.is_none() && !analysis.calls.is_empty() {
         out.push(crate::semantic::head_def::not_found());
     }
+    if settings.selection.enables(cycle600_rewritable::RULE.code) {
+        for site in &analysis.calls {
+            if let Some(edits) = call_edits(model, site, &settings.emit) {
+                out.push(rewritable(site, edits, settings.emit.form));
+            }
+        }
+    }
     out
+}
+
+/// C619 on a call the rewrite replaces with `edits`.
+fn rewritable(site: &CallSite, edits: Vec<Edit>, form: Form) -> Diagnostic {
+    let native = match form {
+        Form::Cycle800 => "a CYCLE800 call",
+        Form::Frames => "programmable frames",
+        Form::Traori => "frames under TRAORI",
+    };
+    let title = format!("Rewrite as {native}");
+    cycle600_rewritable::RULE
+        .at(site.statement)
+        .message(format!(
+            "all arguments are known offline: this call can be written as {native} (`sinuprep rewrite`)"
+        ))
+        .label("rewritable")
+        .fix(Fix {
+            title,
+            applicability: Applicability::Safe,
+            edits,
+        })
 }

@@ -16,6 +16,7 @@ pub mod cycle600_invalid_sequence_code;
 pub mod cycle600_nested_too_deep;
 pub mod cycle600_no_cycle800_form;
 pub mod cycle600_reserved_not_zero;
+pub mod cycle600_rewritable;
 pub mod cycle600_shares_block;
 pub mod cycle600_unknown_argument;
 pub mod cycle600_unknown_head;
@@ -43,6 +44,7 @@ pub static ALL: &[&RuleInfo] = &[
     &cycle600_shares_block::RULE,
     &cycle600_frames_over_programmable_frame::RULE,
     &cycle600_nested_too_deep::RULE,
+    &cycle600_rewritable::RULE,
     &syntax::UNCLOSED_STRING,
     &syntax::UNBALANCED_BRACKET,
     &syntax::INVALID_NUMBER,

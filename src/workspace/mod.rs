@@ -6,7 +6,7 @@
 //! that names the same ones).
 //!
 //! ```text
-//! Given + sinuprep.toml + files they name -> Resolved { lint::Settings, emit Options }
+//! Given + sinuprep.toml + files they name -> Resolved { lint::Settings (with the emit Options) }
 //!                                         -> Document::check / Document::rewrite
 //! ```
 
@@ -57,8 +57,6 @@ pub struct Resolved {
     pub config: Config,
     /// What [`crate::document::Document`] checks and rewrites with.
     pub settings: Settings,
-    /// How a rewrite writes its code.
-    pub options: Options,
     /// Whether warnings fail the program.
     pub deny_warnings: bool,
 }
@@ -121,16 +119,16 @@ impl Workspace {
         };
         let config = Config::find(given.config.as_deref(), start)?;
         let (supplied, heads) = self.inputs(&config, program)?;
-        let options = self.options(&config);
+        let emit = self.options(&config);
         let deny_warnings = given.deny_warnings || config.deny_warnings == Some(true);
         Ok(Resolved {
             config,
             settings: Settings {
                 supplied,
                 heads,
+                emit,
                 ..Settings::default()
             },
-            options,
             deny_warnings,
         })
     }
@@ -311,7 +309,7 @@ mod tests {
         let resolved = from_file.for_check(&program).expect("settings");
         assert_eq!(resolved.settings.selection.ignore, ["N016"]);
         assert_eq!(resolved.settings.selection.severity_min, Severity::Warning);
-        assert_eq!(resolved.options.precision, 3);
+        assert_eq!(resolved.settings.emit.precision, 3);
         assert!(
             resolved.settings.heads.is_some(),
             "HEAD_DEF beside the program"
@@ -331,7 +329,7 @@ mod tests {
             .expect("settings");
         assert_eq!(resolved.settings.selection.ignore, ["N005"]);
         assert_eq!(resolved.settings.selection.severity_min, Severity::Error);
-        assert_eq!(resolved.options.precision, 5);
+        assert_eq!(resolved.settings.emit.precision, 5);
         let _ = std::fs::remove_dir_all(&dir);
     }
 
