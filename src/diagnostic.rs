@@ -124,7 +124,7 @@ impl Diagnostic {
 pub struct RuleInfo {
     /// Stable code: `S...` syntax, `C6..` CYCLE600, `N...` general NC.
     pub code: &'static str,
-    /// Kebab-case; reads as "allow <name>".
+    /// Kebab-case; reads as "allow `<name>`".
     pub name: &'static str,
     pub severity: Severity,
     /// Markdown with the sections What it does / Why it matters / Example / Fix.

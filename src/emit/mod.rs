@@ -3,8 +3,8 @@
 //! so bytes the rewrite does not touch cannot change.
 
 pub mod cycle600;
-pub mod diff;
+pub(crate) mod diff;
 pub mod number;
-pub mod runtime;
+pub(crate) mod runtime;
 
 pub use crate::edit::{apply, write_applied, Edit};

@@ -9,11 +9,11 @@
 //! complete model, and the CYCLE600 walk, for programs that mention CYCLE600,
 //! runs on it without parsing again. It reports diagnostics; printing them is the CLI's job.
 
-pub mod codes;
+pub(crate) mod codes;
 pub mod fix;
 pub mod rule;
 pub mod rules;
-pub mod suppression;
+pub(crate) mod suppression;
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::edit::Edit;

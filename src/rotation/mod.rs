@@ -7,10 +7,10 @@
 //! elemental rotations, angles in degrees, intrinsic R = R_a·R_b·R_c and
 //! extrinsic R = R_c·R_b·R_a).
 
-pub mod batch;
+pub(crate) mod batch;
 pub mod euler;
 pub mod frame;
-pub mod lanes;
+pub(crate) mod lanes;
 pub mod sequence;
 pub mod trig;
 

@@ -6,19 +6,19 @@
 //! share (the model, address words, the modal state). It produces values and
 //! diagnostics, never text: rewriting is `emit`'s job.
 
-pub mod addresses;
-pub mod blocks;
-pub mod calls;
+pub(crate) mod addresses;
+pub(crate) mod blocks;
+pub(crate) mod calls;
 pub mod cycle600;
 pub mod env;
 pub mod environment;
 pub mod eval;
-pub mod frames;
+pub(crate) mod frames;
 pub mod head_def;
-pub mod labels;
-pub mod modal;
+pub(crate) mod labels;
+pub(crate) mod modal;
 pub mod model;
-pub mod structure;
+pub(crate) mod structure;
 pub mod value;
 pub mod walk;
 

@@ -5,7 +5,7 @@
 //! The pass is [`ModelBuilder`]'s: `check` drives it line by line, showing
 //! each line to its rules on the way; [`Model::build`] drives it alone. Plain
 //! lines (address words with numbers) are scanned, never parsed; the trees of
-//! the others are kept in the line table (up to [`crate::syntax::line_table::KEPT_TREES`]
+//! the others are kept in the line table (up to `syntax::line_table::KEPT_TREES`
 //! bytes of source), so no pass parses a line twice.
 
 use std::cell::OnceCell;
@@ -205,7 +205,7 @@ impl<'l> LineView<'l> {
         }
     }
 
-    /// The block's address words (see [`addresses::of_block`]), read once
+    /// The block's address words (see `addresses::of_block`), read once
     /// for all the rules that ask; none for a line that is no block.
     pub fn addresses(&self, source: &[u8]) -> &[Address] {
         self.addresses.get_or_init(|| match self.block {

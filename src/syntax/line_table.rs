@@ -9,9 +9,9 @@ use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{Block, Line, LineKind};
 use crate::syntax::{lines, parse_line_kind, plain};
 
-/// A program's lines: memory holds where every [`STRIDE`]th line starts, a
+/// A program's lines: memory holds where every `STRIDE`th line starts, a
 /// bit a line for whether it is plain (a quarter of a byte a line), and the
-/// trees of the lines that are not plain up to [`KEPT_TREES`] bytes of their
+/// trees of the lines that are not plain up to `KEPT_TREES` bytes of their
 /// source. A plain line, or one past that budget, is parsed when asked for:
 /// it costs a byte scan, and a CAM program's millions of them would not fit.
 pub struct Lines<'src> {

@@ -6,17 +6,17 @@
 //! `print(parse(x)) == x` for every input. This layer knows spelling only:
 //! no values, no rotations.
 
-pub mod block;
+pub(crate) mod block;
 mod errors;
 pub mod expr;
-pub mod input;
+pub(crate) mod input;
 pub mod kind;
 pub mod lexer;
-pub mod line_table;
+pub(crate) mod line_table;
 pub mod lines;
 pub mod plain;
 pub mod tree;
-pub mod visit;
+pub(crate) mod visit;
 
 pub use kind::{program_kind, ProgramKind};
 pub use line_table::{Lines, LinesRecorder};

@@ -27,7 +27,7 @@ N30 ENDIF          ; closes nothing: the WHILE stays open
 Add or correct the closing keyword."#,
 };
 
-/// The matching is the model's ([`BlockMatcher`]), shared with the walk.
+/// The matching is the model's (`semantic::blocks::BlockMatcher`), shared with the walk.
 #[derive(Default)]
 pub struct Checker {
     blocks: BlockMatcher,
