@@ -336,6 +336,8 @@ proptest::proptest! {
             "N[0-9]{1,2} (G[0-3] ?|G9[01] ?|G1[78] ?|[XYIJF]-?[0-9]{1,2} ?|M[0-5] ?|M30 ?){1,6}",
             "(G[23] |X[0-9] |Y=R1 |CR=5 |F=R2 |M2=[35] ){1,4}",
             "(IF R1==1|ENDIF|LBL:|GOTOF N[0-9]|SUB1|G0 X1|F100)",
+            "/?(N[0-9] )?(G4[0-2] |G1 |X1 |L10 |D1 ){1,3}",
+            "(TRAORI|TRAFOOF|TRACYL\\(40\\))",
             " *",
         ], 0..24),
         ending in proptest::prop_oneof!["\n", "\r\n"],

@@ -8,6 +8,7 @@
 //! that a CAM program's plain lines need no tree.
 
 use crate::semantic::addresses::Address;
+use crate::span::Span;
 
 /// The group of a G function written as a number (`G1`, `G641`), as the
 /// Programming Manual numbers them; `None` for numbers it does not list.
@@ -80,6 +81,10 @@ pub struct Modal {
     pub motion: Option<u32>,
     /// A path feed rate (F) was programmed.
     pub feed: bool,
+    /// The tool radius compensation in force (group 7): the `G41` or `G42`
+    /// word that selected it, `None` under `G40` (the reset value as
+    /// delivered) or before any.
+    pub radius_compensation: Option<Span>,
 }
 
 impl Modal {
@@ -87,8 +92,11 @@ impl Modal {
     pub fn apply(&mut self, source: &[u8], addresses: &[Address]) {
         for address in addresses {
             if address.is(source, "G") {
-                if let Some(number) = address.whole(source).filter(|&n| g_group(n) == Some(1)) {
-                    self.motion = Some(number);
+                match address.whole(source) {
+                    Some(number) if g_group(number) == Some(1) => self.motion = Some(number),
+                    Some(40) => self.radius_compensation = None,
+                    Some(41 | 42) => self.radius_compensation = Some(address.span),
+                    _ => {}
                 }
             } else if address.is(source, "F") && address.extension.is_none() {
                 self.feed = true;
@@ -133,6 +141,7 @@ mod tests {
                 Some(*modal)
             })
             .collect();
+        assert!(states.iter().all(|m| m.radius_compensation.is_none()));
         let motions: Vec<_> = states.iter().map(|m| (m.motion, m.feed)).collect();
         assert_eq!(
             motions,
@@ -144,5 +153,24 @@ mod tests {
                 (Some(1), true)
             ]
         );
+    }
+
+    #[test]
+    fn radius_compensation_is_the_word_that_selected_it_until_g40() {
+        let source = b"G1 G41 X0 D1\nX10\nG42 Y5\nG40 X20\n";
+        let lines = Lines::new(source);
+        let mut modal = Modal::default();
+        let mut seen = Vec::new();
+        for row in 0..lines.len() {
+            let block = lines.block(row).expect("a block");
+            modal.apply(source, &of_block(source, &block));
+            seen.push(
+                modal
+                    .radius_compensation
+                    .map(|span| span.of(source).to_vec()),
+            );
+        }
+        let g = |text: &str| Some(text.as_bytes().to_vec());
+        assert_eq!(seen, [g("G41"), g("G41"), g("G42"), None]);
     }
 }

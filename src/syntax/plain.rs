@@ -141,19 +141,29 @@ const fn bit(letter: u8) -> u32 {
 }
 
 /// The motion G functions G0 to G3 (group 1) a plain line writes, one bit
-/// each: what the modal state and the circle rule ask of every CAM block.
+/// each, and whether it writes any other G function: what the modal state
+/// and the circle rule ask of every CAM block, and what tells the rules of
+/// the other G groups (compensation, planes) which few lines to read.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Motions(u8);
+
+/// The bit of a G function other than G0 to G3.
+const OTHER_G: u8 = 1 << 4;
 
 impl Motions {
     /// `G<number>` is among them (`number` 0 to 3).
     pub fn contains(self, number: u32) -> bool {
         number < 4 && self.0 & (1 << number) != 0
     }
+
+    /// A G function other than G0 to G3 (`G17`, `G41`, `G1.5`) is written.
+    pub fn others(self) -> bool {
+        self.0 & OTHER_G != 0
+    }
 }
 
 /// The bit of the motion G function (G0 to G3, `G01` alike) whose letter is
-/// at `at`, 0 for any other word.
+/// at `at`, [`OTHER_G`] for another G function, 0 for any other word.
 #[inline(always)]
 fn motion_bit(bytes: &[u8], at: usize) -> u8 {
     if bytes[at] | 0x20 != b'g' {
@@ -170,10 +180,10 @@ fn motion_bit(bytes: &[u8], at: usize) -> u8 {
             next -= 1;
             0
         }
-        _ => return 0,
+        _ => return OTHER_G,
     };
     match bytes.get(next + 1) {
-        Some(b'0'..=b'9' | b'.') => 0,
+        Some(b'0'..=b'9' | b'.') => OTHER_G,
         _ => 1 << digit,
     }
 }
@@ -575,7 +585,7 @@ mod tests {
         fn a_plain_line_parses_into_number_words(text in proptest::prop_oneof![
             "[NGXYZEx0-9 .;+=:(-]{0,40}",
             "([NGXYZEx][-+]?[0-9.]{0,5} ?){0,8}(;[A-Z=]{0,3})?",
-            "([Gg][-+]?0{0,2}[0-4]{1,2}\\.?[0-9]? ?|X1 ){1,5}",
+            "([Gg][-+]?0{0,2}[0-4]{1,2}\\.?[0-9]? ?|[Gg]4[0-2] |X1 ){1,5}",
         ]) {
             if is_plain(text.as_bytes()) {
                 proptest::prop_assert!(crate::syntax::diagnostics(text.as_bytes()).is_empty());
@@ -598,15 +608,16 @@ mod tests {
                     proptest::prop_assert_eq!(plain.facts().letters, Letters::of(&letters));
                     let repeats = letters.iter().any(|l| letters.iter().filter(|o| o.eq_ignore_ascii_case(l)).count() > 1);
                     proptest::prop_assert_eq!(plain.facts().repeats, repeats);
-                    let motions: Vec<u32> = crate::semantic::addresses::of_block(text.as_bytes(), &block)
+                    let g: Vec<Option<u32>> = crate::semantic::addresses::of_block(text.as_bytes(), &block)
                         .iter()
                         .filter(|a| a.is(text.as_bytes(), "G"))
-                        .filter_map(|a| a.whole(text.as_bytes()))
-                        .filter(|&n| n < 4)
+                        .map(|a| a.whole(text.as_bytes()))
                         .collect();
                     for n in 0..4 {
-                        proptest::prop_assert_eq!(plain.facts().motions.contains(n), motions.contains(&n), "G{}", n);
+                        proptest::prop_assert_eq!(plain.facts().motions.contains(n), g.contains(&Some(n)), "G{}", n);
                     }
+                    let others = g.iter().any(|n| !matches!(n, Some(0..=3)));
+                    proptest::prop_assert_eq!(plain.facts().motions.others(), others);
                     for statement in &block.statements {
                         let number_word = matches!(
                             &statement.kind,

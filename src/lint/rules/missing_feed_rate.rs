@@ -2,12 +2,13 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{is_definition_file, moves_a_named_axis, upper};
+use crate::lint::rules::support::{
+    is_definition_file, leaves_line_order, moves_a_named_axis, upper,
+};
 use crate::semantic::addresses::{self, Address};
-use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::modal::{is_axis_letter, is_feed_motion, Modal};
 use crate::span::Span;
-use crate::syntax::tree::{Block, StatementKind};
+
 use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -71,7 +72,7 @@ impl Check for Checker {
             return;
         };
         let addresses = line.addresses(file.source);
-        if changes_the_order(file, block, addresses) {
+        if leaves_line_order(file, block, addresses) {
             self.done = true;
             return;
         }
@@ -139,25 +140,4 @@ impl Checker {
                 .help("program the feed rate in this block or before it (F100)"),
         );
     }
-}
-
-/// The block makes the order of the lines no longer the order they run in,
-/// or calls what may program a feed rate.
-fn changes_the_order(file: &FileContext, block: &Block, addresses: &[Address]) -> bool {
-    let source = file.source;
-    addresses.iter().any(|a| a.is(source, "L"))
-        || block.statements.iter().any(|s| match &s.kind {
-            StatementKind::Call(call) => !is_plain_command(&upper(source, call.name.span)),
-            StatementKind::Command(name) => !is_plain_command(&upper(source, name.span)),
-            StatementKind::Proc(_)
-            | StatementKind::Case(_)
-            | StatementKind::Goto(_)
-            | StatementKind::IndirectCall { .. } => true,
-            _ => false,
-        })
-}
-
-/// A command of the control that neither jumps nor programs a feed rate.
-fn is_plain_command(name: &str) -> bool {
-    call_kind(name) == CallKind::Builtin && !name.starts_with("CYCLE")
 }

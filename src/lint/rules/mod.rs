@@ -25,6 +25,7 @@ pub mod proc_name_mismatch;
 pub mod repeated_address;
 pub mod support;
 pub mod too_many_m_functions;
+pub mod transformation_with_radius_compensation;
 pub mod traori_at_end;
 pub mod unclosed_block;
 pub mod undefined_label;
@@ -152,6 +153,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &block_after_program_end::RULE,
             checker: Some(checker::<block_after_program_end::Checker>),
+        },
+        Rule {
+            info: &transformation_with_radius_compensation::RULE,
+            checker: Some(checker::<transformation_with_radius_compensation::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,

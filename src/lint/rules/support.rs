@@ -3,6 +3,7 @@
 
 use crate::lint::rule::FileContext;
 use crate::semantic::addresses::Address;
+use crate::semantic::calls::{call_kind, CallKind};
 use crate::span::Span;
 use crate::syntax::tree::{Block, Goto, GotoTarget, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
@@ -116,4 +117,27 @@ pub fn group_conflicts<G: Copy + Eq + std::hash::Hash>(
         }
     }
     conflicts
+}
+
+/// The block makes the order of the lines no longer the order they run in
+/// (a jump, CASE, PROC), or calls what may change the modal state (a
+/// subprogram `L`, a cycle, a call or command that is not one of the
+/// control's plain builtins, an indirect call).
+pub fn leaves_line_order(file: &FileContext, block: &Block, addresses: &[Address]) -> bool {
+    let source = file.source;
+    addresses.iter().any(|a| a.is(source, "L"))
+        || block.statements.iter().any(|s| match &s.kind {
+            StatementKind::Call(call) => !is_plain_command(&upper(source, call.name.span)),
+            StatementKind::Command(name) => !is_plain_command(&upper(source, name.span)),
+            StatementKind::Proc(_)
+            | StatementKind::Case(_)
+            | StatementKind::Goto(_)
+            | StatementKind::IndirectCall { .. } => true,
+            _ => false,
+        })
+}
+
+/// A command of the control that neither jumps nor programs a feed rate.
+fn is_plain_command(name: &str) -> bool {
+    call_kind(name) == CallKind::Builtin && !name.starts_with("CYCLE")
 }
