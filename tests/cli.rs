@@ -606,3 +606,85 @@ fn globals_and_macros_of_definition_files_are_defined() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// N018 knows the subprograms the control would find: the program's own
+/// directory first, then the cycle directories of sinuprep.toml or
+/// `--cycles`, in their order.
+#[test]
+fn calls_are_checked_against_the_subprograms_of_the_search_path() {
+    let dir = scratch("cycles");
+    std::fs::create_dir_all(dir.join("parts")).expect("parts");
+    std::fs::create_dir_all(dir.join("CUS")).expect("CUS");
+    std::fs::create_dir_all(dir.join("CST")).expect("CST");
+    std::fs::write(
+        dir.join("parts/PART.MPF"),
+        "N10 ALIGN(1, 2, 3)\nN20 PROBE(1, 2)\nN30 CYCLE_X(1)\nN40 M30\n",
+    )
+    .expect("program");
+    std::fs::write(
+        dir.join("parts/align.spf"),
+        "; beside\nPROC ALIGN(REAL _A, REAL _B)\nM17\n",
+    )
+    .expect("sub");
+    // CUS comes first: its PROBE takes two, CST's one.
+    std::fs::write(
+        dir.join("CUS/PROBE.SPF"),
+        "PROC PROBE(REAL _A, REAL _B) SAVE\nM17\n",
+    )
+    .expect("cus");
+    std::fs::write(dir.join("CST/PROBE.SPF"), "PROC PROBE(REAL _A)\nM17\n").expect("cst");
+    std::fs::write(dir.join("CST/CYCLE_X.SPF"), "PROC CYCLE_X\nM17\n").expect("cst");
+    let program = dir.join("parts/PART.MPF");
+    let name = program.to_str().expect("utf-8");
+
+    let findings = |output: &std::process::Output| {
+        stdout(output)
+            .lines()
+            .filter(|l| l.contains("N018"))
+            .map(|l| l.split(": ").nth(1).unwrap_or_default().to_string())
+            .collect::<Vec<_>>()
+    };
+    let own = run(
+        &["check", "--select", "N018", "--format", "short", name],
+        b"",
+    );
+    assert_eq!(
+        findings(&own),
+        ["warning[N018] `ALIGN` takes 2 argument(s), this call passes 3"]
+    );
+
+    std::fs::write(dir.join("sinuprep.toml"), "cycles = [\"CUS\", \"CST\"]\n").expect("config");
+    let configured = run(
+        &["check", "--select", "N018", "--format", "short", name],
+        b"",
+    );
+    assert_eq!(
+        findings(&configured),
+        [
+            "warning[N018] `ALIGN` takes 2 argument(s), this call passes 3",
+            "warning[N018] `CYCLE_X` takes 0 argument(s), this call passes 1",
+        ]
+    );
+    let cst = dir.join("CST");
+    let given = run(
+        &[
+            "check",
+            "--select",
+            "N018",
+            "--format",
+            "short",
+            "--cycles",
+            cst.to_str().expect("utf-8"),
+            name,
+        ],
+        b"",
+    );
+    assert_eq!(findings(&given).len(), 3, "CST alone: PROBE takes one");
+
+    std::fs::write(dir.join("sinuprep.toml"), "cycles = [\"CMA\"]\n").expect("config");
+    let missing = run(&["check", name], b"");
+    assert_exit(&missing, 2);
+    let stderr = String::from_utf8_lossy(&missing.stderr);
+    assert!(stderr.contains("named by `cycles` in"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

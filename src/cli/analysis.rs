@@ -40,6 +40,7 @@ pub fn given_to_check(args: &CheckArgs) -> Given {
         severity_min: args.severity_min.map(Severity::from),
         deny_warnings: args.deny_warnings,
         definitions: args.definitions.clone(),
+        cycles: args.cycles.clone(),
         ..inputs(&args.input)
     }
 }

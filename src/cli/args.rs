@@ -68,6 +68,9 @@ pub struct CheckArgs {
     /// A definition file (GUD variables, macros) the programs use, as the control holds it (repeatable; also `definitions = [...]` in sinuprep.toml).
     #[arg(long = "definitions", value_name = "FILE")]
     pub definitions: Vec<PathBuf>,
+    /// A cycle directory of the control (CUS, CMA, CST as copied from the machine), searched after the program's own directory for the subprograms it calls, whose PROC headers N018 checks calls against (repeatable, in search order; also `cycles = [...]` in sinuprep.toml).
+    #[arg(long = "cycles", value_name = "DIR")]
+    pub cycles: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,

@@ -1,10 +1,12 @@
 //! What a program reads from the machine it runs on rather than from its
-//! own text: the axis names of the machine data (`$MC_AXCONF_...`), and
-//! (to come) the global variables of GUD files, the macros of macro files
-//! and the subprograms of the control's cycle directories. Given in
-//! sinuprep.toml; a program checked without it is checked on its own text.
+//! own text: the axis names of the machine data (`$MC_AXCONF_...`), the
+//! global variables of GUD files, the macros of macro files and the
+//! subprograms of the control's cycle directories (their PROC headers).
+//! Given in sinuprep.toml; a program checked without it is checked on its
+//! own text.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::Model;
@@ -21,6 +23,10 @@ pub struct Environment {
     pub variables: HashSet<String>,
     /// Macros of definition files (`DEFINE M_ON AS M3`), upper case.
     pub macros: HashSet<String>,
+    /// Subprograms of the cycle directories: name (upper case) and how
+    /// many parameters their PROC declares. Shared: every program of a
+    /// directory reaches the same ones.
+    pub procedures: Arc<HashMap<String, usize>>,
 }
 
 impl Environment {
@@ -66,6 +72,32 @@ impl Environment {
     }
 }
 
+/// Lines read for a subprogram's PROC before giving up: it is the first
+/// statement of a subprogram (comments and blank lines may come before).
+const PROC_WITHIN: usize = 200;
+
+impl Environment {
+    /// Learns a subprogram of a cycle directory from its PROC header (its
+    /// name and parameter count); a file without one within its first
+    /// lines (a main program, a text) teaches nothing.
+    pub fn read_procedure(&mut self, source: &[u8]) {
+        let mut parser = crate::syntax::LineParser::default();
+        for raw in crate::syntax::lines::raw_lines(source).take(PROC_WITHIN) {
+            let (line, _) = parser.parse_line(source, raw);
+            let LineKind::Block(block) = &line.kind else {
+                continue;
+            };
+            for statement in &block.statements {
+                if let StatementKind::Proc(proc) = &statement.kind {
+                    let name = crate::syntax::tree::upper(proc.name.text(source));
+                    Arc::make_mut(&mut self.procedures).insert(name, proc.parameters.len());
+                    return;
+                }
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -83,5 +115,17 @@ mod tests {
         }
         assert!(!environment.defines("ZERO_X"));
         assert!(environment.read_definitions(b"DEF NCK REAL (\n").is_err());
+    }
+
+    #[test]
+    fn a_cycle_directory_gives_procedures_with_their_parameter_counts() {
+        let mut environment = Environment::default();
+        environment
+            .read_procedure(b";cycle\n\nPROC Align(REAL _A, VAR REAL _B[3], INT _N) SAVE\nM17\n");
+        environment.read_procedure(b"PROC NOARGS\nRET\n");
+        environment.read_procedure(b"N10 G0 X0\nM30\n");
+        assert_eq!(environment.procedures.get("ALIGN"), Some(&3));
+        assert_eq!(environment.procedures.get("NOARGS"), Some(&0));
+        assert_eq!(environment.procedures.len(), 2);
     }
 }

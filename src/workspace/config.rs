@@ -34,6 +34,10 @@ pub struct Config {
     /// Definition files (GUD, macros) whose globals and macros programs use,
     /// relative to the configuration file.
     pub definitions: Option<Vec<PathBuf>>,
+    /// The control's cycle directories (CUS, CMA, CST as copied from the
+    /// machine), searched in this order after the program's own directory
+    /// for the subprograms it calls; relative to the configuration file.
+    pub cycles: Option<Vec<PathBuf>>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -106,7 +110,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 12] = [
+const KEYS: [&str; 13] = [
     "select",
     "ignore",
     "severity-min",
@@ -119,6 +123,7 @@ const KEYS: [&str; 12] = [
     "runtime-r",
     "axes",
     "definitions",
+    "cycles",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

@@ -16,7 +16,7 @@ mod values;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 pub use config::{Config, SeverityName, FILE_NAME};
 pub use error::SettingsError;
@@ -45,6 +45,8 @@ pub struct Given {
     pub deny_warnings: bool,
     /// Definition files (GUD, macros).
     pub definitions: Vec<PathBuf>,
+    /// Cycle directories, searched after the program's own directory.
+    pub cycles: Vec<PathBuf>,
     pub emit: Option<Form>,
     pub precision: Option<u8>,
     pub emit_runtime: bool,
@@ -61,13 +63,19 @@ pub struct Resolved {
     pub deny_warnings: bool,
 }
 
-/// The settings of a run over many programs: [`Given`], and the definition
-/// files read so far, by the list that names them.
+/// The settings of a run over many programs: [`Given`], the definition
+/// files read so far (by the list that names them) and the subprograms of
+/// the directories searched so far.
 #[derive(Default)]
 pub struct Workspace {
     given: Given,
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
+    directories: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
 }
+
+/// A directory's subprograms: file name (upper case, without `.SPF`) and
+/// the parameter count of its PROC.
+type Procedures = HashMap<String, usize>;
 
 impl Workspace {
     /// Refuses a rule code that names no rule before any program is read.
@@ -76,7 +84,7 @@ impl Workspace {
         codes(&given.ignore, "--ignore")?;
         Ok(Self {
             given,
-            definitions: Mutex::default(),
+            ..Self::default()
         })
     }
 
@@ -105,6 +113,7 @@ impl Workspace {
                 .unwrap_or(Severity::Info),
         };
         resolved.settings.environment = self.environment(config)?;
+        resolved.settings.environment.procedures = self.procedures(config, program)?;
         Ok(resolved)
     }
 
@@ -221,6 +230,95 @@ impl Workspace {
         };
         environment.axes = Environment::with_axes(config.axes.iter().flatten()).axes;
         Ok(environment)
+    }
+
+    /// The subprograms a call of `program` may reach, as the control
+    /// searches them: the program's own directory, then the cycle
+    /// directories given (or else sinuprep.toml's) in their order; the first
+    /// found wins. Each directory is read once a run.
+    fn procedures(
+        &self,
+        config: &Config,
+        program: &Path,
+    ) -> Result<Arc<Procedures>, SettingsError> {
+        let own = match program.parent() {
+            _ if program == Path::new("-") => PathBuf::from("."),
+            Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        let mut searched = vec![(own, None)];
+        if self.given.cycles.is_empty() {
+            let listed = config.cycles.iter().flatten();
+            searched.extend(listed.map(|dir| (config.resolve(dir), Some(config))));
+        } else {
+            searched.extend(self.given.cycles.iter().map(|dir| (dir.clone(), None)));
+        }
+        let mut out: Option<Arc<Procedures>> = None;
+        for (index, (dir, from_config)) in searched.iter().enumerate() {
+            // The program's own directory may be unreadable (stdin in a
+            // directory one cannot list): nothing is found there.
+            let found = match self.directory(dir) {
+                Ok(found) => found,
+                Err(_) if index == 0 => continue,
+                Err(source) => {
+                    return Err(match from_config {
+                        Some(config) => SettingsError::ReadSetting {
+                            path: dir.clone(),
+                            key: "cycles",
+                            config: config.describe(),
+                            source,
+                        },
+                        None => SettingsError::Read {
+                            path: dir.clone(),
+                            source,
+                        },
+                    })
+                }
+            };
+            match &mut out {
+                // One directory (the common case): its table, shared.
+                None => out = Some(found),
+                Some(out) => {
+                    for (name, count) in found.iter() {
+                        Arc::make_mut(out).entry(name.clone()).or_insert(*count);
+                    }
+                }
+            }
+        }
+        Ok(out.unwrap_or_default())
+    }
+
+    /// The subprograms of one directory (its `.SPF` files, any case).
+    fn directory(&self, dir: &Path) -> std::io::Result<Arc<Procedures>> {
+        if let Some(known) = self
+            .directories
+            .lock()
+            .ok()
+            .and_then(|d| d.get(dir).cloned())
+        {
+            return Ok(known);
+        }
+        let mut found = Procedures::new();
+        for entry in std::fs::read_dir(dir)?.flatten() {
+            let path = entry.path();
+            let stem = match (path.file_stem(), path.extension()) {
+                (Some(stem), Some(extension)) if extension.eq_ignore_ascii_case("spf") => stem,
+                _ => continue,
+            };
+            let Ok(source) = std::fs::read(&path) else {
+                continue; // a file that vanished or cannot be read: not found
+            };
+            let mut environment = Environment::default();
+            environment.read_procedure(&source);
+            if let Some(&count) = environment.procedures.values().next() {
+                found.insert(stem.to_string_lossy().to_ascii_uppercase(), count);
+            }
+        }
+        let found = Arc::new(found);
+        if let Ok(mut directories) = self.directories.lock() {
+            directories.insert(dir.to_path_buf(), found.clone());
+        }
+        Ok(found)
     }
 }
 

@@ -1,4 +1,4 @@
-//! N018 `argument-count-mismatch`: Finds calls that pass more arguments than the PROC (in the same file) or the EXTERN declaration
+//! N018 `argument-count-mismatch`: Finds calls that pass more arguments than the PROC (in the same file or a cycle directory) or the EXTERN declaration
 
 use std::collections::HashMap;
 
@@ -14,7 +14,9 @@ pub static RULE: RuleInfo = RuleInfo {
     severity: Severity::Warning,
     docs: r#"## What it does
 Finds calls that pass more arguments than the PROC (in the same file) or the EXTERN declaration
-of the called subprogram has parameters.
+of the called subprogram has parameters. With the machine's cycle directories given (`cycles =
+["CST", "CMA", "CUS"]` in sinuprep.toml, or `--cycles DIR`), the PROC headers of their `.SPF`
+files count too; a declaration in the program comes first.
 
 ## Why it matters
 The control refuses the call (alarm 12340 and its kin) when there are too many arguments; fewer
@@ -69,9 +71,11 @@ impl Check for Checker {
         }
     }
 
-    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let procedures = &file.environment.procedures;
         for (name, count, span) in &self.calls {
-            if let Some(&parameters) = self.declared.get(name) {
+            // The program's own declarations first, then the cycle directories'.
+            if let Some(&parameters) = self.declared.get(name).or_else(|| procedures.get(name)) {
                 if *count > parameters {
                     out.push(
                         RULE.at(*span)
