@@ -18,6 +18,8 @@
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
 //! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra;
 //!   knows nothing of syntax.
+//! - [`kinematics`]: swivel data records and the rotary axis positions they give a frame
+//!   rotation (two solutions, limits, `_DIR`, Hirth); pure math beside `rotation`.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
@@ -33,6 +35,7 @@ pub mod diagnostic;
 pub mod document;
 pub mod edit;
 pub mod emit;
+pub mod kinematics;
 pub mod lint;
 pub mod registry;
 pub mod rotation;

@@ -1,0 +1,13 @@
+//! Machine kinematics: where a machine's rotary axes go for a requested
+//! frame rotation, from its swivel data record. Pure math beside
+//! [`crate::rotation`] (no syntax, no I/O): the record, Paden-Kahan's
+//! subproblems, and the swivel with its two solutions, limits, `_DIR`,
+//! Hirth grid, residual rotation and zero-point shift. The model and its
+//! sources: `reference/kinematics.md`.
+
+pub mod record;
+pub(crate) mod subproblem;
+pub mod swivel;
+
+pub use record::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
+pub use swivel::{orientation, solve, Direction, Request, Solution, Swivel};

@@ -1,0 +1,92 @@
+//! Paden-Kahan subproblems on directions: the rotation angles that carry one
+//! unit vector onto another about given axes. Angles in degrees,
+//! right-handed about the (unit) axis.
+
+use nalgebra::Vector3;
+
+use crate::rotation::trig::atan2_degrees;
+
+/// Below this, a vector is taken to lie on an axis (its projection onto the
+/// plane normal to the axis has no direction).
+const ON_AXIS: f64 = 1e-9;
+
+/// Subproblem 1: the angle θ with `R(k, θ) p = q` as far as the directions
+/// allow (`k` unit), or `None` when `p` or `q` lies on the axis, where every
+/// angle does (a pole).
+pub fn angle_about(k: &Vector3<f64>, p: &Vector3<f64>, q: &Vector3<f64>) -> Option<f64> {
+    let p_perp = p - k * k.dot(p);
+    let q_perp = q - k * k.dot(q);
+    if p_perp.norm() < ON_AXIS || q_perp.norm() < ON_AXIS {
+        return None;
+    }
+    Some(atan2_degrees(
+        k.dot(&p_perp.cross(&q_perp)),
+        p_perp.dot(&q_perp),
+    ))
+}
+
+/// The intermediate directions `w = R(b, θ2) p = R(a, −θ1) q` of
+/// subproblem 2 (`R(a, θ1) R(b, θ2) p = q`, all unit, `a` and `b` not
+/// parallel): two, one where the cones touch, none where `q` cannot be
+/// reached.
+pub fn intermediates(
+    a: &Vector3<f64>,
+    b: &Vector3<f64>,
+    p: &Vector3<f64>,
+    q: &Vector3<f64>,
+) -> Vec<Vector3<f64>> {
+    let d = a.dot(b);
+    let c = a.cross(b);
+    let denominator = 1.0 - d * d;
+    let alpha = (a.dot(q) - d * b.dot(p)) / denominator;
+    let beta = (b.dot(p) - d * a.dot(q)) / denominator;
+    let gamma_squared =
+        (1.0 - alpha * alpha - beta * beta - 2.0 * alpha * beta * d) / c.norm_squared();
+    // Rounding puts a tangent case a few ulps either side of zero.
+    const TANGENT: f64 = 1e-12;
+    if gamma_squared < -TANGENT {
+        return Vec::new();
+    }
+    let base = a * alpha + b * beta;
+    if gamma_squared <= TANGENT {
+        return vec![base.normalize()];
+    }
+    let gamma = gamma_squared.sqrt();
+    vec![
+        (base + c * gamma).normalize(),
+        (base - c * gamma).normalize(),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rotation::frame::from_axis_angle;
+
+    #[test]
+    fn subproblem_one_turns_p_onto_q() {
+        let z = Vector3::z();
+        let theta = angle_about(&z, &Vector3::x(), &Vector3::y()).expect("off the axis");
+        assert!((theta - 90.0).abs() < 1e-12);
+        assert_eq!(angle_about(&z, &z, &Vector3::x()), None, "a pole");
+    }
+
+    #[test]
+    fn subproblem_two_gives_both_directions_or_none() {
+        let (a, b) = (Vector3::z(), Vector3::x());
+        let p = Vector3::z();
+        let q = Vector3::new(0.3, -0.5, 0.8).normalize();
+        let ws = intermediates(&a, &b, &p, &q);
+        assert_eq!(ws.len(), 2);
+        for w in &ws {
+            let t2 = angle_about(&b, &p, w).expect("θ2");
+            let t1 = angle_about(&a, w, &q).expect("θ1");
+            let reached = from_axis_angle(a, t1) * (from_axis_angle(b, t2) * p);
+            assert!((reached - q).norm() < 1e-12, "{reached}");
+        }
+        // A 45° nutating axis cannot tilt the tool past 90°.
+        let nutating = Vector3::new(0.0, 1.0, 1.0).normalize();
+        let past = Vector3::new(1.0, 0.0, -0.2).normalize();
+        assert!(intermediates(&a, &nutating, &p, &past).is_empty());
+    }
+}

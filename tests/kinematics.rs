@@ -1,0 +1,158 @@
+//! The swivel solver checked independently: for random records (heads,
+//! tables, mixed; orthogonal and nutating axes; offsets and limits) and
+//! random frames, the axis positions it gives turn the tool onto the
+//! requested direction, the positions and the residual give back the whole
+//! frame, and an orientation made from known positions is always found.
+
+use nalgebra::{Rotation3, Unit, Vector3};
+use proptest::prelude::*;
+use sinuprep::kinematics::{
+    orientation, solve, Direction, Kinematics, Record, Request, RotaryAxis,
+};
+
+fn axis(vector: Vector3<f64>, offset: f64, limits: Option<(f64, f64)>) -> RotaryAxis {
+    RotaryAxis {
+        name: String::new(),
+        vector,
+        offset,
+        hirth: None,
+        limits,
+    }
+}
+
+/// A unit vector from two angles (degrees).
+fn direction(azimuth: f64, elevation: f64) -> Vector3<f64> {
+    let (a, e) = (azimuth.to_radians(), elevation.to_radians());
+    Vector3::new(e.cos() * a.cos(), e.cos() * a.sin(), e.sin())
+}
+
+prop_compose! {
+    fn records()(
+        kinematics in prop_oneof![Just(Kinematics::Head), Just(Kinematics::Table), Just(Kinematics::Mixed)],
+        shape in 0..3usize,
+        az in -180.0..180.0f64, el in -89.0..89.0f64,
+        az2 in -180.0..180.0f64, el2 in -89.0..89.0f64,
+        offsets in proptest::array::uniform2(-90.0..90.0f64),
+        flip in any::<bool>(),
+    ) -> Record {
+        // The machines built: orthogonal axes (a C-A head, an A-C table, a B
+        // head over a C table), a 45° nutating axis, or any two axes.
+        let nutating = Vector3::new(0.0, 1.0, 1.0);
+        let (v1, v2) = match (shape, kinematics) {
+            (0, Kinematics::Head) => (Vector3::z(), Vector3::x()),
+            (0, Kinematics::Table) => (Vector3::x(), Vector3::z()),
+            (0, Kinematics::Mixed) => (Vector3::y(), Vector3::z()),
+            (1, Kinematics::Head) => (Vector3::z(), nutating),
+            (1, _) => (nutating, Vector3::z()),
+            _ => (direction(az, el), direction(az2, el2)),
+        };
+        let v2 = if flip { -v2 } else { v2 };
+        Record {
+            number: 1,
+            name: "RANDOM".into(),
+            kinematics,
+            offsets: [Vector3::new(1.0, 2.0, 3.0), Vector3::new(0.0, 0.0, 40.0), Vector3::new(10.0, 0.0, -5.0), Vector3::new(-10.0, 0.0, -35.0)],
+            axes: [axis(v1, offsets[0], None), axis(v2, offsets[1], None)],
+            options: 0,
+            direction_axis: None,
+        }
+    }
+}
+
+fn frame(axis: Vector3<f64>, degrees: f64) -> Rotation3<f64> {
+    Rotation3::from_axis_angle(&Unit::new_normalize(axis), degrees.to_radians())
+}
+
+/// The model angles of machine positions.
+fn model(record: &Record, positions: [f64; 2]) -> [f64; 2] {
+    [0, 1].map(|i| positions[i] - record.axes[i].offset)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn every_solution_turns_the_tool_onto_the_frame_and_the_residual_completes_it(
+        record in records(),
+        az in -180.0..180.0f64, el in -89.0..89.0f64, angle in -180.0..180.0f64,
+        plus in any::<bool>(),
+    ) {
+        prop_assume!(1.0 - record.axes[0].vector.normalize().dot(&record.axes[1].vector.normalize()).abs() > 1e-3);
+        let rotation = frame(direction(az, el), angle);
+        let direction = if plus { Direction::Plus } else { Direction::Minus };
+        let swivel = solve(&record, &Request { rotation, direction, current: [0.0; 2] }).expect("valid record");
+        let f = rotation * Vector3::z();
+        for solution in &swivel.solutions {
+            let reached = orientation(&record, model(&record, solution.positions)) * Vector3::z();
+            prop_assert!((reached - f).norm() < 1e-9, "{:?} reaches {} for {}", solution.positions, reached, f);
+        }
+        if let (Some(chosen), Some(residual)) = (swivel.chosen, swivel.residual) {
+            let kinematic = orientation(&record, model(&record, swivel.solutions[chosen].positions));
+            prop_assert!(((kinematic * residual).matrix() - rotation.matrix()).norm() < 1e-9);
+            // What stays in the frame turns about the tool axis only.
+            prop_assert!((residual * Vector3::z() - Vector3::z()).norm() < 1e-9);
+        }
+        prop_assert_eq!(swivel.chosen.is_some(), !swivel.solutions.is_empty(), "no limits: a solution is taken");
+    }
+
+    #[test]
+    fn an_orientation_the_axes_can_make_is_always_found(
+        record in records(),
+        angles in proptest::array::uniform2(-180.0..180.0f64),
+    ) {
+        prop_assume!(1.0 - record.axes[0].vector.normalize().dot(&record.axes[1].vector.normalize()).abs() > 1e-3);
+        let made = orientation(&record, angles);
+        let swivel = solve(&record, &Request { rotation: made, direction: Direction::Minus, current: [0.0; 2] }).expect("valid record");
+        prop_assert!(!swivel.solutions.is_empty(), "{:?} not found", angles);
+        // One of the solutions makes the same tool direction (both do), and
+        // the positions given are where the axes were, or the other solution.
+        let f = made * Vector3::z();
+        let reaches = |positions: [f64; 2]| {
+            (orientation(&record, model(&record, positions)) * Vector3::z() - f).norm() < 1e-9
+        };
+        prop_assert!(swivel.solutions.iter().all(|s| reaches(s.positions)), "a solution misses");
+        // At a pole one axis is free, and any position of it is as good.
+        let (v1, v2, z) = (record.axes[0].vector.normalize(), record.axes[1].vector.normalize(), Vector3::z());
+        let (a, q, b, p) = match record.kinematics {
+            Kinematics::Head => (v1, f, v2, z),
+            Kinematics::Table => (v1, z, v2, f),
+            Kinematics::Mixed => (v2, f, v1, z),
+        };
+        prop_assume!(a.dot(&q).abs() < 1.0 - 1e-9 && b.dot(&p).abs() < 1.0 - 1e-9);
+        let same = |a: f64, b: f64| ((a - b).rem_euclid(360.0) + 1e-6).rem_euclid(360.0) < 2e-6;
+        prop_assert!(
+            swivel.solutions.iter().any(|s| {
+                let found = model(&record, s.positions);
+                same(found[0], angles[0]) && same(found[1], angles[1])
+            }),
+            "{:?} is not among {:?}", angles, swivel.solutions
+        );
+    }
+
+    #[test]
+    fn limits_are_kept_and_dir_takes_the_lower_or_higher_reference_position(
+        record in records(),
+        az in -180.0..180.0f64, el in -89.0..89.0f64,
+        min in -200.0..0.0f64, span in 30.0..400.0f64,
+    ) {
+        prop_assume!(1.0 - record.axes[0].vector.normalize().dot(&record.axes[1].vector.normalize()).abs() > 1e-3);
+        let mut record = record;
+        for axis in &mut record.axes {
+            axis.limits = Some((min, min + span));
+        }
+        let rotation = frame(direction(az, el), 30.0);
+        let ask = |direction| solve(&record, &Request { rotation, direction, current: [0.0; 2] }).expect("valid");
+        let (minus, plus) = (ask(Direction::Minus), ask(Direction::Plus));
+        let reference = record.direction_reference();
+        for swivel in [&minus, &plus] {
+            for solution in swivel.solutions.iter().filter(|s| s.within_limits) {
+                prop_assert!(solution.positions.iter().all(|&p| p >= min - 1e-9 && p <= min + span + 1e-9));
+            }
+            let inside = swivel.solutions.iter().filter(|s| s.within_limits).count();
+            prop_assert_eq!(swivel.chosen.is_some(), inside > 0);
+        }
+        if let (Some(m), Some(p)) = (minus.chosen, plus.chosen) {
+            prop_assert!(minus.solutions[m].positions[reference] <= plus.solutions[p].positions[reference] + 1e-9);
+        }
+    }
+}
