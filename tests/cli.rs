@@ -688,3 +688,126 @@ fn calls_are_checked_against_the_subprograms_of_the_search_path() {
     assert!(stderr.contains("named by `cycles` in"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A report as one line: miette's wrapping and frame taken out.
+fn flat(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes)
+        .replace(['│', '×', '╰', '─', '▶'], " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// `axes` on the sample machine: both solutions, the one `_DIR` takes, the
+/// JSON document scripts read, an unreachable orientation, and the
+/// records a user can name.
+#[test]
+fn axes_computes_a_swivel_on_the_sample_machine() {
+    let machine = support::repo().join("samples/MACHINE.SPF");
+    let machine = machine.to_str().expect("utf-8");
+    let axes = |extra: &[&str]| {
+        let mut args = vec!["axes", "--machine", machine];
+        args.extend_from_slice(extra);
+        run(&args, b"")
+    };
+    // A C-A head tilted 30° about X: C ±90 (or 0/180), A ±30; _DIR -1 takes A -30.
+    let output = axes(&[
+        "--record", "HEAD_CA", "--mode", "57", "30", "0", "0", "--json",
+    ]);
+    assert_exit(&output, 0);
+    let document: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let solutions = document["solutions"].as_array().expect("solutions");
+    assert_eq!(solutions.len(), 2);
+    let chosen = &solutions[document["chosen"].as_u64().expect("chosen") as usize];
+    assert!(
+        (chosen["axes"]["A"].as_f64().expect("A") + 30.0).abs() < 1e-9,
+        "{chosen}"
+    );
+    assert_eq!(document["record"], "HEAD_CA");
+    assert_eq!(document["residual"].as_array().map(Vec::len), Some(3));
+    let plus = axes(&[
+        "--record", "HEAD_CA", "30", "0", "0", "--dir", "1", "--json",
+    ]);
+    let plus: serde_json::Value = serde_json::from_slice(&plus.stdout).expect("JSON");
+    let taken = &plus["solutions"][plus["chosen"].as_u64().expect("chosen") as usize];
+    assert!((taken["axes"]["A"].as_f64().expect("A") - 30.0).abs() < 1e-9);
+
+    // A -100 lies outside the table's -120..30 only as +100: the other is taken.
+    let table = axes(&["--record", "table_ac", "-100", "0", "0"]);
+    assert_exit(&table, 0);
+    let text = stdout(&table);
+    assert!(
+        text.contains("solution 1: A=100 C=180  (outside the limits)"),
+        "{text}"
+    );
+    assert!(text.contains("taken: solution 2"), "{text}");
+
+    // A 45° nutating head tilts the tool at most 90°.
+    let unreachable = axes(&["--record", "3", "120", "0", "0"]);
+    assert_exit(&unreachable, 1);
+    assert!(stdout(&unreachable).contains("unreachable"));
+
+    let several = axes(&["0", "30", "0"]);
+    assert_exit(&several, 2);
+    assert!(flat(&several.stderr).contains("4 records: name one with --record"));
+    let misspelt = axes(&["--record", "HEAD_AC", "0", "30", "0"]);
+    assert!(flat(&misspelt.stderr).contains("did you mean `HEAD_CA`?"));
+    let mode = axes(&["--record", "1", "--mode", "64", "0", "30", "0"]);
+    assert_exit(&mode, 2);
+}
+
+/// A machine file's bad data is told at its line, and a record it makes
+/// unusable gives no answer.
+#[test]
+fn axes_tells_bad_swivel_data_and_refuses_its_record() {
+    let dir = scratch("axes-bad");
+    let path = dir.join("MACHINE.SPF");
+    std::fs::write(
+        &path,
+        "$TC_CARR34[1]=\"PARALLEL\" $TC_CARR9[1]=1 $TC_CARR12[1]=-1\n$TC_CARR48[1]=0\n",
+    )
+    .expect("write");
+    let name = path.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "axes",
+            "--machine",
+            name,
+            "--record",
+            "PARALLEL",
+            "0",
+            "30",
+            "0",
+        ],
+        b"",
+    );
+    assert_exit(&output, 2);
+    let stderr = flat(&output.stderr);
+    assert!(stderr.contains("K001"), "{stderr}");
+    assert!(
+        stderr.contains("`$TC_CARR48` is no swivel data parameter"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("the two rotary axes are parallel"),
+        "{stderr}"
+    );
+    assert!(output.stdout.is_empty(), "no answer from a broken record");
+
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"nowhere.spf\"\n").expect("config");
+    let config = dir.join("sinuprep.toml");
+    let missing = run(
+        &[
+            "axes",
+            "--config",
+            config.to_str().expect("utf-8"),
+            "0",
+            "30",
+            "0",
+        ],
+        b"",
+    );
+    assert_exit(&missing, 2);
+    assert!(flat(&missing.stderr).contains("named by `machine` in"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -37,6 +37,47 @@ pub enum Command {
     /// one triple per line on stdin).
     #[command(allow_negative_numbers = true)]
     Convert(ConvertArgs),
+    /// Compute one swivel on a machine: the rotary axis positions its swivel
+    /// data record gives a frame rotation (CYCLE800's axis-by-axis `_MODE` and
+    /// angles), both solutions, the one the control takes, the rotation left
+    /// in the frame and the zero-point shift.
+    #[command(allow_negative_numbers = true)]
+    Axes(AxesArgs),
+}
+
+#[derive(Debug, clap::Args)]
+pub struct AxesArgs {
+    /// The machine's swivel data records: NC assignments `$TC_CARRn[m]=value`
+    /// (a setup program, TO_INI.INI, INITIAL.INI) [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "FILE")]
+    pub machine: Option<PathBuf>,
+    /// The record, by its name (`$TC_CARR34`, CYCLE800's `_TC`) or number
+    /// [default: the machine's only record with rotary axes].
+    #[arg(long, value_name = "NAME")]
+    pub record: Option<String>,
+    /// CYCLE800's `_MODE` for axis-by-axis rotation: the sequence code of the
+    /// three rotations about the turned axes (57 = X, Y', Z''; 27 = Z, Y', X'').
+    #[arg(long, default_value_t = 57)]
+    pub mode: i64,
+    /// The three angles `_A`, `_B`, `_C` in degrees, in the order of the sequence.
+    #[arg(value_parser = finite_angle, num_args = 3, required = true, value_names = ["A", "B", "C"])]
+    pub angles: Vec<f64>,
+    /// CYCLE800's `_DIR`: -1 takes the lower position of the direction-reference
+    /// axis, 1 the higher (the other solution when the asked one is outside the limits).
+    #[arg(long, default_value_t = -1, value_parser = direction)]
+    pub dir: i8,
+    /// The direction-reference axis of `_DIR` (1 or 2) [default: the axis that tilts the tool].
+    #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u8).range(1..=2))]
+    pub reference_axis: Option<u8>,
+    /// Add the fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
+    #[arg(long)]
+    pub fine_offsets: bool,
+    /// The settings file (default: the nearest sinuprep.toml from the current directory upward).
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Debug, clap::Args)]
@@ -224,6 +265,16 @@ pub struct ConvertArgs {
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
+}
+
+fn direction(text: &str) -> Result<i8, String> {
+    match text.trim() {
+        "-1" => Ok(-1),
+        "1" | "+1" => Ok(1),
+        _ => Err(format!(
+            "`{text}` is no _DIR: give -1 (the lower position) or 1 (the higher)"
+        )),
+    }
 }
 
 fn finite_angle(text: &str) -> Result<f64, String> {

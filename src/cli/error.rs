@@ -39,6 +39,21 @@ pub enum CliError {
     )]
     IsDirectory { path: PathBuf },
 
+    #[error("no machine file: give --machine FILE or `machine = \"...\"` in sinuprep.toml")]
+    #[diagnostic(code(sinuprep::machine), help("a machine file holds the swivel data records as the control does: `$TC_CARRn[m]=value` (samples/MACHINE.SPF)"))]
+    NoMachine,
+
+    #[error("{path}: {why}")]
+    #[diagnostic(
+        code(sinuprep::machine),
+        help("`sinuprep axes --record NAME` names one by `$TC_CARR34` or number")
+    )]
+    Record { path: PathBuf, why: String },
+
+    #[error("`--mode {0}` is no axis-by-axis rotation of CYCLE800")]
+    #[diagnostic(code(sinuprep::mode), help("give the sequence code of three rotations about the turned axes: 57 (X, Y', Z''), 45 (X, Z', Y''), 54 (Y, X', Z''), 30 (Y, Z', X''), 39 (Z, X', Y''), 27 (Z, Y', X''); the solid-angle, projection and direct modes are not computed"))]
+    Mode(i64),
+
     #[error("no rule has the code `{0}`")]
     #[diagnostic(code(sinuprep::rule), help("`sinuprep rule --all` lists every rule"))]
     UnknownRule(String),

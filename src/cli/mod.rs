@@ -2,6 +2,7 @@
 
 mod analysis;
 pub mod args;
+mod axes;
 mod check;
 mod convert;
 pub mod error;
@@ -49,5 +50,6 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Eval(eval) => eval::run(eval),
         args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),
+        args::Command::Axes(axes) => axes::run(axes),
     }
 }

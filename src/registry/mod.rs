@@ -21,6 +21,7 @@ pub mod cycle600_shares_block;
 pub mod cycle600_unknown_argument;
 pub mod cycle600_unknown_head;
 pub mod head_def_missing;
+pub mod invalid_swivel_data;
 pub mod runtime_name_collision;
 pub mod syntax;
 
@@ -45,6 +46,7 @@ pub static ALL: &[&RuleInfo] = &[
     &cycle600_frames_over_programmable_frame::RULE,
     &cycle600_nested_too_deep::RULE,
     &cycle600_rewritable::RULE,
+    &invalid_swivel_data::RULE,
     &syntax::UNCLOSED_STRING,
     &syntax::UNBALANCED_BRACKET,
     &syntax::INVALID_NUMBER,

@@ -38,6 +38,9 @@ pub struct Config {
     /// machine), searched in this order after the program's own directory
     /// for the subprograms it calls; relative to the configuration file.
     pub cycles: Option<Vec<PathBuf>>,
+    /// The machine's swivel data records (`$TC_CARRn[m]=value`), relative to
+    /// the configuration file.
+    pub machine: Option<PathBuf>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -110,7 +113,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 13] = [
+const KEYS: [&str; 14] = [
     "select",
     "ignore",
     "severity-min",
@@ -124,6 +127,7 @@ const KEYS: [&str; 13] = [
     "axes",
     "definitions",
     "cycles",
+    "machine",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

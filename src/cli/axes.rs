@@ -1,0 +1,300 @@
+//! `sinuprep axes`: one swivel computed on a machine, for people and for
+//! scripts: both solutions with their axis positions, limits and Hirth
+//! error, the one the control takes, the rotation left in the frame, the
+//! zero-point shift.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+use nalgebra::{Rotation3, Vector3};
+
+use crate::cli::args::AxesArgs;
+use crate::cli::error::CliError;
+use crate::cli::render::{human, FileReport};
+use crate::cli::{write_stdout, ExitStatus};
+use crate::emit::number::format;
+use crate::kinematics::{solve, Direction, Record, Request, Swivel};
+use crate::rotation::{matrix, Kind, Sequence};
+use crate::semantic::machine::{Machine, Reading};
+use crate::workspace::{Config, SettingsError};
+
+pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
+    if args.mode & !63 != 0 {
+        return Err(CliError::Mode(args.mode));
+    }
+    let sequence =
+        Sequence::from_code(args.mode, Kind::Intrinsic).map_err(|_| CliError::Mode(args.mode))?;
+    let path = machine_path(args)?;
+    let source = std::fs::read(&path).map_err(|source| CliError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    let reading = Reading {
+        fine_offsets: args.fine_offsets,
+    };
+    let machine = Machine::read(&source, reading);
+    let name = path.display().to_string();
+    if !machine.diagnostics.is_empty() {
+        let mut text = String::new();
+        let report = FileReport {
+            name: &name,
+            source: &source,
+            diagnostics: &machine.diagnostics,
+        };
+        human(&report, std::io::stderr().is_terminal(), &mut text);
+        eprint!("{text}");
+    }
+    let mut record = pick(&machine, args.record.as_deref(), &path)?.clone();
+    record.direction_axis = args.reference_axis.map(|axis| usize::from(axis) - 1);
+    let angles = [args.angles[0], args.angles[1], args.angles[2]];
+    let request = Request {
+        rotation: matrix(sequence, angles),
+        direction: if args.dir > 0 {
+            Direction::Plus
+        } else {
+            Direction::Minus
+        },
+        current: [0.0; 2],
+    };
+    let swivel = solve(&record, &request).map_err(|error| CliError::Record {
+        path: path.clone(),
+        why: format!("record {}: {error}", describe(&record)),
+    })?;
+    let text = if args.json {
+        json(&record, &swivel)
+    } else {
+        table(&record, sequence, angles, args.dir, &swivel)
+    };
+    write_stdout(text.as_bytes())?;
+    let found = if swivel.chosen.is_some() {
+        ExitStatus::Success
+    } else {
+        ExitStatus::Failure
+    };
+    let data = if machine.diagnostics.is_empty() {
+        ExitStatus::Success
+    } else {
+        ExitStatus::Failure
+    };
+    Ok(found.max(data))
+}
+
+/// `--machine`, or sinuprep.toml's `machine` from the current directory up.
+fn machine_path(args: &AxesArgs) -> Result<PathBuf, CliError> {
+    if let Some(path) = &args.machine {
+        return Ok(path.clone());
+    }
+    let config =
+        Config::find(args.config.as_deref(), std::path::Path::new(".")).map_err(CliError::from)?;
+    match &config.machine {
+        Some(path) => {
+            let path = config.resolve(path);
+            if path.is_file() {
+                Ok(path)
+            } else {
+                Err(SettingsError::ReadSetting {
+                    source: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file"),
+                    path,
+                    key: "machine",
+                    config: config.describe(),
+                }
+                .into())
+            }
+        }
+        None => Err(CliError::NoMachine),
+    }
+}
+
+/// The record asked for, or the only one with rotary axes.
+fn pick<'m>(
+    machine: &'m Machine,
+    name: Option<&str>,
+    path: &std::path::Path,
+) -> Result<&'m Record, CliError> {
+    let names: Vec<String> = machine.usable().map(describe).collect();
+    let refused = |why: String| CliError::Record {
+        path: path.to_path_buf(),
+        why,
+    };
+    match name {
+        Some(name) => machine.record(name).ok_or_else(|| {
+            let known: Vec<&str> = machine.usable().map(|r| r.name.as_str()).collect();
+            let meant = crate::suggest::closest(name, &known, 3)
+                .map(|m| format!(" (did you mean `{m}`?)"))
+                .unwrap_or_default();
+            refused(format!(
+                "no record `{name}`{meant}; the file defines {}",
+                list(&names)
+            ))
+        }),
+        None => {
+            let mut usable = machine.usable();
+            match (usable.next(), usable.next()) {
+                (Some(only), None) => Ok(only),
+                (None, _) => Err(refused("no record with a rotary axis".into())),
+                _ => Err(refused(format!(
+                    "{} records: name one with --record ({})",
+                    names.len(),
+                    names.join(", ")
+                ))),
+            }
+        }
+    }
+}
+
+fn list(names: &[String]) -> String {
+    if names.is_empty() {
+        "none with a rotary axis".into()
+    } else {
+        names.join(", ")
+    }
+}
+
+/// `2 (HEAD_CA)`, or the number alone.
+fn describe(record: &Record) -> String {
+    if record.name.is_empty() {
+        record.number.to_string()
+    } else {
+        format!("{} ({})", record.number, record.name)
+    }
+}
+
+fn n(value: f64) -> String {
+    format(value, 4)
+}
+
+fn kinematics_name(record: &Record) -> &'static str {
+    match record.kinematics {
+        crate::kinematics::Kinematics::Head => "head",
+        crate::kinematics::Kinematics::Table => "table",
+        crate::kinematics::Kinematics::Mixed => "mixed",
+    }
+}
+
+fn table(
+    record: &Record,
+    sequence: Sequence,
+    angles: [f64; 3],
+    dir: i8,
+    swivel: &Swivel,
+) -> String {
+    let count = record.axis_count();
+    let labels: Vec<String> = (0..count).map(|i| record.axes[i].label(i)).collect();
+    let reference = record.direction_reference();
+    let mut out = format!(
+        "record {}: {} {} ({}), _DIR refers to {}\n",
+        describe(record),
+        record.kinematics.letter(),
+        kinematics_name(record),
+        labels.join(", "),
+        labels[reference.min(count - 1)],
+    );
+    let [a, b, c] = angles.map(n);
+    out.push_str(&format!(
+        "frame: {} {a} {b} {c} (_MODE {})\n",
+        sequence.letters(),
+        sequence.code()
+    ));
+    if swivel.solutions.is_empty() {
+        out.push_str(
+            "unreachable: no position of the rotary axes turns the tool onto the frame's Z axis\n",
+        );
+        return out;
+    }
+    for (index, solution) in swivel.solutions.iter().enumerate() {
+        let positions: Vec<String> = (0..count)
+            .map(|i| format!("{}={}", labels[i], n(solution.positions[i])))
+            .collect();
+        let mut notes = Vec::new();
+        if !solution.within_limits {
+            notes.push("outside the limits".to_string());
+        }
+        if solution.hirth_error_deg > 0.0 {
+            notes.push(format!(
+                "Hirth grid turns the tool {}°",
+                format(solution.hirth_error_deg, 6)
+            ));
+        }
+        out.push_str(&format!(
+            "solution {}: {}{}\n",
+            index + 1,
+            positions.join(" "),
+            if notes.is_empty() {
+                String::new()
+            } else {
+                format!("  ({})", notes.join("; "))
+            }
+        ));
+    }
+    let sign = if dir > 0 {
+        "+1, the higher"
+    } else {
+        "-1, the lower"
+    };
+    match swivel.chosen {
+        Some(index) => out.push_str(&format!(
+            "taken: solution {} (_DIR={sign} {})\n",
+            index + 1,
+            labels[reference.min(count - 1)]
+        )),
+        None => out.push_str("taken: none, no solution lies inside the limits\n"),
+    }
+    if let (Some(residual), Some(shift)) = (swivel.residual, swivel.shift) {
+        let about_z = residual.matrix()[(1, 0)]
+            .atan2(residual.matrix()[(0, 0)])
+            .to_degrees();
+        out.push_str(&format!(
+            "left in the frame: {}° about the tool axis\nzero-point shift: X{} Y{} Z{}\n",
+            n(about_z),
+            n(shift.x),
+            n(shift.y),
+            n(shift.z)
+        ));
+    }
+    out
+}
+
+fn json(record: &Record, swivel: &Swivel) -> String {
+    let count = record.axis_count();
+    let axes = |positions: [f64; 2]| {
+        let mut map = serde_json::Map::new();
+        for (i, position) in positions.iter().enumerate().take(count) {
+            map.insert(record.axes[i].label(i), serde_json::json!(position));
+        }
+        serde_json::Value::Object(map)
+    };
+    let solutions: Vec<serde_json::Value> = swivel
+        .solutions
+        .iter()
+        .map(|s| {
+            serde_json::json!({
+                "axes": axes(s.positions),
+                "exact": axes(s.exact),
+                "reachable": true,
+                "within_limits": s.within_limits,
+                "hirth_error_deg": s.hirth_error_deg,
+            })
+        })
+        .collect();
+    let rows = |m: &Rotation3<f64>| {
+        (0..3)
+            .map(|r| (0..3).map(|c| m.matrix()[(r, c)]).collect::<Vec<f64>>())
+            .collect::<Vec<_>>()
+    };
+    let vector = |v: &Vector3<f64>| [v.x, v.y, v.z];
+    let document = serde_json::json!({
+        "record": record.name,
+        "number": record.number,
+        "kinematics": record.kinematics.letter().to_string(),
+        "direction_reference": record.axes[record.direction_reference()].label(record.direction_reference()),
+        "reachable": !swivel.solutions.is_empty(),
+        "solutions": solutions,
+        "chosen": swivel.chosen,
+        "residual": swivel.residual.as_ref().map(rows),
+        "shift": swivel.shift.as_ref().map(vector),
+    });
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(&document).unwrap_or_default()
+    )
+}
