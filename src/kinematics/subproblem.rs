@@ -68,7 +68,8 @@ mod tests {
         let z = Vector3::z();
         let theta = angle_about(&z, &Vector3::x(), &Vector3::y()).expect("off the axis");
         assert!((theta - 90.0).abs() < 1e-12);
-        assert_eq!(angle_about(&z, &z, &Vector3::x()), None, "a pole");
+        assert_eq!(angle_about(&z, &z, &Vector3::x()), None, "p on the axis");
+        assert_eq!(angle_about(&z, &Vector3::x(), &-z), None, "q on the axis");
     }
 
     #[test]

@@ -122,6 +122,40 @@ mod tests {
         assert_eq!(g_group(641), g_group(64));
         assert_eq!(g_group(90), Some(14));
         assert_eq!(g_group(95), g_group(961));
+        // One G function of every group the list holds.
+        for (g, group) in [
+            (3, 1),
+            (332, 1),
+            (4, 2),
+            (348, 2),
+            (26, 3),
+            (112, 3),
+            (19, 6),
+            (42, 7),
+            (57, 8),
+            (500, 8),
+            (599, 8),
+            (153, 9),
+            (64, 10),
+            (645, 10),
+            (9, 11),
+            (602, 12),
+            (71, 13),
+            (710, 13),
+            (91, 14),
+            (94, 15),
+            (973, 15),
+            (451, 18),
+            (815, 31),
+            (825, 32),
+            (142, 43),
+            (341, 44),
+            (291, 47),
+            (461, 48),
+            (621, 57),
+        ] {
+            assert_eq!(g_group(g), Some(group), "G{g}");
+        }
         assert_eq!(g_group(8), None);
         assert_eq!(g_group(504), None);
         assert!(is_syntax_defining(3) && !is_syntax_defining(6));
