@@ -811,3 +811,43 @@ fn axes_tells_bad_swivel_data_and_refuses_its_record() {
     assert!(flat(&missing.stderr).contains("named by `machine` in"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `eval --machine`: a rotating CYCLE600 shows the axis positions its
+/// CYCLE800 gets on the record named by its head.
+#[test]
+fn eval_shows_the_axis_positions_of_each_swivel() {
+    let dir = scratch("eval-machine");
+    let samples = support::repo().join("samples");
+    std::fs::copy(samples.join("HEAD_DEF.SPF"), dir.join("HEAD_DEF.SPF")).expect("heads");
+    let machine = std::fs::read_to_string(samples.join("MACHINE.SPF")).expect("machine");
+    std::fs::write(
+        dir.join("M.SPF"),
+        machine.replace("\"HEAD_CA\"", "\"UFK600\""),
+    )
+    .expect("write");
+    let program = dir.join("P.MPF");
+    std::fs::write(
+        &program,
+        "N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 20, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n",
+    )
+    .expect("program");
+    let (m, p) = (
+        dir.join("M.SPF"),
+        program.to_str().expect("utf-8").to_string(),
+    );
+    let output = run(&["eval", "--machine", m.to_str().expect("utf-8"), &p], b"");
+    assert_exit(&output, 0);
+    // Extrinsic X 20 is CYCLE800 ZXY 0 20 0: the A axis tilts 20°, _DIR -1 the lower.
+    assert!(
+        stdout(&output).contains("  axes     record 1 (UFK600): C=-180 A=-20 (solution 1 of 2)"),
+        "{}",
+        stdout(&output)
+    );
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"M.SPF\"\n").expect("config");
+    let json = run(&["eval", "--json", &p], b"");
+    let document: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let axes = &document["calls"][0]["axes"];
+    assert_eq!(axes["record"], "UFK600");
+    assert_eq!(axes["solutions"].as_array().map(Vec::len), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -243,6 +243,13 @@ pub struct EvalArgs {
     pub allow_empty: bool,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
+    /// The machine's swivel data records: each swivelling call shows the rotary axis
+    /// positions its record gives [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "FILE")]
+    pub machine: Option<PathBuf>,
+    /// With the machine, add the fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
+    #[arg(long)]
+    pub fine_offsets: bool,
     /// Print one JSON document instead of the tables.
     #[arg(long)]
     pub json: bool,

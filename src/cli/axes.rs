@@ -4,7 +4,7 @@
 //! zero-point shift.
 
 use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use nalgebra::{Rotation3, Vector3};
 
@@ -25,26 +25,12 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
     let sequence =
         Sequence::from_code(args.mode, Kind::Intrinsic).map_err(|_| CliError::Mode(args.mode))?;
     let path = machine_path(args)?;
-    let source = std::fs::read(&path).map_err(|source| CliError::Read {
-        path: path.clone(),
-        source,
-    })?;
     let reading = Reading {
         fine_offsets: args.fine_offsets,
     };
-    let machine = Machine::read(&source, reading);
-    let name = path.display().to_string();
-    if !machine.diagnostics.is_empty() {
-        let mut text = String::new();
-        let report = FileReport {
-            name: &name,
-            source: &source,
-            diagnostics: &machine.diagnostics,
-        };
-        human(&report, std::io::stderr().is_terminal(), &mut text);
-        eprint!("{text}");
-    }
-    let mut record = pick(&machine, args.record.as_deref(), &path)?.clone();
+    let loaded = load(&path, reading)?;
+    let machine = &loaded.machine;
+    let mut record = pick(machine, args.record.as_deref(), &path)?.clone();
     record.direction_axis = args.reference_axis.map(|axis| usize::from(axis) - 1);
     let angles = [args.angles[0], args.angles[1], args.angles[2]];
     let request = Request {
@@ -77,6 +63,35 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         ExitStatus::Failure
     };
     Ok(found.max(data))
+}
+
+/// A machine file read, its problems told on stderr.
+pub struct Loaded {
+    pub machine: Machine,
+    /// The file's name for messages.
+    pub name: String,
+}
+
+/// Reads the machine file at `path`; what is wrong in it goes to stderr
+/// (K001), and the records it leaves usable are kept.
+pub fn load(path: &Path, reading: Reading) -> Result<Loaded, CliError> {
+    let source = std::fs::read(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let machine = Machine::read(&source, reading);
+    let name = path.display().to_string();
+    if !machine.diagnostics.is_empty() {
+        let mut text = String::new();
+        let report = FileReport {
+            name: &name,
+            source: &source,
+            diagnostics: &machine.diagnostics,
+        };
+        human(&report, std::io::stderr().is_terminal(), &mut text);
+        eprint!("{text}");
+    }
+    Ok(Loaded { machine, name })
 }
 
 /// `--machine`, or sinuprep.toml's `machine` from the current directory up.
@@ -254,7 +269,45 @@ fn table(
     out
 }
 
+/// The swivel in one line: the record and the positions taken.
+pub fn taken(record: &Record, swivel: &Swivel) -> String {
+    let count = record.axis_count();
+    let head = describe(record);
+    if swivel.solutions.is_empty() {
+        return format!("record {head}: unreachable, no position of the rotary axes turns the tool onto the frame's Z axis");
+    }
+    let Some(index) = swivel.chosen else {
+        return format!("record {head}: no solution inside the limits");
+    };
+    let solution = &swivel.solutions[index];
+    let positions: Vec<String> = (0..count)
+        .map(|i| format!("{}={}", record.axes[i].label(i), n(solution.positions[i])))
+        .collect();
+    let hirth = if solution.hirth_error_deg > 0.0 {
+        format!(
+            ", Hirth grid turns the tool {}°",
+            format(solution.hirth_error_deg, 6)
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "record {head}: {} (solution {} of {}{hirth})",
+        positions.join(" "),
+        index + 1,
+        swivel.solutions.len()
+    )
+}
+
 fn json(record: &Record, swivel: &Swivel) -> String {
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(&document(record, swivel)).unwrap_or_default()
+    )
+}
+
+/// The swivel as the JSON object `axes --json` prints.
+pub fn document(record: &Record, swivel: &Swivel) -> serde_json::Value {
     let count = record.axis_count();
     let axes = |positions: [f64; 2]| {
         let mut map = serde_json::Map::new();
@@ -282,7 +335,7 @@ fn json(record: &Record, swivel: &Swivel) -> String {
             .collect::<Vec<_>>()
     };
     let vector = |v: &Vector3<f64>| [v.x, v.y, v.z];
-    let document = serde_json::json!({
+    serde_json::json!({
         "record": record.name,
         "number": record.number,
         "kinematics": record.kinematics.letter().to_string(),
@@ -292,9 +345,5 @@ fn json(record: &Record, swivel: &Swivel) -> String {
         "chosen": swivel.chosen,
         "residual": swivel.residual.as_ref().map(rows),
         "shift": swivel.shift.as_ref().map(vector),
-    });
-    format!(
-        "{}\n",
-        serde_json::to_string_pretty(&document).unwrap_or_default()
-    )
+    })
 }

@@ -3,14 +3,18 @@
 
 use crate::cli::analysis;
 use crate::cli::args::EvalArgs;
+use crate::cli::axes;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::document::Document;
-use crate::emit::cycle600::{code, Options};
+use crate::emit::cycle600::{code, intrinsic, Options};
 use crate::emit::number::format;
+use crate::kinematics::{solve, Direction, Record, Request, Swivel};
+use crate::rotation::matrix;
 use crate::semantic::cycle600::{Argument, Provenance};
+use crate::semantic::machine::Reading;
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
@@ -74,7 +78,22 @@ struct Evaluated {
 
 fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
     let file = read(path)?;
-    let settings = workspace.for_rewrite(path)?.settings;
+    let resolved = workspace.for_rewrite(path)?;
+    let machine_path = match &args.machine {
+        Some(path) => Some(path.clone()),
+        None => resolved
+            .config
+            .machine
+            .as_ref()
+            .map(|p| resolved.config.resolve(p)),
+    };
+    let reading = Reading {
+        fine_offsets: args.fine_offsets,
+    };
+    let machine = machine_path
+        .map(|path| axes::load(&path, reading))
+        .transpose()?;
+    let settings = resolved.settings;
     let analyzed = Document::new(&file.name, &file.bytes).rewrite(&settings);
     let options = &settings.emit;
     let index = LineIndex::new(&file.bytes);
@@ -83,13 +102,26 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
             .analysis
             .calls
             .iter()
-            .map(|site| json(site, &file.bytes, options))
+            .map(|site| {
+                let mut call = json(site, &file.bytes, options);
+                if let Some(machine) = &machine {
+                    call["axes"] = swivel_json(site, machine);
+                }
+                call
+            })
             .collect();
         Output::Json(serde_json::json!({ "path": file.name, "calls": calls }))
     } else {
         let mut text = String::new();
         for site in &analyzed.analysis.calls {
             table(site, &file.name, &file.bytes, &index, options, &mut text);
+            if let Some(machine) = &machine {
+                if let Some(line) = swivel_text(site, machine) {
+                    // Under the call's table, before its blank line.
+                    text.pop();
+                    text.push_str(&format!("  axes     {line}\n\n"));
+                }
+            }
         }
         if analyzed.analysis.calls.is_empty() {
             text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
@@ -101,6 +133,52 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
         diagnostics: analysis::report(&analyzed, &file, args.analysis.message_format),
         failed: analyzed.has_errors(),
     })
+}
+
+/// The swivel a rotating call makes on its record: what CYCLE800 gets
+/// (the intrinsic angles, `_DIR` of `_ROT_INV`), solved.
+fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Result<(Record, Swivel), String>> {
+    let evaluation = site.evaluation.as_ref()?;
+    let p = &evaluation.parameters;
+    if p.recalculate_only {
+        return None; // results only: nothing turns
+    }
+    let (sequence, angles) = intrinsic(evaluation);
+    let Some(record) = machine.machine.record(&p.head) else {
+        return Some(Err(format!(
+            "{} defines no record `{}`",
+            machine.name, p.head
+        )));
+    };
+    let request = Request {
+        rotation: matrix(sequence, angles),
+        direction: if p.inverse {
+            Direction::Plus
+        } else {
+            Direction::Minus
+        },
+        current: [0.0; 2],
+    };
+    Some(
+        solve(record, &request)
+            .map(|swivel| (record.clone(), swivel))
+            .map_err(|error| format!("record `{}`: {error}", p.head)),
+    )
+}
+
+fn swivel_text(site: &CallSite, machine: &axes::Loaded) -> Option<String> {
+    Some(match swivel(site, machine)? {
+        Err(why) => why,
+        Ok((record, swivel)) => axes::taken(&record, &swivel),
+    })
+}
+
+fn swivel_json(site: &CallSite, machine: &axes::Loaded) -> serde_json::Value {
+    match swivel(site, machine) {
+        None => serde_json::Value::Null,
+        Some(Err(why)) => serde_json::json!({ "error": why }),
+        Some(Ok((record, swivel))) => axes::document(&record, &swivel),
+    }
 }
 
 fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {

@@ -203,6 +203,20 @@ fn literal(value: &Value, precision: usize) -> String {
     }
 }
 
+/// The call's output as CYCLE800 and AROT take it: they turn about the
+/// rotated axes, so intrinsic angles only (an extrinsic a, b, c is the
+/// intrinsic c, b, a).
+pub fn intrinsic(evaluation: &Evaluation) -> (crate::rotation::Sequence, [f64; 3]) {
+    let output = evaluation.parameters.output;
+    match output.kind {
+        Kind::Intrinsic => (output, evaluation.output.angles),
+        Kind::Extrinsic => {
+            let [a, b, c] = evaluation.output.angles;
+            (output.reversed(), [c, b, a])
+        }
+    }
+}
+
 /// The blocks that replace the call, first one in the call's place.
 pub fn code(
     site: &CallSite,
@@ -221,14 +235,7 @@ pub fn code(
             .collect();
         return Ok(vec![gud.join(" ")]);
     }
-    // CYCLE800 and AROT turn about the rotated axes: intrinsic angles only.
-    let (sequence, angles) = match p.output.kind {
-        Kind::Intrinsic => (p.output, evaluation.output.angles),
-        Kind::Extrinsic => {
-            let [a, b, c] = evaluation.output.angles;
-            (p.output.reversed(), [c, b, a])
-        }
-    };
+    let (sequence, angles) = intrinsic(evaluation);
     let [x0, y0, z0] = [p.before.x, p.before.y, p.before.z].map(n);
     let [x1, y1, z1] = [p.after.x, p.after.y, p.after.z].map(n);
     match options.form {
