@@ -7,7 +7,10 @@
 //! for callgrind.
 
 use std::hint::black_box;
-use std::time::Instant;
+
+#[path = "support/best.rs"]
+mod best;
+use best::best_of_five;
 
 use sinuprep::rotation::{convert, convert_all, Sequence};
 
@@ -56,17 +59,6 @@ fn main() {
         checksum
     });
     report("convert_all", batches * batch, many);
-}
-
-/// The best time of five runs after one warm-up run.
-fn best_of_five(mut run: impl FnMut() -> f64) -> f64 {
-    let mut best = f64::INFINITY;
-    for _ in 0..6 {
-        let start = Instant::now();
-        black_box(run());
-        best = best.min(start.elapsed().as_secs_f64());
-    }
-    best
 }
 
 fn report(what: &str, conversions: usize, seconds: f64) {

@@ -8,7 +8,10 @@
 //! for callgrind.
 
 use std::hint::black_box;
-use std::time::Instant;
+
+#[path = "support/best.rs"]
+mod best;
+use best::best_of_five;
 
 use nalgebra::Vector3;
 use sinuprep::kinematics::{solve, Direction, Hirth, Kinematics, Record, Request, RotaryAxis};
@@ -129,15 +132,4 @@ fn main() {
             seconds / swivels as f64 * 1e9
         );
     }
-}
-
-/// The best time of five runs after one warm-up run.
-fn best_of_five(mut run: impl FnMut() -> f64) -> f64 {
-    let mut best = f64::INFINITY;
-    for _ in 0..6 {
-        let start = Instant::now();
-        black_box(run());
-        best = best.min(start.elapsed().as_secs_f64());
-    }
-    best
 }

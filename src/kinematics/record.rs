@@ -118,9 +118,20 @@ pub enum RecordError {
     #[error("the two rotary axes are parallel: together they turn about one direction only")]
     ParallelAxes,
     #[error("{axis}: its minimum position {min} is above its maximum {max}")]
-    LimitsReversed { axis: String, min: f64, max: f64 },
+    LimitsReversed {
+        axis: String,
+        /// 0 or 1.
+        index: usize,
+        min: f64,
+        max: f64,
+    },
     #[error("{axis}: its Hirth increment {increment} is negative")]
-    NegativeHirth { axis: String, increment: f64 },
+    NegativeHirth {
+        axis: String,
+        /// 0 or 1.
+        index: usize,
+        increment: f64,
+    },
 }
 
 impl Record {
@@ -149,6 +160,7 @@ impl Record {
                 if min > max {
                     return Err(RecordError::LimitsReversed {
                         axis: axis.label(index),
+                        index,
                         min,
                         max,
                     });
@@ -158,6 +170,7 @@ impl Record {
                 if hirth.increment < 0.0 {
                     return Err(RecordError::NegativeHirth {
                         axis: axis.label(index),
+                        index,
                         increment: hirth.increment,
                     });
                 }

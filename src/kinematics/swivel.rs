@@ -236,12 +236,7 @@ fn model(record: &Record, positions: [f64; 2]) -> [f64; 2] {
 
 /// The rotation the axes make, `R_kin`, with `R_kin · Z = f` when met.
 pub fn orientation(record: &Record, angles: [f64; 2]) -> Rotation3<f64> {
-    let r1 = from_axis_angle(record.axes[0].vector, angles[0]);
-    let r2 = if record.axes[1].exists() {
-        from_axis_angle(record.axes[1].vector, angles[1])
-    } else {
-        Rotation3::identity()
-    };
+    let (r1, r2) = (turn(record, 0, angles), turn(record, 1, angles));
     match record.kinematics {
         Kinematics::Head => r1 * r2,
         Kinematics::Table => (r1 * r2).inverse(),
@@ -252,17 +247,20 @@ pub fn orientation(record: &Record, angles: [f64; 2]) -> Rotation3<f64> {
 /// The zero-point shift of model `angles` (see [`Swivel::shift`]).
 fn shift(record: &Record, angles: [f64; 2]) -> Vector3<f64> {
     let [_, l2, l3, l4] = record.offsets;
-    let turn = |i: usize| {
-        if record.axes[i].exists() {
-            from_axis_angle(record.axes[i].vector, angles[i])
-        } else {
-            Rotation3::identity()
-        }
-    };
+    let (r1, r2) = (turn(record, 0, angles), turn(record, 1, angles));
     match record.kinematics {
         Kinematics::Head => Vector3::zeros(),
-        Kinematics::Table => (l2 + turn(0) * (l3 + turn(1) * l4)) - (l2 + l3 + l4),
-        Kinematics::Mixed => (l3 + turn(1) * l4) - (l3 + l4),
+        Kinematics::Table => (l2 + r1 * (l3 + r2 * l4)) - (l2 + l3 + l4),
+        Kinematics::Mixed => (l3 + r2 * l4) - (l3 + l4),
+    }
+}
+
+/// `R(v_i, α_i)` of axis `i` (the identity for an axis the record lacks).
+fn turn(record: &Record, i: usize, angles: [f64; 2]) -> Rotation3<f64> {
+    if record.axes[i].exists() {
+        from_axis_angle(record.axes[i].vector, angles[i])
+    } else {
+        Rotation3::identity()
     }
 }
 

@@ -12,7 +12,7 @@ use crate::diagnostic::Diagnostic;
 use crate::kinematics::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
 use crate::registry::invalid_swivel_data::RULE;
 use crate::semantic::env::Env;
-use crate::semantic::eval::evaluate;
+use crate::semantic::eval::{evaluate, Lookup};
 use crate::semantic::value::Value;
 use crate::semantic::Supplied;
 use crate::span::Span;
@@ -37,7 +37,7 @@ pub struct Reading {
     pub fine_offsets: bool,
 }
 
-/// One parameter's value and where it was written.
+/// One parameter's value.
 #[derive(Clone, Debug)]
 enum Field {
     Number(f64),
@@ -111,7 +111,7 @@ impl Machine {
                         continue;
                     }
                 };
-                match value(source, parameter, &assign.value) {
+                match value(source, parameter, &assign.value, &scope) {
                     Ok(field) => {
                         fields
                             .entry(record)
@@ -171,15 +171,13 @@ fn is_text(n: u32) -> bool {
     matches!(n, 21 | 22 | 23 | 34..=36)
 }
 
-fn value(source: &[u8], parameter: u32, expr: &Expr) -> Result<Field, String> {
+fn value(source: &[u8], parameter: u32, expr: &Expr, scope: &dyn Lookup) -> Result<Field, String> {
     // The axis identifiers are of type AXIS: a bare axis name (`C1`).
     if matches!(parameter, 21 | 22) {
         let text = String::from_utf8_lossy(expr.span.of(source));
         return Ok(Field::Text(text.trim_matches('"').to_string()));
     }
-    let env = Env::default();
-    let supplied = Supplied::default();
-    match evaluate(source, expr, &env.scope(&supplied, 0)) {
+    match evaluate(source, expr, scope) {
         Ok(Value::Number(n)) if !is_text(parameter) => Ok(Field::Number(n)),
         Ok(Value::Text(t)) if is_text(parameter) => Ok(Field::Text(t)),
         Ok(Value::Number(_)) => Err("text expected (in quotes)".into()),

@@ -5,7 +5,7 @@ use crate::lint::rule::FileContext;
 use crate::semantic::addresses::Address;
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::span::Span;
-use crate::syntax::tree::{Block, Goto, GotoTarget, StatementKind};
+use crate::syntax::tree::{Block, Goto, GotoTarget, Name, Statement, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
 
 /// The upper-case text of `span`.
@@ -140,4 +140,14 @@ pub fn leaves_line_order(file: &FileContext, block: &Block, addresses: &[Address
 /// A command of the control that neither jumps nor programs a feed rate.
 fn is_plain_command(name: &str) -> bool {
     call_kind(name) == CallKind::Builtin && !name.starts_with("CYCLE")
+}
+
+/// The name a statement calls or commands (`TRAORI`, `TRAORI(1)`,
+/// `CYCLE800(...)`), `None` for any other statement.
+pub fn command_name(statement: &Statement) -> Option<&Name> {
+    match &statement.kind {
+        StatementKind::Command(name) => Some(name),
+        StatementKind::Call(call) => Some(&call.name),
+        _ => None,
+    }
 }

@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{leaves_line_order, upper};
+use crate::lint::rules::support::{command_name, leaves_line_order, upper};
 use crate::semantic::addresses::{self, Address};
 use crate::semantic::modal::Modal;
 use crate::span::Span;
@@ -99,10 +99,8 @@ impl Check for Checker {
             return;
         };
         for statement in &block.statements {
-            let name = match &statement.kind {
-                StatementKind::Command(name) => name,
-                StatementKind::Call(call) => &call.name,
-                _ => continue,
+            let Some(name) = command_name(statement) else {
+                continue;
             };
             let name = upper(source, name.span);
             if !TRANSFORMATIONS.contains(&name.as_str()) || self.reported == Some(compensation) {

@@ -2,8 +2,8 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rules::support::command_name;
 use crate::span::Span;
-use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N012",
@@ -44,10 +44,8 @@ impl Check for Checker {
             return;
         };
         for statement in &block.statements {
-            let name = match &statement.kind {
-                StatementKind::Command(name) => name,
-                StatementKind::Call(call) => &call.name,
-                _ => continue,
+            let Some(name) = command_name(statement) else {
+                continue;
             };
             if name.is(file.source, "TRAORI") {
                 self.active = Some(statement.span);
