@@ -49,6 +49,11 @@ impl<'src> Document<'src> {
         lint::check(self.source, self.name, self.kind, settings)
     }
 
+    /// [`Self::check`], with what could not be checked.
+    pub fn check_outcome(&self, settings: &Settings) -> lint::Outcome {
+        lint::check_outcome(self.source, self.name, self.kind, settings)
+    }
+
     /// The CYCLE600 calls rewritten as `settings.emit` asks, with the
     /// measured values and HEAD_DEF of `settings`.
     pub fn rewrite(&self, settings: &Settings) -> Rewritten {

@@ -607,6 +607,92 @@ fn globals_and_macros_of_definition_files_are_defined() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The axis names of the machine data: an `.INI` given as a definition
+/// file, beside sinuprep.toml's `axes`.
+#[test]
+fn axis_names_of_machine_data_are_defined() {
+    let dir = scratch("machine-data");
+    std::fs::write(
+        dir.join("CH1_TEA.INI"),
+        "CHANDATA(1)\n$MC_AXCONF_CHANAX_NAME_TAB[0]=\"XC\"\n$MC_AXCONF_CHANAX_NAME_TAB[1]=\"ZC\"\n$MC_CHAN_NAME=\"CHAN1\"\nM17\n",
+    )
+    .expect("write");
+    let program = dir.join("PART.MPF");
+    std::fs::write(&program, "N10 G0 POS[ZC]=1 FA[XC]=100 X=TABLE\nN20 M30\n").expect("write");
+    let name = program.to_str().expect("utf-8");
+    let args = ["check", "--format", "short", "--select", "N005", name];
+    let output = run(&args, b"");
+    assert_eq!(
+        stdout(&output).matches("N005").count(),
+        3,
+        "{}",
+        stdout(&output)
+    );
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "definitions = [\"CH1_TEA.INI\"]\naxes = [\"TABLE\"]\n",
+    )
+    .expect("toml");
+    let output = run(&args, b"");
+    assert!(!stdout(&output).contains("N005"), "{}", stdout(&output));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check --machine` (or `machine` in sinuprep.toml) solves the swivels on
+/// the machine's records; `hirth-tolerance` sets what K004 lets pass.
+#[test]
+fn swivels_are_checked_on_the_machine() {
+    let dir = scratch("swivels");
+    let machine = support::repo().join("samples/MACHINE.SPF");
+    std::fs::copy(&machine, dir.join("MACHINE.SPF")).expect("machine");
+    let program = dir.join("PART.MPF");
+    std::fs::write(
+        &program,
+        "N10 CYCLE800(1,\"HIRTH_CA\",0,57,0,0,0,31.3,0,0,0,0,0,-1)\nN20 CYCLE800(1,\"HEAD_AC\",0,57,0,0,0,0,30,0,0,0,0,-1)\nN30 M30\n",
+    )
+    .expect("program");
+    let name = program.to_str().expect("utf-8");
+    let codes = |output: &std::process::Output| -> Vec<String> {
+        stdout(output)
+            .lines()
+            .filter_map(|l| l.split_once('[').and_then(|(_, r)| r.split_once(']')))
+            .map(|(code, _)| code.to_string())
+            .collect()
+    };
+    // Without a machine nothing is solved.
+    let output = run(&["check", "--format", "short", name], b"");
+    assert_exit(&output, 0);
+    assert!(codes(&output).is_empty(), "{}", stdout(&output));
+    let given = [
+        "check",
+        "--format",
+        "short",
+        "--machine",
+        machine.to_str().expect("utf-8"),
+        name,
+    ];
+    let output = run(&given, b"");
+    assert_exit(&output, 1);
+    assert_eq!(codes(&output), ["K004", "K005"], "{}", stdout(&output));
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "machine = \"MACHINE.SPF\"\nhirth-tolerance = 1.5\n",
+    )
+    .expect("toml");
+    let output = run(&["check", "--format", "short", name], b"");
+    assert_eq!(codes(&output), ["K005"], "{}", stdout(&output));
+    // A machine file that cannot be read names the key.
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"NONE.SPF\"\n").expect("toml");
+    let output = run(&["check", name], b"");
+    assert_exit(&output, 2);
+    assert!(
+        flat(&output.stderr).contains("machine"),
+        "{}",
+        flat(&output.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// N018 knows the subprograms the control would find: the program's own
 /// directory first, then the cycle directories of sinuprep.toml or
 /// `--cycles`, in their order.

@@ -41,6 +41,8 @@ pub fn given_to_check(args: &CheckArgs) -> Given {
         deny_warnings: args.deny_warnings,
         definitions: args.definitions.clone(),
         cycles: args.cycles.clone(),
+        machine: args.machine.clone(),
+        fine_offsets: args.fine_offsets,
         ..inputs(&args.input)
     }
 }

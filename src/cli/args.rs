@@ -106,12 +106,18 @@ pub struct CheckArgs {
     /// Apply the safe fixes to the files, each rewritten atomically (a file with syntax errors is left alone), then report what remains.
     #[arg(long)]
     pub fix: bool,
-    /// A definition file (GUD variables, macros) the programs use, as the control holds it (repeatable; also `definitions = [...]` in sinuprep.toml).
+    /// A definition file (GUD variables, macros) or machine data file (`.INI`: axis names) the programs use, as the control holds it (repeatable; also `definitions = [...]` in sinuprep.toml).
     #[arg(long = "definitions", value_name = "FILE")]
     pub definitions: Vec<PathBuf>,
     /// A cycle directory of the control (CUS, CMA, CST as copied from the machine), searched after the program's own directory for the subprograms it calls, whose PROC headers N018 checks calls against (repeatable, in search order; also `cycles = [...]` in sinuprep.toml).
     #[arg(long = "cycles", value_name = "DIR")]
     pub cycles: Vec<PathBuf>,
+    /// The machine's swivel data records (`$TC_CARRn[m]=value`): each swivel of the programs is solved on the record it names (K002-K005) [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "FILE")]
+    pub machine: Option<PathBuf>,
+    /// Add the records' fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
+    #[arg(long)]
+    pub fine_offsets: bool,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,

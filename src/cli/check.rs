@@ -26,6 +26,74 @@ struct Checked {
     report: Report,
     fails: bool,
     counts: Counts,
+    unchecked: Unchecked,
+}
+
+/// What a program checked without its machine's environment (no
+/// definition files, axis names or cycle directories given) leaves open.
+#[derive(Default)]
+struct Unchecked {
+    /// Subprograms called that nothing declares: their calls are unchecked.
+    calls: std::collections::BTreeSet<String>,
+    /// N005 findings, which may be globals, macros or axes of the machine.
+    undefined_names: usize,
+}
+
+impl Unchecked {
+    fn of(outcome: &lint::Outcome, settings: &lint::Settings) -> Self {
+        if settings.environment.given {
+            return Self::default();
+        }
+        let undefined = crate::lint::rules::undefined_variable::RULE.code;
+        Self {
+            calls: outcome.unresolved_calls.iter().cloned().collect(),
+            undefined_names: outcome
+                .diagnostics
+                .iter()
+                .filter(|d| d.code == undefined)
+                .count(),
+        }
+    }
+
+    fn add(&mut self, other: Unchecked) {
+        self.calls.extend(other.calls);
+        self.undefined_names += other.undefined_names;
+    }
+
+    /// Said once a run, after the summary: what the environment would
+    /// have let `check` check.
+    fn note(&self) -> Option<String> {
+        let mut lines = Vec::new();
+        if !self.calls.is_empty() {
+            let mut names: Vec<&str> = self.calls.iter().map(String::as_str).take(5).collect();
+            if self.calls.len() > names.len() {
+                names.push("...");
+            }
+            let (count, them) = match self.calls.len() {
+                1 => ("1 called subprogram".to_string(), "its calls were"),
+                n => (format!("{n} called subprograms"), "their calls were"),
+            };
+            lines.push(format!(
+                "  - {count} not found beside the program ({}): {them} not checked (N018); give the cycle directories (`cycles` in sinuprep.toml, --cycles DIR)",
+                names.join(", ")
+            ));
+        }
+        if self.undefined_names > 0 {
+            let count = match self.undefined_names {
+                1 => "1 N005 finding".to_string(),
+                n => format!("{n} N005 findings"),
+            };
+            lines.push(format!(
+                "  - {count} may name GUD variables, macros or axes of the machine; give its definition files and machine data (`definitions`, --definitions FILE) or axes (`axes`)"
+            ));
+        }
+        (!lines.is_empty()).then(|| {
+            format!(
+                "note: checked without the machine's environment:\n{}",
+                lines.join("\n")
+            )
+        })
+    }
 }
 
 /// Findings by severity, for the summary line.
@@ -105,12 +173,14 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut text = String::new();
     let mut located = Vec::new();
     let mut counts = Counts::default();
+    let mut unchecked = Unchecked::default();
     let mut files = 0;
     for result in results {
         match result {
             Ok(checked) => {
                 fails |= checked.fails;
                 counts.add(checked.counts);
+                unchecked.add(checked.unchecked);
                 files += 1;
                 match checked.report {
                     // One file's report (the common case) is taken, not copied.
@@ -134,6 +204,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     // For people: on stderr, so that what tools read stays the findings.
     if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
         eprintln!("{}", counts.summary(files));
+        if let Some(note) = unchecked.note() {
+            eprintln!("{note}");
+        }
     }
 
     Ok(if failed {
@@ -171,15 +244,17 @@ fn check_file(
             source,
             kind,
         };
-        document.check(&settings)
+        document.check_outcome(&settings)
     };
-    let mut diagnostics = check(&file.bytes);
+    let mut outcome = check(&file.bytes);
     if let Some(target) = fix_target {
-        if let Some(fixed) = fix(&target, &file, &diagnostics, args.unsafe_fixes)? {
-            diagnostics = check(&fixed);
+        if let Some(fixed) = fix(&target, &file, &outcome.diagnostics, args.unsafe_fixes)? {
+            outcome = check(&fixed);
             file.bytes = Bytes::Read(fixed);
         }
     }
+    let unchecked = Unchecked::of(&outcome, &settings);
+    let diagnostics = outcome.diagnostics;
     let deny_warnings = resolved.deny_warnings;
     let counts = Counts::of(&diagnostics);
     let fails = diagnostics.iter().any(|d| {
@@ -201,6 +276,7 @@ fn check_file(
                 report,
                 fails,
                 counts,
+                unchecked,
             });
         }
     }
@@ -208,6 +284,7 @@ fn check_file(
         report: Report::Text(text),
         fails,
         counts,
+        unchecked,
     })
 }
 

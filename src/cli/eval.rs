@@ -9,12 +9,12 @@ use crate::cli::input::{expand, read};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::document::Document;
-use crate::emit::cycle600::{code, intrinsic, Options};
+use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
-use crate::kinematics::{solve, Direction, Record, Request, Swivel};
-use crate::rotation::matrix;
+use crate::kinematics::{solve, Record, Request, Swivel};
 use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::machine::Reading;
+use crate::semantic::swivels;
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
@@ -135,34 +135,26 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
     })
 }
 
-/// The swivel a rotating call makes on its record: what CYCLE800 gets
-/// (the intrinsic angles, `_DIR` of `_ROT_INV`), solved.
+/// The swivel a rotating call makes on its record (what CYCLE800 gets),
+/// solved; `None` for a call that does not turn or turns from a frame only
+/// the control knows (additive).
 fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Result<(Record, Swivel), String>> {
-    let evaluation = site.evaluation.as_ref()?;
-    let p = &evaluation.parameters;
-    if p.recalculate_only {
-        return None; // results only: nothing turns
-    }
-    let (sequence, angles) = intrinsic(evaluation);
-    let Some(record) = machine.machine.record(&p.head) else {
+    let asked = swivels::of_cycle600(site)?;
+    let Some(record) = machine.machine.record(&asked.record) else {
         return Some(Err(format!(
             "{} defines no record `{}`",
-            machine.name, p.head
+            machine.name, asked.record
         )));
     };
     let request = Request {
-        rotation: matrix(sequence, angles),
-        direction: if p.inverse {
-            Direction::Plus
-        } else {
-            Direction::Minus
-        },
+        rotation: asked.rotation,
+        direction: asked.direction,
         current: [0.0; 2],
     };
     Some(
         solve(record, &request)
             .map(|swivel| (record.clone(), swivel))
-            .map_err(|error| format!("record `{}`: {error}", p.head)),
+            .map_err(|error| format!("record `{}`: {error}", asked.record)),
     )
 }
 

@@ -206,7 +206,7 @@ fn literal(value: &Value, precision: usize) -> String {
 /// The call's output as CYCLE800 and AROT take it: they turn about the
 /// rotated axes, so intrinsic angles only (an extrinsic a, b, c is the
 /// intrinsic c, b, a).
-pub fn intrinsic(evaluation: &Evaluation) -> (crate::rotation::Sequence, [f64; 3]) {
+fn intrinsic(evaluation: &Evaluation) -> (crate::rotation::Sequence, [f64; 3]) {
     let output = evaluation.parameters.output;
     match output.kind {
         Kind::Intrinsic => (output, evaluation.output.angles),

@@ -69,6 +69,9 @@ pub struct Swivel {
     pub solutions: Vec<Solution>,
     /// The solution the control takes, `None` when none lies inside the limits.
     pub chosen: Option<usize>,
+    /// The solution `_DIR` asks for, limits aside: when it is not the one
+    /// taken, it lies outside the limits and the control took the other.
+    pub preferred: Option<usize>,
     /// For the chosen solution: the rotation left in the frame after the
     /// axes have turned (`R_kin^T · R_req`: about the tool axis alone when
     /// the direction is met exactly).
@@ -93,7 +96,8 @@ pub fn solve(record: &Record, request: &Request) -> Result<Swivel, RecordError> 
         (a.positions[0] - b.positions[0]).abs() < 1e-9
             && (a.positions[1] - b.positions[1]).abs() < 1e-9
     });
-    let chosen = choose(record, &solutions, request.direction);
+    let chosen = choose(record, &solutions, request.direction, |s| s.within_limits);
+    let preferred = choose(record, &solutions, request.direction, |_| true);
     let (residual, shift) = match chosen {
         Some(index) => {
             let angles = model(record, solutions[index].positions);
@@ -107,6 +111,7 @@ pub fn solve(record: &Record, request: &Request) -> Result<Swivel, RecordError> 
     Ok(Swivel {
         solutions,
         chosen,
+        preferred,
         residual,
         shift,
     })
@@ -264,15 +269,17 @@ fn turn(record: &Record, i: usize, angles: [f64; 2]) -> Rotation3<f64> {
     }
 }
 
-/// The solution `direction` asks for among those inside the limits; the
-/// other when only one is (Siemens: "the alternative is selected
-/// automatically").
-fn choose(record: &Record, solutions: &[Solution], direction: Direction) -> Option<usize> {
+/// The solution `direction` asks for among the `usable` ones: among those
+/// inside the limits, the other when only one is (Siemens: "the
+/// alternative is selected automatically").
+fn choose(
+    record: &Record,
+    solutions: &[Solution],
+    direction: Direction,
+    usable: impl Fn(&Solution) -> bool,
+) -> Option<usize> {
     let reference = record.direction_reference();
-    let usable = solutions
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| s.within_limits);
+    let usable = solutions.iter().enumerate().filter(|(_, s)| usable(s));
     let key = |s: &Solution| s.positions[reference];
     match direction {
         Direction::Minus => usable.min_by(|(_, a), (_, b)| key(a).total_cmp(&key(b))),

@@ -20,9 +20,11 @@ use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
-use crate::registry::cycle600_rewritable;
+use crate::registry::{cycle600_rewritable, invalid_swivel_data};
+use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::model::ModelBuilder;
-use crate::semantic::{analyze, CallSite, Environment, Heads, Model, Supplied};
+use crate::semantic::swivels::{self, OnMachine};
+use crate::semantic::{analyze, Analysis, CallSite, Environment, Heads, Model, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
@@ -82,6 +84,9 @@ pub struct Settings {
     pub environment: Environment,
     /// How rewritten code is written: by `rewrite`, and by C619's fix.
     pub emit: Options,
+    /// The machine the swivels are solved on (K002-K005); shared by the
+    /// programs of a run.
+    pub machine: Option<std::sync::Arc<OnMachine>>,
 }
 
 /// Where `check` reports a rule at another severity than its own, how: a
@@ -111,6 +116,21 @@ pub fn check(source: &[u8], name: &str, kind: ProgramKind, settings: &Settings) 
     check_with(PlainScanner::Scan, source, name, kind, settings)
 }
 
+/// What `check` found in one program, and what it could not check there.
+#[derive(Debug, Default)]
+pub struct Outcome {
+    /// In source order.
+    pub diagnostics: Vec<Diagnostic>,
+    /// Subprograms called that neither the program nor the environment
+    /// declares (upper case, each once, sorted): their calls are unchecked.
+    pub unresolved_calls: Vec<String>,
+}
+
+/// [`check`], with what it could not check.
+pub fn check_outcome(source: &[u8], name: &str, kind: ProgramKind, settings: &Settings) -> Outcome {
+    lint(PlainScanner::Scan, source, name, kind, settings)
+}
+
 /// [`check`] with the plain-line scanner given: [`PlainScanner::ParseEveryLine`]
 /// builds every line's tree, the reference the shortcut is tested against
 /// (`tests/lint.rs`, the `check` fuzz target).
@@ -122,6 +142,16 @@ pub fn check_with(
     kind: ProgramKind,
     settings: &Settings,
 ) -> Vec<Diagnostic> {
+    lint(scan_plain_line, source, name, kind, settings).diagnostics
+}
+
+fn lint(
+    scan_plain_line: PlainScanner,
+    source: &[u8],
+    name: &str,
+    kind: ProgramKind,
+    settings: &Settings,
+) -> Outcome {
     let Settings {
         selection,
         environment,
@@ -143,6 +173,7 @@ pub fn check_with(
     let mut suppressions = Suppressions::default();
     let walk = crate::semantic::mentions_cycle600(source);
     let mut model = ModelBuilder::new(source, walk);
+    let mut swivel_data = false;
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) => {
@@ -163,6 +194,8 @@ pub fn check_with(
             }
             Scanned::Other(raw) => raw,
         };
+        // Swivel data are assignments to `$` variables: never plain lines.
+        swivel_data = swivel_data || mentions_swivel_data(raw.content.of(source));
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -184,8 +217,16 @@ pub fn check_with(
     for checker in &mut checkers {
         checker.finish(&file, &mut found);
     }
-    if walk {
-        found.extend(cycle600_findings(model, settings));
+    let analysis = walk.then(|| analyze(model, &settings.supplied, settings.heads.as_ref()));
+    if let Some(analysis) = &analysis {
+        found.extend(cycle600_findings(model, analysis, settings));
+    }
+    if let Some(on) = &settings.machine {
+        found.extend(swivel_findings(model, analysis.as_ref(), on));
+    }
+    // A machine file checked as a program: its swivel data too.
+    if swivel_data && selection.enables(invalid_swivel_data::RULE.code) {
+        found.extend(Machine::read(source, Reading::default()).diagnostics);
     }
 
     let index = LineIndex::new(source);
@@ -198,7 +239,55 @@ pub fn check_with(
         kept.extend(suppressions.unused(source, |code| selection.enables(code)));
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
-    kept
+    one_finding_per_cause(&mut kept, &model.labels);
+    let mut unresolved_calls = file.take_unresolved();
+    unresolved_calls.sort_unstable();
+    unresolved_calls.dedup();
+    Outcome {
+        diagnostics: kept,
+        unresolved_calls,
+    }
+}
+
+/// The swivels of the program solved on the machine: its CYCLE800 calls
+/// with constant arguments, and the CYCLE600 calls the walk evaluated.
+fn swivel_findings(model: &Model, analysis: Option<&Analysis>, on: &OnMachine) -> Vec<Diagnostic> {
+    let mut asked = swivels::cycle800_calls(model);
+    if let Some(analysis) = analysis {
+        asked.extend(analysis.calls.iter().filter_map(swivels::of_cycle600));
+    }
+    asked
+        .iter()
+        .flat_map(|asked| swivels::findings(asked, on))
+        .collect()
+}
+
+/// Whether a swivel data assignment (`$TC_CARR`, as the control writes it
+/// or in lower case) occurs in the bytes.
+fn mentions_swivel_data(bytes: &[u8]) -> bool {
+    memchr::memmem::find(bytes, b"TC_CARR").is_some()
+        || memchr::memmem::find(bytes, b"tc_carr").is_some()
+}
+
+/// Drops what another finding already says. Blocks after the program's
+/// end that run on to the file's end (N027) leave the last block without
+/// an end (N010): one cause, reported once, by N027, which points at the
+/// first of them. A label after N027's block starts code a jump may reach,
+/// whose missing end is N010's again.
+fn one_finding_per_cause(kept: &mut Vec<Diagnostic>, labels: &crate::semantic::labels::Labels) {
+    let after_end = crate::lint::rules::block_after_program_end::RULE.code;
+    let no_end = crate::lint::rules::missing_program_end::RULE.code;
+    let Some(first_after) = kept
+        .iter()
+        .rev()
+        .find(|d| d.code == after_end)
+        .map(|d| d.span.start)
+    else {
+        return;
+    };
+    kept.retain(|d| {
+        d.code != no_end || d.span.end <= first_after || labels.any_within(first_after..d.span.end)
+    });
 }
 
 /// Plain lines waiting to be given to the rules that watch them: a call per
@@ -235,9 +324,8 @@ impl PlainRun {
 /// the machine knows is information here (the rewrite can compute it on the
 /// control), not an error. When C619 is selected, each call the rewrite can
 /// replace offline says so, with the rewrite's own edits as its fix.
-fn cycle600_findings(model: &Model, settings: &Settings) -> Vec<Diagnostic> {
+fn cycle600_findings(model: &Model, analysis: &Analysis, settings: &Settings) -> Vec<Diagnostic> {
     let heads = settings.heads.as_ref();
-    let analysis = analyze(model, &settings.supplied, heads);
     let mut out: Vec<Diagnostic> = analysis
         .calls
         .iter()

@@ -26,6 +26,9 @@ pub struct FileContext<'a> {
     block_numbers: OnceCell<Vec<(u64, usize)>>,
     /// The program's model, complete once the line pass is over.
     model: OnceCell<Model<'a>>,
+    /// Subprograms called whose declaration was found nowhere, so that
+    /// their calls could not be checked.
+    unresolved: RefCell<Vec<String>>,
 }
 
 impl<'a> FileContext<'a> {
@@ -43,7 +46,18 @@ impl<'a> FileContext<'a> {
             wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
             model: OnceCell::new(),
+            unresolved: RefCell::default(),
         }
+    }
+
+    /// Notes a called subprogram whose declaration was found nowhere.
+    pub fn unresolved_call(&self, name: &str) {
+        self.unresolved.borrow_mut().push(name.to_string());
+    }
+
+    /// The subprograms noted by [`Self::unresolved_call`].
+    pub(crate) fn take_unresolved(&self) -> Vec<String> {
+        self.unresolved.take()
     }
 
     /// Gives the model the line pass built, before the rules finish.

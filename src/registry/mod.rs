@@ -21,9 +21,13 @@ pub mod cycle600_shares_block;
 pub mod cycle600_unknown_argument;
 pub mod cycle600_unknown_head;
 pub mod head_def_missing;
+pub mod hirth_rounding;
 pub mod invalid_swivel_data;
 pub mod runtime_name_collision;
+pub mod swivel_direction_outside_limits;
+pub mod swivel_unreachable;
 pub mod syntax;
+pub mod undefined_swivel_record;
 
 use crate::diagnostic::RuleInfo;
 
@@ -47,6 +51,10 @@ pub static ALL: &[&RuleInfo] = &[
     &cycle600_nested_too_deep::RULE,
     &cycle600_rewritable::RULE,
     &invalid_swivel_data::RULE,
+    &swivel_unreachable::RULE,
+    &swivel_direction_outside_limits::RULE,
+    &hirth_rounding::RULE,
+    &undefined_swivel_record::RULE,
     &syntax::UNCLOSED_STRING,
     &syntax::UNBALANCED_BRACKET,
     &syntax::INVALID_NUMBER,

@@ -31,6 +31,8 @@ pub(crate) fn call_kind(name: &str) -> CallKind {
 /// Commands and procedures of the control that do not write user variables.
 pub(crate) const BUILTINS: &[&str] = &[
     "STOPRE",
+    // The channel the machine data after it belong to, in `.INI` files.
+    "CHANDATA",
     "MSG",
     "SETAL",
     "RET",

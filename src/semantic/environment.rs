@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::Model;
-use crate::syntax::tree::{LineKind, StatementKind};
+use crate::syntax::tree::{ExprKind, LineKind, StatementKind};
 
 /// Names defined outside the program.
 #[derive(Clone, Debug, Default)]
@@ -27,6 +27,10 @@ pub struct Environment {
     /// many parameters their PROC declares. Shared: every program of a
     /// directory reaches the same ones.
     pub procedures: Arc<HashMap<String, usize>>,
+    /// Whether any of it was given (definition files, axis names, cycle
+    /// directories): without it, what a program takes from its machine
+    /// cannot be checked, and `check` says so once.
+    pub given: bool,
 }
 
 impl Environment {
@@ -68,6 +72,65 @@ impl Environment {
                 }
             }
         }
+        Ok(())
+    }
+}
+
+/// The machine data that name axes, and so the names a program may write
+/// as axes: MD10000 (machine axes), MD20060 (geometry axes), MD20080
+/// (channel axes).
+const AXIS_NAME_TABLES: [&str; 3] = [
+    "$MN_AXCONF_MACHAX_NAME_TAB",
+    "$MC_AXCONF_GEOAX_NAME_TAB",
+    "$MC_AXCONF_CHANAX_NAME_TAB",
+];
+
+impl Environment {
+    /// Learns the axis names of a machine data file (an `.INI` of the
+    /// control: `$MC_AXCONF_CHANAX_NAME_TAB[0]="X"`). Only the lines that
+    /// name `AXCONF_` are parsed, so the thousands of other machine data
+    /// of a setup file cost a byte search; a syntax error in one of them is
+    /// given back (nothing is learned from the file then).
+    pub fn read_machine_data(&mut self, source: &[u8]) -> Result<(), Vec<Diagnostic>> {
+        let upper = memchr::memmem::Finder::new(b"AXCONF_");
+        let lower = memchr::memmem::Finder::new(b"axconf_");
+        let mut parser = crate::syntax::LineParser::default();
+        let mut names = Vec::new();
+        let mut errors = Vec::new();
+        for raw in crate::syntax::lines::raw_lines(source) {
+            let text = raw.content.of(source);
+            if upper.find(text).is_none() && lower.find(text).is_none() {
+                continue;
+            }
+            let (line, error) = parser.parse_line(source, raw);
+            errors.extend(error);
+            let LineKind::Block(block) = &line.kind else {
+                continue;
+            };
+            for statement in &block.statements {
+                let StatementKind::Assign(assign) = &statement.kind else {
+                    continue;
+                };
+                let table = assign.target.name.upper(source);
+                if !AXIS_NAME_TABLES.contains(&table.as_str()) {
+                    continue;
+                }
+                if let ExprKind::String = assign.value.kind {
+                    let quoted = assign.value.span.of(source);
+                    let name = quoted
+                        .strip_prefix(b"\"")
+                        .and_then(|q| q.strip_suffix(b"\""))
+                        .unwrap_or(quoted);
+                    if !name.is_empty() {
+                        names.push(crate::syntax::tree::upper(name));
+                    }
+                }
+            }
+        }
+        if !errors.is_empty() {
+            return Err(errors);
+        }
+        self.axes.extend(names);
         Ok(())
     }
 }
@@ -115,6 +178,20 @@ mod tests {
         }
         assert!(!environment.defines("ZERO_X"));
         assert!(environment.read_definitions(b"DEF NCK REAL (\n").is_err());
+    }
+
+    #[test]
+    fn machine_data_give_the_axis_names() {
+        let mut environment = Environment::default();
+        let ini = b"CHANDATA(1)\n$MC_AXCONF_GEOAX_NAME_TAB[0]=\"X\"\n$MC_AXCONF_CHANAX_NAME_TAB[3]=\"b\"\n\
+$MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n$MN_AXCONF_LOGIC_MACHAX_TAB[0]=\"NC1_AX1\"\n$MA_IS_ROT_AX[AX4]=1\n$TC_DP1[1,1]=120\nM17\n";
+        environment.read_machine_data(ini).expect("valid");
+        let mut axes: Vec<&str> = environment.axes.iter().map(String::as_str).collect();
+        axes.sort_unstable();
+        assert_eq!(axes, ["B", "X", "X1"]);
+        assert!(environment
+            .read_machine_data(b"$MC_AXCONF_CHANAX_NAME_TAB[0]=(\n")
+            .is_err());
     }
 
     #[test]

@@ -49,6 +49,11 @@ impl Labels {
         });
     }
 
+    /// Whether a label stands within the bytes `range`.
+    pub fn any_within(&self, range: std::ops::Range<usize>) -> bool {
+        self.entries.iter().any(|e| range.contains(&e.start))
+    }
+
     /// Ready for look-ups.
     pub fn sorted(mut self) -> Self {
         self.entries.sort_unstable_by_key(|e| (e.hash, e.row));

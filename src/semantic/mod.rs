@@ -20,6 +20,7 @@ pub mod machine;
 pub(crate) mod modal;
 pub mod model;
 pub(crate) mod structure;
+pub mod swivels;
 pub mod value;
 pub mod walk;
 

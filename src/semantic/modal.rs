@@ -39,6 +39,44 @@ pub fn g_group(number: u32) -> Option<u8> {
     })
 }
 
+/// The G functions written as keywords, by group, as the Programming
+/// Manual Fundamentals lists them ("List of G functions"; groups 19 to 25
+/// as the 840D sl/840Di manual of 11/2006 gives them): a group's keywords
+/// exclude each other and its numbered functions.
+const KEYWORD_GROUPS: &[(u8, &[&str])] = &[
+    (
+        1,
+        &[
+            "CIP", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "CT", "INVCW", "INVCCW",
+        ],
+    ),
+    (19, &["BNAT", "BTAN", "BAUTO"]),
+    (20, &["ENAT", "ETAN", "EAUTO"]),
+    (21, &["BRISK", "SOFT", "DRIVE"]),
+    (
+        22,
+        &[
+            "CUT2D", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD",
+        ],
+    ),
+    (23, &["CDOF", "CDON", "CDOF2"]),
+    (24, &["FFWOF", "FFWON"]),
+    (25, &["ORIWKS", "ORIMKS"]),
+];
+
+/// Numbers the keywords take in [`keyword_g_group`]: above every G number.
+const KEYWORD_NUMBERS: u32 = 10_000;
+
+/// The group of a G function written as a keyword (upper case: `CIP`,
+/// `SOFT`), with a number that tells it from the group's other functions
+/// (and from every G number); `None` for other names.
+pub fn keyword_g_group(name: &str) -> Option<(u8, u32)> {
+    KEYWORD_GROUPS.iter().find_map(|&(group, names)| {
+        let at = names.iter().position(|n| *n == name)?;
+        Some((group, KEYWORD_NUMBERS + at as u32))
+    })
+}
+
 /// The groups whose G function shapes the block's syntax (motions, dwell and
 /// the non-modal special motions, programmable frames): one of them rules how
 /// the block's other addresses are read.

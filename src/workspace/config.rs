@@ -32,7 +32,8 @@ pub struct Config {
     /// which a program may use where a variable could stand.
     pub axes: Option<Vec<String>>,
     /// Definition files (GUD, macros) whose globals and macros programs use,
-    /// relative to the configuration file.
+    /// and machine data (`.INI`) whose axis names they use; relative to the
+    /// configuration file.
     pub definitions: Option<Vec<PathBuf>>,
     /// The control's cycle directories (CUS, CMA, CST as copied from the
     /// machine), searched in this order after the program's own directory
@@ -41,6 +42,9 @@ pub struct Config {
     /// The machine's swivel data records (`$TC_CARRn[m]=value`), relative to
     /// the configuration file.
     pub machine: Option<PathBuf>,
+    /// The orientation error (degrees) a Hirth grid's rounding may make
+    /// before `check` reports it (K004).
+    pub hirth_tolerance: Option<f64>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -113,7 +117,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 14] = [
+const KEYS: [&str; 15] = [
     "select",
     "ignore",
     "severity-min",
@@ -128,6 +132,7 @@ const KEYS: [&str; 14] = [
     "definitions",
     "cycles",
     "machine",
+    "hirth-tolerance",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

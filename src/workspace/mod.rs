@@ -24,6 +24,8 @@ pub use error::SettingsError;
 use crate::diagnostic::Severity;
 use crate::emit::cycle600::{Form, Options};
 use crate::lint::{self, Selection, Settings};
+use crate::semantic::machine::{Machine, Reading};
+use crate::semantic::swivels::{self, OnMachine};
 use crate::semantic::{Environment, Heads, Supplied};
 
 /// What the caller sets over `sinuprep.toml`; each field left empty falls
@@ -47,6 +49,10 @@ pub struct Given {
     pub definitions: Vec<PathBuf>,
     /// Cycle directories, searched after the program's own directory.
     pub cycles: Vec<PathBuf>,
+    /// The machine's swivel data records, for `check`'s swivel rules.
+    pub machine: Option<PathBuf>,
+    /// Whether the records' fine offsets apply (SD42974).
+    pub fine_offsets: bool,
     pub emit: Option<Form>,
     pub precision: Option<u8>,
     pub emit_runtime: bool,
@@ -71,6 +77,7 @@ pub struct Workspace {
     given: Given,
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
     directories: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
+    machines: Mutex<HashMap<PathBuf, Arc<OnMachine>>>,
 }
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
@@ -114,6 +121,13 @@ impl Workspace {
         };
         resolved.settings.environment = self.environment(config)?;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
+        resolved.settings.machine = self.machine(config)?;
+        let listed = |list: &Option<Vec<_>>| list.as_ref().is_some_and(|l: &Vec<_>| !l.is_empty());
+        resolved.settings.environment.given = !given.definitions.is_empty()
+            || !given.cycles.is_empty()
+            || listed(&config.definitions)
+            || listed(&config.cycles)
+            || config.axes.as_ref().is_some_and(|a| !a.is_empty());
         Ok(resolved)
     }
 
@@ -155,20 +169,7 @@ impl Workspace {
                 Some(path) => Some((path.clone(), None)),
                 None => file.as_ref().map(|p| (config.resolve(p), Some(key))),
             };
-        let read = |path: &Path, key: Option<&'static str>| {
-            std::fs::read(path).map_err(|source| match key {
-                Some(key) => SettingsError::ReadSetting {
-                    path: path.to_path_buf(),
-                    key,
-                    config: config.describe(),
-                    source,
-                },
-                None => SettingsError::Read {
-                    path: path.to_path_buf(),
-                    source,
-                },
-            })
-        };
+        let read = |path: &Path, key: Option<&'static str>| read_setting(config, path, key);
         let mut supplied = Supplied::default();
         if let Some((path, key)) = &setting(&given.values, &config.values, "values") {
             values::read_file(path, &read(path, *key)?, &mut supplied)?;
@@ -228,8 +229,41 @@ impl Workspace {
                 environment
             }
         };
-        environment.axes = Environment::with_axes(config.axes.iter().flatten()).axes;
+        let listed = Environment::with_axes(config.axes.iter().flatten()).axes;
+        environment.axes.extend(listed);
         Ok(environment)
+    }
+
+    /// The machine given (or else sinuprep.toml's), read once a run.
+    fn machine(&self, config: &Config) -> Result<Option<Arc<OnMachine>>, SettingsError> {
+        let (path, key) = match (&self.given.machine, &config.machine) {
+            (Some(path), _) => (path.clone(), None),
+            (None, Some(path)) => (config.resolve(path), Some("machine")),
+            (None, None) => return Ok(None),
+        };
+        if let Some(known) = self
+            .machines
+            .lock()
+            .ok()
+            .and_then(|m| m.get(&path).cloned())
+        {
+            return Ok(Some(known));
+        }
+        let source = read_setting(config, &path, key)?;
+        let reading = Reading {
+            fine_offsets: self.given.fine_offsets,
+        };
+        let on = Arc::new(OnMachine {
+            name: path.display().to_string(),
+            machine: Machine::read(&source, reading),
+            hirth_tolerance_deg: config
+                .hirth_tolerance
+                .unwrap_or(swivels::HIRTH_TOLERANCE_DEG),
+        });
+        if let Ok(mut machines) = self.machines.lock() {
+            machines.insert(path, on.clone());
+        }
+        Ok(Some(on))
     }
 
     /// The subprograms a call of `program` may reach, as the control
@@ -330,7 +364,17 @@ fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
             path: path.clone(),
             source,
         })?;
-        if let Err(errors) = environment.read_definitions(&bytes) {
+        // Machine data (`.INI`) give axis names; GUD and macro files give
+        // variables and macros.
+        let is_machine_data = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("ini"));
+        let read = if is_machine_data {
+            environment.read_machine_data(&bytes)
+        } else {
+            environment.read_definitions(&bytes)
+        };
+        if let Err(errors) = read {
             let Some(first) = errors.first() else {
                 continue;
             };
@@ -344,6 +388,27 @@ fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
         }
     }
     Ok(environment)
+}
+
+/// The file at `path`, given as an option or (`key`) in sinuprep.toml: an
+/// error names where it was given.
+fn read_setting(
+    config: &Config,
+    path: &Path,
+    key: Option<&'static str>,
+) -> Result<Vec<u8>, SettingsError> {
+    std::fs::read(path).map_err(|source| match key {
+        Some(key) => SettingsError::ReadSetting {
+            path: path.to_path_buf(),
+            key,
+            config: config.describe(),
+            source,
+        },
+        None => SettingsError::Read {
+            path: path.to_path_buf(),
+            source,
+        },
+    })
 }
 
 /// `list` as rule codes: trimmed, upper case, each naming a rule or a family.

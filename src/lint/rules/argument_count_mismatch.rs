@@ -5,6 +5,7 @@ use std::collections::HashMap;
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::*;
+use crate::semantic::calls::{call_kind, CallKind};
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 
@@ -75,19 +76,24 @@ impl Check for Checker {
         let procedures = &file.environment.procedures;
         for (name, count, span) in &self.calls {
             // The program's own declarations first, then the cycle directories'.
-            if let Some(&parameters) = self.declared.get(name).or_else(|| procedures.get(name)) {
-                if *count > parameters {
-                    out.push(
-                        RULE.at(*span)
-                            .message(format!(
-                                "`{name}` takes {parameters} argument(s), this call passes {count}"
-                            ))
-                            .label("too many arguments")
-                            .help(format!(
-                                "pass at most {parameters} argument(s), or extend the declaration"
-                            )),
-                    );
+            let Some(&parameters) = self.declared.get(name).or_else(|| procedures.get(name)) else {
+                // The control's commands and cycles are not looked for.
+                if call_kind(name) == CallKind::Subprogram {
+                    file.unresolved_call(name);
                 }
+                continue;
+            };
+            if *count > parameters {
+                out.push(
+                    RULE.at(*span)
+                        .message(format!(
+                            "`{name}` takes {parameters} argument(s), this call passes {count}"
+                        ))
+                        .label("too many arguments")
+                        .help(format!(
+                            "pass at most {parameters} argument(s), or extend the declaration"
+                        )),
+                );
             }
         }
     }

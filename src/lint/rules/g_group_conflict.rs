@@ -2,11 +2,12 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{BlockWords, FileContext};
-use crate::lint::rules::support::{both, group_conflicts};
+use crate::lint::rules::support::{group_conflicts, upper};
 use crate::semantic::addresses::Address;
-use crate::semantic::modal::{g_group, is_syntax_defining};
+use crate::semantic::modal::{g_group, is_syntax_defining, keyword_g_group};
+use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
+use crate::syntax::tree::{Block, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N023",
@@ -14,8 +15,10 @@ pub static RULE: RuleInfo = RuleInfo {
     severity: Severity::Error,
     docs: r#"## What it does
 Finds two different G functions of one G group in a block (`G0 G1`, `G90 G91`, `G17 G18`), by the
-groups of the Programming Manual's list of G functions. G functions written as numbers are
-checked; the same function twice is not reported.
+groups of the Programming Manual's list of G functions: G functions written as numbers, and the
+keywords of groups 1 (`CIP`, `ASPLINE`, `BSPLINE`, `CSPLINE`, `POLY`, `CT`, `INVCW`, `INVCCW`) and
+19 to 25 (spline ends, `BRISK`/`SOFT`/`DRIVE`, `CUT2D`...`CUT3DCCD`, `CDON`/`CDOF`, `FFWON`/`FFWOF`,
+`ORIWKS`/`ORIMKS`). The same function twice is not reported.
 
 ## Why it matters
 The functions of a group exclude each other (Siemens, Programming Manual Fundamentals, "List of G
@@ -27,6 +30,7 @@ makes it ignore all but the last (MD11410), when the first one is silently lost.
 ```
 N10 G0 G1 X10 F500
 N20 G90 G91 X5
+N30 SOFT BRISK
 ```
 
 ## Fix
@@ -34,6 +38,13 @@ Keep the G function that was meant."#,
 };
 
 pub struct Checker;
+
+/// A G function of the block: a G word (`G1`) or a keyword (`CIP`, `SOFT`).
+struct Function {
+    span: Span,
+    group: u8,
+    number: u32,
+}
 
 impl BlockWords for Checker {
     fn may_find(facts: &PlainFacts) -> bool {
@@ -43,13 +54,41 @@ impl BlockWords for Checker {
     /// One finding per group, from its first function to the first other one.
     fn check(
         file: &FileContext,
-        _block: Option<&Block>,
+        block: Option<&Block>,
         addresses: &[Address],
         out: &mut Vec<Diagnostic>,
     ) {
         let source = file.source;
-        for (group, first, second) in group_conflicts(addresses, |a| grouped(source, a)) {
-            let (first_text, second_text) = both(source, first, second);
+        let mut functions: Vec<Function> = addresses
+            .iter()
+            .filter_map(|a| {
+                let (group, number) = grouped(source, a)?;
+                Some(Function {
+                    span: a.span,
+                    group,
+                    number,
+                })
+            })
+            .collect();
+        // Keywords stand only in parsed blocks; a plain line has none.
+        if let Some(block) = block {
+            let keywords = block.statements.iter().filter_map(|s| match &s.kind {
+                StatementKind::Command(name) => {
+                    let (group, number) = keyword_g_group(&upper(source, name.span))?;
+                    Some(Function {
+                        span: name.span,
+                        group,
+                        number,
+                    })
+                }
+                _ => None,
+            });
+            functions.extend(keywords);
+            functions.sort_by_key(|f| f.span.start);
+        }
+        for (group, first, second) in group_conflicts(&functions, |f| Some((f.group, f.number))) {
+            let text = |f: &Function| String::from_utf8_lossy(f.span.of(source)).into_owned();
+            let (first_text, second_text) = (text(first), text(second));
             let consequence = if is_syntax_defining(group) {
                 "the control refuses the block"
             } else {

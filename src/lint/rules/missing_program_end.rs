@@ -17,7 +17,8 @@ Blocks after the end that jumps reach often end with a jump back (`GOTOB LOOP`).
 Programming Manual allows M2, M17 or M30 as the last block), and a subprogram with M30 or M2.
 Files that are not programs (`.DEF` definition files, `.INI` setup data) are not checked. When
 the last block has a syntax error, the finding stands at that block, unless an end command is
-written in it.
+written in it. Blocks after an end that run on to the file's end are N027's finding, reported
+once there, not again here.
 
 ## Why it matters
 Without an end, a main program stops with an alarm at its last block instead of ending, and a

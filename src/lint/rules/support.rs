@@ -99,14 +99,14 @@ pub fn moves_a_named_axis(file: &FileContext, block: &Block) -> bool {
 /// Functions that exclude each other in one block: for each group (as
 /// `grouped` gives a word's group and number), its first function and the
 /// first later one with another number. Linear in the block's words.
-pub fn group_conflicts<G: Copy + Eq + std::hash::Hash>(
-    addresses: &[Address],
-    grouped: impl Fn(&Address) -> Option<(G, u32)>,
-) -> Vec<(G, &Address, &Address)> {
+pub fn group_conflicts<T, G: Copy + Eq + std::hash::Hash>(
+    words: &[T],
+    grouped: impl Fn(&T) -> Option<(G, u32)>,
+) -> Vec<(G, &T, &T)> {
     // group -> its first function, and whether a conflict was found.
-    let mut first_of: std::collections::HashMap<G, (&Address, u32, bool)> = Default::default();
+    let mut first_of: std::collections::HashMap<G, (&T, u32, bool)> = Default::default();
     let mut conflicts = Vec::new();
-    for second in addresses {
+    for second in words {
         let Some((group, number)) = grouped(second) else {
             continue;
         };

@@ -30,9 +30,12 @@ N10 Z=IC(LAYER_HIGHT)   ; typo
 Declare the variable with DEF (or correct its spelling). Names of R parameters, system variables
 (`$...`), cycle data (`_...`), one-letter addresses, global R parameters (`RG1`), the
 orientation names of `PO[...]` (`PHI`, `PSI`, `THT`, `XH`, `YH`, `ZH`), the machine's axis names
-(`axes = ["XC", "AX1"]` in sinuprep.toml), the globals and macros of the definition files given
-(`--definitions MGUD.DEF`, `definitions = [...]` in sinuprep.toml) and a bare name given to an AXIS variable
-(`DEF AXIS _AX` then `_AX=AX1`) are not checked. A name defined before it
+(`axes = ["XC", "AX1"]` in sinuprep.toml, or the `$MC_AXCONF_CHANAX_NAME_TAB`, `$MC_AXCONF_GEOAX_NAME_TAB`
+and `$MN_AXCONF_MACHAX_NAME_TAB` lines of a machine data `.INI` given as a definition file), the
+globals and macros of the definition files given (`--definitions MGUD.DEF`, `definitions =
+[...]` in sinuprep.toml), a bare name given to an AXIS variable
+(`DEF AXIS _AX` then `_AX=AX1`) and a machine axis by its number as the index of a system variable
+(`$MA_IS_ROT_AX[AX4]`) are not checked. A name defined before it
 within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
 unsafe fix (`check --fix --unsafe-fixes`)."#,
 };
@@ -94,6 +97,38 @@ fn axis_value(
     }
 }
 
+/// The bare `AX<n>` indices of system variables (`$MA_IS_ROT_AX[AX4]`,
+/// `$AA_IM[AX1]`): the machine axis by its number, as machine data and
+/// system variables are indexed, not a read.
+fn axis_indices<'l>(
+    source: &[u8],
+    statement: &'l Statement,
+    reads: impl Iterator<Item = &'l crate::syntax::tree::Variable>,
+) -> Vec<Span> {
+    let target = match &statement.kind {
+        StatementKind::Assign(assign) => Some(&assign.target),
+        _ => None,
+    };
+    let mut out = Vec::new();
+    for variable in reads.chain(target) {
+        if !variable.name.text(source).starts_with(b"$") {
+            continue;
+        }
+        for index in &variable.indices {
+            if let ExprKind::Variable(v) = &index.kind {
+                let name = v.name.text(source);
+                let is_axis_number = name.len() > 2
+                    && name[..2].eq_ignore_ascii_case(b"AX")
+                    && name[2..].iter().all(u8::is_ascii_digit);
+                if v.indices.is_empty() && is_axis_number {
+                    out.push(v.name.span);
+                }
+            }
+        }
+    }
+    out
+}
+
 impl Check for Checker {
     fn line(
         &mut self,
@@ -106,7 +141,8 @@ impl Check for Checker {
             return;
         };
         for (index, statement) in block.statements.iter().enumerate() {
-            let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
+            let mut axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
+            axes.extend(axis_indices(file.source, statement, line.reads(index)));
             for variable in line.reads(index) {
                 if axes.contains(&variable.name.span) {
                     continue;

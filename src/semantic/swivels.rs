@@ -1,0 +1,248 @@
+//! The swivels of a program on its machine: each CYCLE800 whose arguments
+//! are constants, and each CYCLE600 evaluated offline (the CYCLE800 its
+//! rewrite writes), solved on the swivel data record it names. What the
+//! control would find out at run time (an orientation out of reach, the
+//! `_DIR` solution beyond the limits, a Hirth grid far from the angle, a
+//! record it does not hold) is found here, before the program runs.
+
+use crate::diagnostic::Diagnostic;
+use crate::kinematics::{solve, Direction, Record, Request, Swivel};
+use crate::registry::{
+    hirth_rounding, swivel_direction_outside_limits, swivel_unreachable, undefined_swivel_record,
+};
+use crate::rotation::{matrix, Kind, Sequence};
+use crate::semantic::eval::{evaluate, Lookup};
+use crate::semantic::machine::Machine;
+use crate::semantic::value::{Unknown, Value};
+use crate::semantic::walk::CallSite;
+use crate::span::Span;
+use crate::syntax::tree::{Call, LineKind, StatementKind};
+use nalgebra::Rotation3;
+
+/// The machine `check` solves the swivels on.
+#[derive(Debug)]
+pub struct OnMachine {
+    /// The file it was read from, for messages.
+    pub name: String,
+    pub machine: Machine,
+    /// The orientation error (degrees) Hirth rounding may make unreported.
+    pub hirth_tolerance_deg: f64,
+}
+
+/// The default of `hirth-tolerance`: a hundredth of a degree tilts the
+/// tool by 0.17 mm a metre out, about what a probe resolves.
+pub const HIRTH_TOLERANCE_DEG: f64 = 0.01;
+
+/// One swivel asked for: the record by the name the call gives, where the
+/// frame is to turn, which solution.
+#[derive(Clone, Debug)]
+pub struct Asked {
+    /// The call, where findings point.
+    pub span: Span,
+    pub record: String,
+    pub rotation: Rotation3<f64>,
+    pub direction: Direction,
+}
+
+/// The swivel of a CYCLE600 call evaluated offline: its target rotation as
+/// a new plane (an additive call turns from a frame only the control
+/// knows, and a results-only call does not turn).
+pub fn of_cycle600(site: &CallSite) -> Option<Asked> {
+    let evaluation = site.evaluation.as_ref()?;
+    let p = &evaluation.parameters;
+    if p.recalculate_only || evaluation.additive_on_control {
+        return None;
+    }
+    Some(Asked {
+        span: site.statement,
+        record: p.head.clone(),
+        rotation: evaluation.target,
+        direction: if p.inverse {
+            Direction::Plus
+        } else {
+            Direction::Minus
+        },
+    })
+}
+
+/// The swivel of a CYCLE800 call whose arguments are constants: a new
+/// plane (`_ST` ending in 0) axis by axis (`_MODE` below 64) to one side
+/// (`_DIR` -1 or 1). Other calls are the control's to work out.
+pub fn of_cycle800(source: &[u8], call: &Call) -> Option<Asked> {
+    // _FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR;
+    // a parameter left out is 0 (an empty string for _TC).
+    let argument = |index: usize| -> Option<Value> {
+        match call
+            .arguments
+            .items
+            .get(index)
+            .and_then(|a| a.value.as_ref())
+        {
+            None => Some(Value::Number(0.0)),
+            Some(expr) => evaluate(source, expr, &Constants).ok(),
+        }
+    };
+    let number = |index: usize| match argument(index)? {
+        Value::Number(n) => Some(n),
+        Value::Text(_) => None,
+    };
+    let record = match argument(1)? {
+        Value::Text(name) if !name.trim().is_empty() => name,
+        _ => return None,
+    };
+    let new_plane = number(2)?.rem_euclid(10.0) == 0.0;
+    let mode = number(3)?;
+    if !new_plane || mode.fract() != 0.0 || !(0.0..64.0).contains(&mode) {
+        return None;
+    }
+    let sequence = Sequence::from_code(mode as i64, Kind::Intrinsic).ok()?;
+    let direction = match number(13)? {
+        -1.0 => Direction::Minus,
+        1.0 => Direction::Plus,
+        _ => return None,
+    };
+    let angles = [number(7)?, number(8)?, number(9)?];
+    Some(Asked {
+        span: call.name.span.to(call.arguments.span),
+        record,
+        rotation: matrix(sequence, angles),
+        direction,
+    })
+}
+
+/// Constants only: a variable's value is the walk's business.
+struct Constants;
+
+impl Lookup for Constants {
+    fn variable(&self, key: &str) -> Result<Value, Unknown> {
+        Err(Unknown::Invalid(format!("`{key}` is a variable")))
+    }
+}
+
+/// `value` with at most `places` decimals, no trailing zeros.
+fn decimals(value: f64, places: usize) -> String {
+    let text = format!("{value:.places$}");
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &text
+    };
+    match text {
+        "-0" => "0".to_string(),
+        text => text.to_string(),
+    }
+}
+
+/// The CYCLE800 calls of a program with constant arguments, in order.
+pub fn cycle800_calls(model: &crate::semantic::Model) -> Vec<Asked> {
+    let source = model.source;
+    let mut out = Vec::new();
+    for (_, line) in model.lines.other_lines() {
+        let LineKind::Block(block) = &line.kind else {
+            continue;
+        };
+        for statement in &block.statements {
+            if let StatementKind::Call(call) = &statement.kind {
+                if call.name.is(source, "CYCLE800") {
+                    out.extend(of_cycle800(source, call));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// What the control would report of `asked` on `on`, as findings.
+pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
+    let Some(record) = on.machine.record(&asked.record) else {
+        let known: Vec<&str> = on.machine.usable().map(|r| r.name.as_str()).collect();
+        return vec![undefined_swivel_record::RULE
+            .at(asked.span)
+            .message(format!(
+                "{} defines no swivel data record `{}`: the control stops with an alarm",
+                on.name, asked.record
+            ))
+            .label("no such record")
+            .help(if known.is_empty() {
+                "the machine file holds no usable record".to_string()
+            } else {
+                format!("its records are {}", known.join(", "))
+            })];
+    };
+    let request = Request {
+        rotation: asked.rotation,
+        direction: asked.direction,
+        current: [0.0; 2],
+    };
+    // A record whose data cannot describe a machine is K001's, where the
+    // machine file is checked.
+    let Ok(swivel) = solve(record, &request) else {
+        return Vec::new();
+    };
+    judge(asked, record, &swivel, on.hirth_tolerance_deg)
+}
+
+fn judge(asked: &Asked, record: &Record, swivel: &Swivel, tolerance: f64) -> Vec<Diagnostic> {
+    let name = &record.name;
+    let positions = |index: usize| {
+        let solution = &swivel.solutions[index];
+        (0..record.axis_count())
+            .map(|i| {
+                let value = decimals(solution.positions[i], 3);
+                format!("{}={value}", record.axes[i].label(i))
+            })
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let Some(chosen) = swivel.chosen else {
+        let (message, label) = if swivel.solutions.is_empty() {
+            (
+                format!("record `{name}` cannot reach this orientation: no position of its rotary axes turns the tool there"),
+                "out of reach",
+            )
+        } else {
+            let all: Vec<String> = (0..swivel.solutions.len()).map(positions).collect();
+            (
+                format!(
+                    "record `{name}` reaches this orientation only outside its axis limits ({}): the control stops with an alarm",
+                    all.join("; ")
+                ),
+                "outside the axis limits",
+            )
+        };
+        return vec![swivel_unreachable::RULE
+            .at(asked.span)
+            .message(message)
+            .label(label)
+            .help("swivel to an orientation the head or table can take, or use another record")];
+    };
+    let mut out = Vec::new();
+    if let Some(preferred) = swivel.preferred.filter(|&p| p != chosen) {
+        out.push(
+            swivel_direction_outside_limits::RULE
+                .at(asked.span)
+                .message(format!(
+                    "the solution `_DIR` asks for ({}) lies outside the axis limits of `{name}`: the control takes the other one ({})",
+                    positions(preferred),
+                    positions(chosen)
+                ))
+                .label("the other solution is taken")
+                .help("give `_DIR` the other sign if that solution is the one meant, so that the program says what the machine does"),
+        );
+    }
+    let error = swivel.solutions[chosen].hirth_error_deg;
+    if error > tolerance {
+        out.push(
+            hirth_rounding::RULE
+                .at(asked.span)
+                .message(format!(
+                    "the Hirth grid of `{name}` turns this swivel to {}: the tool direction is off by {}°",
+                    positions(chosen),
+                    decimals(error, 4)
+                ))
+                .label(format!("{}° from the orientation asked", decimals(error, 4)))
+                .help("swivel to an orientation on the grid, or raise `hirth-tolerance` in sinuprep.toml if the error is acceptable"),
+        );
+    }
+    out
+}
