@@ -174,6 +174,7 @@ fn lint(
     let walk = crate::semantic::mentions_cycle600(source);
     let mut model = ModelBuilder::new(source, walk);
     let mut swivel_data = false;
+    let swivel_finder = SwivelData::finder();
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) => {
@@ -195,7 +196,7 @@ fn lint(
             Scanned::Other(raw) => raw,
         };
         // Swivel data are assignments to `$` variables: never plain lines.
-        swivel_data = swivel_data || mentions_swivel_data(raw.content.of(source));
+        swivel_data = swivel_data || swivel_finder.mentioned(raw.content.of(source));
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -262,11 +263,25 @@ fn swivel_findings(model: &Model, analysis: Option<&Analysis>, on: &OnMachine) -
         .collect()
 }
 
-/// Whether a swivel data assignment (`$TC_CARR`, as the control writes it
-/// or in lower case) occurs in the bytes.
-fn mentions_swivel_data(bytes: &[u8]) -> bool {
-    memchr::memmem::find(bytes, b"TC_CARR").is_some()
-        || memchr::memmem::find(bytes, b"tc_carr").is_some()
+/// Finds swivel data assignments (`$TC_CARR`, as the control writes it or
+/// in lower case) in lines; built once a file.
+struct SwivelData {
+    upper: memchr::memmem::Finder<'static>,
+    lower: memchr::memmem::Finder<'static>,
+}
+
+impl SwivelData {
+    fn finder() -> Self {
+        Self {
+            upper: memchr::memmem::Finder::new(b"$TC_CARR"),
+            lower: memchr::memmem::Finder::new(b"$tc_carr"),
+        }
+    }
+
+    fn mentioned(&self, line: &[u8]) -> bool {
+        memchr::memchr(b'$', line).is_some()
+            && (self.upper.find(line).is_some() || self.lower.find(line).is_some())
+    }
 }
 
 /// Drops what another finding already says. Blocks after the program's

@@ -67,12 +67,18 @@ const KEYWORD_GROUPS: &[(u8, &[&str])] = &[
 /// Numbers the keywords take in [`keyword_g_group`]: above every G number.
 const KEYWORD_NUMBERS: u32 = 10_000;
 
-/// The group of a G function written as a keyword (upper case: `CIP`,
-/// `SOFT`), with a number that tells it from the group's other functions
+/// The group of a G function written as a keyword (any case: `CIP`,
+/// `soft`), with a number that tells it from the group's other functions
 /// (and from every G number); `None` for other names.
-pub fn keyword_g_group(name: &str) -> Option<(u8, u32)> {
+pub fn keyword_g_group(name: &[u8]) -> Option<(u8, u32)> {
+    // Every keyword has two to eight letters: most names are not looked up.
+    if !(2..=8).contains(&name.len()) {
+        return None;
+    }
     KEYWORD_GROUPS.iter().find_map(|&(group, names)| {
-        let at = names.iter().position(|n| *n == name)?;
+        let at = names
+            .iter()
+            .position(|n| n.as_bytes().eq_ignore_ascii_case(name))?;
         Some((group, KEYWORD_NUMBERS + at as u32))
     })
 }

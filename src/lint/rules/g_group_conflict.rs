@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{BlockWords, FileContext};
-use crate::lint::rules::support::{group_conflicts, upper};
+use crate::lint::rules::support::group_conflicts;
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::{g_group, is_syntax_defining, keyword_g_group};
 use crate::span::Span;
@@ -72,9 +72,10 @@ impl BlockWords for Checker {
             .collect();
         // Keywords stand only in parsed blocks; a plain line has none.
         if let Some(block) = block {
-            let keywords = block.statements.iter().filter_map(|s| match &s.kind {
+            let before = functions.len();
+            functions.extend(block.statements.iter().filter_map(|s| match &s.kind {
                 StatementKind::Command(name) => {
-                    let (group, number) = keyword_g_group(&upper(source, name.span))?;
+                    let (group, number) = keyword_g_group(name.text(source))?;
                     Some(Function {
                         span: name.span,
                         group,
@@ -82,9 +83,13 @@ impl BlockWords for Checker {
                     })
                 }
                 _ => None,
-            });
-            functions.extend(keywords);
-            functions.sort_by_key(|f| f.span.start);
+            }));
+            if functions.len() > before {
+                functions.sort_by_key(|f| f.span.start);
+            }
+        }
+        if functions.len() < 2 {
+            return;
         }
         for (group, first, second) in group_conflicts(&functions, |f| Some((f.group, f.number))) {
             let text = |f: &Function| String::from_utf8_lossy(f.span.of(source)).into_owned();
