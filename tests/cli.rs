@@ -567,7 +567,7 @@ fn a_folder_without_programs_is_an_error_unless_allowed() {
 }
 
 #[test]
-fn globals_and_macros_of_definition_files_are_defined() {
+fn globals_macros_and_axes_of_definition_files_are_defined() {
     let dir = scratch("definitions");
     std::fs::write(
         dir.join("MGUD.DEF"),
@@ -575,21 +575,32 @@ fn globals_and_macros_of_definition_files_are_defined() {
     )
     .expect("write");
     std::fs::write(dir.join("SMAC.DEF"), "DEFINE SAFE_Z AS 250\n").expect("write");
+    // Machine data: the axis names of MD20080 (only those lines are read).
+    std::fs::write(
+        dir.join("CH1_TEA.INI"),
+        "CHANDATA(1)\n$MC_AXCONF_CHANAX_NAME_TAB[0]=\"XC\"\n$MC_AXCONF_CHANAX_NAME_TAB[1]=\"ZC\"\n$MC_CHAN_NAME=\"CHAN1\"\nM17\n",
+    )
+    .expect("write");
     let program = dir.join("PART.MPF");
-    std::fs::write(&program, "N10 X=ZERO_X+PART_COUNT Z=SAFE_Z\nN20 M30\n").expect("write");
+    std::fs::write(
+        &program,
+        "N10 X=ZERO_X+PART_COUNT Z=SAFE_Z\nN20 G0 POS[ZC]=1 FA[XC]=100 X=TABLE\nN30 M30\n",
+    )
+    .expect("write");
     let name = program.to_str().expect("utf-8");
     let args = ["check", "--format", "short", "--select", "N005", name];
     let output = run(&args, b"");
     assert_exit(&output, 0);
     assert_eq!(
         stdout(&output).matches("N005").count(),
-        3,
+        6,
         "{}",
         stdout(&output)
     );
+    // The files' axis names add to sinuprep.toml's.
     std::fs::write(
         dir.join("sinuprep.toml"),
-        "definitions = [\"MGUD.DEF\", \"SMAC.DEF\"]\n",
+        "definitions = [\"MGUD.DEF\", \"SMAC.DEF\", \"CH1_TEA.INI\"]\naxes = [\"TABLE\"]\n",
     )
     .expect("toml");
     let output = run(&args, b"");
@@ -604,37 +615,6 @@ fn globals_and_macros_of_definition_files_are_defined() {
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
-    let _ = std::fs::remove_dir_all(&dir);
-}
-
-/// The axis names of the machine data: an `.INI` given as a definition
-/// file, beside sinuprep.toml's `axes`.
-#[test]
-fn axis_names_of_machine_data_are_defined() {
-    let dir = scratch("machine-data");
-    std::fs::write(
-        dir.join("CH1_TEA.INI"),
-        "CHANDATA(1)\n$MC_AXCONF_CHANAX_NAME_TAB[0]=\"XC\"\n$MC_AXCONF_CHANAX_NAME_TAB[1]=\"ZC\"\n$MC_CHAN_NAME=\"CHAN1\"\nM17\n",
-    )
-    .expect("write");
-    let program = dir.join("PART.MPF");
-    std::fs::write(&program, "N10 G0 POS[ZC]=1 FA[XC]=100 X=TABLE\nN20 M30\n").expect("write");
-    let name = program.to_str().expect("utf-8");
-    let args = ["check", "--format", "short", "--select", "N005", name];
-    let output = run(&args, b"");
-    assert_eq!(
-        stdout(&output).matches("N005").count(),
-        3,
-        "{}",
-        stdout(&output)
-    );
-    std::fs::write(
-        dir.join("sinuprep.toml"),
-        "definitions = [\"CH1_TEA.INI\"]\naxes = [\"TABLE\"]\n",
-    )
-    .expect("toml");
-    let output = run(&args, b"");
-    assert!(!stdout(&output).contains("N005"), "{}", stdout(&output));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -936,4 +916,33 @@ fn eval_shows_the_axis_positions_of_each_swivel() {
     assert_eq!(axes["record"], "UFK600");
     assert_eq!(axes["solutions"].as_array().map(Vec::len), Some(2));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Completions and the man page come from the clap definition: every
+/// command and option is in them.
+#[test]
+fn completions_and_the_man_page_name_every_command() {
+    for shell in ["bash", "zsh", "fish", "powershell", "elvish"] {
+        let output = run(&["completions", shell], b"");
+        assert_exit(&output, 0);
+        let script = stdout(&output);
+        for name in [
+            "check",
+            "rewrite",
+            "axes",
+            "machine",
+            "format",
+            "fine-offsets",
+        ] {
+            assert!(script.contains(name), "{shell} lacks {name}");
+        }
+    }
+    let output = run(&["manpage"], b"");
+    assert_exit(&output, 0);
+    let page = stdout(&output);
+    assert!(page.contains(".TH sinuprep 1"), "{page}");
+    for command in ["check", "rewrite", "eval", "rule", "convert", "axes"] {
+        assert!(page.contains(command), "the man page lacks {command}");
+    }
+    assert_exit(&run(&["completions", "tcsh"], b""), 2);
 }

@@ -434,3 +434,20 @@ fn blocks_after_the_end_are_reported_once() {
     );
     assert_eq!(codes("N10 G1 X10 F100\nN20 G0 Z100\n"), ["N010"]);
 }
+
+/// `docs/rules.md` is the rules' own documentation: regenerate it with
+/// `SINUPREP_WRITE_DOCS=1 cargo test --test lint the_rule_reference` after
+/// changing a rule.
+#[test]
+fn the_rule_reference_is_the_rules_documentation() {
+    let path = support::repo().join("docs/rules.md");
+    let made = lint::reference::reference();
+    if std::env::var_os("SINUPREP_WRITE_DOCS").is_some() {
+        std::fs::write(&path, &made).expect("docs/rules.md");
+    }
+    let written = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        written == made,
+        "docs/rules.md is stale: run SINUPREP_WRITE_DOCS=1 cargo test --test lint the_rule_reference"
+    );
+}

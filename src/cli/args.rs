@@ -43,6 +43,16 @@ pub enum Command {
     /// in the frame and the zero-point shift.
     #[command(allow_negative_numbers = true)]
     Axes(AxesArgs),
+    /// Print the completion script of a shell (`sinuprep completions bash >
+    /// /usr/share/bash-completion/completions/sinuprep`).
+    Completions(CompletionsArgs),
+    /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`).
+    Manpage,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct CompletionsArgs {
+    pub shell: clap_complete::Shell,
 }
 
 #[derive(Debug, clap::Args)]
@@ -164,7 +174,7 @@ pub enum Format {
     Human,
     /// One line each: `path:line:col: severity[CODE] message`.
     Short,
-    /// One JSON document (schema in the README).
+    /// One JSON document (schema in docs/guide.md).
     Json,
     /// GitHub Actions workflow commands (`::error file=...::message`).
     Github,

@@ -35,7 +35,8 @@ struct Checked {
 struct Unchecked {
     /// Subprograms called that nothing declares: their calls are unchecked.
     calls: std::collections::BTreeSet<String>,
-    /// N005 findings, which may be globals, macros or axes of the machine.
+    /// N005 findings with no defined name near them (a typo offers one),
+    /// which may be globals, macros or axes of the machine.
     undefined_names: usize,
 }
 
@@ -50,7 +51,7 @@ impl Unchecked {
             undefined_names: outcome
                 .diagnostics
                 .iter()
-                .filter(|d| d.code == undefined)
+                .filter(|d| d.code == undefined && d.fix.is_none())
                 .count(),
         }
     }

@@ -5,6 +5,7 @@ pub mod args;
 mod axes;
 mod check;
 mod convert;
+mod describe;
 pub mod error;
 mod eval;
 mod input;
@@ -51,5 +52,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),
         args::Command::Axes(axes) => axes::run(axes),
+        args::Command::Completions(completions) => describe::completions(completions.shell),
+        args::Command::Manpage => describe::manpage(),
     }
 }

@@ -1,5 +1,5 @@
 //! Diagnostics rendered for people (miette), for problem matchers (short
-//! lines) and for tools (JSON, schema in the README).
+//! lines) and for tools (JSON, schema in docs/guide.md).
 
 use std::fmt;
 

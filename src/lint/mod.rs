@@ -11,6 +11,7 @@
 
 pub(crate) mod codes;
 pub mod fix;
+pub mod reference;
 pub mod rule;
 pub mod rules;
 pub(crate) mod suppression;

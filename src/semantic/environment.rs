@@ -92,17 +92,9 @@ impl Environment {
     /// of a setup file cost a byte search; a syntax error in one of them is
     /// given back (nothing is learned from the file then).
     pub fn read_machine_data(&mut self, source: &[u8]) -> Result<(), Vec<Diagnostic>> {
-        let upper = memchr::memmem::Finder::new(b"AXCONF_");
-        let lower = memchr::memmem::Finder::new(b"axconf_");
-        let mut parser = crate::syntax::LineParser::default();
         let mut names = Vec::new();
         let mut errors = Vec::new();
-        for raw in crate::syntax::lines::raw_lines(source) {
-            let text = raw.content.of(source);
-            if upper.find(text).is_none() && lower.find(text).is_none() {
-                continue;
-            }
-            let (line, error) = parser.parse_line(source, raw);
+        for (line, error) in crate::syntax::lines_naming(source, "AXCONF_") {
             errors.extend(error);
             let LineKind::Block(block) = &line.kind else {
                 continue;

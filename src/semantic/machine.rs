@@ -16,9 +16,7 @@ use crate::semantic::eval::{evaluate, Lookup};
 use crate::semantic::value::Value;
 use crate::semantic::Supplied;
 use crate::span::Span;
-use crate::syntax::lines::raw_lines;
 use crate::syntax::tree::{Expr, LineKind, StatementKind};
-use crate::syntax::LineParser;
 
 /// The records of a machine file, and what is wrong in it.
 #[derive(Debug, Default)]
@@ -50,17 +48,7 @@ impl Machine {
         let mut diagnostics = Vec::new();
         let env = Env::default();
         let supplied = Supplied::default();
-        let mut parser = LineParser::default();
-        // As the control writes them, or in lower case (mixed case is not
-        // looked for).
-        let upper = memchr::memmem::Finder::new(b"TC_CARR");
-        let lower = memchr::memmem::Finder::new(b"tc_carr");
-        for raw in raw_lines(source) {
-            let text = raw.content.of(source);
-            if upper.find(text).is_none() && lower.find(text).is_none() {
-                continue;
-            }
-            let (line, error) = parser.parse_line(source, raw);
+        for (line, error) in crate::syntax::lines_naming(source, "TC_CARR") {
             diagnostics.extend(error);
             let LineKind::Block(block) = &line.kind else {
                 continue;

@@ -98,6 +98,24 @@ fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -
     found
 }
 
+/// The lines of `source` that name `word` (as the control writes it, in
+/// capitals, or in lower case), parsed; every other line costs a byte
+/// search. For readers that need a few lines among thousands: swivel data
+/// in a setup file, axis names in machine data.
+pub fn lines_naming<'s>(
+    source: &'s [u8],
+    word: &str,
+) -> impl Iterator<Item = (tree::Line, Option<Diagnostic>)> + 's {
+    let upper = memchr::memmem::Finder::new(word.to_ascii_uppercase().as_bytes()).into_owned();
+    let lower = memchr::memmem::Finder::new(word.to_ascii_lowercase().as_bytes()).into_owned();
+    let mut parser = LineParser::default();
+    lines::raw_lines(source).filter_map(move |raw| {
+        let text = raw.content.of(source);
+        let named = upper.find(text).is_some() || lower.find(text).is_some();
+        named.then(|| parser.parse_line(source, raw))
+    })
+}
+
 /// Parses line after line, remembering the one thing that crosses lines: a
 /// call left open at the end of the previous line (as the paper prints
 /// CYCLE600 over two lines), so the next line's error can say so.

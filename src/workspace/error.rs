@@ -44,7 +44,7 @@ pub enum SettingsError {
     #[error("{path}:{line}:{column}: {why}")]
     #[diagnostic(
         code(sinuprep::config),
-        help("every key and its type: the Configuration section of the README")
+        help("every key and its type: the Configuration part of docs/guide.md")
     )]
     Config {
         path: PathBuf,
