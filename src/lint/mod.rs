@@ -30,6 +30,7 @@ use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
 use crate::syntax::ProgramKind;
+use crate::syntax::WordFinder;
 
 /// Which findings to report.
 #[derive(Clone, Debug)]
@@ -174,8 +175,10 @@ fn lint(
     let mut suppressions = Suppressions::default();
     let walk = crate::semantic::mentions_cycle600(source);
     let mut model = ModelBuilder::new(source, walk);
+    // A machine file checked as a program gets its swivel data checked.
+    let swivel_data_wanted = selection.enables(invalid_swivel_data::RULE.code);
     let mut swivel_data = false;
-    let swivel_finder = SwivelData::finder();
+    let swivel_finder = WordFinder::new("$TC_CARR");
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) => {
@@ -197,7 +200,11 @@ fn lint(
             Scanned::Other(raw) => raw,
         };
         // Swivel data are assignments to `$` variables: never plain lines.
-        swivel_data = swivel_data || swivel_finder.mentioned(raw.content.of(source));
+        swivel_data = swivel_data
+            || (swivel_data_wanted && {
+                let text = raw.content.of(source);
+                memchr::memchr(b'$', text).is_some() && swivel_finder.in_line(text)
+            });
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -226,8 +233,7 @@ fn lint(
     if let Some(on) = &settings.machine {
         found.extend(swivel_findings(model, analysis.as_ref(), on));
     }
-    // A machine file checked as a program: its swivel data too.
-    if swivel_data && selection.enables(invalid_swivel_data::RULE.code) {
+    if swivel_data {
         found.extend(Machine::read(source, Reading::default()).diagnostics);
     }
 
@@ -242,12 +248,9 @@ fn lint(
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
     one_finding_per_cause(&mut kept, &model.labels);
-    let mut unresolved_calls = file.take_unresolved();
-    unresolved_calls.sort_unstable();
-    unresolved_calls.dedup();
     Outcome {
         diagnostics: kept,
-        unresolved_calls,
+        unresolved_calls: file.take_unresolved().into_iter().collect(),
     }
 }
 
@@ -262,27 +265,6 @@ fn swivel_findings(model: &Model, analysis: Option<&Analysis>, on: &OnMachine) -
         .iter()
         .flat_map(|asked| swivels::findings(asked, on))
         .collect()
-}
-
-/// Finds swivel data assignments (`$TC_CARR`, as the control writes it or
-/// in lower case) in lines; built once a file.
-struct SwivelData {
-    upper: memchr::memmem::Finder<'static>,
-    lower: memchr::memmem::Finder<'static>,
-}
-
-impl SwivelData {
-    fn finder() -> Self {
-        Self {
-            upper: memchr::memmem::Finder::new(b"$TC_CARR"),
-            lower: memchr::memmem::Finder::new(b"$tc_carr"),
-        }
-    }
-
-    fn mentioned(&self, line: &[u8]) -> bool {
-        memchr::memchr(b'$', line).is_some()
-            && (self.upper.find(line).is_some() || self.lower.find(line).is_some())
-    }
 }
 
 /// Drops what another finding already says. Blocks after the program's

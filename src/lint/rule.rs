@@ -2,7 +2,7 @@
 //! one line at a time.
 
 use std::cell::{OnceCell, RefCell};
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::addresses::{self, Address};
@@ -28,7 +28,7 @@ pub struct FileContext<'a> {
     model: OnceCell<Model<'a>>,
     /// Subprograms called whose declaration was found nowhere, so that
     /// their calls could not be checked.
-    unresolved: RefCell<Vec<String>>,
+    unresolved: RefCell<BTreeSet<String>>,
 }
 
 impl<'a> FileContext<'a> {
@@ -52,11 +52,15 @@ impl<'a> FileContext<'a> {
 
     /// Notes a called subprogram whose declaration was found nowhere.
     pub fn unresolved_call(&self, name: &str) {
-        self.unresolved.borrow_mut().push(name.to_string());
+        let mut unresolved = self.unresolved.borrow_mut();
+        // A subprogram called thousands of times is kept once.
+        if !unresolved.contains(name) {
+            unresolved.insert(name.to_string());
+        }
     }
 
-    /// The subprograms noted by [`Self::unresolved_call`].
-    pub(crate) fn take_unresolved(&self) -> Vec<String> {
+    /// The subprograms noted by [`Self::unresolved_call`], in order.
+    pub(crate) fn take_unresolved(&self) -> BTreeSet<String> {
         self.unresolved.take()
     }
 

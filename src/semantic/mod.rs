@@ -33,6 +33,11 @@ pub use walk::{analyze, Analysis, CallSite};
 /// Whether `CYCLE600` (any case) occurs anywhere in the bytes: a program
 /// without it needs no walk.
 pub fn mentions_cycle600(bytes: &[u8]) -> bool {
-    memchr::memmem::find_iter(bytes, b"600")
+    mentions_cycle(bytes, b"600")
+}
+
+/// Whether `CYCLE<number>` (any case) occurs anywhere in the bytes.
+pub(crate) fn mentions_cycle(bytes: &[u8], number: &[u8]) -> bool {
+    memchr::memmem::find_iter(bytes, number)
         .any(|at| at >= 5 && bytes[at - 5..at].eq_ignore_ascii_case(b"CYCLE"))
 }

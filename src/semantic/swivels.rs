@@ -137,6 +137,11 @@ fn decimals(value: f64, places: usize) -> String {
 pub fn cycle800_calls(model: &crate::semantic::Model) -> Vec<Asked> {
     let source = model.source;
     let mut out = Vec::new();
+    // The lines are parsed again where the pass kept no trees: only for a
+    // program that calls CYCLE800 at all.
+    if !crate::semantic::mentions_cycle(source, b"800") {
+        return out;
+    }
     for (_, line) in model.lines.other_lines() {
         let LineKind::Block(block) = &line.kind else {
             continue;

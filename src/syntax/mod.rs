@@ -106,14 +106,33 @@ pub fn lines_naming<'s>(
     source: &'s [u8],
     word: &str,
 ) -> impl Iterator<Item = (tree::Line, Option<Diagnostic>)> + 's {
-    let upper = memchr::memmem::Finder::new(word.to_ascii_uppercase().as_bytes()).into_owned();
-    let lower = memchr::memmem::Finder::new(word.to_ascii_lowercase().as_bytes()).into_owned();
+    let finder = WordFinder::new(word);
     let mut parser = LineParser::default();
-    lines::raw_lines(source).filter_map(move |raw| {
-        let text = raw.content.of(source);
-        let named = upper.find(text).is_some() || lower.find(text).is_some();
-        named.then(|| parser.parse_line(source, raw))
-    })
+    lines::raw_lines(source)
+        .filter(move |raw| finder.in_line(raw.content.of(source)))
+        .map(move |raw| parser.parse_line(source, raw))
+}
+
+/// A word as the control writes it, in capitals, or in lower case (mixed
+/// case is not looked for), found by a byte search; built once, used on
+/// many lines.
+pub struct WordFinder {
+    upper: memchr::memmem::Finder<'static>,
+    lower: memchr::memmem::Finder<'static>,
+}
+
+impl WordFinder {
+    pub fn new(word: &str) -> Self {
+        let finder = |w: String| memchr::memmem::Finder::new(w.as_bytes()).into_owned();
+        Self {
+            upper: finder(word.to_ascii_uppercase()),
+            lower: finder(word.to_ascii_lowercase()),
+        }
+    }
+
+    pub fn in_line(&self, line: &[u8]) -> bool {
+        self.upper.find(line).is_some() || self.lower.find(line).is_some()
+    }
 }
 
 /// Parses line after line, remembering the one thing that crosses lines: a

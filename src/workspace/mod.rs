@@ -122,12 +122,11 @@ impl Workspace {
         resolved.settings.environment = self.environment(config)?;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
         resolved.settings.machine = self.machine(config)?;
-        let listed = |list: &Option<Vec<_>>| list.as_ref().is_some_and(|l: &Vec<_>| !l.is_empty());
         resolved.settings.environment.given = !given.definitions.is_empty()
             || !given.cycles.is_empty()
-            || listed(&config.definitions)
-            || listed(&config.cycles)
-            || config.axes.as_ref().is_some_and(|a| !a.is_empty());
+            || config.definitions.iter().flatten().next().is_some()
+            || config.cycles.iter().flatten().next().is_some()
+            || config.axes.iter().flatten().next().is_some();
         Ok(resolved)
     }
 

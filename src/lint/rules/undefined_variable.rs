@@ -97,6 +97,12 @@ fn axis_value(
     }
 }
 
+/// `AX<n>` (upper case): a machine axis by its number.
+fn is_axis_number(name: &str) -> bool {
+    name.strip_prefix("AX")
+        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+}
+
 /// The bare `AX<n>` indices of system variables (`$MA_IS_ROT_AX[AX4]`,
 /// `$AA_IM[AX1]`): the machine axis by its number, as machine data and
 /// system variables are indexed, not a read.
@@ -116,11 +122,7 @@ fn axis_indices<'l>(
         }
         for index in &variable.indices {
             if let ExprKind::Variable(v) = &index.kind {
-                let name = v.name.text(source);
-                let is_axis_number = name.len() > 2
-                    && name[..2].eq_ignore_ascii_case(b"AX")
-                    && name[2..].iter().all(u8::is_ascii_digit);
-                if v.indices.is_empty() && is_axis_number {
+                if v.indices.is_empty() && is_axis_number(&upper(source, v.name.span)) {
                     out.push(v.name.span);
                 }
             }
@@ -141,8 +143,7 @@ impl Check for Checker {
             return;
         };
         for (index, statement) in block.statements.iter().enumerate() {
-            let mut axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
-            axes.extend(axis_indices(file.source, statement, line.reads(index)));
+            let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
             for variable in line.reads(index) {
                 if axes.contains(&variable.name.span) {
                     continue;
@@ -153,6 +154,10 @@ impl Check for Checker {
                     && !file.environment.defines(&name)
                     && !PREDEFINED.contains(&name.as_str())
                     && !is_global_r_parameter(&name)
+                    // Looked for only where it could be one (`AX4`): rare.
+                    && (!is_axis_number(&name)
+                        || !axis_indices(file.source, statement, line.reads(index))
+                            .contains(&variable.name.span))
                     && self.reported.insert(name.clone())
                 {
                     out.push(self.undefined(name, variable.name.span));
