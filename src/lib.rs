@@ -28,8 +28,11 @@
 //!   command line and an editor alike.
 //! - [`workspace`]: a program's settings: sinuprep.toml, the caller's options, measured values,
 //!   HEAD_DEF and definition files, resolved once for the command line and a server alike.
+//! - [`archive`]: the members of archives in text (`%_N_PART_MPF` sections) and binary form
+//!   (`.arc`); a member's change as edits of the archive, headers included.
 //! - [`cli`]: the command line (options, files, reports); the only place that prints.
 
+pub mod archive;
 pub mod cli;
 pub mod diagnostic;
 pub mod document;

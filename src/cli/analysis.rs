@@ -4,7 +4,6 @@
 use std::io::IsTerminal;
 
 use crate::cli::args::{AnalysisArgs, CheckArgs, InputArgs, MessageFormat};
-use crate::cli::input::SourceFile;
 use crate::cli::render::{human, short, FileReport};
 use crate::diagnostic::Severity;
 use crate::document::Rewritten;
@@ -47,11 +46,12 @@ pub fn given_to_check(args: &CheckArgs) -> Given {
     }
 }
 
-/// A rewrite's diagnostics as text for stderr, in the format asked for.
-pub fn report(rewritten: &Rewritten, file: &SourceFile, format: MessageFormat) -> String {
+/// A rewrite's diagnostics as text for stderr, in the format asked for:
+/// of the program `name`, whose bytes are `source`.
+pub fn report(rewritten: &Rewritten, name: &str, source: &[u8], format: MessageFormat) -> String {
     let report = FileReport {
-        name: &file.name,
-        source: &file.bytes,
+        name,
+        source,
         diagnostics: &rewritten.diagnostics,
     };
     let mut text = String::new();

@@ -21,7 +21,7 @@ pub struct Args {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Lint NC programs (files, directories, or `-` for stdin): syntax errors,
+    /// Lint NC programs (files, directories, archives, or `-` for stdin): syntax errors,
     /// CYCLE600 findings and the general NC rules (`sinuprep rule --all`);
     /// `--fix` applies the safe fixes.
     Check(CheckArgs),
@@ -92,7 +92,7 @@ pub struct AxesArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// Files or directories (searched recursively for .mpf/.spf); `-` reads stdin.
+    /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
     #[arg(default_value = "-")]
     pub paths: Vec<PathBuf>,
     /// How to print the diagnostics.
@@ -216,7 +216,7 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf); `-` reads stdin.
+    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
     /// Several programs need --in-place, -o DIR, --check or --diff.
     #[arg(default_value = "-")]
     pub paths: Vec<PathBuf>,
@@ -251,7 +251,7 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct EvalArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf); `-` reads stdin.
+    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
     #[arg(default_value = "-")]
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).

@@ -79,13 +79,19 @@ pub fn load(path: &Path, reading: Reading) -> Result<Loaded, CliError> {
         path: path.to_path_buf(),
         source,
     })?;
-    let machine = Machine::read(&source, reading);
-    let name = path.display().to_string();
+    let file_name = path.display().to_string();
+    let data =
+        crate::archive::setup_data(&source, &file_name).map_err(|error| CliError::Archive {
+            name: file_name.clone(),
+            error,
+        })?;
+    let machine = Machine::read(&data.bytes, reading);
+    let name = data.name;
     if !machine.diagnostics.is_empty() {
         let mut text = String::new();
         let report = FileReport {
             name: &name,
-            source: &source,
+            source: &data.bytes,
             diagnostics: &machine.diagnostics,
         };
         human(&report, std::io::stderr().is_terminal(), &mut text);

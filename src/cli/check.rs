@@ -5,18 +5,17 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use crate::cli::analysis;
+use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Bytes, SourceFile};
+use crate::cli::input::{expand, read, Bytes};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::document::Document;
 use crate::edit::apply;
 use crate::lint;
-use crate::syntax::program_kind;
 use crate::workspace::Workspace;
 
 /// One file's outcome, with what its report needs of the source taken out
@@ -27,6 +26,8 @@ struct Checked {
     fails: bool,
     counts: Counts,
     unchecked: Unchecked,
+    /// Programs reported: 1 for a file, its programs for an archive.
+    files: usize,
 }
 
 /// What a program checked without its machine's environment (no
@@ -153,8 +154,8 @@ impl Counts {
 enum Report {
     /// The file's part of a per-file format (short, GitHub, human).
     Text(String),
-    /// For the whole-run formats (JSON, SARIF).
-    Located(Located),
+    /// For the whole-run formats (JSON, SARIF): one per program.
+    Located(Vec<Located>),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
@@ -182,12 +183,12 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                files += 1;
+                files += checked.files;
                 match checked.report {
                     // One file's report (the common case) is taken, not copied.
                     Report::Text(part) if text.is_empty() => text = part,
                     Report::Text(part) => text.push_str(&part),
-                    Report::Located(file) => located.push(file),
+                    Report::Located(files) => located.extend(files),
                 }
             }
             Err(error) => {
@@ -237,78 +238,117 @@ fn check_file(
         _ => path.to_path_buf(),
     };
     let resolved = workspace.for_check(&named)?;
-    let kind = program_kind(Some(&file.name), &file.bytes);
-    let settings = resolved.settings;
-    let check = |source: &[u8]| {
-        let document = Document {
-            name: &file.name,
-            source,
-            kind,
-        };
-        document.check_outcome(&settings)
-    };
-    let mut outcome = check(&file.bytes);
-    if let Some(target) = fix_target {
-        if let Some(fixed) = fix(&target, &file, &outcome.diagnostics, args.unsafe_fixes)? {
-            outcome = check(&fixed);
-            file.bytes = Bytes::Read(fixed);
-        }
-    }
-    let unchecked = Unchecked::of(&outcome, &settings);
-    let diagnostics = outcome.diagnostics;
     let deny_warnings = resolved.deny_warnings;
-    let counts = Counts::of(&diagnostics);
-    let fails = diagnostics.iter().any(|d| {
-        d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
-    });
-    let file_report = FileReport {
-        name: &file.name,
-        source: &file.bytes,
-        diagnostics: &diagnostics,
-    };
-    let mut text = String::new();
-    match args.format {
-        Format::Short => short(&file_report, &mut text),
-        Format::Github => github(&file_report, &mut text),
-        Format::Human => human(&file_report, colour, &mut text),
-        Format::Json | Format::Sarif => {
-            let report = Report::Located(Located::new(&file.name, &file.bytes, diagnostics));
-            return Ok(Checked {
-                report,
-                fails,
-                counts,
-                unchecked,
-            });
+    let mut settings = resolved.settings;
+    let mut opened = Opened::read(&file.bytes, &file.name)?;
+    // The archive's definitions and subprograms, which a fix leaves alone.
+    let unreadable = opened.settings(&file.bytes, &mut settings);
+    let mut outcomes = outcomes(&opened, &file.bytes, &settings);
+    if let Some(target) = fix_target {
+        if let Some(fixed) = fix(&target, &opened, &file.bytes, &outcomes, args.unsafe_fixes)? {
+            file.bytes = Bytes::Read(fixed);
+            opened = Opened::read(&file.bytes, &file.name)?;
+            outcomes = self::outcomes(&opened, &file.bytes, &settings);
         }
     }
-    Ok(Checked {
-        report: Report::Text(text),
-        fails,
-        counts,
-        unchecked,
-    })
+    let mut checked = Checked {
+        report: match args.format {
+            Format::Json | Format::Sarif => Report::Located(Vec::new()),
+            _ => Report::Text(String::new()),
+        },
+        fails: false,
+        counts: Counts::default(),
+        unchecked: Unchecked::default(),
+        files: 0,
+    };
+    let mut reports = Vec::new();
+    for (program, outcome) in opened.programs(&file.bytes).into_iter().zip(outcomes) {
+        checked.unchecked.add(Unchecked::of(&outcome, &settings));
+        reports.push((program.name, program.document.source, outcome.diagnostics));
+    }
+    for member in unreadable {
+        let source = opened.member_bytes(&file.bytes, member.member);
+        reports.push((
+            opened.member_name(member.member),
+            source,
+            member.diagnostics,
+        ));
+    }
+    for (name, source, diagnostics) in reports {
+        checked.files += 1;
+        checked.counts.add(Counts::of(&diagnostics));
+        checked.fails |= diagnostics.iter().any(|d| {
+            d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
+        });
+        let file_report = FileReport {
+            name: &name,
+            source,
+            diagnostics: &diagnostics,
+        };
+        match &mut checked.report {
+            Report::Text(text) => match args.format {
+                Format::Short => short(&file_report, text),
+                Format::Github => github(&file_report, text),
+                _ => human(&file_report, colour, text),
+            },
+            Report::Located(located) => located.push(Located::new(&name, source, diagnostics)),
+        }
+    }
+    Ok(checked)
 }
 
-/// Applies the fixes `--fix` takes to `file` and writes it to `target`
-/// atomically: the fixed bytes, or `None` when there was nothing to fix or
-/// the file has syntax errors (its trees may not be what was meant).
+/// What `check` reports of each program of `opened`, in their order.
+fn outcomes(opened: &Opened, bytes: &[u8], settings: &lint::Settings) -> Vec<lint::Outcome> {
+    opened
+        .programs(bytes)
+        .iter()
+        .map(|program| program.document.check_outcome(settings))
+        .collect()
+}
+
+/// Applies the fixes `--fix` takes to every program of `opened` and writes
+/// the file to `target` atomically: the fixed bytes, or `None` when there
+/// was nothing to fix. A program with syntax errors is not fixed (its
+/// trees may not be what was meant); the others of an archive are.
 fn fix(
     target: &Path,
-    file: &SourceFile,
-    diagnostics: &[Diagnostic],
+    opened: &Opened,
+    bytes: &[u8],
+    outcomes: &[lint::Outcome],
     unsafe_fixes: bool,
 ) -> Result<Option<Vec<u8>>, CliError> {
-    let (edits, answered) = lint::fix::applicable(diagnostics, unsafe_fixes);
+    let mut edits = Vec::new();
+    let mut answered = 0;
+    for (program, outcome) in opened.programs(bytes).iter().zip(outcomes) {
+        let diagnostics = &outcome.diagnostics;
+        let (own, count) = lint::fix::applicable(diagnostics, unsafe_fixes);
+        if own.is_empty() {
+            continue;
+        }
+        if diagnostics.iter().any(|d| d.code.starts_with('S')) {
+            eprintln!("{}: not fixed, because of its syntax errors", program.name);
+            continue;
+        }
+        let shifted = match (&opened.archive, program.member) {
+            (Some(archive), Some(member)) => archive.edits(bytes, member, &own),
+            _ => Some(own),
+        };
+        let Some(shifted) = shifted else {
+            eprintln!(
+                "{}: not fixed: its new size does not fit the archive's header",
+                program.name
+            );
+            continue;
+        };
+        edits.extend(shifted);
+        answered += count;
+    }
     if edits.is_empty() {
         return Ok(None);
     }
-    if diagnostics.iter().any(|d| d.code.starts_with('S')) {
-        eprintln!("{}: not fixed, because of its syntax errors", file.name);
-        return Ok(None);
-    }
-    let fixed = apply(&file.bytes, &edits);
+    let fixed = apply(bytes, &edits);
     write_atomically(target, |out| out.write_all(&fixed), None)?;
     let s = if answered == 1 { "" } else { "s" };
-    eprintln!("{}: fixed {answered} finding{s}", file.name);
+    eprintln!("{}: fixed {answered} finding{s}", opened.name);
     Ok(Some(fixed))
 }

@@ -16,7 +16,7 @@ pub enum CliError {
         source: std::io::Error,
     },
 
-    #[error("{path} holds no program (.mpf or .spf, any case)")]
+    #[error("{path} holds no program (.mpf, .spf or .arc archive, any case)")]
     #[diagnostic(
         code(sinuprep::no_programs),
         help("check the path; with --allow-empty a folder without programs is no error")
@@ -29,6 +29,16 @@ pub enum CliError {
         help("give --in-place, -o DIR (the tree is mirrored there), --check or --diff")
     )]
     SeveralToStdout { count: usize },
+
+    #[error("{name}: the archive cannot be read: {error}")]
+    #[diagnostic(
+        code(sinuprep::archive),
+        help("the archive is damaged or truncated; save it from the control again. Nothing was written")
+    )]
+    Archive {
+        name: String,
+        error: crate::archive::ArchiveError,
+    },
 
     #[error("{path} is a directory")]
     #[diagnostic(

@@ -2,13 +2,13 @@
 //! a user can check the numbers before the program goes to the control.
 
 use crate::cli::analysis;
+use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
-use crate::document::Document;
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
 use crate::kinematics::{solve, Record, Request, Swivel};
@@ -31,7 +31,6 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
             source: std::io::Error::other(error.to_string()),
         }),
     });
-    let several = paths.len() > 1;
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     for outcome in outcomes {
@@ -43,7 +42,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
                 }
                 match evaluated.output {
                     Output::Text(text) => write_stdout(text.as_bytes())?,
-                    Output::Json(document) => documents.push(document),
+                    Output::Json(programs) => documents.extend(programs),
                 }
             }
             Err(error) => {
@@ -53,7 +52,9 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         }
     }
     if args.json {
-        // One program: its document; several: an array of them, in order.
+        // One program: its document; several (files, or an archive's
+        // programs): an array of them, in order.
+        let several = paths.len() > 1 || documents.len() > 1;
         let value = match documents.len() {
             1 if !several => documents.swap_remove(0),
             _ => serde_json::Value::Array(documents),
@@ -66,7 +67,8 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
 
 enum Output {
     Text(String),
-    Json(serde_json::Value),
+    /// One document per program (an archive holds several).
+    Json(Vec<serde_json::Value>),
 }
 
 /// One program's evaluation, kept so that the programs come in their order.
@@ -93,46 +95,59 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
     let machine = machine_path
         .map(|path| axes::load(&path, reading))
         .transpose()?;
-    let settings = resolved.settings;
-    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&settings);
+    let mut settings = resolved.settings;
+    let opened = Opened::read(&file.bytes, &file.name)?;
+    opened.settings(&file.bytes, &mut settings);
     let options = &settings.emit;
-    let index = LineIndex::new(&file.bytes);
-    let output = if args.json {
-        let calls: Vec<serde_json::Value> = analyzed
-            .analysis
-            .calls
-            .iter()
-            .map(|site| {
-                let mut call = json(site, &file.bytes, options);
-                if let Some(machine) = &machine {
-                    call["axes"] = swivel_json(site, machine);
+    let mut evaluated = Evaluated {
+        output: if args.json {
+            Output::Json(Vec::new())
+        } else {
+            Output::Text(String::new())
+        },
+        diagnostics: String::new(),
+        failed: false,
+    };
+    for program in opened.programs(&file.bytes) {
+        let (name, source) = (program.name.as_str(), program.document.source);
+        let analyzed = program.document.rewrite(&settings);
+        let format = args.analysis.message_format;
+        evaluated.diagnostics += &analysis::report(&analyzed, name, source, format);
+        evaluated.failed |= analyzed.has_errors();
+        let calls = &analyzed.analysis.calls;
+        match &mut evaluated.output {
+            Output::Json(documents) => {
+                let calls: Vec<serde_json::Value> = calls
+                    .iter()
+                    .map(|site| {
+                        let mut call = json(site, source, options);
+                        if let Some(machine) = &machine {
+                            call["axes"] = swivel_json(site, machine);
+                        }
+                        call
+                    })
+                    .collect();
+                documents.push(serde_json::json!({ "path": name, "calls": calls }));
+            }
+            Output::Text(text) => {
+                let index = LineIndex::new(source);
+                for site in calls {
+                    table(site, name, source, &index, options, text);
+                    if let Some(machine) = &machine {
+                        if let Some(line) = swivel_text(site, machine) {
+                            // Under the call's table, before its blank line.
+                            text.pop();
+                            text.push_str(&format!("  axes     {line}\n\n"));
+                        }
+                    }
                 }
-                call
-            })
-            .collect();
-        Output::Json(serde_json::json!({ "path": file.name, "calls": calls }))
-    } else {
-        let mut text = String::new();
-        for site in &analyzed.analysis.calls {
-            table(site, &file.name, &file.bytes, &index, options, &mut text);
-            if let Some(machine) = &machine {
-                if let Some(line) = swivel_text(site, machine) {
-                    // Under the call's table, before its blank line.
-                    text.pop();
-                    text.push_str(&format!("  axes     {line}\n\n"));
+                if calls.is_empty() {
+                    text.push_str(&format!("{name}: no CYCLE600 call\n"));
                 }
             }
         }
-        if analyzed.analysis.calls.is_empty() {
-            text.push_str(&format!("{}: no CYCLE600 call\n", file.name));
-        }
-        Output::Text(text)
-    };
-    Ok(Evaluated {
-        output,
-        diagnostics: analysis::report(&analyzed, &file, args.analysis.message_format),
-        failed: analyzed.has_errors(),
-    })
+    }
+    Ok(evaluated)
 }
 
 /// The swivel a rotating call makes on its record (what CYCLE800 gets),

@@ -34,6 +34,7 @@ impl Deref for Bytes {
 }
 
 /// Expands the command-line paths: a directory yields its `.mpf`/`.spf` files
+/// and `.arc` archives
 /// (any case, recursively, sorted); a file is taken whatever its extension.
 /// Every file and directory is taken once, by its device and inode, so
 /// symlinks that loop (`a -> .`, `up -> ..`) or name a file twice do not
@@ -158,9 +159,11 @@ fn walk(dir: &Path, seen: &mut HashSet<(u64, u64)>, out: &mut Vec<Result<PathBuf
 }
 
 fn is_program(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("mpf") || e.eq_ignore_ascii_case("spf"))
+    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+        ["mpf", "spf", "arc"]
+            .iter()
+            .any(|x| e.eq_ignore_ascii_case(x))
+    })
 }
 
 /// Reads a file, or stdin for `-`; a file of [`MAPPED_FROM`] bytes or more

@@ -1,6 +1,7 @@
 //! The command line: the only module that prints.
 
 mod analysis;
+mod archive;
 pub mod args;
 mod axes;
 mod check;

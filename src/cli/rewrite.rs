@@ -7,14 +7,15 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use crate::archive::Form;
 use crate::cli::analysis;
+use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
-use crate::document::Document;
 use crate::emit::{diff, write_applied};
 use crate::workspace::Workspace;
 
@@ -112,32 +113,74 @@ fn rewrite_file(
     let mut settings = workspace.for_rewrite(path)?.settings;
     settings.emit.keep_original = !args.no_original;
     settings.emit.inline_results = args.inline_results;
-    let analyzed = Document::new(&file.name, &file.bytes).rewrite(&settings);
+    let opened = Opened::read(&file.bytes, &file.name)?;
+    opened.settings(&file.bytes, &mut settings);
     let mut outcome = Outcome {
-        status: status(analyzed.has_errors()),
+        status: ExitStatus::Success,
         stdout: Vec::new(),
-        stderr: analysis::report(&analyzed, &file, args.analysis.message_format),
+        stderr: String::new(),
     };
-    let edits = &analyzed.rewrite.edits;
+    // Every program's edits, as edits of the file (an archive's member's
+    // shifted to where it lies, its header made to match).
+    let mut edits = Vec::new();
+    let mut rewritten = 0;
+    let mut errors = false;
+    for program in opened.programs(&file.bytes) {
+        let analyzed = program.document.rewrite(&settings);
+        let source = program.document.source;
+        let format = args.analysis.message_format;
+        outcome.stderr += &analysis::report(&analyzed, &program.name, source, format);
+        errors |= analyzed.has_errors();
+        let own = &analyzed.rewrite.edits;
+        if own.is_empty() {
+            continue;
+        }
+        rewritten += analyzed.rewrite.rewritten;
+        let shifted = match (&opened.archive, program.member) {
+            (Some(archive), Some(member)) => {
+                if args.diff && archive.form == Form::Binary {
+                    // A binary archive's diff is its members' own.
+                    outcome
+                        .stdout
+                        .extend(diff::unified(&program.name, source, own).into_bytes());
+                }
+                archive.edits(&file.bytes, member, own)
+            }
+            _ => Some(own.clone()),
+        };
+        match shifted {
+            Some(shifted) => edits.extend(shifted),
+            None => {
+                errors = true;
+                outcome.stderr.push_str(&format!(
+                    "{}: not rewritten: its new size does not fit the archive's header\n",
+                    program.name
+                ));
+            }
+        }
+    }
+    outcome.status = status(errors);
     let changed = !edits.is_empty();
     if args.check {
         if changed {
             outcome.stderr.push_str(&format!(
-                "{}: would rewrite {} CYCLE600 call(s)\n",
-                file.name, analyzed.rewrite.rewritten
+                "{}: would rewrite {rewritten} CYCLE600 call(s)\n",
+                file.name
             ));
         }
-        outcome.status = status(analyzed.has_errors() || changed);
+        outcome.status = status(errors || changed);
         return Ok(outcome);
     }
     if args.diff {
-        outcome.stdout = diff::unified(&file.name, &file.bytes, edits).into_bytes();
+        if opened.archive.as_ref().is_none_or(|a| a.form == Form::Text) {
+            outcome.stdout = diff::unified(&file.name, &file.bytes, &edits).into_bytes();
+        }
         return Ok(outcome);
     }
-    let output = |out: &mut dyn Write| write_applied(&file.bytes, edits, out);
+    let output = |out: &mut dyn Write| write_applied(&file.bytes, &edits, out);
     match target {
         Target::InPlace(target) => {
-            if analyzed.has_errors() {
+            if errors {
                 outcome.stderr.push_str(&format!(
                     "{}: not rewritten in place, because of the errors above\n",
                     file.name
@@ -149,7 +192,6 @@ fn rewrite_file(
                 let backup = (!args.no_backup).then_some(&file.bytes[..]);
                 write_atomically(&target, output, backup)?;
             }
-            outcome.status = ExitStatus::Success;
         }
         Target::File(path) => {
             if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {

@@ -41,6 +41,16 @@ pub enum SettingsError {
         why: String,
     },
 
+    #[error("{path}: the archive cannot be read: {error}")]
+    #[diagnostic(
+        code(sinuprep::archive),
+        help("the archive is damaged or truncated; save it from the control again")
+    )]
+    Archive {
+        path: PathBuf,
+        error: crate::archive::ArchiveError,
+    },
+
     #[error("{path}:{line}:{column}: {why}")]
     #[diagnostic(
         code(sinuprep::config),

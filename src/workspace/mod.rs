@@ -21,6 +21,7 @@ use std::sync::{Arc, Mutex};
 pub use config::{Config, SeverityName, FILE_NAME};
 pub use error::SettingsError;
 
+use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
 use crate::emit::cycle600::{Form, Options};
 use crate::lint::{self, Selection, Settings};
@@ -252,9 +253,15 @@ impl Workspace {
         let reading = Reading {
             fine_offsets: self.given.fine_offsets,
         };
+        let data = archive::setup_data(&source, &path.display().to_string()).map_err(|error| {
+            SettingsError::Archive {
+                path: path.clone(),
+                error,
+            }
+        })?;
         let on = Arc::new(OnMachine {
-            name: path.display().to_string(),
-            machine: Machine::read(&source, reading),
+            name: data.name,
+            machine: Machine::read(&data.bytes, reading),
             hirth_tolerance_deg: config
                 .hirth_tolerance
                 .unwrap_or(swivels::HIRTH_TOLERANCE_DEG),
@@ -355,38 +362,64 @@ impl Workspace {
     }
 }
 
-/// What the definition files `files` define.
+/// What the definition files `files` define: GUD and macro files give
+/// variables and macros, machine data (`.INI`) axis names; an archive gives
+/// what its `_DEF` and data members do.
 fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
-    for path in files.iter().cloned() {
-        let bytes = std::fs::read(&path).map_err(|source| SettingsError::Read {
+    for path in files {
+        let bytes = std::fs::read(path).map_err(|source| SettingsError::Read {
             path: path.clone(),
             source,
         })?;
-        // Machine data (`.INI`) give axis names; GUD and macro files give
-        // variables and macros.
-        let is_machine_data = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("ini"));
-        let read = if is_machine_data {
-            environment.read_machine_data(&bytes)
-        } else {
-            environment.read_definitions(&bytes)
+        let name = path.display().to_string();
+        let members = match archive::read(&bytes, &name) {
+            None => vec![(path.clone(), 0..bytes.len(), definition_kind(path))],
+            Some(read) => read
+                .map_err(|error| SettingsError::Archive {
+                    path: path.clone(),
+                    error,
+                })?
+                .members
+                .into_iter()
+                .map(|m| (PathBuf::from(format!("{name}:{}", m.name)), m.data, m.kind))
+                .collect(),
         };
-        if let Err(errors) = read {
-            let Some(first) = errors.first() else {
-                continue;
+        for (path, range, kind) in members {
+            let bytes = &bytes[range];
+            let read = match kind {
+                MemberKind::Data => environment.read_machine_data(bytes),
+                MemberKind::Definitions => environment.read_definitions(bytes),
+                _ => continue,
             };
-            let position = crate::span::LineIndex::new(&bytes).position(first.span.start);
-            return Err(SettingsError::Definitions {
-                path,
-                line: position.row,
-                column: position.column,
-                why: first.message.clone(),
-            });
+            if let Err(errors) = read {
+                let Some(first) = errors.first() else {
+                    continue;
+                };
+                let position = crate::span::LineIndex::new(bytes).position(first.span.start);
+                return Err(SettingsError::Definitions {
+                    path,
+                    line: position.row,
+                    column: position.column,
+                    why: first.message.clone(),
+                });
+            }
         }
     }
     Ok(environment)
+}
+
+/// A definition file's kind by its extension: machine data (`.INI`) or
+/// definitions (anything else given as one).
+fn definition_kind(path: &Path) -> MemberKind {
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("ini"))
+    {
+        MemberKind::Data
+    } else {
+        MemberKind::Definitions
+    }
 }
 
 /// The file at `path`, given as an option or (`key`) in sinuprep.toml: an

@@ -131,3 +131,79 @@ pub fn syntax_errors(source: &[u8]) -> Vec<(&'static str, String, Vec<u8>)> {
     errors.sort();
     errors
 }
+
+/// A series start-up archive as Sinumerik Operate writes it: the mark
+/// record `@@MMCIBN.002`, then each member (its NC path, its bytes) as a
+/// 512-byte header and the bytes padded with NULs to 512. Written here
+/// field by field, apart from the code that reads archives.
+pub fn binary_archive(members: &[(&str, &[u8])]) -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut add = |name: &str, path: &str, data: &[u8]| {
+        let mut header = [0u8; 512];
+        let mut put = |at: usize, text: &[u8]| header[at..at + text.len()].copy_from_slice(text);
+        put(0, name.as_bytes());
+        put(50, name.to_ascii_uppercase().as_bytes());
+        put(124, data.len().to_string().as_bytes());
+        put(136, b"1733140800");
+        put(257, path.as_bytes());
+        put(384, format!("\\{}", name.to_ascii_uppercase()).as_bytes());
+        let sum: u32 = header.iter().map(|&b| u32::from(b)).sum();
+        header[148..148 + sum.to_string().len()].copy_from_slice(sum.to_string().as_bytes());
+        out.extend_from_slice(&header);
+        out.extend_from_slice(data);
+        out.resize(out.len().div_ceil(512) * 512, 0);
+    };
+    add("@@MMCIBN.002", "", b"ARCHIVE 840D sl\r\n");
+    for (path, data) in members {
+        let name = path
+            .rsplit('/')
+            .next()
+            .unwrap_or(path)
+            .trim_start_matches("_N_");
+        let dos = match name.rfind('_') {
+            Some(at) => format!("{}.{}", &name[..at], &name[at + 1..]),
+            None => name.to_string(),
+        };
+        add(&dos, path, data);
+    }
+    out
+}
+
+/// The members of a binary archive (NC path, bytes), each header's
+/// checksum and the padding checked: what a control reading it back sees.
+pub fn binary_members(bytes: &[u8]) -> Vec<(String, Vec<u8>)> {
+    let mut members = Vec::new();
+    let mut at = 0;
+    while at + 512 <= bytes.len() {
+        let header = &bytes[at..at + 512];
+        let field = |range: std::ops::Range<usize>| {
+            let text = &header[range];
+            let end = text.iter().position(|&b| b == 0).unwrap_or(text.len());
+            String::from_utf8_lossy(&text[..end]).into_owned()
+        };
+        let size: usize = field(124..136).parse().expect("size");
+        let recorded: u32 = field(148..156).parse().expect("checksum");
+        let sum: u32 = header
+            .iter()
+            .enumerate()
+            .map(|(i, &b)| {
+                if (148..156).contains(&i) {
+                    0
+                } else {
+                    u32::from(b)
+                }
+            })
+            .sum();
+        assert_eq!(recorded, sum, "checksum of the header at {at}");
+        let data = bytes[at + 512..at + 512 + size].to_vec();
+        let end = at + 512 + size.div_ceil(512) * 512;
+        assert!(
+            bytes[at + 512 + size..end].iter().all(|&b| b == 0),
+            "padding"
+        );
+        members.push((field(257..384), data));
+        at = end;
+    }
+    assert_eq!(at, bytes.len(), "the archive ends after its last member");
+    members
+}

@@ -1,0 +1,153 @@
+//! The programs a file holds: the file itself, or each program of an
+//! archive (`%_N_` sections, or a series start-up `.arc`) under the name
+//! `ARCH.arc:PART_MPF`, with the archive's definitions, machine data and
+//! subprograms as their environment.
+
+use std::sync::Arc;
+
+use crate::archive::{self, Archive, MemberKind};
+use crate::cli::error::CliError;
+use crate::diagnostic::Diagnostic;
+use crate::document::Document;
+use crate::lint::Settings;
+use crate::semantic::environment::Environment;
+use crate::semantic::head_def::Heads;
+use crate::syntax::program_kind;
+
+/// A file, read as an archive if it is one.
+pub struct Opened {
+    /// What reports call the file.
+    pub name: String,
+    pub archive: Option<Archive>,
+}
+
+/// One program to check, rewrite or evaluate.
+pub struct Program<'a> {
+    /// The file's name, or `ARCH.arc:PART_MPF` for an archive's member.
+    pub name: String,
+    /// Its bytes; named for its rules as a file of its own would be
+    /// (`PART.MPF`), so that they read its kind and name alike.
+    pub document: Document<'a>,
+    /// The member's index in the archive.
+    pub member: Option<usize>,
+}
+
+/// A member of the archive that could not be read for the environment:
+/// its syntax errors, reported as its own findings.
+pub struct Unreadable {
+    /// The member's index in the archive.
+    pub member: usize,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Opened {
+    /// `bytes`, named `name`: an archive that cannot be read is an error
+    /// naming the member and the offset, before anything is done with it.
+    pub fn read(bytes: &[u8], name: &str) -> Result<Self, CliError> {
+        let archive =
+            archive::read(bytes, name)
+                .transpose()
+                .map_err(|error| CliError::Archive {
+                    name: name.to_string(),
+                    error,
+                })?;
+        Ok(Self {
+            name: name.to_string(),
+            archive,
+        })
+    }
+
+    /// The programs: the file, or the archive's `_MPF` and `_SPF` members.
+    pub fn programs<'a>(&'a self, bytes: &'a [u8]) -> Vec<Program<'a>> {
+        let Some(archive) = &self.archive else {
+            return vec![Program {
+                name: self.name.clone(),
+                document: Document {
+                    name: &self.name,
+                    source: bytes,
+                    kind: program_kind(Some(&self.name), bytes),
+                },
+                member: None,
+            }];
+        };
+        archive
+            .members
+            .iter()
+            .enumerate()
+            .filter_map(|(index, member)| {
+                let MemberKind::Program(kind) = member.kind else {
+                    return None;
+                };
+                Some(Program {
+                    name: self.member_name(index),
+                    document: Document {
+                        name: &member.file_name,
+                        source: &bytes[member.data.clone()],
+                        kind,
+                    },
+                    member: Some(index),
+                })
+            })
+            .collect()
+    }
+
+    /// A member's bytes in `bytes` (the archive's).
+    pub fn member_bytes<'a>(&self, bytes: &'a [u8], index: usize) -> &'a [u8] {
+        match &self.archive {
+            Some(archive) => &bytes[archive.members[index].data.clone()],
+            None => bytes,
+        }
+    }
+
+    /// `ARCH.arc:PART_MPF`.
+    pub fn member_name(&self, index: usize) -> String {
+        match &self.archive {
+            Some(archive) => format!("{}:{}", self.name, archive.members[index].name),
+            None => self.name.clone(),
+        }
+    }
+
+    /// Adds to `settings` what the archive holds for its programs: the
+    /// variables and macros of its definition members, the axis names of
+    /// its data members, the subprograms its program members declare (found
+    /// before the cycle directories', as the program's own directory is on
+    /// the control), and its HEAD_DEF_SPF when no other is given. Gives
+    /// back the members that could not be read.
+    pub fn settings(&self, bytes: &[u8], settings: &mut Settings) -> Vec<Unreadable> {
+        let mut unreadable = Vec::new();
+        let Some(archive) = &self.archive else {
+            return unreadable;
+        };
+        let environment = &mut settings.environment;
+        let mut own = Environment::default();
+        for (index, member) in archive.members.iter().enumerate() {
+            let data = &bytes[member.data.clone()];
+            let read = match member.kind {
+                MemberKind::Definitions => environment.read_definitions(data),
+                MemberKind::Data => environment.read_machine_data(data),
+                MemberKind::Program(_) => {
+                    own.read_procedure(data);
+                    if settings.heads.is_none() && member.name.eq_ignore_ascii_case("HEAD_DEF_SPF")
+                    {
+                        settings.heads = Some(Heads::read(self.member_name(index), data));
+                    }
+                    continue;
+                }
+                MemberKind::Other => continue,
+            };
+            environment.given = true;
+            if let Err(diagnostics) = read {
+                unreadable.push(Unreadable {
+                    member: index,
+                    diagnostics,
+                });
+            }
+        }
+        if !own.procedures.is_empty() {
+            let mut all = (*environment.procedures).clone();
+            all.extend(Arc::unwrap_or_clone(own.procedures));
+            environment.procedures = Arc::new(all);
+        }
+        unreadable
+    }
+}

@@ -1,0 +1,363 @@
+//! Archives as a control writes them: the text form (`%_N_` sections,
+//! `tests/fixtures/archive/SHOP.ARC`, written by hand) and the binary form
+//! of series start-up (`@@MMCIBN.002`, built by `support::binary_archive`).
+//! Each program member is checked, rewritten and evaluated as a program of
+//! its own; every other byte stays.
+
+mod support;
+
+use support::{assert_exit, binary_archive, binary_members, run, stdout};
+
+fn shop() -> std::path::PathBuf {
+    support::repo().join("tests/fixtures/archive/SHOP.ARC")
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("sinuprep-arc-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    dir
+}
+
+/// The sections of SHOP.ARC as (NC path, bytes without the header line).
+fn shop_sections() -> Vec<(String, Vec<u8>)> {
+    let text = std::fs::read_to_string(shop()).expect("fixture");
+    text.split_inclusive('\n')
+        .fold(Vec::<(String, Vec<u8>)>::new(), |mut sections, line| {
+            if let Some(name) = line.strip_prefix("%_N_") {
+                let name = name.trim_end();
+                let dir = name.rsplit('_').next().unwrap_or("");
+                sections.push((format!("/_N_{dir}_DIR/_N_{name}"), line.as_bytes().to_vec()));
+            } else if let Some((_, data)) = sections.last_mut() {
+                data.extend_from_slice(line.as_bytes());
+            }
+            sections
+        })
+}
+
+fn shop_binary() -> Vec<u8> {
+    let mut members: Vec<(String, Vec<u8>)> = shop_sections();
+    // Members that are no NC: a log and binary data, left alone.
+    members.push((
+        "/_N_LOG_DIR/_N_SETUP_TXT".into(),
+        b"saved 2026-12-02\r\n".to_vec(),
+    ));
+    members.push((
+        "/_N_DRV_DIR/_N_DRIVE_ACX".into(),
+        (0..=255u8).cycle().take(700).collect(),
+    ));
+    let borrowed: Vec<(&str, &[u8])> = members.iter().map(|(p, d)| (p.as_str(), &d[..])).collect();
+    binary_archive(&borrowed)
+}
+
+#[test]
+fn each_program_of_a_text_archive_is_checked_with_the_archive_as_its_environment() {
+    let name = shop().display().to_string();
+    let output = run(&["check", "--format", "short", &name], b"");
+    assert_exit(&output, 1);
+    // The member's own line (8 of PART_MPF, 19 of the file); the globals
+    // of MGUD_DEF are defined and L_DRILL's PROC is known, so neither
+    // N005 nor N018 speaks.
+    assert_eq!(
+        stdout(&output),
+        format!("{name}:PART_MPF:8:8: error[N022] address X is programmed twice in this block (`X10` and `X20`): the control takes it once\n")
+    );
+    let summary = String::from_utf8_lossy(&output.stderr);
+    assert!(summary.contains("1 error in 4 files"), "{summary}");
+    assert!(
+        !summary.contains("without the machine's environment"),
+        "{summary}"
+    );
+}
+
+#[test]
+fn a_binary_archive_reads_as_its_text_form_does_and_its_other_members_are_left_alone() {
+    let dir = scratch("check");
+    let path = dir.join("SETUP.ARC");
+    std::fs::write(&path, shop_binary()).expect("write");
+    let name = path.display().to_string();
+    let output = run(&["check", "--format", "short", &name], b"");
+    assert_exit(&output, 1);
+    assert_eq!(
+        stdout(&output),
+        format!("{name}:PART_MPF:8:8: error[N022] address X is programmed twice in this block (`X10` and `X20`): the control takes it once\n")
+    );
+    let json = run(&["check", "--format", "json", &name], b"");
+    let document: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let paths: Vec<&str> = document["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .filter_map(|f| f["path"].as_str())
+        .collect();
+    let member = |m: &str| format!("{name}:{m}");
+    assert_eq!(
+        paths,
+        [
+            member("L_DRILL_SPF"),
+            member("HEAD_DEF_SPF"),
+            member("PART_MPF"),
+            member("FLANGE_MPF")
+        ]
+    );
+    // A directory's walk takes archives.
+    let output = run(
+        &["check", "--format", "short", dir.to_str().expect("utf-8")],
+        b"",
+    );
+    assert!(
+        stdout(&output).contains(":PART_MPF:8:8:"),
+        "{}",
+        stdout(&output)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_rewrite_in_place_changes_the_rewritten_member_and_its_header_only() {
+    let dir = scratch("rewrite");
+    let path = dir.join("SETUP.ARC");
+    let before = shop_binary();
+    std::fs::write(&path, &before).expect("write");
+    let heads = support::repo().join("samples/HEAD_DEF.SPF");
+    let heads = heads.to_str().expect("utf-8");
+    // The archive's own HEAD_DEF_SPF names the heads.
+    let output = run(
+        &["rewrite", "--in-place", path.to_str().expect("utf-8")],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let after = std::fs::read(&path).expect("read");
+    let (old, new) = (binary_members(&before), binary_members(&after));
+    assert_eq!(old.len(), new.len());
+    // The flange program, rewritten alone, is what its member became.
+    let flange = dir.join("FLANGE.MPF");
+    let (_, flange_bytes) = old
+        .iter()
+        .find(|(p, _)| p.ends_with("FLANGE_MPF"))
+        .expect("member");
+    std::fs::write(&flange, flange_bytes).expect("write");
+    let alone = run(
+        &["rewrite", "--heads", heads, flange.to_str().expect("utf-8")],
+        b"",
+    );
+    assert_exit(&alone, 0);
+    for ((old_path, old_data), (new_path, new_data)) in old.iter().zip(&new) {
+        assert_eq!(old_path, new_path);
+        if old_path.ends_with("FLANGE_MPF") {
+            assert_eq!(new_data, &alone.stdout, "the rewritten member");
+            assert_ne!(new_data, old_data);
+        } else {
+            assert_eq!(new_data, old_data, "{old_path} unchanged");
+        }
+    }
+    // Before the flange member, not a byte moved.
+    let at = memchr_find(&before, b"/_N_MPF_DIR/_N_FLANGE_MPF") - 257;
+    assert_eq!(before[..at], after[..at]);
+    // The backup is the archive as it was.
+    let backup = std::fs::read(dir.join("SETUP.ARC.bak"));
+    assert_eq!(backup.expect("backup"), before);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+fn memchr_find(haystack: &[u8], needle: &[u8]) -> usize {
+    haystack
+        .windows(needle.len())
+        .position(|w| w == needle)
+        .expect("found")
+}
+
+#[test]
+fn a_text_archive_is_rewritten_section_by_section() {
+    let heads = support::repo().join("samples/HEAD_DEF.SPF");
+    let heads = heads.to_str().expect("utf-8");
+    let name = shop().display().to_string();
+    let output = run(&["rewrite", &name], b"");
+    assert_exit(&output, 0);
+    let dir = scratch("text");
+    let mut expected = Vec::new();
+    for (path, data) in shop_sections() {
+        let file = dir.join("SECTION.MPF");
+        std::fs::write(&file, &data).expect("write");
+        if path.ends_with("_MPF") {
+            let alone = run(
+                &["rewrite", "--heads", heads, file.to_str().expect("utf-8")],
+                b"",
+            );
+            expected.extend(alone.stdout);
+        } else {
+            expected.extend(data);
+        }
+    }
+    assert_eq!(stdout(&output), String::from_utf8_lossy(&expected));
+    // The diff is the archive's, with its lines.
+    let diff = stdout(&run(&["rewrite", "--diff", &name], b""));
+    assert!(
+        diff.starts_with(&format!("--- {name}\n+++ {name}\n@@ -64,7 +64,8 @@")),
+        "{diff}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_damaged_archive_names_the_member_and_the_offset_and_nothing_is_written() {
+    let dir = scratch("damaged");
+    let path = dir.join("SETUP.ARC");
+    let mut bytes = shop_binary();
+    let part = memchr_find(&bytes, b"/_N_MPF_DIR/_N_PART_MPF") - 257;
+    bytes[part + 130] ^= 0x20;
+    std::fs::write(&path, &bytes).expect("write");
+    let name = path.to_str().expect("utf-8");
+    for command in ["check", "eval"] {
+        let output = run(&[command, name], b"");
+        assert_exit(&output, 2);
+        let said = String::from_utf8_lossy(&output.stderr).replace('\n', " ");
+        assert!(
+            said.contains("member `PART_MPF`") && said.contains(&format!("at byte {part}")),
+            "{said}"
+        );
+    }
+    let output = run(&["rewrite", "--in-place", name], b"");
+    assert_exit(&output, 2);
+    assert_eq!(std::fs::read(&path).expect("read"), bytes);
+    let truncated = &shop_binary()[..part + 600];
+    std::fs::write(&path, truncated).expect("write");
+    let output = run(&["check", name], b"");
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("truncated"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The swivel data of a series start-up archive's `INITIAL.INI` are the
+/// machine; its GUD members are definitions for programs outside it.
+#[test]
+fn an_archive_gives_the_machine_and_the_definitions() {
+    let dir = scratch("machine");
+    let machine = std::fs::read(support::repo().join("samples/MACHINE.SPF")).expect("machine");
+    let mut initial = b"CHANDATA(1)\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\n".to_vec();
+    initial.extend(&machine);
+    let mgud = b"%_N_MGUD_DEF\n;$PATH=/_N_DEF_DIR\nDEF NCK REAL _ZERO_X\n".to_vec();
+    let archive = binary_archive(&[
+        ("/_N_DEF_DIR/_N_MGUD_DEF", &mgud),
+        ("/_N_INITIAL_INI", &initial),
+    ]);
+    let path = dir.join("SERIES.ARC");
+    std::fs::write(&path, archive).expect("write");
+    let path = path.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "axes",
+            "--machine",
+            path,
+            "--record",
+            "1",
+            "--mode",
+            "57",
+            "0",
+            "30",
+            "0",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let from_file = run(
+        &[
+            "axes",
+            "--machine",
+            "samples/MACHINE.SPF",
+            "--record",
+            "1",
+            "--mode",
+            "57",
+            "0",
+            "30",
+            "0",
+        ],
+        b"",
+    );
+    assert_eq!(stdout(&output), stdout(&from_file));
+
+    let program = dir.join("P.MPF");
+    std::fs::write(
+        &program,
+        "G0 X=_ZERO_X\nCYCLE800(0,\"NO_SUCH\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)\nM30\n",
+    )
+    .expect("program");
+    let program = program.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--definitions",
+            path,
+            "--machine",
+            path,
+            program,
+        ],
+        b"",
+    );
+    let report = stdout(&output);
+    assert!(!report.contains("N005"), "{report}");
+    assert!(report.contains("K005"), "{report}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn eval_names_each_program_of_an_archive() {
+    let name = shop().display().to_string();
+    let output = run(&["eval", "--json", &name], b"");
+    assert_exit(&output, 0);
+    let documents: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let documents = documents.as_array().expect("one document per program");
+    assert_eq!(documents.len(), 4);
+    let flange = &documents[3];
+    assert_eq!(flange["path"], format!("{name}:FLANGE_MPF"));
+    assert_eq!(flange["calls"].as_array().map(Vec::len), Some(2));
+}
+
+/// The committed series start-up archive, written byte by byte from the
+/// form's description: its program is checked with its GUD member's names.
+#[test]
+fn the_series_start_up_fixture_reads_as_its_members() {
+    let path = support::repo().join("tests/fixtures/archive/SERIES.ARC");
+    let members = binary_members(&std::fs::read(&path).expect("fixture"));
+    assert_eq!(members.len(), 4);
+    let name = path.display().to_string();
+    let output = run(&["check", "--format", "short", &name], b"");
+    assert_exit(&output, 1);
+    assert_eq!(
+        stdout(&output),
+        format!("{name}:PART_MPF:8:1: error[N025] the circle has an end point but neither a centre (I, J, K) nor a radius (CR)\n")
+    );
+}
+
+#[test]
+fn check_fix_fixes_a_member_and_keeps_the_archive_readable() {
+    let dir = scratch("fix");
+    let path = dir.join("FIX.ARC");
+    let fixable: &[u8] = b"DEF REAL Depth\nR1=DEPTH+1 ; sinuprep: ignore N005, N016\nM30\n";
+    let other: &[u8] = b"PROC OTHER\nDEF REAL Depth\nR1=DEPTH\nM17\n";
+    let before = binary_archive(&[
+        ("/_N_MPF_DIR/_N_PART_MPF", fixable),
+        ("/_N_SPF_DIR/_N_OTHER_SPF", other),
+    ]);
+    std::fs::write(&path, &before).expect("write");
+    let name = path.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "check", "--fix", "--select", "N,N015", "--format", "short", name,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let members = binary_members(&std::fs::read(&path).expect("read"));
+    assert_eq!(members[1].1, b"DEF REAL Depth\nR1=Depth+1\nM30\n");
+    assert_eq!(members[2].1, b"PROC OTHER\nDEF REAL Depth\nR1=Depth\nM17\n");
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        said.contains(&format!("{name}: fixed 4 findings")),
+        "{said}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
