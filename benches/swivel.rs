@@ -1,7 +1,8 @@
 //! Swivels solved per second on one thread: the rotary axis positions of a
 //! frame rotation on four records (a C-A head with limits, an A-C table with
 //! offset vectors, a 45° nutating mixed machine, a Hirth-toothed head), one
-//! `kinematics::solve` call per swivel.
+//! `kinematics::solve` call per swivel; and swivels split over a table and
+//! a head (three rotary axes), one `kinematics::split` call each.
 //!
 //! Run with `cargo bench --bench swivel`. A benchmark, not a test: it asserts
 //! nothing about time. `SINUPREP_BENCH_ROUNDS=20000` makes a run short enough
@@ -14,7 +15,9 @@ mod best;
 use best::best_of_five;
 
 use nalgebra::Vector3;
-use sinuprep::kinematics::{solve, Direction, Hirth, Kinematics, Record, Request, RotaryAxis};
+use sinuprep::kinematics::{
+    solve, split, Direction, Hirth, Kinematics, Record, Request, RotaryAxis,
+};
 use sinuprep::rotation::{matrix, Kind, Sequence};
 
 fn axis(vector: [f64; 3], limits: Option<(f64, f64)>, hirth: Option<f64>) -> RotaryAxis {
@@ -27,6 +30,7 @@ fn axis(vector: [f64; 3], limits: Option<(f64, f64)>, hirth: Option<f64>) -> Rot
             increment,
         }),
         limits,
+        angle: 0.0,
     }
 }
 
@@ -132,4 +136,38 @@ fn main() {
             seconds / swivels as f64 * 1e9
         );
     }
+    // Three rotary axes: a B table under a C-A head, the table's angle
+    // searched (about 600 head swivels each, then a golden-section search).
+    let table = record(
+        Kinematics::Table,
+        [
+            axis([0.0, -1.0, 0.0], Some((-360.0, 360.0)), None),
+            axis([0.0; 3], None, None),
+        ],
+        zero,
+    );
+    let head = record(
+        Kinematics::Head,
+        [
+            axis([0.0, 0.0, 1.0], Some((-180.0, 180.0)), None),
+            axis([1.0, 0.0, 0.0], Some((-45.0, 45.0)), None),
+        ],
+        zero,
+    );
+    let splits = (rounds / 4000).max(10);
+    let seconds = best_of_five(|| {
+        let mut checksum = 0.0;
+        for i in 0..splits {
+            let request = black_box(&requests[i % requests.len()]);
+            checksum += split(&table, &head, request, 0.0, None)
+                .expect("valid")
+                .table;
+        }
+        checksum
+    });
+    println!(
+        "split B table + C-A head: {:.0} splits/s on one thread ({:.0} µs each, {splits} splits, best of 5)",
+        splits as f64 / seconds,
+        seconds / splits as f64 * 1e6
+    );
 }

@@ -361,3 +361,60 @@ fn check_fix_fixes_a_member_and_keeps_the_archive_readable() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A text archive rewritten in place: the rewritten section changes, every
+/// other section stays byte for byte.
+#[test]
+fn a_text_archive_rewritten_in_place_keeps_its_other_sections() {
+    let dir = scratch("text-in-place");
+    let path = dir.join("SHOP.ARC");
+    std::fs::copy(shop(), &path).expect("copy");
+    let output = run(
+        &[
+            "rewrite",
+            "--in-place",
+            "--no-backup",
+            path.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let after = std::fs::read_to_string(&path).expect("read");
+    let before = std::fs::read_to_string(shop()).expect("fixture");
+    let flange = before.find("%_N_FLANGE_MPF").expect("section");
+    let mask = before.find("%_N_MASK_COM").expect("section");
+    assert_eq!(after[..flange], before[..flange]);
+    assert!(after.ends_with(&before[mask..]));
+    assert!(after[flange..].contains("_CYC600_2=37.792346"), "{after}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An archive piped in reads as one given by name.
+#[test]
+fn an_archive_on_stdin_is_read_as_its_members() {
+    let bytes =
+        std::fs::read(support::repo().join("tests/fixtures/archive/SERIES.ARC")).expect("fixture");
+    let output = run(&["check", "--format", "short", "-"], &bytes);
+    assert_exit(&output, 1);
+    assert!(
+        stdout(&output).starts_with("<stdin>:PART_MPF:8:1: error[N025]"),
+        "{}",
+        stdout(&output)
+    );
+    let named = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--stdin-filename",
+            "SAVED.ARC",
+            "-",
+        ],
+        &bytes,
+    );
+    assert!(
+        stdout(&named).starts_with("SAVED.ARC:PART_MPF:8:1:"),
+        "{}",
+        stdout(&named)
+    );
+}

@@ -815,11 +815,135 @@ fn axes_computes_a_swivel_on_the_sample_machine() {
 
     let several = axes(&["0", "30", "0"]);
     assert_exit(&several, 2);
-    assert!(flat(&several.stderr).contains("4 records: name one with --record"));
+    assert!(flat(&several.stderr).contains("6 records: name one with --record"));
     let misspelt = axes(&["--record", "HEAD_AC", "0", "30", "0"]);
     assert!(flat(&misspelt.stderr).contains("did you mean `HEAD_CA`?"));
     let mode = axes(&["--record", "1", "--mode", "64", "0", "30", "0"]);
     assert_exit(&mode, 2);
+
+    // At a pole (the tool straight down, A=0) C is free: it keeps the
+    // record's specified angle $TC_CARR13, the position offline.
+    let dir = scratch("axes-specified");
+    let specified = dir.join("M.SPF");
+    let sample = std::fs::read_to_string(machine).expect("machine");
+    std::fs::write(&specified, format!("{sample}\n$TC_CARR13[1]=45\n")).expect("write");
+    let pole = run(
+        &[
+            "axes",
+            "--machine",
+            specified.to_str().expect("utf-8"),
+            "--record",
+            "HEAD_CA",
+            "0",
+            "0",
+            "0",
+        ],
+        b"",
+    );
+    assert!(
+        stdout(&pole).contains("solution 1: C=45 A=0"),
+        "{}",
+        stdout(&pole)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Three rotary axes: the sample's B table under its C-A head. A table
+/// about Y under a head tilting about X makes the frame as `R_y(β) R_x(α)
+/// R_z(γ)`: the intrinsic Y, X', Z'' angles `convert` gives (computed
+/// apart, from the rotation matrix) are the table's angle, the head's tilt
+/// and what is left about the tool axis.
+#[test]
+fn axes_splits_a_swivel_between_a_table_and_a_head() {
+    let machine = support::repo().join("samples/MACHINE.SPF");
+    let machine = machine.to_str().expect("utf-8");
+    let split = |extra: &[&str]| {
+        let mut args = vec![
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "HEAD_H",
+            "--table",
+            "TABLE_B",
+            "--dir",
+            "1",
+        ];
+        args.extend_from_slice(extra);
+        run(&args, b"")
+    };
+    let convert = run(
+        &[
+            "convert", "30", "45", "60", "--from", "i:XYZ", "--to", "i:YXZ", "--json",
+        ],
+        b"",
+    );
+    let angles: serde_json::Value = serde_json::from_slice(&convert.stdout).expect("JSON");
+    let angle = |i: usize| angles["angles"][i].as_f64().expect("angle");
+    let output = split(&["--json", "30", "45", "60"]);
+    assert_exit(&output, 0);
+    let document: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let table = &document["table"];
+    assert_eq!(
+        (&table["record"], &table["axis"], &table["fixed"]),
+        (&"TABLE_B".into(), &"B".into(), &false.into())
+    );
+    assert!(
+        (table["position"].as_f64().expect("B") - angle(0)).abs() < 1e-7,
+        "{table}"
+    );
+    let taken = &document["solutions"][document["chosen"].as_u64().expect("chosen") as usize];
+    assert!(
+        (taken["axes"]["A"].as_f64().expect("A") - angle(1)).abs() < 1e-7,
+        "{taken}"
+    );
+    assert!(
+        taken["axes"]["C"].as_f64().expect("C").abs() < 1e-6,
+        "{taken}"
+    );
+    let residual = &document["residual"];
+    let about_z = residual[1][0]
+        .as_f64()
+        .expect("r10")
+        .atan2(residual[0][0].as_f64().expect("r00"));
+    assert!((about_z.to_degrees() - angle(2)).abs() < 1e-6, "{residual}");
+
+    // Fixed, the table leaves the head more to tilt; outside the head's
+    // reach, nothing is taken (exit 1).
+    let fixed = split(&["--fix", "b=20", "30", "45", "60"]);
+    assert_exit(&fixed, 0);
+    assert!(
+        stdout(&fixed).contains("table: record 5 (TABLE_B): B=20 (fixed by --fix)"),
+        "{}",
+        stdout(&fixed)
+    );
+    let beyond = split(&["--fix", "B=-60", "30", "45", "60"]);
+    assert_exit(&beyond, 1);
+    assert!(
+        stdout(&beyond).contains("taken: none"),
+        "{}",
+        stdout(&beyond)
+    );
+    let wrong = split(&["--fix", "C=20", "30", "45", "60"]);
+    assert_exit(&wrong, 2);
+    assert!(flat(&wrong.stderr).contains("turns axis `B`"));
+    let not_a_table = run(
+        &[
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "HEAD_H",
+            "--table",
+            "HEAD_CA",
+            "30",
+            "45",
+            "60",
+        ],
+        b"",
+    );
+    assert_exit(&not_a_table, 2);
+    assert!(flat(&not_a_table.stderr).contains("must be kinematics \"P\" with one rotary axis"));
 }
 
 /// A machine file's bad data is told at its line, and a record it makes
@@ -894,7 +1018,7 @@ fn eval_shows_the_axis_positions_of_each_swivel() {
     let program = dir.join("P.MPF");
     std::fs::write(
         &program,
-        "N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 20, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n",
+        "N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 20, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nN15 CYCLE800(1,\"UFK600\",0,57,0,0,0,0,30,0,0,0,0,-1)\nN16 CYCLE800(1,\"UFK600\",0,57,0,0,0,0,R1,0,0,0,0,-1)\nN20 M30\n",
     )
     .expect("program");
     let (m, p) = (
@@ -909,12 +1033,27 @@ fn eval_shows_the_axis_positions_of_each_swivel() {
         "{}",
         stdout(&output)
     );
+    // A CYCLE800 written with constant arguments: B 30 about Y is C -90
+    // (R_z(-90) R_x(-30) Z = (0.5, 0, 0.866), the Z axis turned 30° about Y);
+    // one with a variable is not known offline and not listed.
+    let text = stdout(&output);
+    assert!(
+        text.contains(":2: CYCLE800(1,\"UFK600\",0,57,0,0,0,0,30,0,0,0,0,-1)\n  axes     record 1 (UFK600): C=-90 A=-30 (solution 1 of 2)"),
+        "{text}"
+    );
+    assert!(!text.contains("R1,0"), "{text}");
     std::fs::write(dir.join("sinuprep.toml"), "machine = \"M.SPF\"\n").expect("config");
     let json = run(&["eval", "--json", &p], b"");
     let document: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
     let axes = &document["calls"][0]["axes"];
     assert_eq!(axes["record"], "UFK600");
     assert_eq!(axes["solutions"].as_array().map(Vec::len), Some(2));
+    let written = document["cycle800"].as_array().expect("the CYCLE800 calls");
+    assert_eq!(written.len(), 1);
+    assert_eq!(
+        (&written[0]["line"], &written[0]["axes"]["record"]),
+        (&2.into(), &"UFK600".into())
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

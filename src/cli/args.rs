@@ -65,6 +65,16 @@ pub struct AxesArgs {
     /// [default: the machine's only record with rotary axes].
     #[arg(long, value_name = "NAME")]
     pub record: Option<String>,
+    /// A rotary table under the head: its record (kinematics "P", one axis), by
+    /// name or number. The swivel is split over three rotary axes: the table's
+    /// angle is chosen so that the head (`--record`) stays nearest the middles of
+    /// its limits, and the head is solved for the rest.
+    #[arg(long, value_name = "NAME")]
+    pub table: Option<String>,
+    /// The table's angle, fixed instead of chosen: `--fix B=30` (the table
+    /// axis's name, `$TC_CARR35`, and its position in degrees).
+    #[arg(long, value_name = "AXIS=DEGREES", requires = "table")]
+    pub fix: Option<String>,
     /// CYCLE800's `_MODE` for axis-by-axis rotation: the sequence code of the
     /// three rotations about the turned axes (57 = X, Y', Z''; 27 = Z, Y', X'').
     #[arg(long, default_value_t = 57)]

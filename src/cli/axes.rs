@@ -13,7 +13,7 @@ use crate::cli::error::CliError;
 use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
-use crate::kinematics::{solve, Direction, Record, Request, Swivel};
+use crate::kinematics::{solve, split, Direction, Record, Request, Split, Swivel, TableAngle};
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::{Machine, Reading};
 use crate::workspace::{Config, SettingsError};
@@ -40,19 +40,55 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         } else {
             Direction::Minus
         },
-        current: [0.0; 2],
+        current: record.specified(),
     };
-    let swivel = solve(&record, &request).map_err(|error| CliError::Record {
+    let refused = |record: &Record, error: &dyn std::fmt::Display| CliError::Record {
         path: path.clone(),
-        why: format!("record {}: {error}", describe(&record)),
-    })?;
-    let text = if args.json {
-        json(&record, &swivel)
-    } else {
-        table(&record, sequence, angles, args.dir, &swivel)
+        why: format!("record {}: {error}", describe(record)),
+    };
+    let (swivel, split) = match &args.table {
+        None => (
+            solve(&record, &request).map_err(|error| refused(&record, &error))?,
+            None,
+        ),
+        Some(name) => {
+            let table = pick(machine, Some(name), &path)?;
+            let fixed = args
+                .fix
+                .as_deref()
+                .map(|fix| fixed_position(fix, table, &path))
+                .transpose()?;
+            let split = split(table, &record, &request, 0.0, fixed)
+                .map_err(|error| refused(table, &error))?;
+            let mut head = split.head.clone();
+            // The head's offsets shift nothing; the table's do.
+            head.shift = head.shift.map(|shift| shift + split.shift);
+            (head, Some((table, split)))
+        }
+    };
+    let text = match (&split, args.json) {
+        (None, true) => json(&record, &swivel),
+        (None, false) => table(&record, sequence, angles, args.dir, &swivel),
+        (Some((table_record, split)), true) => {
+            let mut document = document(&record, &swivel);
+            document["table"] = table_document(table_record, split);
+            format!(
+                "{}\n",
+                serde_json::to_string_pretty(&document).unwrap_or_default()
+            )
+        }
+        (Some((table_record, split)), false) => {
+            let mut text = table(&record, sequence, angles, args.dir, &swivel);
+            let line = table_line(table_record, split);
+            // After the record's line: the table is part of the machine.
+            let at = text.find('\n').map_or(text.len(), |n| n + 1);
+            text.insert_str(at, &line);
+            text
+        }
     };
     write_stdout(text.as_bytes())?;
-    let found = if swivel.chosen.is_some() {
+    let table_inside = split.as_ref().is_none_or(|(_, s)| s.table_within_limits);
+    let found = if swivel.chosen.is_some() && table_inside {
         ExitStatus::Success
     } else {
         ExitStatus::Failure
@@ -98,6 +134,67 @@ pub fn load(path: &Path, reading: Reading) -> Result<Loaded, CliError> {
         eprint!("{text}");
     }
     Ok(Loaded { machine, name })
+}
+
+/// `--fix B=30`: the table's position; the name must be the table axis's.
+fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliError> {
+    let label = table.axes[0].label(0);
+    let refused = |why: String| CliError::Record {
+        path: path.to_path_buf(),
+        why,
+    };
+    let (name, value) = fix.split_once('=').ok_or_else(|| {
+        refused(format!(
+            "`--fix {fix}`: write the table's axis and its position, as `--fix {label}=30`"
+        ))
+    })?;
+    if !name.trim().eq_ignore_ascii_case(&label) {
+        return Err(refused(format!(
+            "`--fix {fix}`: the table {} turns axis `{label}`",
+            describe(table)
+        )));
+    }
+    value
+        .trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| {
+            refused(format!(
+                "`--fix {fix}`: `{}` is no number of degrees",
+                value.trim()
+            ))
+        })
+}
+
+/// The table's part of a split, one line.
+fn table_line(table: &Record, split: &Split) -> String {
+    let how = match split.found {
+        TableAngle::Fixed => "fixed by --fix",
+        TableAngle::Chosen => "chosen: the head nearest the middles of its limits",
+    };
+    let limits = if split.table_within_limits {
+        ""
+    } else {
+        ", outside its limits"
+    };
+    format!(
+        "table: record {}: {}={} ({how}{limits})\n",
+        describe(table),
+        table.axes[0].label(0),
+        n(split.table)
+    )
+}
+
+fn table_document(table: &Record, split: &Split) -> serde_json::Value {
+    serde_json::json!({
+        "record": table.name,
+        "number": table.number,
+        "axis": table.axes[0].label(0),
+        "position": split.table,
+        "within_limits": split.table_within_limits,
+        "fixed": split.found == TableAngle::Fixed,
+    })
 }
 
 /// `--machine`, or sinuprep.toml's `machine` from the current directory up.

@@ -14,7 +14,7 @@ use crate::emit::number::format;
 use crate::kinematics::{solve, Record, Request, Swivel};
 use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::machine::Reading;
-use crate::semantic::swivels;
+use crate::semantic::swivels::{self, Asked};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
@@ -127,7 +127,23 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
                         call
                     })
                     .collect();
-                documents.push(serde_json::json!({ "path": name, "calls": calls }));
+                let mut document = serde_json::json!({ "path": name, "calls": calls });
+                if let Some(machine) = &machine {
+                    let index = LineIndex::new(source);
+                    let written: Vec<serde_json::Value> =
+                        cycle800_swivels(&program.document, machine)
+                            .iter()
+                            .map(|(asked, solved)| {
+                                serde_json::json!({
+                                    "line": index.position(asked.span.start).row,
+                                    "call": String::from_utf8_lossy(asked.span.of(source)),
+                                    "axes": solved_json(solved),
+                                })
+                            })
+                            .collect();
+                    document["cycle800"] = serde_json::Value::Array(written);
+                }
+                documents.push(document);
             }
             Output::Text(text) => {
                 let index = LineIndex::new(source);
@@ -144,6 +160,16 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
                 if calls.is_empty() {
                     text.push_str(&format!("{name}: no CYCLE600 call\n"));
                 }
+                if let Some(machine) = &machine {
+                    for (asked, solved) in cycle800_swivels(&program.document, machine) {
+                        let row = index.position(asked.span.start).row;
+                        text.push_str(&format!(
+                            "{name}:{row}: {}\n  axes     {}\n\n",
+                            String::from_utf8_lossy(asked.span.of(source)),
+                            solved_text(&solved)
+                        ));
+                    }
+                }
             }
         }
     }
@@ -153,39 +179,70 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
 /// The swivel a rotating call makes on its record (what CYCLE800 gets),
 /// solved; `None` for a call that does not turn or turns from a frame only
 /// the control knows (additive).
-fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Result<(Record, Swivel), String>> {
-    let asked = swivels::of_cycle600(site)?;
+fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Solved> {
+    Some(solve_asked(&swivels::of_cycle600(site)?, machine))
+}
+
+/// A swivel solved on its record, or why it could not be.
+type Solved = Result<(Record, Swivel), String>;
+
+/// A swivel asked of the machine, solved on the record it names.
+fn solve_asked(asked: &Asked, machine: &axes::Loaded) -> Solved {
     let Some(record) = machine.machine.record(&asked.record) else {
-        return Some(Err(format!(
+        return Err(format!(
             "{} defines no record `{}`",
             machine.name, asked.record
-        )));
+        ));
     };
     let request = Request {
         rotation: asked.rotation,
         direction: asked.direction,
-        current: [0.0; 2],
+        current: record.specified(),
     };
-    Some(
-        solve(record, &request)
-            .map(|swivel| (record.clone(), swivel))
-            .map_err(|error| format!("record `{}`: {error}", asked.record)),
-    )
+    solve(record, &request)
+        .map(|swivel| (record.clone(), swivel))
+        .map_err(|error| format!("record `{}`: {error}", asked.record))
+}
+
+/// The CYCLE800 calls of a program whose arguments are constants, with the
+/// axis positions each takes: found only where a machine is given.
+fn cycle800_swivels(
+    document: &crate::document::Document,
+    machine: &axes::Loaded,
+) -> Vec<(Asked, Solved)> {
+    if !crate::semantic::mentions_cycle(document.source, b"800") {
+        return Vec::new();
+    }
+    let model = crate::semantic::Model::build(document.source, document.kind);
+    swivels::cycle800_calls(&model)
+        .into_iter()
+        .map(|asked| {
+            let solved = solve_asked(&asked, machine);
+            (asked, solved)
+        })
+        .collect()
+}
+
+fn solved_text(solved: &Solved) -> String {
+    match solved {
+        Err(why) => why.clone(),
+        Ok((record, swivel)) => axes::taken(record, swivel),
+    }
+}
+
+fn solved_json(solved: &Solved) -> serde_json::Value {
+    match solved {
+        Err(why) => serde_json::json!({ "error": why }),
+        Ok((record, swivel)) => axes::document(record, swivel),
+    }
 }
 
 fn swivel_text(site: &CallSite, machine: &axes::Loaded) -> Option<String> {
-    Some(match swivel(site, machine)? {
-        Err(why) => why,
-        Ok((record, swivel)) => axes::taken(&record, &swivel),
-    })
+    Some(solved_text(&swivel(site, machine)?))
 }
 
 fn swivel_json(site: &CallSite, machine: &axes::Loaded) -> serde_json::Value {
-    match swivel(site, machine) {
-        None => serde_json::Value::Null,
-        Some(Err(why)) => serde_json::json!({ "error": why }),
-        Some(Ok((record, swivel))) => axes::document(&record, &swivel),
-    }
+    swivel(site, machine).map_or(serde_json::Value::Null, |solved| solved_json(&solved))
 }
 
 fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {

@@ -2,12 +2,15 @@
 //! frame rotation, from its swivel data record. Pure math beside
 //! [`crate::rotation`] (no syntax, no I/O): the record, Paden-Kahan's
 //! subproblems, and the swivel with its two solutions, limits, `_DIR`,
-//! Hirth grid, residual rotation and zero-point shift. The model and its
+//! Hirth grid, residual rotation and zero-point shift; a table under a
+//! two-axis head, three rotary axes, split between them. The model and its
 //! sources: `reference/kinematics.md`.
 
 pub mod record;
+pub mod split;
 pub(crate) mod subproblem;
 pub mod swivel;
 
 pub use record::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
+pub use split::{split, Split, SplitError, TableAngle};
 pub use swivel::{orientation, solve, Direction, Request, Solution, Swivel};

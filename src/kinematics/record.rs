@@ -73,6 +73,10 @@ pub struct RotaryAxis {
     /// `$TC_CARR30/32`, `31/33`: minimum and maximum position; `None` when
     /// both are 0 (no limit, as the control reads it).
     pub limits: Option<(f64, f64)>,
+    /// `$TC_CARR13/14`: the axis's specified angle, which the control takes
+    /// where no channel axis is referenced (`$TC_CARR21/22`); offline, the
+    /// axis's position before a swivel (0 unless given).
+    pub angle: f64,
 }
 
 impl RotaryAxis {
@@ -177,6 +181,12 @@ impl Record {
             }
         }
         Ok(())
+    }
+
+    /// The axes' positions before a swivel, as offline they are known: their
+    /// specified angles (`$TC_CARR13/14`).
+    pub fn specified(&self) -> [f64; 2] {
+        [self.axes[0].angle, self.axes[1].angle]
     }
 
     /// The axis whose lower or higher position `_DIR` selects: as given, or

@@ -250,7 +250,7 @@ pub fn orientation(record: &Record, angles: [f64; 2]) -> Rotation3<f64> {
 }
 
 /// The zero-point shift of model `angles` (see [`Swivel::shift`]).
-fn shift(record: &Record, angles: [f64; 2]) -> Vector3<f64> {
+pub(crate) fn shift(record: &Record, angles: [f64; 2]) -> Vector3<f64> {
     let [_, l2, l3, l4] = record.offsets;
     let (r1, r2) = (turn(record, 0, angles), turn(record, 1, angles));
     match record.kinematics {
@@ -301,6 +301,7 @@ mod tests {
             offset: 0.0,
             hirth: None,
             limits: None,
+            angle: 0.0,
         }
     }
 

@@ -226,6 +226,7 @@ fn build(
                 increment: number_of(28 + i),
             }),
             limits: (limits != (0.0, 0.0)).then_some(limits),
+            angle: number_of(13 + i),
         }
     };
     let record = Record {

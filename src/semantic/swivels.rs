@@ -177,7 +177,7 @@ pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
     let request = Request {
         rotation: asked.rotation,
         direction: asked.direction,
-        current: [0.0; 2],
+        current: record.specified(),
     };
     // A record whose data cannot describe a machine is K001's, where the
     // machine file is checked.
