@@ -160,6 +160,17 @@ impl Motions {
     pub fn others(self) -> bool {
         self.0 & OTHER_G != 0
     }
+
+    /// The one G function the line writes, when it is one of G0 to G3.
+    pub fn only(self) -> Option<u32> {
+        match self.0 {
+            1 => Some(0),
+            2 => Some(1),
+            4 => Some(2),
+            8 => Some(3),
+            _ => None,
+        }
+    }
 }
 
 /// The bit of the motion G function (G0 to G3, `G01` alike) whose letter is

@@ -144,7 +144,7 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &incomplete_circle::RULE,
-            checker: Some(checker::<EachBlock<incomplete_circle::Checker>>),
+            checker: Some(checker::<incomplete_circle::Checker>),
         },
         Rule {
             info: &missing_feed_rate::RULE,
