@@ -70,7 +70,11 @@ impl<'src> Document<'src> {
         let model = Model::build(self.source, self.kind);
         let heads = settings.heads.as_ref();
         let analysis = analyze(&model, &settings.supplied, heads);
-        let rewrite = rewrite(&model, &analysis, &settings.emit);
+        let mut rewrite = rewrite(&model, &analysis, &settings.emit);
+        if let Some(on) = &settings.machine {
+            let comments = crate::emit::axes::comments(self.source, &analysis, &rewrite.edits, on);
+            rewrite.edits.extend(comments);
+        }
         let mut diagnostics = model.syntax;
         if heads.is_none() && !analysis.calls.is_empty() {
             diagnostics.push(crate::semantic::head_def::not_found());

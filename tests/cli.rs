@@ -1054,6 +1054,15 @@ fn eval_shows_the_axis_positions_of_each_swivel() {
         (&written[0]["line"], &written[0]["axes"]["record"]),
         (&2.into(), &"UFK600".into())
     );
+    // The rewrite names the positions above the code it writes (the
+    // machine from sinuprep.toml); without a machine it does not.
+    let rewritten = stdout(&run(&["rewrite", &p], b""));
+    assert!(
+        rewritten.starts_with("; sinuprep: CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 20, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\n; sinuprep: on UFK600 the axes go to C=-180 A=-20\nN10 CYCLE800(0,\"UFK600\",0,39,"),
+        "{rewritten}"
+    );
+    std::fs::remove_file(dir.join("sinuprep.toml")).expect("remove");
+    assert!(!stdout(&run(&["rewrite", &p], b"")).contains("axes go to"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

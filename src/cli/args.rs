@@ -241,6 +241,13 @@ pub struct RewriteArgs {
     /// Replace later reads of `_CYC600_n` by their values, until the next CYCLE600.
     #[arg(long)]
     pub inline_results: bool,
+    /// The machine's swivel data records: each rewritten swivel gets a comment naming
+    /// the rotary axis positions its record takes [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "FILE")]
+    pub machine: Option<PathBuf>,
+    /// With the machine, add the fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
+    #[arg(long)]
+    pub fine_offsets: bool,
     /// Write the result to FILE (atomically) instead of stdout; with several programs
     /// or a directory, to the directory DIR, mirroring the input tree.
     #[arg(short, long, value_name = "FILE|DIR", conflicts_with = "in_place")]

@@ -17,7 +17,7 @@ use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 
 /// Where a program's rewrite goes.
 enum Target {
@@ -43,7 +43,11 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     if several && !writes_files {
         return Err(CliError::SeveralToStdout { count: paths.len() });
     }
-    let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
+    let workspace = Workspace::new(Given {
+        machine: args.machine.clone(),
+        fine_offsets: args.fine_offsets,
+        ..analysis::given_to_rewrite(&args.analysis)
+    })?;
     let outcomes = parallel::each(paths.len(), |index| {
         let path = match &paths[index] {
             Ok(path) => path,
@@ -110,7 +114,9 @@ fn rewrite_file(
 ) -> Result<Outcome, CliError> {
     let target = target(path, args, several)?;
     let file = read(path)?;
-    let mut settings = workspace.for_rewrite(path)?.settings;
+    let resolved = workspace.for_rewrite(path)?;
+    let mut settings = resolved.settings;
+    settings.machine = workspace.machine(&resolved.config)?;
     settings.emit.keep_original = !args.no_original;
     settings.emit.inline_results = args.inline_results;
     let opened = Opened::read(&file.bytes, &file.name)?;

@@ -2,6 +2,7 @@
 //! ([`crate::edit`]). Everything outside an edit is copied from the source,
 //! so bytes the rewrite does not touch cannot change.
 
+pub mod axes;
 pub mod cycle600;
 pub(crate) mod diff;
 pub mod number;

@@ -6,7 +6,7 @@
 //! record it does not hold) is found here, before the program runs.
 
 use crate::diagnostic::Diagnostic;
-use crate::kinematics::{solve, Direction, Record, Request, Swivel};
+use crate::kinematics::{solve, Direction, Record, Request, Solution, Swivel};
 use crate::registry::{
     hirth_rounding, swivel_direction_outside_limits, swivel_unreachable, undefined_swivel_record,
 };
@@ -187,18 +187,49 @@ pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
     judge(asked, record, &swivel, on.hirth_tolerance_deg)
 }
 
+/// A solution's positions for people: `C=-180 A=-20`.
+fn positions(record: &Record, solution: &Solution) -> String {
+    (0..record.axis_count())
+        .map(|i| {
+            let value = decimals(solution.positions[i], 3);
+            format!("{}={value}", record.axes[i].label(i))
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Where `asked` takes the machine's axes, in a few words for a comment
+/// beside the code: the positions, or why there are none.
+pub fn taken(asked: &Asked, on: &OnMachine) -> String {
+    let Some(record) = on.machine.record(&asked.record) else {
+        return format!("{} defines no record `{}`", on.name, asked.record);
+    };
+    let request = Request {
+        rotation: asked.rotation,
+        direction: asked.direction,
+        current: record.specified(),
+    };
+    let name = if record.name.is_empty() {
+        format!("record {}", record.number)
+    } else {
+        record.name.clone()
+    };
+    match solve(record, &request) {
+        Err(error) => format!("`{name}` cannot be used: {error}"),
+        Ok(swivel) => match swivel.chosen {
+            Some(index) => format!(
+                "on {name} the axes go to {}",
+                positions(record, &swivel.solutions[index])
+            ),
+            None if swivel.solutions.is_empty() => format!("{name} cannot reach this orientation"),
+            None => format!("{name} reaches this orientation only outside its axis limits"),
+        },
+    }
+}
+
 fn judge(asked: &Asked, record: &Record, swivel: &Swivel, tolerance: f64) -> Vec<Diagnostic> {
     let name = &record.name;
-    let positions = |index: usize| {
-        let solution = &swivel.solutions[index];
-        (0..record.axis_count())
-            .map(|i| {
-                let value = decimals(solution.positions[i], 3);
-                format!("{}={value}", record.axes[i].label(i))
-            })
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
+    let positions = |index: usize| positions(record, &swivel.solutions[index]);
     let Some(chosen) = swivel.chosen else {
         let (message, label) = if swivel.solutions.is_empty() {
             (

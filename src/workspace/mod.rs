@@ -235,7 +235,7 @@ impl Workspace {
     }
 
     /// The machine given (or else sinuprep.toml's), read once a run.
-    fn machine(&self, config: &Config) -> Result<Option<Arc<OnMachine>>, SettingsError> {
+    pub fn machine(&self, config: &Config) -> Result<Option<Arc<OnMachine>>, SettingsError> {
         let (path, key) = match (&self.given.machine, &config.machine) {
             (Some(path), _) => (path.clone(), None),
             (None, Some(path)) => (config.resolve(path), Some("machine")),
