@@ -6,17 +6,10 @@
 
 mod support;
 
-use support::{assert_exit, binary_archive, binary_members, run, stdout};
+use support::{assert_exit, binary_archive, binary_members, run, scratch, stdout};
 
 fn shop() -> std::path::PathBuf {
     support::repo().join("tests/fixtures/archive/SHOP.ARC")
-}
-
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("sinuprep-arc-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
-    dir
 }
 
 /// The sections of SHOP.ARC as (NC path, bytes without the header line).
@@ -72,7 +65,7 @@ fn each_program_of_a_text_archive_is_checked_with_the_archive_as_its_environment
 
 #[test]
 fn a_binary_archive_reads_as_its_text_form_does_and_its_other_members_are_left_alone() {
-    let dir = scratch("check");
+    let dir = scratch("arc-check");
     let path = dir.join("SETUP.ARC");
     std::fs::write(&path, shop_binary()).expect("write");
     let name = path.display().to_string();
@@ -115,7 +108,7 @@ fn a_binary_archive_reads_as_its_text_form_does_and_its_other_members_are_left_a
 
 #[test]
 fn a_rewrite_in_place_changes_the_rewritten_member_and_its_header_only() {
-    let dir = scratch("rewrite");
+    let dir = scratch("arc-rewrite");
     let path = dir.join("SETUP.ARC");
     let before = shop_binary();
     std::fs::write(&path, &before).expect("write");
@@ -174,7 +167,7 @@ fn a_text_archive_is_rewritten_section_by_section() {
     let name = shop().display().to_string();
     let output = run(&["rewrite", &name], b"");
     assert_exit(&output, 0);
-    let dir = scratch("text");
+    let dir = scratch("arc-text");
     let mut expected = Vec::new();
     for (path, data) in shop_sections() {
         let file = dir.join("SECTION.MPF");
@@ -201,7 +194,7 @@ fn a_text_archive_is_rewritten_section_by_section() {
 
 #[test]
 fn a_damaged_archive_names_the_member_and_the_offset_and_nothing_is_written() {
-    let dir = scratch("damaged");
+    let dir = scratch("arc-damaged");
     let path = dir.join("SETUP.ARC");
     let mut bytes = shop_binary();
     let part = memchr_find(&bytes, b"/_N_MPF_DIR/_N_PART_MPF") - 257;
@@ -232,7 +225,7 @@ fn a_damaged_archive_names_the_member_and_the_offset_and_nothing_is_written() {
 /// machine; its GUD members are definitions for programs outside it.
 #[test]
 fn an_archive_gives_the_machine_and_the_definitions() {
-    let dir = scratch("machine");
+    let dir = scratch("arc-machine");
     let machine = std::fs::read(support::repo().join("samples/MACHINE.SPF")).expect("machine");
     let mut initial = b"CHANDATA(1)\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\n".to_vec();
     initial.extend(&machine);
@@ -334,7 +327,7 @@ fn the_series_start_up_fixture_reads_as_its_members() {
 
 #[test]
 fn check_fix_fixes_a_member_and_keeps_the_archive_readable() {
-    let dir = scratch("fix");
+    let dir = scratch("arc-fix");
     let path = dir.join("FIX.ARC");
     let fixable: &[u8] = b"DEF REAL Depth\nR1=DEPTH+1 ; sinuprep: ignore N005, N016\nM30\n";
     let other: &[u8] = b"PROC OTHER\nDEF REAL Depth\nR1=DEPTH\nM17\n";
@@ -366,7 +359,7 @@ fn check_fix_fixes_a_member_and_keeps_the_archive_readable() {
 /// other section stays byte for byte.
 #[test]
 fn a_text_archive_rewritten_in_place_keeps_its_other_sections() {
-    let dir = scratch("text-in-place");
+    let dir = scratch("arc-text-in-place");
     let path = dir.join("SHOP.ARC");
     std::fs::copy(shop(), &path).expect("copy");
     let output = run(

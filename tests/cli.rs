@@ -5,7 +5,7 @@ use std::process::{Command, Stdio};
 
 mod support;
 
-use support::{assert_exit, run, stdout};
+use support::{assert_exit, run, scratch, stdout};
 
 #[test]
 fn check_of_clean_samples_exits_0() {
@@ -393,13 +393,6 @@ fn convert_from_stdin_refuses_a_bad_line_without_partial_output() {
 }
 
 /// A directory of its own for one test, emptied first.
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("sinuprep-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
-    dir
-}
-
 const FIXABLE: &str =
     "DEF REAL Depth\nR1=DEPTH+1 ; sinuprep: ignore N005, N016\nR2=DEPTHH\nGOTOF ENDE\nEND1:\nM30\n";
 

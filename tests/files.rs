@@ -9,24 +9,16 @@ mod support;
 
 use std::fs;
 use std::os::unix::fs::{symlink, MetadataExt, PermissionsExt};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-use support::assert_exit;
+use support::{assert_exit, scratch};
 
 const PROGRAM: &[u8] =
     b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n";
 const REFUSED: &[u8] =
     b"N10 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R20, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\nN20 M30\n";
-
-/// A fresh directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("sinuprep-files-{name}-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch dir");
-    dir
-}
 
 fn heads() -> String {
     support::repo()
@@ -85,7 +77,7 @@ fn is_root() -> bool {
 
 #[test]
 fn in_place_refuses_what_is_not_a_regular_file() {
-    let dir = scratch("streams");
+    let dir = scratch("files-streams");
     let heads = heads();
     // `-` (the default path) and /dev/stdin: nothing to replace.
     for path in ["-", "/dev/stdin"] {
@@ -116,7 +108,7 @@ fn in_place_refuses_what_is_not_a_regular_file() {
 
 #[test]
 fn in_place_writes_through_a_symlink_and_keeps_the_link() {
-    let dir = scratch("symlink");
+    let dir = scratch("files-symlink");
     let real = dir.join("real");
     fs::create_dir_all(&real).expect("dir");
     fs::write(real.join("PART.MPF"), PROGRAM).expect("write");
@@ -145,7 +137,7 @@ fn in_place_writes_through_a_symlink_and_keeps_the_link() {
 
 #[test]
 fn in_place_keeps_the_mode_and_the_owner() {
-    let dir = scratch("mode");
+    let dir = scratch("files-mode");
     let path = dir.join("PRIVATE.MPF");
     fs::write(&path, PROGRAM).expect("write");
     fs::set_permissions(&path, fs::Permissions::from_mode(0o600)).expect("chmod");
@@ -208,7 +200,7 @@ fn in_place_keeps_the_mode_and_the_owner() {
 
 #[test]
 fn the_backup_is_never_written_through_a_planted_link() {
-    let dir = scratch("backup-link");
+    let dir = scratch("files-backup-link");
     let path = dir.join("PART.MPF");
     fs::write(&path, PROGRAM).expect("write");
     let victim = dir.join("victim");
@@ -224,7 +216,7 @@ fn the_backup_is_never_written_through_a_planted_link() {
 
 #[test]
 fn leftover_temporary_files_of_killed_runs_are_removed_and_live_ones_kept() {
-    let dir = scratch("leftovers");
+    let dir = scratch("files-leftovers");
     let path = dir.join("PART.MPF");
     fs::write(&path, PROGRAM).expect("write");
     // What a killed run left, under the old fixed name (this process's PID,
@@ -248,7 +240,7 @@ fn leftover_temporary_files_of_killed_runs_are_removed_and_live_ones_kept() {
 
 #[test]
 fn output_onto_the_input_is_an_in_place_rewrite() {
-    let dir = scratch("onto-input");
+    let dir = scratch("files-onto-input");
     let heads = heads();
     fs::write(dir.join("BAD.MPF"), REFUSED).expect("write");
     let output = run_in(
@@ -273,7 +265,7 @@ fn output_onto_the_input_is_an_in_place_rewrite() {
 
 #[test]
 fn directory_walks_take_every_file_once_through_looping_links() {
-    let dir = scratch("loops");
+    let dir = scratch("files-loops");
     let programs = dir.join("programs");
     fs::create_dir_all(programs.join("sub")).expect("dir");
     fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
@@ -300,7 +292,7 @@ fn directory_walks_take_every_file_once_through_looping_links() {
 
 #[test]
 fn concurrent_in_place_rewrites_leave_one_whole_version_and_the_original_as_backup() {
-    let dir = scratch("concurrent");
+    let dir = scratch("files-concurrent");
     let path = dir.join("PART.MPF");
     let heads = heads();
     fs::write(&path, PROGRAM).expect("write");
@@ -340,7 +332,7 @@ fn concurrent_in_place_rewrites_leave_one_whole_version_and_the_original_as_back
 /// refused before anything is read.
 #[test]
 fn a_folder_is_rewritten_file_by_file() {
-    let dir = scratch("folder");
+    let dir = scratch("files-folder");
     let heads = heads();
     fs::create_dir_all(dir.join("in/sub")).expect("dirs");
     fs::write(dir.join("in/A.MPF"), PROGRAM).expect("A");

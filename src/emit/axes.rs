@@ -18,18 +18,11 @@ pub fn comments(source: &[u8], analysis: &Analysis, edits: &[Edit], on: &OnMachi
         .filter(|site| edits.iter().any(|edit| edit.span == site.statement))
         .filter_map(|site| {
             let asked = swivels::of_cycle600(site)?;
-            let content = site.content;
-            let indent: Vec<u8> = content
-                .of(source)
-                .iter()
-                .take_while(|&&b| b == b' ' || b == b'\t')
-                .copied()
-                .collect();
-            let mut comment = indent;
+            let mut comment = crate::emit::cycle600::indent(source, site).to_vec();
             comment.extend_from_slice(b"; sinuprep: ");
             comment.extend_from_slice(swivels::taken(&asked, on).as_bytes());
             comment.extend_from_slice(eol.get_or_init(|| dominant_ending(source)).as_bytes());
-            Some(Edit::insert(content.start, comment))
+            Some(Edit::insert(site.content.start, comment))
         })
         .collect()
 }

@@ -281,6 +281,18 @@ pub fn code(
     }
 }
 
+/// The blanks the call's line begins with, which the lines written for it
+/// begin with too.
+pub(crate) fn indent<'s>(source: &'s [u8], site: &CallSite) -> &'s [u8] {
+    let content = site.content;
+    let blanks = content
+        .of(source)
+        .iter()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count();
+    &source[content.start..content.start + blanks]
+}
+
 fn edits(
     source: &[u8],
     site: &CallSite,
@@ -289,12 +301,7 @@ fn edits(
     eol: &[u8],
 ) -> Vec<Edit> {
     let content = site.content;
-    let indent_len = content
-        .of(source)
-        .iter()
-        .take_while(|&&b| b == b' ' || b == b'\t')
-        .count();
-    let indent = &source[content.start..content.start + indent_len];
+    let indent = indent(source, site);
     let mut edits = Vec::new();
     if options.keep_original {
         let mut comment = indent.to_vec();
