@@ -599,6 +599,37 @@ fn globals_macros_and_axes_of_definition_files_are_defined() {
     let output = run(&args, b"");
     assert_exit(&output, 0);
     assert!(!stdout(&output).contains("N005"), "{}", stdout(&output));
+    // A macro that stands for an end command ends the program where it is
+    // written, as the control expands it (N010, N027).
+    std::fs::write(
+        dir.join("SMAC.DEF"),
+        "DEFINE SAFE_Z AS 250\nDEFINE ENDE AS M30\n",
+    )
+    .expect("write");
+    let ended = dir.join("ENDED.MPF");
+    std::fs::write(&ended, "N10 G0 X0\nN20 ENDE\n").expect("write");
+    let after = dir.join("AFTER.MPF");
+    std::fs::write(&after, "N10 G0 X0\nN20 ENDE\nN30 G1 X5 F100\n").expect("write");
+    let (ended, after) = (
+        ended.to_str().expect("utf-8"),
+        after.to_str().expect("utf-8"),
+    );
+    let ends = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--select",
+            "N010,N027",
+            ended,
+            after,
+        ],
+        b"",
+    );
+    assert_eq!(
+        stdout(&ends),
+        format!("{after}:3:5: warning[N027] this block comes after the program's end (`ENDE`) and no jump reaches it: it never runs\n")
+    );
     // A broken definition file is a tool error at its line and column.
     std::fs::write(dir.join("SMAC.DEF"), "DEFINE SAFE_Z AS 250\nDEF REAL (\n").expect("write");
     let output = run(&args, b"");

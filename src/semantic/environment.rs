@@ -21,8 +21,9 @@ pub struct Environment {
     /// Global variables of definition files (GUD: `DEF NCK REAL _ZERO`),
     /// upper case.
     pub variables: HashSet<String>,
-    /// Macros of definition files (`DEFINE M_ON AS M3`), upper case.
-    pub macros: HashSet<String>,
+    /// Macros of definition files (`DEFINE M_ON AS M3`) by name, upper
+    /// case, with what they stand for.
+    pub macros: HashMap<String, Macro>,
     /// Subprograms of the cycle directories: name (upper case) and how
     /// many parameters their PROC declares. Shared: every program of a
     /// directory reaches the same ones.
@@ -31,6 +32,31 @@ pub struct Environment {
     /// directories): without it, what a program takes from its machine
     /// cannot be checked, and `check` says so once.
     pub given: bool,
+}
+
+/// What a macro stands for where a program writes its name: its text read
+/// as a block once, when its file is read, for the rules that must see
+/// through it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Macro {
+    /// The text after `AS`, as written.
+    pub text: String,
+    /// It ends the program (`DEFINE ENDE AS M30`, `M17`, `M2`, `RET`).
+    pub ends_program: bool,
+}
+
+impl Macro {
+    fn of(text: &[u8]) -> Self {
+        let lines = crate::syntax::Lines::new(text);
+        let ends_program = lines.block(0).is_some_and(|block| {
+            let addresses = crate::semantic::addresses::of_block(text, &block);
+            crate::semantic::addresses::program_end(text, &block, &addresses).is_some()
+        });
+        Self {
+            text: String::from_utf8_lossy(text).into_owned(),
+            ends_program,
+        }
+    }
 }
 
 impl Environment {
@@ -48,7 +74,7 @@ impl Environment {
     /// Whether the environment defines `name` (upper case): an axis, a
     /// global variable or a macro.
     pub fn defines(&self, name: &str) -> bool {
-        self.axes.contains(name) || self.variables.contains(name) || self.macros.contains(name)
+        self.axes.contains(name) || self.variables.contains(name) || self.macros.contains_key(name)
     }
 
     /// Learns the variables and macros of a definition file (GUD or macro
@@ -66,9 +92,11 @@ impl Environment {
                 continue;
             };
             for statement in &block.statements {
-                if let StatementKind::Define { name, .. } = &statement.kind {
-                    self.macros
-                        .insert(crate::syntax::tree::upper(name.text(source)));
+                if let StatementKind::Define { name, body } = &statement.kind {
+                    self.macros.insert(
+                        crate::syntax::tree::upper(name.text(source)),
+                        Macro::of(body.of(source)),
+                    );
                 }
             }
         }
@@ -168,6 +196,12 @@ mod tests {
         for name in ["XC", "_ZERO_Y", "PART_COUNT", "M_ON"] {
             assert!(environment.defines(name), "{name}");
         }
+        environment
+            .read_definitions(b"DEFINE ENDE AS M30\nDEFINE BACK AS RET\nDEFINE FAST AS G0 X0\n")
+            .expect("valid");
+        let ends = |name: &str| environment.macros[name].ends_program;
+        assert!(ends("ENDE") && ends("BACK") && !ends("FAST") && !ends("M_ON"));
+        assert_eq!(environment.macros["M_ON"].text, "M3");
         assert!(!environment.defines("ZERO_X"));
         assert!(environment.read_definitions(b"DEF NCK REAL (\n").is_err());
     }

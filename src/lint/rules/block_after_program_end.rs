@@ -4,7 +4,7 @@ use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{gotos, target, Target};
+use crate::lint::rules::support::{self, gotos, target, Target};
 use crate::semantic::addresses::{self, is_end_word};
 use crate::semantic::blocks::opener;
 use crate::span::Span;
@@ -104,9 +104,7 @@ impl Check for Checker {
             None => self.depth,
         };
         if self.depth == 0 {
-            if let Some(end) =
-                addresses::program_end(file.source, block, line.addresses(file.source))
-            {
+            if let Some(end) = support::program_end(file, block, line.addresses(file.source)) {
                 self.end = Some(end);
             }
         }

@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::is_definition_file;
+use crate::lint::rules::support::{is_definition_file, program_end};
 use crate::span::Span;
 use crate::syntax::tree::{StatementKind, WordValue};
 use crate::syntax::ProgramKind;
@@ -13,7 +13,8 @@ pub static RULE: RuleInfo = RuleInfo {
     severity: Severity::Warning,
     docs: r#"## What it does
 Finds a program whose last block neither ends it (M30, M2, M17, RET) nor jumps unconditionally.
-Blocks after the end that jumps reach often end with a jump back (`GOTOB LOOP`). A main program may end with M17 or RET as a subprogram does (it can be called as one; the
+A macro of the definition files given that stands for one of them (`DEFINE ENDE AS M30`) ends the
+program where it is written, as the control expands it. Blocks after the end that jumps reach often end with a jump back (`GOTOB LOOP`). A main program may end with M17 or RET as a subprogram does (it can be called as one; the
 Programming Manual allows M2, M17 or M30 as the last block), and a subprogram with M30 or M2.
 Files that are not programs (`.DEF` definition files, `.INI` setup data) are not checked. When
 the last block has a syntax error, the finding stands at that block, unless an end command is
@@ -108,13 +109,10 @@ impl Check for Checker {
                 .statements
                 .iter()
                 .any(|s| matches!(s.kind, StatementKind::Goto(_)));
+        let addresses = crate::semantic::addresses::of_block(file.source, &block);
         let ends = jumps
             || m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
-            || block.statements.iter().any(|s| match &s.kind {
-                StatementKind::Command(n) => n.is(file.source, "RET"),
-                StatementKind::Call(call) => call.name.is(file.source, "RET"),
-                _ => false,
-            });
+            || program_end(file, &block, &addresses).is_some();
         // A broken last block may still hold its end where the parser stopped.
         let ends_in_unparsed = block.unparsed.is_some_and(|rest| {
             rest.of(file.source)

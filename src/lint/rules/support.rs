@@ -77,6 +77,22 @@ pub fn is_definition_file(name: &str) -> bool {
         .any(|e| extension.eq_ignore_ascii_case(e))
 }
 
+/// Where the program ends in this block: its M2, M17, M30 or RET, or a
+/// macro of the definition files given whose text ends it (`ENDE` with
+/// `DEFINE ENDE AS M30`), which the control expands where it is written.
+pub fn program_end(file: &FileContext, block: &Block, addresses: &[Address]) -> Option<Span> {
+    crate::semantic::addresses::program_end(file.source, block, addresses).or_else(|| {
+        block.statements.iter().find_map(|statement| {
+            let name = command_name(statement)?;
+            let expanded = file
+                .environment
+                .macros
+                .get(&upper(file.source, name.span))?;
+            expanded.ends_program.then_some(statement.span)
+        })
+    })
+}
+
 /// The words of two addresses, for a message: `X10` and `X20`.
 pub fn both(source: &[u8], first: &Address, second: &Address) -> (String, String) {
     let text = |a: &Address| String::from_utf8_lossy(a.span.of(source)).into_owned();
