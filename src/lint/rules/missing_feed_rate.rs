@@ -3,10 +3,10 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::lint::rules::support::{
-    is_definition_file, leaves_line_order, moves_a_named_axis, upper,
+    is_definition_file, leaves_line_order, moves_a_named_axis, moves_an_axis, upper,
 };
 use crate::semantic::addresses::{self, Address};
-use crate::semantic::modal::{is_axis_letter, is_feed_motion, Modal};
+use crate::semantic::modal::{is_feed_motion, Modal};
 use crate::span::Span;
 
 use crate::syntax::ProgramKind;
@@ -121,12 +121,7 @@ impl Checker {
         let Some(motion) = self.modal.motion.filter(|&m| is_feed_motion(m)) else {
             return;
         };
-        let moves = moves
-            || addresses.iter().any(|a| {
-                (a.name.len() == 1 && is_axis_letter(a.letter(source)))
-                    || a.is(source, "AP")
-                    || a.is(source, "RP")
-            });
+        let moves = moves_an_axis(source, addresses, moves);
         let (true, Some(first), Some(last)) = (moves, addresses.first(), addresses.last()) else {
             return;
         };

@@ -23,6 +23,7 @@ pub mod missing_feed_rate;
 pub mod missing_program_end;
 pub mod proc_name_mismatch;
 pub mod repeated_address;
+pub mod spindle_not_started;
 pub mod support;
 pub mod too_many_m_functions;
 pub mod transformation_with_radius_compensation;
@@ -157,6 +158,10 @@ pub fn all() -> Vec<Rule> {
         Rule {
             info: &transformation_with_radius_compensation::RULE,
             checker: Some(checker::<transformation_with_radius_compensation::Checker>),
+        },
+        Rule {
+            info: &spindle_not_started::RULE,
+            checker: Some(checker::<spindle_not_started::Checker>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,

@@ -4,6 +4,7 @@
 use crate::lint::rule::FileContext;
 use crate::semantic::addresses::Address;
 use crate::semantic::calls::{call_kind, CallKind};
+use crate::semantic::modal::is_axis_letter;
 use crate::span::Span;
 use crate::syntax::tree::{Block, Goto, GotoTarget, Name, Statement, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
@@ -91,6 +92,17 @@ pub fn program_end(file: &FileContext, block: &Block, addresses: &[Address]) -> 
             expanded.ends_program.then_some(statement.span)
         })
     })
+}
+
+/// The block's words move an axis: an axis letter, a polar end point
+/// (`AP`, `RP`), or (`named`) an axis the machine names.
+pub fn moves_an_axis(source: &[u8], addresses: &[Address], named: bool) -> bool {
+    named
+        || addresses.iter().any(|a| {
+            (a.name.len() == 1 && is_axis_letter(a.letter(source)))
+                || a.is(source, "AP")
+                || a.is(source, "RP")
+        })
 }
 
 /// The words of two addresses, for a message: `X10` and `X20`.
