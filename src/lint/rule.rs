@@ -186,3 +186,84 @@ pub struct Rule {
     pub info: &'static RuleInfo,
     pub checker: Option<fn() -> Box<dyn Check>>,
 }
+
+/// A rule that reads a main program from its start in the order the
+/// control runs it, until it has its answer (N026, N029): [`FromStart`] is
+/// its checker. Subprograms are not read (their caller's state holds in
+/// them), nor definition files.
+pub trait FromProgramStart: Default {
+    /// One more block; `named` says that it moves an axis the machine
+    /// names. Gives `true` once the rule has its answer.
+    fn block(
+        &mut self,
+        file: &FileContext,
+        addresses: &[Address],
+        named: bool,
+        out: &mut Vec<Diagnostic>,
+    ) -> bool;
+}
+
+/// The checker of a [`FromProgramStart`] rule: it stops at the first jump,
+/// subprogram or cycle call, `PROC` or modal call, after which the order of
+/// the lines is no longer the order they run in, and begins again at a
+/// program header (`%_N_PART_MPF`).
+#[derive(Default)]
+pub struct FromStart<R> {
+    rule: R,
+    done: bool,
+}
+
+impl<R: FromProgramStart> FromStart<R> {
+    fn reads(&self, file: &FileContext) -> bool {
+        !self.done
+            && file.kind == ProgramKind::Main
+            && !crate::lint::rules::support::is_definition_file(file.name)
+    }
+}
+
+impl<R: FromProgramStart> Check for FromStart<R> {
+    fn line(
+        &mut self,
+        file: &FileContext,
+        _row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        use crate::lint::rules::support::{leaves_line_order, moves_a_named_axis, upper};
+        if let Some(name) = line.header {
+            let main = upper(file.source, name).ends_with("_MPF");
+            *self = Self {
+                rule: R::default(),
+                done: !main,
+            };
+            return;
+        }
+        let Some(block) = line.block.filter(|_| self.reads(file)) else {
+            return;
+        };
+        let addresses = line.addresses(file.source);
+        self.done = leaves_line_order(file, block, addresses)
+            || self
+                .rule
+                .block(file, addresses, moves_a_named_axis(file, block), out);
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        if !self.reads(file) {
+            return;
+        }
+        for line in lines {
+            if self.done {
+                return;
+            }
+            let addresses = addresses::of_plain(file.source, line.raw.content);
+            // `L10`: a subprogram call.
+            self.done = addresses.iter().any(|a| a.is(file.source, "L"))
+                || self.rule.block(file, &addresses, false, out);
+        }
+    }
+}

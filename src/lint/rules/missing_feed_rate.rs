@@ -1,15 +1,11 @@
 //! N026 `missing-feed-rate`: Finds the first feed motion (`G1`, `G2`, `G3`) of a main program before any feed rate F.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{
-    is_definition_file, leaves_line_order, moves_a_named_axis, moves_an_axis, upper,
-};
-use crate::semantic::addresses::{self, Address};
+use crate::lint::rule::{FileContext, FromProgramStart};
+use crate::lint::rules::support::moves_an_axis;
+use crate::semantic::addresses::Address;
 use crate::semantic::modal::{is_feed_motion, Modal};
 use crate::span::Span;
-
-use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N026",
@@ -44,88 +40,30 @@ Program the feed rate in or before the first feed motion (`N20 G1 Z-2 F100`)."#,
 #[derive(Default)]
 pub struct Checker {
     modal: Modal,
-    /// Reported, a feed rate seen, or the order of execution no longer known.
-    done: bool,
 }
 
-impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if let Some(name) = line.header {
-            // A program of its own begins (`%_N_PART_MPF`).
-            let main = upper(file.source, name).ends_with("_MPF");
-            *self = Self {
-                done: !main,
-                ..Self::default()
-            };
-            return;
-        }
-        if self.done || file.kind != ProgramKind::Main || is_definition_file(file.name) {
-            return;
-        }
-        let Some(block) = line.block else {
-            return;
-        };
-        let addresses = line.addresses(file.source);
-        if leaves_line_order(file, block, addresses) {
-            self.done = true;
-            return;
-        }
-        let moves = moves_a_named_axis(file, block);
-        self.step(file, addresses, moves, out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        if self.done || file.kind != ProgramKind::Main || is_definition_file(file.name) {
-            return;
-        }
-        for line in lines {
-            if self.done {
-                return;
-            }
-            let addresses = addresses::of_plain(file.source, line.raw.content);
-            if addresses.iter().any(|a| a.is(file.source, "L")) {
-                self.done = true; // a subprogram call
-                return;
-            }
-            self.step(file, &addresses, false, out);
-        }
-    }
-}
-
-impl Checker {
+impl FromProgramStart for Checker {
     /// The state after one more block; the finding when it moves at a feed
-    /// with none programmed.
-    fn step(
+    /// with none programmed. Answered once a feed rate is programmed.
+    fn block(
         &mut self,
         file: &FileContext,
         addresses: &[Address],
         moves: bool,
         out: &mut Vec<Diagnostic>,
-    ) {
+    ) -> bool {
         let source = file.source;
         self.modal.apply(source, addresses);
         if self.modal.feed {
-            self.done = true;
-            return;
+            return true;
         }
         let Some(motion) = self.modal.motion.filter(|&m| is_feed_motion(m)) else {
-            return;
+            return false;
         };
         let moves = moves_an_axis(source, addresses, moves);
         let (true, Some(first), Some(last)) = (moves, addresses.first(), addresses.last()) else {
-            return;
+            return false;
         };
-        self.done = true;
         out.push(
             RULE.at(Span::new(first.span.start, last.span.end))
                 .message(format!(
@@ -134,5 +72,6 @@ impl Checker {
                 .label("feed motion without F")
                 .help("program the feed rate in this block or before it (F100)"),
         );
+        true
     }
 }

@@ -34,7 +34,7 @@ pub mod undefined_variable;
 pub mod unused_suppression;
 pub mod unused_variable;
 
-use crate::lint::rule::{Check, EachBlock, Rule};
+use crate::lint::rule::{Check, EachBlock, FromStart, Rule};
 
 fn checker<C: Check + Default + 'static>() -> Box<dyn Check> {
     Box::new(C::default())
@@ -149,7 +149,7 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &missing_feed_rate::RULE,
-            checker: Some(checker::<missing_feed_rate::Checker>),
+            checker: Some(checker::<FromStart<missing_feed_rate::Checker>>),
         },
         Rule {
             info: &block_after_program_end::RULE,
@@ -161,7 +161,7 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &spindle_not_started::RULE,
-            checker: Some(checker::<spindle_not_started::Checker>),
+            checker: Some(checker::<FromStart<spindle_not_started::Checker>>),
         },
         Rule {
             info: &cycle600_results_without_stopre::RULE,

@@ -1,14 +1,11 @@
 //! N029 `spindle-not-started`: Finds the first feed motion of a main program that sets a spindle speed but has not started the spindle.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{
-    is_definition_file, leaves_line_order, moves_a_named_axis, moves_an_axis, upper,
-};
-use crate::semantic::addresses::{self, Address};
+use crate::lint::rule::{FileContext, FromProgramStart};
+use crate::lint::rules::support::moves_an_axis;
+use crate::semantic::addresses::Address;
 use crate::semantic::modal::{is_feed_motion, Modal};
 use crate::span::Span;
-use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N029",
@@ -50,65 +47,6 @@ pub struct Checker {
     modal: Modal,
     /// The spindle speed programmed, if any.
     speed: Option<Span>,
-    /// Reported, the spindle started, stopped or positioned, or the order
-    /// of execution no longer known.
-    done: bool,
-}
-
-impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if let Some(name) = line.header {
-            // A program of its own begins (`%_N_PART_MPF`).
-            let main = upper(file.source, name).ends_with("_MPF");
-            *self = Self {
-                done: !main,
-                ..Self::default()
-            };
-            return;
-        }
-        if self.done || file.kind != ProgramKind::Main || is_definition_file(file.name) {
-            return;
-        }
-        let Some(block) = line.block else {
-            return;
-        };
-        let addresses = line.addresses(file.source);
-        // SPOS, SPCON and other spindle commands are commands, which end
-        // the known order too.
-        if leaves_line_order(file, block, addresses) {
-            self.done = true;
-            return;
-        }
-        let moves = moves_a_named_axis(file, block);
-        self.step(file, addresses, moves, out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
-    }
-
-    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        if self.done || file.kind != ProgramKind::Main || is_definition_file(file.name) {
-            return;
-        }
-        for line in lines {
-            if self.done {
-                return;
-            }
-            let addresses = addresses::of_plain(file.source, line.raw.content);
-            if addresses.iter().any(|a| a.is(file.source, "L")) {
-                self.done = true; // a subprogram call
-                return;
-            }
-            self.step(file, &addresses, false, out);
-        }
-    }
 }
 
 /// What an M function does to the question this rule asks.
@@ -127,24 +65,24 @@ fn spindle(source: &[u8], address: &Address) -> Spindle {
     }
 }
 
-impl Checker {
+impl FromProgramStart for Checker {
     /// The state after one more block; the finding when it feeds with a
-    /// speed set and the spindle not started.
-    fn step(
+    /// speed set and the spindle not started. Answered once the spindle is
+    /// started, stopped, positioned or may be (a machine's own M function).
+    fn block(
         &mut self,
         file: &FileContext,
         addresses: &[Address],
         moves: bool,
         out: &mut Vec<Diagnostic>,
-    ) {
+    ) -> bool {
         let source = file.source;
         for address in addresses {
             if address.is(source, "S") {
                 self.speed.get_or_insert(address.span);
             } else if address.is(source, "M") {
                 if let Spindle::Settled = spindle(source, address) {
-                    self.done = true;
-                    return;
+                    return true;
                 }
             }
         }
@@ -152,16 +90,15 @@ impl Checker {
         let (Some(speed), Some(motion)) =
             (self.speed, self.modal.motion.filter(|&m| is_feed_motion(m)))
         else {
-            return;
+            return false;
         };
         let (true, Some(first), Some(last)) = (
             moves_an_axis(source, addresses, moves),
             addresses.first(),
             addresses.last(),
         ) else {
-            return;
+            return false;
         };
-        self.done = true;
         let speed = String::from_utf8_lossy(speed.of(source));
         out.push(
             RULE.at(Span::new(first.span.start, last.span.end))
@@ -171,5 +108,6 @@ impl Checker {
                 .label("cuts with the spindle standing")
                 .help("start the spindle before the first cut (M3, or M4 for the other direction); M6 written for M3 is a common slip"),
         );
+        true
     }
 }
