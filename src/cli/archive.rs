@@ -12,13 +12,16 @@ use crate::document::Document;
 use crate::lint::Settings;
 use crate::semantic::environment::Environment;
 use crate::semantic::head_def::Heads;
-use crate::syntax::program_kind;
+use crate::syntax::{program_kind, ProgramKind};
 
 /// A file, read as an archive if it is one.
 pub struct Opened {
     /// What reports call the file.
     pub name: String,
     pub archive: Option<Archive>,
+    /// The file's kind when it is no archive (read once: it parses the
+    /// first blocks).
+    kind: ProgramKind,
 }
 
 /// One program to check, rewrite or evaluate.
@@ -51,9 +54,14 @@ impl Opened {
                     name: name.to_string(),
                     error,
                 })?;
+        let kind = match archive {
+            Some(_) => ProgramKind::Main,
+            None => program_kind(Some(name), bytes),
+        };
         Ok(Self {
             name: name.to_string(),
             archive,
+            kind,
         })
     }
 
@@ -65,7 +73,7 @@ impl Opened {
                 document: Document {
                     name: &self.name,
                     source: bytes,
-                    kind: program_kind(Some(&self.name), bytes),
+                    kind: self.kind,
                 },
                 member: None,
             }];

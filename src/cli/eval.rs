@@ -11,10 +11,10 @@ use crate::cli::parallel;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
-use crate::kinematics::{solve, Record, Request, Swivel};
+use crate::kinematics::{Record, Swivel};
 use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::machine::Reading;
-use crate::semantic::swivels::{self, Asked};
+use crate::semantic::swivels::{self, Asked, Unsolved};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
@@ -188,20 +188,14 @@ type Solved = Result<(Record, Swivel), String>;
 
 /// A swivel asked of the machine, solved on the record it names.
 fn solve_asked(asked: &Asked, machine: &axes::Loaded) -> Solved {
-    let Some(record) = machine.machine.record(&asked.record) else {
-        return Err(format!(
+    match swivels::solve_on(asked, &machine.machine) {
+        Ok((record, swivel)) => Ok((record.clone(), swivel)),
+        Err(Unsolved::NoRecord) => Err(format!(
             "{} defines no record `{}`",
             machine.name, asked.record
-        ));
-    };
-    let request = Request {
-        rotation: asked.rotation,
-        direction: asked.direction,
-        current: record.specified(),
-    };
-    solve(record, &request)
-        .map(|swivel| (record.clone(), swivel))
-        .map_err(|error| format!("record `{}`: {error}", asked.record))
+        )),
+        Err(Unsolved::Unusable(_, error)) => Err(format!("record `{}`: {error}", asked.record)),
+    }
 }
 
 /// The CYCLE800 calls of a program whose arguments are constants, with the

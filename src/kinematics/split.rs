@@ -74,10 +74,11 @@ pub fn split(
     if head.kinematics != Kinematics::Head || head.axis_count() != 2 {
         return Err(SplitError::NotAHead);
     }
-    let at = |gamma: f64| at_table(table, head, request, gamma);
     if let Some(gamma) = fixed {
-        return Ok(at(gamma)?.with(TableAngle::Fixed));
+        return split_at(table, head, request, gamma, TableAngle::Fixed);
     }
+    let spread_at =
+        |gamma: f64| head_at(table, head, request, gamma).map(|swivel| score(head, &swivel));
     let axis = &table.axes[0];
     let (low, high) = axis
         .limits
@@ -87,7 +88,7 @@ pub fn split(
         |gammas: &mut dyn Iterator<Item = f64>| -> Result<Option<(f64, f64)>, SplitError> {
             let mut best: Option<(f64, f64)> = None;
             for gamma in gammas {
-                let candidate = (score(head, &at(gamma)?.head), gamma);
+                let candidate = (spread_at(gamma)?, gamma);
                 let better = best.is_none_or(|b| {
                     candidate.0 < b.0 - 1e-9
                         || (candidate.0 <= b.0 + 1e-9
@@ -122,7 +123,7 @@ pub fn split(
                         // A minimum between the samples: closed in on.
                         Some((spread, gamma)) if spread > 1e-9 && spread.is_finite() => {
                             let (a, b) = ((gamma - fine).max(low), (gamma + fine).min(high));
-                            let refined = golden(a, b, |g| at(g).map(|s| score(head, &s.head)))?;
+                            let refined = golden(a, b, spread_at)?;
                             best_of(&mut [gamma, refined].into_iter())?
                         }
                         other => other,
@@ -133,7 +134,7 @@ pub fn split(
         }
     };
     let gamma = best.map_or(table_current, |(_, gamma)| gamma);
-    Ok(at(gamma)?.with(TableAngle::Chosen))
+    split_at(table, head, request, gamma, TableAngle::Chosen)
 }
 
 /// The minimum of `f` on `[a, b]` by golden-section search, to 1e-10°.
@@ -159,38 +160,40 @@ fn golden(
     Ok((a + b) / 2.0)
 }
 
-impl Split {
-    fn with(mut self, found: TableAngle) -> Self {
-        self.found = found;
-        self
-    }
-}
-
-/// The split with the table at `gamma`.
-fn at_table(
+/// The head's swivel with the table at `gamma`: `R_kin = T · H`, with `T`
+/// the table's orientation, so the head must make `T⁻¹ · R_req`.
+fn head_at(
     table: &Record,
     head: &Record,
     request: &Request,
     gamma: f64,
-) -> Result<Split, SplitError> {
-    let axis = &table.axes[0];
-    let model = [gamma - axis.offset, 0.0];
-    // R_kin = T · H, with T the table's orientation: H must make T⁻¹ R_req.
+) -> Result<Swivel, SplitError> {
+    let model = [gamma - table.axes[0].offset, 0.0];
     let turned: Rotation3<f64> = orientation(table, model).inverse() * request.rotation;
     let head_request = Request {
         rotation: turned,
         ..*request
     };
-    let swivel = solve(head, &head_request)?;
-    let table_within_limits = axis
-        .limits
-        .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma));
+    Ok(solve(head, &head_request)?)
+}
+
+/// The split with the table at `gamma`, found as `found` says.
+fn split_at(
+    table: &Record,
+    head: &Record,
+    request: &Request,
+    gamma: f64,
+    found: TableAngle,
+) -> Result<Split, SplitError> {
+    let axis = &table.axes[0];
     Ok(Split {
         table: gamma,
-        table_within_limits,
-        found: TableAngle::Fixed,
-        head: swivel,
-        shift: shift(table, model),
+        table_within_limits: axis
+            .limits
+            .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma)),
+        found,
+        head: head_at(table, head, request, gamma)?,
+        shift: shift(table, [gamma - axis.offset, 0.0]),
     })
 }
 

@@ -6,7 +6,7 @@
 //! record it does not hold) is found here, before the program runs.
 
 use crate::diagnostic::Diagnostic;
-use crate::kinematics::{solve, Direction, Record, Request, Solution, Swivel};
+use crate::kinematics::{solve, Direction, Record, RecordError, Request, Solution, Swivel};
 use crate::registry::{
     hirth_rounding, swivel_direction_outside_limits, swivel_unreachable, undefined_swivel_record,
 };
@@ -157,34 +157,53 @@ pub fn cycle800_calls(model: &crate::semantic::Model) -> Vec<Asked> {
     out
 }
 
-/// What the control would report of `asked` on `on`, as findings.
-pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
-    let Some(record) = on.machine.record(&asked.record) else {
-        let known: Vec<&str> = on.machine.usable().map(|r| r.name.as_str()).collect();
-        return vec![undefined_swivel_record::RULE
-            .at(asked.span)
-            .message(format!(
-                "{} defines no swivel data record `{}`: the control stops with an alarm",
-                on.name, asked.record
-            ))
-            .label("no such record")
-            .help(if known.is_empty() {
-                "the machine file holds no usable record".to_string()
-            } else {
-                format!("its records are {}", known.join(", "))
-            })];
-    };
+/// Why a swivel asked of the machine has no answer.
+pub enum Unsolved<'m> {
+    /// The machine has no record of that name.
+    NoRecord,
+    /// The record's data cannot describe a machine (K001's, where the
+    /// machine file is checked).
+    Unusable(&'m Record, RecordError),
+}
+
+/// `asked` solved on the record of `machine` it names, its axes standing
+/// at their specified angles (`$TC_CARR13/14`) before the swivel.
+pub fn solve_on<'m>(
+    asked: &Asked,
+    machine: &'m Machine,
+) -> Result<(&'m Record, Swivel), Unsolved<'m>> {
+    let record = machine.record(&asked.record).ok_or(Unsolved::NoRecord)?;
     let request = Request {
         rotation: asked.rotation,
         direction: asked.direction,
         current: record.specified(),
     };
-    // A record whose data cannot describe a machine is K001's, where the
-    // machine file is checked.
-    let Ok(swivel) = solve(record, &request) else {
-        return Vec::new();
-    };
-    judge(asked, record, &swivel, on.hirth_tolerance_deg)
+    solve(record, &request)
+        .map(|swivel| (record, swivel))
+        .map_err(|error| Unsolved::Unusable(record, error))
+}
+
+/// What the control would report of `asked` on `on`, as findings.
+pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
+    match solve_on(asked, &on.machine) {
+        Ok((record, swivel)) => judge(asked, record, &swivel, on.hirth_tolerance_deg),
+        Err(Unsolved::Unusable(..)) => Vec::new(),
+        Err(Unsolved::NoRecord) => {
+            let known: Vec<&str> = on.machine.usable().map(|r| r.name.as_str()).collect();
+            vec![undefined_swivel_record::RULE
+                .at(asked.span)
+                .message(format!(
+                    "{} defines no swivel data record `{}`: the control stops with an alarm",
+                    on.name, asked.record
+                ))
+                .label("no such record")
+                .help(if known.is_empty() {
+                    "the machine file holds no usable record".to_string()
+                } else {
+                    format!("its records are {}", known.join(", "))
+                })]
+        }
+    }
 }
 
 /// A solution's positions for people: `C=-180 A=-20`.
@@ -201,28 +220,31 @@ fn positions(record: &Record, solution: &Solution) -> String {
 /// Where `asked` takes the machine's axes, in a few words for a comment
 /// beside the code: the positions, or why there are none.
 pub fn taken(asked: &Asked, on: &OnMachine) -> String {
-    let Some(record) = on.machine.record(&asked.record) else {
-        return format!("{} defines no record `{}`", on.name, asked.record);
+    let name = |record: &Record| {
+        if record.name.is_empty() {
+            format!("record {}", record.number)
+        } else {
+            record.name.clone()
+        }
     };
-    let request = Request {
-        rotation: asked.rotation,
-        direction: asked.direction,
-        current: record.specified(),
-    };
-    let name = if record.name.is_empty() {
-        format!("record {}", record.number)
-    } else {
-        record.name.clone()
-    };
-    match solve(record, &request) {
-        Err(error) => format!("`{name}` cannot be used: {error}"),
-        Ok(swivel) => match swivel.chosen {
+    match solve_on(asked, &on.machine) {
+        Err(Unsolved::NoRecord) => format!("{} defines no record `{}`", on.name, asked.record),
+        Err(Unsolved::Unusable(record, error)) => {
+            format!("`{}` cannot be used: {error}", name(record))
+        }
+        Ok((record, swivel)) => match swivel.chosen {
             Some(index) => format!(
-                "on {name} the axes go to {}",
+                "on {} the axes go to {}",
+                name(record),
                 positions(record, &swivel.solutions[index])
             ),
-            None if swivel.solutions.is_empty() => format!("{name} cannot reach this orientation"),
-            None => format!("{name} reaches this orientation only outside its axis limits"),
+            None if swivel.solutions.is_empty() => {
+                format!("{} cannot reach this orientation", name(record))
+            }
+            None => format!(
+                "{} reaches this orientation only outside its axis limits",
+                name(record)
+            ),
         },
     }
 }

@@ -2,10 +2,9 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{FileContext, FromProgramStart};
-use crate::lint::rules::support::moves_an_axis;
+use crate::lint::rules::support::feed_move;
 use crate::semantic::addresses::Address;
-use crate::semantic::modal::{is_feed_motion, Modal};
-use crate::span::Span;
+use crate::semantic::modal::Modal;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N026",
@@ -57,15 +56,11 @@ impl FromProgramStart for Checker {
         if self.modal.feed {
             return true;
         }
-        let Some(motion) = self.modal.motion.filter(|&m| is_feed_motion(m)) else {
-            return false;
-        };
-        let moves = moves_an_axis(source, addresses, moves);
-        let (true, Some(first), Some(last)) = (moves, addresses.first(), addresses.last()) else {
+        let Some((motion, words)) = feed_move(source, &self.modal, addresses, moves) else {
             return false;
         };
         out.push(
-            RULE.at(Span::new(first.span.start, last.span.end))
+            RULE.at(words)
                 .message(format!(
                     "this block moves with G{motion} but no feed rate F has been programmed: the control stops with alarm 10860"
                 ))

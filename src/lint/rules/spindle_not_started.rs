@@ -2,9 +2,9 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{FileContext, FromProgramStart};
-use crate::lint::rules::support::moves_an_axis;
+use crate::lint::rules::support::feed_move;
 use crate::semantic::addresses::Address;
-use crate::semantic::modal::{is_feed_motion, Modal};
+use crate::semantic::modal::Modal;
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -49,20 +49,14 @@ pub struct Checker {
     speed: Option<Span>,
 }
 
-/// What an M function does to the question this rule asks.
-enum Spindle {
-    /// Starts it, stops it, positions it, or may (a machine's own M
-    /// function): the question is answered.
-    Settled,
-    /// A standard function that leaves the spindle as it is.
-    Untouched,
-}
-
-fn spindle(source: &[u8], address: &Address) -> Spindle {
-    match (address.extension.is_some(), address.whole(source)) {
-        (false, Some(0 | 1 | 2 | 6..=9 | 17 | 30 | 40..=45)) => Spindle::Untouched,
-        _ => Spindle::Settled,
-    }
+/// An M function that answers this rule's question: it starts, stops or
+/// positions the spindle, or may (a machine's own M function); the
+/// standard ones that leave the spindle as it is do not.
+fn settles_spindle(source: &[u8], address: &Address) -> bool {
+    !matches!(
+        (address.extension.is_some(), address.whole(source)),
+        (false, Some(0 | 1 | 2 | 6..=9 | 17 | 30 | 40..=45))
+    )
 }
 
 impl FromProgramStart for Checker {
@@ -80,28 +74,19 @@ impl FromProgramStart for Checker {
         for address in addresses {
             if address.is(source, "S") {
                 self.speed.get_or_insert(address.span);
-            } else if address.is(source, "M") {
-                if let Spindle::Settled = spindle(source, address) {
-                    return true;
-                }
+            } else if address.is(source, "M") && settles_spindle(source, address) {
+                return true;
             }
         }
         self.modal.apply(source, addresses);
-        let (Some(speed), Some(motion)) =
-            (self.speed, self.modal.motion.filter(|&m| is_feed_motion(m)))
+        let (Some(speed), Some((motion, words))) =
+            (self.speed, feed_move(source, &self.modal, addresses, moves))
         else {
-            return false;
-        };
-        let (true, Some(first), Some(last)) = (
-            moves_an_axis(source, addresses, moves),
-            addresses.first(),
-            addresses.last(),
-        ) else {
             return false;
         };
         let speed = String::from_utf8_lossy(speed.of(source));
         out.push(
-            RULE.at(Span::new(first.span.start, last.span.end))
+            RULE.at(words)
                 .message(format!(
                     "this block feeds with G{motion} after the spindle speed `{speed}` was set, but the spindle was never started: no M3 or M4 before it"
                 ))

@@ -4,7 +4,7 @@
 use crate::lint::rule::FileContext;
 use crate::semantic::addresses::Address;
 use crate::semantic::calls::{call_kind, CallKind};
-use crate::semantic::modal::is_axis_letter;
+use crate::semantic::modal::{is_axis_letter, is_feed_motion, Modal};
 use crate::span::Span;
 use crate::syntax::tree::{Block, Goto, GotoTarget, Name, Statement, StatementKind};
 pub use crate::syntax::visit::{gotos, reads};
@@ -94,15 +94,25 @@ pub fn program_end(file: &FileContext, block: &Block, addresses: &[Address]) -> 
     })
 }
 
-/// The block's words move an axis: an axis letter, a polar end point
-/// (`AP`, `RP`), or (`named`) an axis the machine names.
-pub fn moves_an_axis(source: &[u8], addresses: &[Address], named: bool) -> bool {
-    named
+/// The feed motion a block makes, after `modal` has taken it in: the G
+/// function in force (`G1`, `G2`, `G3`) and the span of the block's words,
+/// when its words move an axis (an axis letter, a polar end point `AP`,
+/// `RP`, or, `named`, an axis the machine names).
+pub fn feed_move(
+    source: &[u8],
+    modal: &Modal,
+    addresses: &[Address],
+    named: bool,
+) -> Option<(u32, Span)> {
+    let motion = modal.motion.filter(|&m| is_feed_motion(m))?;
+    let moves = named
         || addresses.iter().any(|a| {
             (a.name.len() == 1 && is_axis_letter(a.letter(source)))
                 || a.is(source, "AP")
                 || a.is(source, "RP")
-        })
+        });
+    let (first, last) = (addresses.first()?, addresses.last()?);
+    moves.then(|| (motion, Span::new(first.span.start, last.span.end)))
 }
 
 /// The words of two addresses, for a message: `X10` and `X20`.
