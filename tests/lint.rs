@@ -353,6 +353,8 @@ proptest::proptest! {
             "(IF R1==1|ENDIF|LBL:|GOTOF N[0-9]|SUB1|G0 X1|F100)",
             "/?(N[0-9] )?(G4[0-2] |G1 |X1 |L10 |D1 ){1,3}",
             "(TRAORI|TRAFOOF|TRACYL\\(40\\))",
+            "/?(N[0-9] )?(G1[7-9] |G4[0-2] |G9[01] |X1 |Z1 |D1 ){1,3}(M30|M2)?",
+            "(ATRANS X1|TRANS|AROT Z5|ROT|SCALE)",
             " *",
         ], 0..24),
         ending in proptest::prop_oneof!["\n", "\r\n"],

@@ -7,6 +7,7 @@ use std::collections::{BTreeSet, HashSet};
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::addresses::{self, Address};
 use crate::semantic::labels::Labels;
+use crate::semantic::modal::Modal;
 pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::{Environment, Model};
 use crate::syntax::plain::PlainFacts;
@@ -229,7 +230,7 @@ impl<R: FromProgramStart> Check for FromStart<R> {
         line: &LineView,
         out: &mut Vec<Diagnostic>,
     ) {
-        use crate::lint::rules::support::{leaves_line_order, moves_a_named_axis, upper};
+        use crate::lint::rules::support::{moves_a_named_axis, upper};
         if let Some(name) = line.header {
             let main = upper(file.source, name).ends_with("_MPF");
             *self = Self {
@@ -242,7 +243,7 @@ impl<R: FromProgramStart> Check for FromStart<R> {
             return;
         };
         let addresses = line.addresses(file.source);
-        self.done = leaves_line_order(file, block, addresses)
+        self.done = line.leaves_line_order(file.source)
             || self
                 .rule
                 .block(file, addresses, moves_a_named_axis(file, block), out);
@@ -264,6 +265,161 @@ impl<R: FromProgramStart> Check for FromStart<R> {
             // `L10`: a subprogram call.
             self.done = addresses.iter().any(|a| a.is(file.source, "L"))
                 || self.rule.block(file, &addresses, false, out);
+        }
+    }
+}
+
+/// A rule about the modal state block by block (N028, N030, N031):
+/// [`InLineOrder`] is its checker, which follows the state the blocks leave
+/// in force while the order of the lines is the order the control runs them.
+pub trait ModalRule: Default {
+    /// Whether the rule reads this file, or the program of it that a header
+    /// started: `main` says whether that program is a main program (by the
+    /// header's `_MPF`, else by the file's kind).
+    fn reads(_file: &FileContext, _main: bool) -> bool {
+        true
+    }
+    /// Whether a plain line with these scanned facts can change what the
+    /// rule follows or hold a finding: the others are not read.
+    fn may_matter(facts: &PlainFacts) -> bool;
+    /// One block on the 0-based line `row`, its tree when it has one:
+    /// `before` is the state it starts from, `after` the state it leaves
+    /// when it runs, and `compensated_since` the line where the tool radius
+    /// compensation in force before it was selected.
+    #[allow(clippy::too_many_arguments)]
+    fn block(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        block: Option<&Block>,
+        addresses: &[Address],
+        before: &Modal,
+        after: &Modal,
+        compensated_since: usize,
+        out: &mut Vec<Diagnostic>,
+    );
+}
+
+/// The checker of a [`ModalRule`]. A jump, a block structure (IF, ELSE,
+/// loops, CASE), a subprogram or cycle call or a PROC ends what it knows
+/// (the state is then unknown, so nothing is reported from it); a block
+/// the operator may skip (`/`) makes what it changes unknown; a program
+/// header (`%_N_PART_MPF`) starts over.
+#[derive(Default)]
+pub struct InLineOrder<R> {
+    /// The program a header started is a main program; `None` before any
+    /// header.
+    header_main: Option<bool>,
+    modal: Modal,
+    /// The 0-based line of the compensation in force.
+    compensated_since: usize,
+    rule: R,
+}
+
+impl<R: ModalRule> InLineOrder<R> {
+    fn reads(&self, file: &FileContext) -> bool {
+        let main = self.header_main.unwrap_or(file.kind == ProgramKind::Main);
+        R::reads(file, main)
+    }
+
+    /// One block that keeps the line order; `plain`: its statements are
+    /// address words alone, so no frame statement is among them.
+    #[allow(clippy::too_many_arguments)]
+    fn step(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        block: Option<&Block>,
+        plain: bool,
+        addresses: &[Address],
+        skippable: bool,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        let source = file.source;
+        let before = self.modal;
+        let mut after = before;
+        match block.filter(|_| !plain) {
+            Some(block) => after.apply_block(source, block, addresses),
+            None => after.apply(source, addresses),
+        }
+        self.rule.block(
+            file,
+            row,
+            block,
+            addresses,
+            &before,
+            &after,
+            self.compensated_since,
+            out,
+        );
+        if skippable {
+            self.modal
+                .apply_skippable(source, block.filter(|_| !plain), addresses);
+        } else {
+            self.modal = after;
+        }
+        if self.modal.radius_compensation != before.radius_compensation {
+            self.compensated_since = row;
+        }
+    }
+}
+
+impl<R: ModalRule> Check for InLineOrder<R> {
+    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
+        use crate::semantic::line_order::is_block_structure;
+        let Some(block) = line.block else {
+            if let Some(name) = line.header {
+                // Another program of the file.
+                let main = crate::lint::rules::support::upper(file.source, name).ends_with("_MPF");
+                *self = Self {
+                    header_main: Some(main),
+                    ..Self::default()
+                };
+            }
+            return;
+        };
+        if !self.reads(file) {
+            return;
+        }
+        let addresses = line.addresses(file.source);
+        if is_block_structure(block) || line.leaves_line_order(file.source) {
+            self.modal = Modal::default();
+            return;
+        }
+        let skippable = block.skip.is_some();
+        self.step(
+            file,
+            row,
+            Some(block),
+            line.plain,
+            addresses,
+            skippable,
+            out,
+        );
+    }
+
+    fn sees_plain_lines(&self) -> bool {
+        true
+    }
+
+    fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        if !self.reads(file) {
+            return;
+        }
+        let source = file.source;
+        for line in lines {
+            let facts = &line.facts;
+            if facts.letters.contains(b'L') {
+                self.modal = Modal::default(); // a subprogram call
+                continue;
+            }
+            if !R::may_matter(facts) {
+                continue;
+            }
+            let addresses = addresses::of_plain(source, line.raw.content);
+            let content = line.raw.content.of(source);
+            let skippable = content.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'/');
+            self.step(file, line.row, None, true, &addresses, skippable, out);
         }
     }
 }

@@ -9,6 +9,7 @@
 
 use crate::semantic::addresses::Address;
 use crate::span::Span;
+use crate::syntax::tree::{Block, FrameKind, StatementKind};
 
 /// The group of a G function written as a number (`G1`, `G641`), as the
 /// Programming Manual numbers them; `None` for numbers it does not list.
@@ -129,6 +130,16 @@ pub struct Modal {
     /// word that selected it, `None` under `G40` (the reset value as
     /// delivered) or before any.
     pub radius_compensation: Option<Span>,
+    /// The working plane programmed (group 6: 17, 18 or 19), `None` before
+    /// any: the reset value is machine data (G17 on a mill, G18 on a lathe).
+    pub plane: Option<u32>,
+    /// Incremental dimensions (group 14): the `G91` word that selected them,
+    /// `None` under `G90` (the reset value as delivered) or before any.
+    pub incremental: Option<Span>,
+    /// The programmable frame holds something of the program's own: the
+    /// frame statement that last set it (`ATRANS X10`), `None` while it is
+    /// empty as far as the blocks show (`TRANS` without values clears it).
+    pub programmable_frame: Option<Span>,
 }
 
 impl Modal {
@@ -140,6 +151,9 @@ impl Modal {
                     Some(number) if g_group(number) == Some(1) => self.motion = Some(number),
                     Some(40) => self.radius_compensation = None,
                     Some(41 | 42) => self.radius_compensation = Some(address.span),
+                    Some(number @ 17..=19) => self.plane = Some(number),
+                    Some(90) => self.incremental = None,
+                    Some(91) => self.incremental = Some(address.span),
                     _ => {}
                 }
             } else if address.is(source, "F") && address.extension.is_none() {
@@ -147,6 +161,91 @@ impl Modal {
             }
         }
     }
+
+    /// The state after a block of the tree: its addresses, and what its
+    /// statements do to the programmable frame.
+    pub fn apply_block(&mut self, source: &[u8], block: &Block, addresses: &[Address]) {
+        self.apply(source, addresses);
+        match programmable_frame(source, block) {
+            Some(FrameChange::Set(span)) => self.programmable_frame = Some(span),
+            Some(FrameChange::Clear) => self.programmable_frame = None,
+            None => {}
+        }
+    }
+
+    /// The state after a block the operator may skip (`/N10 G91`): what it
+    /// would change is no longer known, since it may or may not run.
+    pub fn apply_skippable(&mut self, source: &[u8], block: Option<&Block>, addresses: &[Address]) {
+        let mut ran = *self;
+        match block {
+            Some(block) => ran.apply_block(source, block, addresses),
+            None => ran.apply(source, addresses),
+        }
+        fn agree<T: PartialEq>(kept: &mut Option<T>, ran: Option<T>) {
+            if *kept != ran {
+                *kept = None;
+            }
+        }
+        agree(&mut self.motion, ran.motion);
+        agree(&mut self.radius_compensation, ran.radius_compensation);
+        agree(&mut self.plane, ran.plane);
+        agree(&mut self.incremental, ran.incremental);
+        agree(&mut self.programmable_frame, ran.programmable_frame);
+        self.feed &= ran.feed;
+    }
+}
+
+/// What a block's statements do to the programmable frame.
+enum FrameChange {
+    /// A frame statement with values (`TRANS X10`, `AROT Z=30`): the span of
+    /// the statement and its values.
+    Set(Span),
+    /// `TRANS`, `ROT`, `SCALE` or `MIRROR` without values, or an assignment
+    /// to `$P_PFRAME` whose value is not followed: what the programmable
+    /// frame holds is not known to be anything of the blocks' own.
+    Clear,
+}
+
+/// The last change a block makes to the programmable frame (Programming
+/// Manual Fundamentals, "Frame instructions": an absolute instruction
+/// without values, such as `TRANS`, deletes the programmable frame).
+fn programmable_frame(source: &[u8], block: &Block) -> Option<FrameChange> {
+    let statements = &block.statements;
+    let mut change = None;
+    for (index, statement) in statements.iter().enumerate() {
+        match &statement.kind {
+            StatementKind::Frame(frame) => {
+                // The values are the statements after the keyword, up to the next frame statement.
+                let values = statements[index + 1..]
+                    .iter()
+                    .take_while(|s| !matches!(s.kind, StatementKind::Frame(_)))
+                    .last();
+                change = Some(match values {
+                    Some(last) => FrameChange::Set(Span::new(statement.span.start, last.span.end)),
+                    None if matches!(
+                        frame.kind,
+                        FrameKind::Trans | FrameKind::Rot | FrameKind::Scale | FrameKind::Mirror
+                    ) =>
+                    {
+                        FrameChange::Clear
+                    }
+                    // `ATRANS` alone adds nothing.
+                    None => continue,
+                });
+            }
+            StatementKind::Assign(assign)
+                if assign
+                    .target
+                    .name
+                    .text(source)
+                    .eq_ignore_ascii_case(b"$P_PFRAME") =>
+            {
+                change = Some(FrameChange::Clear);
+            }
+            _ => {}
+        }
+    }
+    change
 }
 
 #[cfg(test)]
@@ -250,5 +349,81 @@ mod tests {
         }
         let g = |text: &str| Some(text.as_bytes().to_vec());
         assert_eq!(seen, [g("G41"), g("G41"), g("G42"), None]);
+    }
+
+    /// The state after each line, by the tree.
+    fn states(source: &[u8]) -> Vec<Modal> {
+        let lines = Lines::new(source);
+        let mut modal = Modal::default();
+        (0..lines.len())
+            .map(|row| {
+                let block = lines.block(row).expect("a block");
+                let addresses = of_block(source, &block);
+                if block.skip.is_some() {
+                    modal.apply_skippable(source, Some(&block), &addresses);
+                } else {
+                    modal.apply_block(source, &block, &addresses);
+                }
+                modal
+            })
+            .collect()
+    }
+
+    #[test]
+    fn plane_and_incremental_dimensions_carry_over_blocks() {
+        let source = b"X1\nG18 G91 X1\nZ1\nG90 G19\n";
+        let seen: Vec<_> = states(source)
+            .iter()
+            .map(|m| (m.plane, m.incremental.map(|s| s.of(source).to_vec())))
+            .collect();
+        let g91 = Some(b"G91".to_vec());
+        assert_eq!(
+            seen,
+            [
+                (None, None),
+                (Some(18), g91.clone()),
+                (Some(18), g91),
+                (Some(19), None)
+            ]
+        );
+    }
+
+    #[test]
+    fn the_programmable_frame_is_the_last_statement_that_set_it_until_cleared() {
+        let source =
+            b"ATRANS X10\nAROT Z=R1\nX5\nATRANS\nSCALE\nAMIRROR X0\nMIRROR\nTRANS X1\nROT\n";
+        let frames: Vec<_> = states(source)
+            .iter()
+            .map(|m| m.programmable_frame.map(|s| s.of(source).to_vec()))
+            .collect();
+        let f = |text: &str| Some(text.as_bytes().to_vec());
+        assert_eq!(
+            frames,
+            [
+                f("ATRANS X10"),
+                f("AROT Z=R1"),
+                f("AROT Z=R1"),
+                f("AROT Z=R1"), // ATRANS alone adds nothing
+                None,
+                f("AMIRROR X0"),
+                None,
+                f("TRANS X1"),
+                None
+            ]
+        );
+    }
+
+    #[test]
+    fn a_skippable_block_makes_what_it_changes_unknown() {
+        let source = b"G1 G17 G91 G41 X1 F100\n/G18 G90 X2\n/G41 F200\n";
+        let after = states(source);
+        assert_eq!(after[1].plane, None);
+        assert_eq!(after[1].incremental, None);
+        // What the skippable block leaves as it was stays known.
+        assert!(after[1].radius_compensation.is_some());
+        assert_eq!(after[1].motion, Some(1));
+        assert!(after[1].feed);
+        // The same word again is another span: no longer known as the first.
+        assert_eq!(after[2].radius_compensation, None);
     }
 }

@@ -14,6 +14,7 @@ use std::collections::HashSet;
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
 use crate::semantic::labels::Labels;
+use crate::semantic::line_order;
 use crate::semantic::structure::Structure;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
@@ -169,6 +170,9 @@ pub struct LineView<'l> {
     reads: Vec<(usize, &'l Variable)>,
     /// The block's address words, read when a rule first asks.
     addresses: OnceCell<Vec<Address>>,
+    /// Whether the block leaves the order of the lines, decided when a rule
+    /// first asks.
+    leaves_line_order: OnceCell<bool>,
 }
 
 impl<'l> LineView<'l> {
@@ -202,6 +206,7 @@ impl<'l> LineView<'l> {
             plain,
             reads: all_reads,
             addresses: OnceCell::new(),
+            leaves_line_order: OnceCell::new(),
         }
     }
 
@@ -211,6 +216,19 @@ impl<'l> LineView<'l> {
         self.addresses.get_or_init(|| match self.block {
             Some(block) => addresses::of_block(source, block),
             None => Vec::new(),
+        })
+    }
+
+    /// The block jumps, calls what may change the modal state or starts a
+    /// PROC (see `line_order::leaves_line_order`), decided once for all the
+    /// rules that follow the lines in order; `false` for a line that is no
+    /// block.
+    pub fn leaves_line_order(&self, source: &[u8]) -> bool {
+        *self.leaves_line_order.get_or_init(|| match self.block {
+            // Address words alone leave the order only by a subprogram call.
+            Some(_) if self.plain => self.addresses(source).iter().any(|a| a.is(source, "L")),
+            Some(block) => line_order::leaves_line_order(source, block, self.addresses(source)),
+            None => false,
         })
     }
 

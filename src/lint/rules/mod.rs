@@ -21,6 +21,8 @@ pub mod m_group_conflict;
 pub mod main_run_read_without_stopre;
 pub mod missing_feed_rate;
 pub mod missing_program_end;
+pub mod modal_state_at_end;
+pub mod plane_change_with_radius_compensation;
 pub mod proc_name_mismatch;
 pub mod repeated_address;
 pub mod spindle_not_started;
@@ -34,7 +36,7 @@ pub mod undefined_variable;
 pub mod unused_suppression;
 pub mod unused_variable;
 
-use crate::lint::rule::{Check, EachBlock, FromStart, Rule};
+use crate::lint::rule::{Check, EachBlock, FromStart, InLineOrder, Rule};
 
 fn checker<C: Check + Default + 'static>() -> Box<dyn Check> {
     Box::new(C::default())
@@ -157,7 +159,15 @@ pub fn all() -> Vec<Rule> {
         },
         Rule {
             info: &transformation_with_radius_compensation::RULE,
-            checker: Some(checker::<transformation_with_radius_compensation::Checker>),
+            checker: Some(checker::<InLineOrder<transformation_with_radius_compensation::Checker>>),
+        },
+        Rule {
+            info: &plane_change_with_radius_compensation::RULE,
+            checker: Some(checker::<InLineOrder<plane_change_with_radius_compensation::Checker>>),
+        },
+        Rule {
+            info: &modal_state_at_end::RULE,
+            checker: Some(checker::<InLineOrder<modal_state_at_end::Checker>>),
         },
         Rule {
             info: &spindle_not_started::RULE,

@@ -3,7 +3,6 @@
 
 use crate::lint::rule::FileContext;
 use crate::semantic::addresses::Address;
-use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::modal::{is_axis_letter, is_feed_motion, Modal};
 use crate::span::Span;
 use crate::syntax::tree::{Block, Goto, GotoTarget, Name, Statement, StatementKind};
@@ -155,29 +154,6 @@ pub fn group_conflicts<T, G: Copy + Eq + std::hash::Hash>(
         }
     }
     conflicts
-}
-
-/// The block makes the order of the lines no longer the order they run in
-/// (a jump, CASE, PROC), or calls what may change the modal state (a
-/// subprogram `L`, a cycle, a call or command that is not one of the
-/// control's plain builtins, an indirect call).
-pub fn leaves_line_order(file: &FileContext, block: &Block, addresses: &[Address]) -> bool {
-    let source = file.source;
-    addresses.iter().any(|a| a.is(source, "L"))
-        || block.statements.iter().any(|s| match &s.kind {
-            StatementKind::Call(call) => !is_plain_command(&upper(source, call.name.span)),
-            StatementKind::Command(name) => !is_plain_command(&upper(source, name.span)),
-            StatementKind::Proc(_)
-            | StatementKind::Case(_)
-            | StatementKind::Goto(_)
-            | StatementKind::IndirectCall { .. } => true,
-            _ => false,
-        })
-}
-
-/// A command of the control that neither jumps nor programs a feed rate.
-fn is_plain_command(name: &str) -> bool {
-    call_kind(name) == CallKind::Builtin && !name.starts_with("CYCLE")
 }
 
 /// The name a statement calls or commands (`TRAORI`, `TRAORI(1)`,
