@@ -282,22 +282,24 @@ pub trait ModalRule: Default {
     /// Whether a plain line with these scanned facts can change what the
     /// rule follows or hold a finding: the others are not read.
     fn may_matter(facts: &PlainFacts) -> bool;
-    /// One block on the 0-based line `row`, its tree when it has one:
-    /// `before` is the state it starts from, `after` the state it leaves
-    /// when it runs, and `compensated_since` the line where the tool radius
-    /// compensation in force before it was selected.
-    #[allow(clippy::too_many_arguments)]
-    fn block(
-        &mut self,
-        file: &FileContext,
-        row: usize,
-        block: Option<&Block>,
-        addresses: &[Address],
-        before: &Modal,
-        after: &Modal,
-        compensated_since: usize,
-        out: &mut Vec<Diagnostic>,
-    );
+    /// One block read in line order.
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>);
+}
+
+/// One block as a [`ModalRule`] sees it.
+pub struct ModalStep<'a> {
+    /// Its 0-based line.
+    pub row: usize,
+    /// Its tree; `None` for a plain line.
+    pub block: Option<&'a Block>,
+    pub addresses: &'a [Address],
+    /// The state it starts from.
+    pub before: Modal,
+    /// The state it leaves when it runs.
+    pub after: Modal,
+    /// The 0-based line where the tool radius compensation in force before
+    /// it was selected.
+    pub compensated_since: usize,
 }
 
 /// The checker of a [`ModalRule`]. A jump, a block structure (IF, ELSE,
@@ -342,16 +344,15 @@ impl<R: ModalRule> InLineOrder<R> {
             Some(block) => after.apply_block(source, block, addresses),
             None => after.apply(source, addresses),
         }
-        self.rule.block(
-            file,
+        let step = ModalStep {
             row,
             block,
             addresses,
-            &before,
-            &after,
-            self.compensated_since,
-            out,
-        );
+            before,
+            after,
+            compensated_since: self.compensated_since,
+        };
+        self.rule.block(file, &step, out);
         if skippable {
             self.modal
                 .apply_skippable(source, block.filter(|_| !plain), addresses);

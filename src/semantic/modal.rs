@@ -137,8 +137,9 @@ pub struct Modal {
     /// `None` under `G90` (the reset value as delivered) or before any.
     pub incremental: Option<Span>,
     /// The programmable frame holds something of the program's own: the
-    /// frame statement that last set it (`ATRANS X10`), `None` while it is
-    /// empty as far as the blocks show (`TRANS` without values clears it).
+    /// frame statement that last set it (`ATRANS X10`); `None` while it is
+    /// empty (`TRANS` without values clears it) or holds what the blocks do
+    /// not show (an assignment to `$P_PFRAME` is not followed).
     pub programmable_frame: Option<Span>,
 }
 
@@ -201,8 +202,8 @@ enum FrameChange {
     /// the statement and its values.
     Set(Span),
     /// `TRANS`, `ROT`, `SCALE` or `MIRROR` without values, or an assignment
-    /// to `$P_PFRAME` whose value is not followed: what the programmable
-    /// frame holds is not known to be anything of the blocks' own.
+    /// to `$P_PFRAME` whose value is not followed: nothing the blocks show
+    /// is left in the programmable frame.
     Clear,
 }
 

@@ -1,13 +1,10 @@
 //! N031 `modal-state-at-end`: Finds a main program that ends with a programmable frame, `G91` or `G41`/`G42` still in force.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{FileContext, ModalRule};
+use crate::lint::rule::{FileContext, ModalRule, ModalStep};
 use crate::lint::rules::support::{is_definition_file, upper};
-use crate::semantic::addresses::Address;
-use crate::semantic::modal::Modal;
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N031",
@@ -70,28 +67,17 @@ impl ModalRule for Checker {
         facts.letters.contains(b'M') || facts.motions.others()
     }
 
-    fn block(
-        &mut self,
-        file: &FileContext,
-        row: usize,
-        _block: Option<&Block>,
-        addresses: &[Address],
-        before: &Modal,
-        _after: &Modal,
-        _compensated_since: usize,
-        out: &mut Vec<Diagnostic>,
-    ) {
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>) {
         let source = file.source;
-        let Some(end) = addresses.iter().find(|a| {
+        let Some(end) = step.addresses.iter().find(|a| {
             a.is(source, "M") && a.extension.is_none() && matches!(a.whole(source), Some(2 | 30))
         }) else {
             return;
         };
         // What the end's own block switches off does not outlive it.
-        let mut at_end = *before;
-        at_end.apply(source, addresses);
+        let (before, at_end) = (&step.before, &step.after);
         let end_word = upper(source, end.span);
-        let line = row + 1;
+        let line = step.row + 1;
         let report = |span: Span, what: &str, help: &'static str| {
             RULE.at(span)
                 .message(format!(

@@ -1,12 +1,9 @@
 //! N030 `plane-change-with-radius-compensation`: Finds a change of the working plane (`G17`, `G18`, `G19`) while `G41`/`G42` is in force.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{FileContext, ModalRule};
+use crate::lint::rule::{FileContext, ModalRule, ModalStep};
 use crate::lint::rules::support::upper;
-use crate::semantic::addresses::Address;
-use crate::semantic::modal::Modal;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N030",
@@ -54,33 +51,24 @@ impl ModalRule for Checker {
         facts.motions.others()
     }
 
-    fn block(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        _block: Option<&Block>,
-        addresses: &[Address],
-        before: &Modal,
-        after: &Modal,
-        compensated_since: usize,
-        out: &mut Vec<Diagnostic>,
-    ) {
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>) {
+        let before = &step.before;
         let (Some(compensation), Some(plane)) = (before.radius_compensation, before.plane) else {
             return;
         };
         // A block that deselects the compensation is the deselection's own.
-        if after.radius_compensation.is_none() {
+        if step.after.radius_compensation.is_none() {
             return;
         }
         let source = file.source;
-        let Some(change) = addresses.iter().find(|a| {
+        let Some(change) = step.addresses.iter().find(|a| {
             a.is(source, "G") && matches!(a.whole(source), Some(new @ 17..=19) if new != plane)
         }) else {
             return;
         };
         let g = upper(source, compensation);
         let new = upper(source, change.span);
-        let at = compensated_since + 1;
+        let at = step.compensated_since + 1;
         out.push(
             RULE.at(change.span)
                 .message(format!(

@@ -1,13 +1,10 @@
 //! N028 `transformation-with-radius-compensation`: Finds a transformation selected or deselected (`TRAORI`, `TRAFOOF`, ...) while `G41`/`G42` is in force.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{FileContext, ModalRule};
+use crate::lint::rule::{FileContext, ModalRule, ModalStep};
 use crate::lint::rules::support::{command_name, upper};
-use crate::semantic::addresses::Address;
-use crate::semantic::modal::Modal;
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N028",
@@ -66,18 +63,8 @@ impl ModalRule for Checker {
         facts.motions.others()
     }
 
-    fn block(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        block: Option<&Block>,
-        _addresses: &[Address],
-        _before: &Modal,
-        after: &Modal,
-        compensated_since: usize,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let (Some(block), Some(compensation)) = (block, after.radius_compensation) else {
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>) {
+        let (Some(block), Some(compensation)) = (step.block, step.after.radius_compensation) else {
             return;
         };
         let source = file.source;
@@ -91,7 +78,7 @@ impl ModalRule for Checker {
             }
             self.reported = Some(compensation);
             let g = upper(source, compensation);
-            let at = compensated_since + 1;
+            let at = step.compensated_since + 1;
             let verb = if name == "TRAFOOF" {
                 "deselects"
             } else {
