@@ -418,9 +418,8 @@ impl<R: ModalRule> Check for InLineOrder<R> {
                 continue;
             }
             let addresses = addresses::of_plain(source, line.raw.content);
-            let content = line.raw.content.of(source);
-            let skippable = content.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'/');
-            self.step(file, line.row, None, true, &addresses, skippable, out);
+            // A skippable block (`/N10 ...`) is never a plain line.
+            self.step(file, line.row, None, true, &addresses, false, out);
         }
     }
 }

@@ -40,6 +40,8 @@ pub(crate) const BUILTINS: &[&str] = &[
     "TRAFOOF",
     "TRACYL",
     "TRANSMIT",
+    "TRAANG",
+    "TRACON",
     "SUPA",
     "FNORM",
     "FLIN",

@@ -392,7 +392,8 @@ mod tests {
     #[test]
     fn the_programmable_frame_is_the_last_statement_that_set_it_until_cleared() {
         let source =
-            b"ATRANS X10\nAROT Z=R1\nX5\nATRANS\nSCALE\nAMIRROR X0\nMIRROR\nTRANS X1\nROT\n";
+            b"ATRANS X10\nAROT Z=R1\nX5\nATRANS\nSCALE\nAMIRROR X0\nMIRROR\nTRANS X1\nROT\n\
+            ATRANS Y2\nR1=5\n$P_PFRAME=CTRANS(X,5)\n";
         let frames: Vec<_> = states(source)
             .iter()
             .map(|m| m.programmable_frame.map(|s| s.of(source).to_vec()))
@@ -409,7 +410,10 @@ mod tests {
                 f("AMIRROR X0"),
                 None,
                 f("TRANS X1"),
-                None
+                None,
+                f("ATRANS Y2"),
+                f("ATRANS Y2"), // an assignment to another variable
+                None            // what is assigned to $P_PFRAME is not followed
             ]
         );
     }
@@ -426,5 +430,9 @@ mod tests {
         assert!(after[1].feed);
         // The same word again is another span: no longer known as the first.
         assert_eq!(after[2].radius_compensation, None);
+
+        // A feed rate a skippable block programs may not be programmed.
+        let source = b"G1 X1\n/F100\n";
+        assert!(!states(source)[1].feed);
     }
 }
