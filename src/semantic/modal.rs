@@ -1,11 +1,13 @@
-//! The modal state a block leaves behind: which G function of each group is
-//! in force and whether a feed rate was programmed, with the groups of the G
+//! The modal state a block leaves behind: the motion, plane, radius
+//! compensation and dimensions (G90/G91) in force, whether a feed rate was
+//! programmed and what the programmable frame holds, with the groups of the G
 //! and M functions the control knows (Siemens, Programming Manual
 //! Fundamentals, "List of G functions"; Function Manual Basic Functions,
 //! "Auxiliary function outputs": the predefined groups).
 //!
 //! Read line by line from the [`Address`]es of each block, tree or plain, so
-//! that a CAM program's plain lines need no tree.
+//! that a CAM program's plain lines need no tree; the frame statements, which
+//! no plain line holds, from the tree.
 
 use crate::semantic::addresses::Address;
 use crate::span::Span;
