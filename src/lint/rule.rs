@@ -10,6 +10,7 @@ use crate::semantic::labels::Labels;
 use crate::semantic::modal::Modal;
 pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::{Environment, Model};
+use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
 use crate::syntax::tree::Block;
 use crate::syntax::ProgramKind;
@@ -230,12 +231,11 @@ impl<R: FromProgramStart> Check for FromStart<R> {
         line: &LineView,
         out: &mut Vec<Diagnostic>,
     ) {
-        use crate::lint::rules::support::{moves_a_named_axis, upper};
+        use crate::lint::rules::support::moves_a_named_axis;
         if let Some(name) = line.header {
-            let main = upper(file.source, name).ends_with("_MPF");
             *self = Self {
                 rule: R::default(),
-                done: !main,
+                done: !starts_main_program(file.source, name),
             };
             return;
         }
@@ -269,6 +269,11 @@ impl<R: FromProgramStart> Check for FromStart<R> {
     }
 }
 
+/// The program header named `name` (`%_N_PART_MPF`) starts a main program.
+fn starts_main_program(source: &[u8], name: Span) -> bool {
+    crate::lint::rules::support::upper(source, name).ends_with("_MPF")
+}
+
 /// A rule about the modal state block by block (N028, N030, N031):
 /// [`InLineOrder`] is its checker, which follows the state the blocks leave
 /// in force while the order of the lines is the order the control runs them.
@@ -290,7 +295,8 @@ pub trait ModalRule: Default {
 pub struct ModalStep<'a> {
     /// Its 0-based line.
     pub row: usize,
-    /// Its tree; `None` for a plain line.
+    /// Its tree when it holds more than address words (a command, a frame
+    /// statement); `None` for a line of address words alone.
     pub block: Option<&'a Block>,
     pub addresses: &'a [Address],
     /// The state it starts from.
@@ -324,15 +330,13 @@ impl<R: ModalRule> InLineOrder<R> {
         R::reads(file, main)
     }
 
-    /// One block that keeps the line order; `plain`: its statements are
-    /// address words alone, so no frame statement is among them.
-    #[allow(clippy::too_many_arguments)]
+    /// One block that keeps the line order; `frames` is its tree when it
+    /// may hold frame statements (more than address words).
     fn step(
         &mut self,
         file: &FileContext,
         row: usize,
-        block: Option<&Block>,
-        plain: bool,
+        frames: Option<&Block>,
         addresses: &[Address],
         skippable: bool,
         out: &mut Vec<Diagnostic>,
@@ -340,13 +344,13 @@ impl<R: ModalRule> InLineOrder<R> {
         let source = file.source;
         let before = self.modal;
         let mut after = before;
-        match block.filter(|_| !plain) {
+        match frames {
             Some(block) => after.apply_block(source, block, addresses),
             None => after.apply(source, addresses),
         }
         let step = ModalStep {
             row,
-            block,
+            block: frames,
             addresses,
             before,
             after,
@@ -354,8 +358,7 @@ impl<R: ModalRule> InLineOrder<R> {
         };
         self.rule.block(file, &step, out);
         if skippable {
-            self.modal
-                .apply_skippable(source, block.filter(|_| !plain), addresses);
+            self.modal.may_have_run(after);
         } else {
             self.modal = after;
         }
@@ -371,9 +374,8 @@ impl<R: ModalRule> Check for InLineOrder<R> {
         let Some(block) = line.block else {
             if let Some(name) = line.header {
                 // Another program of the file.
-                let main = crate::lint::rules::support::upper(file.source, name).ends_with("_MPF");
                 *self = Self {
-                    header_main: Some(main),
+                    header_main: Some(starts_main_program(file.source, name)),
                     ..Self::default()
                 };
             }
@@ -387,16 +389,8 @@ impl<R: ModalRule> Check for InLineOrder<R> {
             self.modal = Modal::default();
             return;
         }
-        let skippable = block.skip.is_some();
-        self.step(
-            file,
-            row,
-            Some(block),
-            line.plain,
-            addresses,
-            skippable,
-            out,
-        );
+        let frames = (!line.plain).then_some(block);
+        self.step(file, row, frames, addresses, block.skip.is_some(), out);
     }
 
     fn sees_plain_lines(&self) -> bool {
@@ -419,7 +413,7 @@ impl<R: ModalRule> Check for InLineOrder<R> {
             }
             let addresses = addresses::of_plain(source, line.raw.content);
             // A skippable block (`/N10 ...`) is never a plain line.
-            self.step(file, line.row, None, true, &addresses, false, out);
+            self.step(file, line.row, None, &addresses, false, out);
         }
     }
 }

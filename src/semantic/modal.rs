@@ -176,14 +176,10 @@ impl Modal {
         }
     }
 
-    /// The state after a block the operator may skip (`/N10 G91`): what it
-    /// would change is no longer known, since it may or may not run.
-    pub fn apply_skippable(&mut self, source: &[u8], block: Option<&Block>, addresses: &[Address]) {
-        let mut ran = *self;
-        match block {
-            Some(block) => ran.apply_block(source, block, addresses),
-            None => ran.apply(source, addresses),
-        }
+    /// The state after a block the operator may skip (`/N10 G91`), given
+    /// `ran`, the state had it run: what it would change is no longer known,
+    /// since it may or may not run.
+    pub fn may_have_run(&mut self, ran: Modal) {
         fn agree<T: PartialEq>(kept: &mut Option<T>, ran: Option<T>) {
             if *kept != ran {
                 *kept = None;
@@ -362,10 +358,12 @@ mod tests {
             .map(|row| {
                 let block = lines.block(row).expect("a block");
                 let addresses = of_block(source, &block);
+                let mut ran = modal;
+                ran.apply_block(source, &block, &addresses);
                 if block.skip.is_some() {
-                    modal.apply_skippable(source, Some(&block), &addresses);
+                    modal.may_have_run(ran);
                 } else {
-                    modal.apply_block(source, &block, &addresses);
+                    modal = ran;
                 }
                 modal
             })
