@@ -321,21 +321,29 @@ fn rewriting_regressions_again_changes_nothing() {
     }
 }
 
-/// The human format renders a finding far out on a long line (miette counts
-/// columns in 16 bits): an excerpt of the line, with its real column.
+/// The human format renders a finding far out on a long line as an excerpt
+/// of the line, with its real column; a line too long to read (S009) too.
+/// (Columns past 65,535, which miette counts in 16 bits, are rendered by the
+/// `check` fuzz target, which shifts every finding 70,000 columns right.)
 #[test]
-fn a_finding_past_column_65535_renders() {
-    // A plain block of any length is read; a suppression that suppresses
-    // nothing at its end is a finding (N099) at its code, column 90,027.
-    let mut source = format!("N10 X1 {}", "G1 ".repeat(30_000)).into_bytes();
+fn a_finding_far_out_on_a_long_line_renders() {
+    // A plain block just short of the limit; a suppression that suppresses
+    // nothing at its end is a finding (N099) at its code, column 65,030.
+    let mut source = format!("N10 X1 {}", "G1 ".repeat(21_667)).into_bytes();
     let position = format!("1:{}", source.len() + "; sinuprep: ignore ".len() + 1);
     source.extend_from_slice(b"; sinuprep: ignore N005\nM30\n");
+    let too_long = format!("N10 X1 {}\nM30\n", "G1 ".repeat(30_000));
     for format in ["human", "short"] {
         let output = run(&["check", "--format", format, "-"], &source);
         assert_exit(&output, 0);
         let text = String::from_utf8_lossy(&output.stdout);
         assert!(text.contains("N099"), "{format}: {text}");
         assert!(text.contains(&position), "{format}: {text}");
+        assert!(text.len() < 4000, "{format}: the whole line shown");
+        let output = run(&["check", "--format", format, "-"], too_long.as_bytes());
+        assert_exit(&output, 1);
+        let text = String::from_utf8_lossy(&output.stdout);
+        assert!(text.contains("S009"), "{format}: {text}");
         assert!(text.len() < 4000, "{format}: the whole line shown");
     }
     for command in [&["rewrite", "-"][..], &["eval", "-"][..]] {
@@ -347,7 +355,8 @@ fn a_finding_past_column_65535_renders() {
 }
 
 /// A block far longer than the control takes is refused (S009) rather than
-/// read into a tree of some 50 bytes a byte; a plain one is scanned as ever.
+/// read into a tree of some 50 bytes a byte; address words alone too (80
+/// bytes a word), and their repeats are then not reported.
 #[test]
 fn a_five_megabyte_block_is_refused_not_read() {
     let call = format!("R1=MAX({}1)\nM30\n", "1,".repeat(2_500_000));
@@ -357,5 +366,15 @@ fn a_five_megabyte_block_is_refused_not_read() {
     let just_under = format!("R1=MAX({}1)\nM30\n", "1,".repeat((limit - 10) / 2));
     assert!(!survive("call under the limit", just_under.as_bytes()).contains(&"S009"));
     let plain = format!("N10 {}\nM30\n", "X1 Y2 ".repeat(1_000_000));
-    assert!(!survive("long plain block", plain.as_bytes()).contains(&"S009"));
+    let codes = survive("long plain block", plain.as_bytes());
+    assert!(
+        codes.contains(&"S009") && !codes.contains(&"N022"),
+        "{codes:?}"
+    );
+    let just_under = format!("N10 {}\nM30\n", "X1 Y2 ".repeat((limit - 10) / 6));
+    let codes = survive("plain block under the limit", just_under.as_bytes());
+    assert!(
+        !codes.contains(&"S009") && codes.contains(&"N022"),
+        "{codes:?}"
+    );
 }

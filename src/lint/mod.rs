@@ -298,7 +298,7 @@ struct PlainRun {
 
 impl PlainRun {
     /// Lines given at once, at most.
-    const LINES: usize = 256;
+    const LINES: usize = crate::semantic::model::PLAIN_RUN;
 
     fn give(
         &mut self,

@@ -165,7 +165,7 @@ pub static TOO_LONG_TO_READ: RuleInfo = RuleInfo {
     name: "block-too-long-to-read",
     severity: Severity::Error,
     docs: r#"## What it does
-Reports a block of more than 64 KiB that is not only address words with numbers.
+Reports a block of more than 64 KiB, whatever it holds.
 
 ## Why it matters
 The control takes at most 512 characters a block (Siemens, Programming Manual Fundamentals:

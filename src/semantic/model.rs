@@ -25,6 +25,9 @@ use crate::syntax::tree::{
 use crate::syntax::visit::reads;
 use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 
+/// Plain lines passed to [`ModelBuilder::plain_lines`] at once, at most.
+pub(crate) const PLAIN_RUN: usize = 256;
+
 /// A name a DEF or a PROC parameter list defines.
 #[derive(Clone, Debug)]
 pub struct Symbol {
@@ -71,14 +74,22 @@ impl<'src> Model<'src> {
     /// The model of `source`, in a pass of its own.
     pub fn build(source: &'src [u8], kind: ProgramKind) -> Self {
         let mut builder = ModelBuilder::new(source, true);
-        let mut plain = Vec::new();
+        let mut plain = Vec::with_capacity(PLAIN_RUN);
         for (row, line) in scanned_lines(source).enumerate() {
             match line {
-                Scanned::Plain(line) => plain.push(PlainLine {
-                    row,
-                    raw: line.raw,
-                    facts: line.facts(),
-                }),
+                Scanned::Plain(line) => {
+                    plain.push(PlainLine {
+                        row,
+                        raw: line.raw,
+                        facts: line.facts(),
+                    });
+                    // A run is passed on in pieces: a CAM program's run
+                    // between two other lines may be millions of lines.
+                    if plain.len() == PLAIN_RUN {
+                        builder.plain_lines(&plain);
+                        plain.clear();
+                    }
+                }
                 Scanned::Other(raw) => {
                     builder.plain_lines(&plain);
                     plain.clear();

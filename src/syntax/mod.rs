@@ -188,14 +188,14 @@ impl LineParser {
     }
 }
 
-/// Lines longer than this (in bytes) are not read into a tree, unless they
-/// are plain (address words with numbers, which have no tree to build): a
-/// tree costs about 50 bytes a byte of source, and the control takes 512
-/// characters a block. The bytes stay as they are, with an error (S009).
+/// Lines longer than this (in bytes) are not read into a tree, whatever they
+/// hold: a tree costs about 50 bytes a byte of source (a line of address
+/// words alone, 80 bytes a word), and the control takes 512 characters a
+/// block. The bytes stay as they are, with an error (S009).
 pub const MAX_PARSED_LINE: usize = 64 * 1024;
 
 pub(crate) fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxError>) {
-    if content.len() > MAX_PARSED_LINE && !plain::is_plain(content) {
+    if content.len() > MAX_PARSED_LINE {
         let block = Block {
             unparsed: Some(Span::new(start, start + content.len())),
             ..Block::default()

@@ -13,6 +13,7 @@ use crate::syntax::block::{block_number_digits, parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};
 use crate::syntax::lines::{line_at, line_from, RawLine};
 use crate::syntax::tree::BlockNumber;
+use crate::syntax::MAX_PARSED_LINE;
 
 #[cfg(target_arch = "x86_64")]
 mod wide;
@@ -21,8 +22,9 @@ mod wide;
 /// with plain decimal numbers, `N10 G1 Y.5 F2000.`: it parses without
 /// error into such words (property-tested), so it assigns, calls, jumps and
 /// reads nothing. Strict and conservative: `false` means "parse it to know".
+/// A line longer than [`MAX_PARSED_LINE`] is never plain: it is not read.
 pub fn is_plain(content: &[u8]) -> bool {
-    scan_words(content).is_some()
+    content.len() <= MAX_PARSED_LINE && scan_words(content).is_some()
 }
 
 /// A line [`is_plain`] accepts, with its `;` comment if it has one.
@@ -69,6 +71,10 @@ pub fn scan_plain_line(source: &[u8], start: usize) -> Option<Plain> {
     } else {
         (stop, None)
     };
+    // A line too long to read is no plain line but an error (S009).
+    if end > MAX_PARSED_LINE {
+        return None;
+    }
     Some(Plain {
         raw: line_at(source, start, start + end),
         comment,
