@@ -137,7 +137,11 @@ pub fn split(
     split_at(table, head, request, gamma, TableAngle::Chosen)
 }
 
-/// The minimum of `f` on `[a, b]` by golden-section search, to 1e-10°.
+/// The minimum of `f` on `[a, b]` by golden-section search, to 1e-10° or
+/// as near as the numbers there resolve: far from zero two neighbouring
+/// doubles lie more than 1e-10 apart (from 2^19 degrees on), so the steps
+/// are counted too (the bracket shrinks by 0.618 a step: 100 steps take any
+/// bracket of this search below a double's resolution).
 fn golden(
     mut a: f64,
     mut b: f64,
@@ -146,7 +150,10 @@ fn golden(
     let ratio = (5f64.sqrt() - 1.0) / 2.0;
     let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
     let (mut fc, mut fd) = (f(c)?, f(d)?);
-    while b - a > 1e-10 {
+    for _ in 0..100 {
+        if b - a <= 1e-10 {
+            break;
+        }
         if fc < fd {
             (b, d, fd) = (d, c, fc);
             c = b - ratio * (b - a);
@@ -282,6 +289,16 @@ mod tests {
         let positions = split.head.solutions[split.head.chosen.expect("taken")].positions;
         let t = orientation(table, [split.table, 0.0]);
         t * orientation(head, positions) * Vector3::z()
+    }
+
+    #[test]
+    fn the_fine_search_ends_where_doubles_are_coarser_than_its_tolerance() {
+        // About 1e8 two neighbouring doubles lie 1.5e-8 apart: a bracket
+        // never gets narrower than 1e-10 there.
+        let centre = 1e8 + 0.25;
+        let found =
+            golden(centre - 0.005, centre + 0.005, |g| Ok((g - centre).abs())).expect("no error");
+        assert!((found - centre).abs() < 1e-7, "{found}");
     }
 
     #[test]
