@@ -265,7 +265,29 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
             replaced += 1
         }
     }
-    eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite");
+    // Killed while the rewrite is being written: the backup is written
+    // first, so its arrival is the moment the rewrite's own write begins.
+    let mut caught = 0;
+    for _ in 0..5 {
+        std::fs::write(&path, &original).expect("write");
+        let _ = std::fs::remove_file(&backup);
+        let mut child = rewrite();
+        while !backup.exists() && child.try_wait().expect("wait").is_none() {
+            std::hint::spin_loop();
+        }
+        let _ = child.kill();
+        let _ = child.wait();
+        let now = std::fs::read(&path).expect("the file is still there");
+        caught += usize::from(now == original);
+        if nameless {
+            assert_eq!(
+                temporaries(),
+                0,
+                "killed while writing: a temporary file was left"
+            );
+        }
+    }
+    eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite; {caught} of 5 killed while writing");
     // A later run removes what killed runs left.
     std::fs::write(&path, &original).expect("write");
     assert!(rewrite().wait().expect("ends").success());
