@@ -179,8 +179,7 @@ impl Record {
         for (index, axis) in self.axes.iter().enumerate() {
             if let Some((min, max)) = axis.limits {
                 for (which, value) in [("minimum", min), ("maximum", max)] {
-                    // Written so that NaN is beyond too.
-                    if !(value.abs() <= LIMIT_BOUND_DEG) {
+                    if value.is_nan() || value.abs() > LIMIT_BOUND_DEG {
                         return Err(RecordError::LimitBeyondBound {
                             axis: axis.label(index),
                             index,

@@ -222,12 +222,13 @@ fn inside(position: f64, min: f64, max: f64, current: f64) -> Option<f64> {
     // The candidates are `position + 360 k` for whole k in [lowest, highest].
     let lowest = ((min - position) / 360.0).ceil();
     let highest = ((max + 1e-9 - position) / 360.0).floor();
-    if !(lowest <= highest) {
+    if lowest.is_nan() || highest.is_nan() || lowest > highest {
         return None;
     }
-    // The turn nearest `current`, a tie to the lower one.
+    // The turn nearest `current`, a tie to the lower one (the lowest where
+    // `current` is no number).
     let nearest = ((current - position) / 360.0 - 0.5).ceil();
-    Some(position + 360.0 * nearest.clamp(lowest, highest))
+    Some(position + 360.0 * nearest.max(lowest).min(highest))
 }
 
 /// `position` ± 360° within half a turn of `current` (an axis without limits).
@@ -521,6 +522,8 @@ mod tests {
         assert_eq!(inside(0.0, -720.0, 720.0, 180.0), Some(0.0));
         assert_eq!(inside(10.0, 0.0, 100.0, 200.0), Some(10.0));
         assert_eq!(inside(10.0, 20.0, 100.0, 0.0), None);
+        assert_eq!(inside(f64::NAN, 0.0, 100.0, 0.0), None);
+        assert_eq!(inside(10.0, 0.0, 800.0, f64::NAN), Some(10.0));
         // Limits of any size take no longer.
         assert_eq!(inside(30.0, -1e300, 1e300, 0.0), Some(30.0));
         let far = inside(30.0, -10.0, 1e300, 1e200).expect("inside");
