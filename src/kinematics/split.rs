@@ -83,6 +83,12 @@ pub fn split(
     let (low, high) = axis
         .limits
         .unwrap_or((table_current - 180.0, table_current + 180.0));
+    // The head sees the table's angle modulo a turn: the turn of the limits
+    // nearest the current position holds an angle as good as any other,
+    // and, of equally good ones, the one nearest the current position. So
+    // limits of many turns (up to ±1e8 degrees) are searched over one.
+    let low = (table_current - 180.0).max(low).min(low.max(high - 360.0));
+    let high = high.min(low + 360.0);
     // (score, γ) of the best of `gammas`.
     let best_of =
         |gammas: &mut dyn Iterator<Item = f64>| -> Result<Option<(f64, f64)>, SplitError> {
@@ -315,6 +321,26 @@ mod tests {
         assert!((split.table - 60.0).abs() < 1e-6, "{}", split.table);
         let positions = split.head.solutions[split.head.chosen.expect("taken")].positions;
         assert!(positions[1].abs() < 1e-6, "{positions:?}");
+    }
+
+    #[test]
+    fn limits_of_many_turns_choose_as_one_turn_does() {
+        let (mut table, head) = machine();
+        let asked = request(from_axis_angle(Vector3::y(), 60.0));
+        let mut chosen = Vec::new();
+        for limits in [(-360.0, 360.0), (-1e8, 1e8), (-1e8, 50.5), (-70.0, 1e8)] {
+            table.axes[0].limits = Some(limits);
+            let split = split(&table, &head, &asked, 0.0, None).expect("valid");
+            chosen.push(split.table);
+        }
+        // The whole tilt on the table, at the turn nearest 0 the limits
+        // allow (-300 is 60 a turn lower); once the coarse search of a range
+        // of 2e8 degrees sampled its first 100,000 only, at the lower end.
+        let round = |x: f64| (x * 1e6).round() / 1e6;
+        assert_eq!(
+            chosen.iter().map(|&x| round(x)).collect::<Vec<_>>(),
+            [60.0, 60.0, -300.0, 60.0]
+        );
     }
 
     #[test]
