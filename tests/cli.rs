@@ -1026,6 +1026,133 @@ fn axes_tells_bad_swivel_data_and_refuses_its_record() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Runs the binary as [`run`] does, but gives up after `seconds`: a hang
+/// fails the test instead of stopping the suite.
+fn run_within(seconds: u64, args: &[&str]) -> std::process::Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(seconds);
+    while child.try_wait().expect("wait").is_none() {
+        if std::time::Instant::now() > deadline {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!(
+                "`sinuprep {}` still running after {seconds} s",
+                args.join(" ")
+            );
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().expect("binary ends")
+}
+
+/// Every command reads a machine file the one way and finds the same in
+/// it: a record no machine can have (a zero or parallel axis vector, text
+/// where a number goes, an axis limit of 1EX300, whose placement once
+/// stepped through the turns in between for ever) is K001 for `check`,
+/// `eval`, `rewrite` and `axes` alike, and an error: exit 1 (`axes`
+/// refuses the record, exit 2, as it did). `check` reports the machine
+/// file once, however many programs it checks on it.
+#[test]
+fn an_unusable_machine_file_fails_every_command_alike() {
+    let dir = scratch("machine-unusable");
+    let head = "$TC_CARR34[1]=\"H\" $TC_CARR9[1]=1 $TC_CARR10[1]=1\n";
+    let cases = [
+        (
+            "zero",
+            "$TC_CARR34[1]=\"H\" $TC_CARR9[1]=0 $TC_CARR10[1]=1\n".to_string(),
+            "K001",
+            "has no direction vector",
+        ),
+        (
+            "parallel",
+            "$TC_CARR34[1]=\"H\" $TC_CARR9[1]=1 $TC_CARR12[1]=-1\n".to_string(),
+            "K001",
+            "parallel",
+        ),
+        (
+            "text",
+            "$TC_CARR34[1]=\"H\" $TC_CARR9[1]=\"1\" $TC_CARR10[1]=1\n".to_string(),
+            "K001",
+            "a number expected",
+        ),
+        (
+            "limit",
+            format!("{head}$TC_CARR31[1]=-10 $TC_CARR33[1]=1EX300\n"),
+            "K001",
+            "its maximum position 1e300 is no rotary axis's",
+        ),
+        (
+            "limit11",
+            format!("{head}$TC_CARR30[1]=-1EX11\n"),
+            "K001",
+            "its minimum position -1e11",
+        ),
+        (
+            "number",
+            format!("{head}$TC_CARR12[1]=1EX400\n"),
+            "S003",
+            "1EX400",
+        ),
+    ];
+    let first = dir.join("P.MPF");
+    let second = dir.join("Q.MPF");
+    let program = "N10 CYCLE800(1,\"H\",0,57,0,0,0,0,30,0,0,0,0,-1)\nN20 M30\n";
+    std::fs::write(&first, program).expect("program");
+    std::fs::write(&second, program).expect("program");
+    let (p, q) = (
+        first.to_str().expect("utf-8"),
+        second.to_str().expect("utf-8"),
+    );
+    for (name, records, code, says) in cases {
+        let machine = dir.join(format!("{name}.SPF"));
+        std::fs::write(&machine, &records).expect("machine");
+        let m = machine.to_str().expect("utf-8");
+        let finding = format!("error[{code}]");
+
+        let check = run_within(60, &["check", "--format", "short", "--machine", m, p]);
+        assert_exit(&check, 1);
+        let text = stdout(&check);
+        assert!(
+            text.contains(&finding) && text.contains(says),
+            "{name}: {text}"
+        );
+        assert!(
+            text.lines().all(|line| line.starts_with(m)),
+            "{name}: {text}"
+        );
+        let two = run_within(60, &["check", "--format", "short", "--machine", m, p, q]);
+        assert_eq!(stdout(&two), text, "{name}: told once a run");
+
+        for command in ["eval", "rewrite"] {
+            let output = run_within(60, &[command, "--machine", m, p]);
+            assert_exit(&output, 1);
+            let stderr = flat(&output.stderr);
+            assert!(
+                stderr.contains(code) && stderr.contains(says),
+                "{name}, {command}: {stderr}"
+            );
+        }
+        let axes = run_within(
+            60,
+            &["axes", "--machine", m, "--record", "H", "0", "30", "0"],
+        );
+        let stderr = flat(&axes.stderr);
+        assert!(
+            stderr.contains(code) && stderr.contains(says),
+            "{name}, axes: {stderr}"
+        );
+        assert_ne!(axes.status.code(), Some(0), "{name}, axes: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `eval --machine`: a rotating CYCLE600 shows the axis positions its
 /// CYCLE800 gets on the record named by its head.
 #[test]

@@ -170,6 +170,23 @@ fn large_program() -> Vec<u8> {
     source
 }
 
+/// Whether the file system of `dir` makes nameless files (Linux `O_TMPFILE`).
+#[cfg(target_os = "linux")]
+fn nameless_files_in(dir: &std::path::Path) -> bool {
+    use std::os::unix::fs::OpenOptionsExt;
+    std::fs::OpenOptions::new()
+        .write(true)
+        .custom_flags(libc::O_TMPFILE)
+        .mode(0o600)
+        .open(dir)
+        .is_ok()
+}
+
+#[cfg(not(target_os = "linux"))]
+fn nameless_files_in(_: &std::path::Path) -> bool {
+    false
+}
+
 #[test]
 fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
     let dir = std::env::temp_dir().join(format!("sinuprep-kill-{}", std::process::id()));
@@ -204,6 +221,13 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
             })
             .count()
     };
+    let nameless = nameless_files_in(&dir);
+    if !nameless {
+        eprintln!(
+            "NOTE: no nameless temporary files in {}: leftovers are removed by the next run only",
+            dir.display()
+        );
+    }
     for percent in [2u32, 25, 50, 75, 90, 100, 110, 200, 300] {
         std::fs::write(&path, &original).expect("write");
         let _ = std::fs::remove_file(&backup);
@@ -225,13 +249,45 @@ fn a_killed_in_place_rewrite_never_leaves_a_truncated_file() {
                 "killed at {percent}%: rewritten without a backup"
             ),
         }
+        // On Linux the temporary file has no name until it is complete: a
+        // kill leaves nothing, without waiting for the next run to clean up
+        // (on a file system without O_TMPFILE it is named, as elsewhere).
+        if nameless {
+            assert_eq!(
+                temporaries(),
+                0,
+                "killed at {percent}%: a temporary file was left"
+            );
+        }
         if now == original {
             untouched += 1
         } else {
             replaced += 1
         }
     }
-    eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite");
+    // Killed while the rewrite is being written: the backup is written
+    // first, so its arrival is the moment the rewrite's own write begins.
+    let mut caught = 0;
+    for _ in 0..5 {
+        std::fs::write(&path, &original).expect("write");
+        let _ = std::fs::remove_file(&backup);
+        let mut child = rewrite();
+        while !backup.exists() && child.try_wait().expect("wait").is_none() {
+            std::hint::spin_loop();
+        }
+        let _ = child.kill();
+        let _ = child.wait();
+        let now = std::fs::read(&path).expect("the file is still there");
+        caught += usize::from(now == original);
+        if nameless {
+            assert_eq!(
+                temporaries(),
+                0,
+                "killed while writing: a temporary file was left"
+            );
+        }
+    }
+    eprintln!("whole run {whole:?}: {untouched} kills left the original, {replaced} found the whole rewrite; {caught} of 5 killed while writing");
     // A later run removes what killed runs left.
     std::fs::write(&path, &original).expect("write");
     assert!(rewrite().wait().expect("ends").success());

@@ -1,12 +1,16 @@
 //! What `check`, `rewrite` and `eval` share: the options that become the
-//! workspace's [`Given`], and a rewrite's diagnostics for stderr.
+//! workspace's [`Given`], a rewrite's diagnostics for stderr, and a machine
+//! file's findings, told once a run.
 
+use std::collections::HashSet;
 use std::io::IsTerminal;
 
 use crate::cli::args::{AnalysisArgs, CheckArgs, InputArgs, MessageFormat};
 use crate::cli::render::{human, short, FileReport};
+use crate::cli::ExitStatus;
 use crate::diagnostic::Severity;
 use crate::document::Rewritten;
+use crate::semantic::swivels::OnMachine;
 use crate::workspace::Given;
 
 /// The settings files and values every command reads beside the programs.
@@ -54,10 +58,53 @@ pub fn report(rewritten: &Rewritten, name: &str, source: &[u8], format: MessageF
         source,
         diagnostics: &rewritten.diagnostics,
     };
+    render(&report, format)
+}
+
+/// A machine file's findings (K001, syntax errors) as text for stderr, in
+/// the format asked for.
+pub fn machine_report(on: &OnMachine, format: MessageFormat) -> String {
+    let report = FileReport {
+        name: &on.name,
+        source: &on.source,
+        diagnostics: &on.machine.diagnostics,
+    };
+    render(&report, format)
+}
+
+/// The machine files a run has told of: a file's findings are told once a
+/// run, before the first program read with it, however many use it.
+#[derive(Default)]
+pub struct MachinesTold(HashSet<String>);
+
+impl MachinesTold {
+    /// Whether `on` comes for the first time this run.
+    pub fn first(&mut self, on: &OnMachine) -> bool {
+        self.0.insert(on.name.clone())
+    }
+
+    /// Tells `on`'s findings on stderr the first time the run meets it;
+    /// what they make the exit status (an error fails), every time.
+    pub fn tell(&mut self, on: Option<&OnMachine>, format: MessageFormat) -> ExitStatus {
+        let Some(on) = on else {
+            return ExitStatus::Success;
+        };
+        if !on.machine.diagnostics.is_empty() && self.first(on) {
+            eprint!("{}", machine_report(on, format));
+        }
+        if on.machine.has_errors() {
+            ExitStatus::Failure
+        } else {
+            ExitStatus::Success
+        }
+    }
+}
+
+fn render(report: &FileReport, format: MessageFormat) -> String {
     let mut text = String::new();
     match format {
-        MessageFormat::Human => human(&report, std::io::stderr().is_terminal(), &mut text),
-        MessageFormat::Short => short(&report, &mut text),
+        MessageFormat::Human => human(report, std::io::stderr().is_terminal(), &mut text),
+        MessageFormat::Short => short(report, &mut text),
     }
     text
 }

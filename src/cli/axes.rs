@@ -3,20 +3,19 @@
 //! error, the one the control takes, the rotation left in the frame, the
 //! zero-point shift.
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use nalgebra::{Rotation3, Vector3};
 
-use crate::cli::args::AxesArgs;
+use crate::cli::analysis::MachinesTold;
+use crate::cli::args::{AxesArgs, MessageFormat};
 use crate::cli::error::CliError;
-use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
 use crate::kinematics::{solve, split, Direction, Record, Request, Split, Swivel, TableAngle};
 use crate::rotation::{matrix, Kind, Sequence};
-use crate::semantic::machine::{Machine, Reading};
-use crate::workspace::{Config, SettingsError};
+use crate::semantic::machine::Machine;
+use crate::workspace::{Config, Given, Workspace};
 
 pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
     if args.mode & !63 != 0 {
@@ -24,12 +23,18 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
     }
     let sequence =
         Sequence::from_code(args.mode, Kind::Intrinsic).map_err(|_| CliError::Mode(args.mode))?;
-    let path = machine_path(args)?;
-    let reading = Reading {
+    // The machine file is read as every command reads it.
+    let workspace = Workspace::new(Given {
+        config: args.config.clone(),
+        machine: args.machine.clone(),
         fine_offsets: args.fine_offsets,
-    };
-    let loaded = load(&path, reading)?;
-    let machine = &loaded.machine;
+        ..Given::default()
+    })?;
+    let config = Config::find(args.config.as_deref(), Path::new("."))?;
+    let on = workspace.machine(&config)?.ok_or(CliError::NoMachine)?;
+    let data = MachinesTold::default().tell(Some(&on), MessageFormat::Human);
+    let path = PathBuf::from(&on.name);
+    let machine = &on.machine;
     let mut record = pick(machine, args.record.as_deref(), &path)?.clone();
     record.direction_axis = args.reference_axis.map(|axis| usize::from(axis) - 1);
     let angles = [args.angles[0], args.angles[1], args.angles[2]];
@@ -93,47 +98,7 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
     } else {
         ExitStatus::Failure
     };
-    let data = if machine.diagnostics.is_empty() {
-        ExitStatus::Success
-    } else {
-        ExitStatus::Failure
-    };
     Ok(found.max(data))
-}
-
-/// A machine file read, its problems told on stderr.
-pub struct Loaded {
-    pub machine: Machine,
-    /// The file's name for messages.
-    pub name: String,
-}
-
-/// Reads the machine file at `path`; what is wrong in it goes to stderr
-/// (K001), and the records it leaves usable are kept.
-pub fn load(path: &Path, reading: Reading) -> Result<Loaded, CliError> {
-    let source = std::fs::read(path).map_err(|source| CliError::Read {
-        path: path.to_path_buf(),
-        source,
-    })?;
-    let file_name = path.display().to_string();
-    let data =
-        crate::archive::setup_data(&source, &file_name).map_err(|error| CliError::Archive {
-            name: file_name.clone(),
-            error,
-        })?;
-    let machine = Machine::read(&data.bytes, reading);
-    let name = data.name;
-    if !machine.diagnostics.is_empty() {
-        let mut text = String::new();
-        let report = FileReport {
-            name: &name,
-            source: &data.bytes,
-            diagnostics: &machine.diagnostics,
-        };
-        human(&report, std::io::stderr().is_terminal(), &mut text);
-        eprint!("{text}");
-    }
-    Ok(Loaded { machine, name })
 }
 
 /// `--fix B=30`: the table's position; the name must be the table axis's.
@@ -195,32 +160,6 @@ fn table_document(table: &Record, split: &Split) -> serde_json::Value {
         "within_limits": split.table_within_limits,
         "fixed": split.found == TableAngle::Fixed,
     })
-}
-
-/// `--machine`, or sinuprep.toml's `machine` from the current directory up.
-fn machine_path(args: &AxesArgs) -> Result<PathBuf, CliError> {
-    if let Some(path) = &args.machine {
-        return Ok(path.clone());
-    }
-    let config =
-        Config::find(args.config.as_deref(), std::path::Path::new(".")).map_err(CliError::from)?;
-    match &config.machine {
-        Some(path) => {
-            let path = config.resolve(path);
-            if path.is_file() {
-                Ok(path)
-            } else {
-                Err(SettingsError::ReadSetting {
-                    source: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file"),
-                    path,
-                    key: "machine",
-                    config: config.describe(),
-                }
-                .into())
-            }
-        }
-        None => Err(CliError::NoMachine),
-    }
 }
 
 /// The record asked for, or the only one with rotary axes.

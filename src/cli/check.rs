@@ -3,6 +3,7 @@
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::cli::analysis;
 use crate::cli::archive::Opened;
@@ -16,6 +17,7 @@ use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
+use crate::semantic::swivels::OnMachine;
 use crate::workspace::Workspace;
 
 /// One file's outcome, with what its report needs of the source taken out
@@ -28,6 +30,9 @@ struct Checked {
     unchecked: Unchecked,
     /// Programs reported: 1 for a file, its programs for an archive.
     files: usize,
+    /// The machine the file was checked on, with its findings the
+    /// selection keeps: reported once a run, before the first file.
+    machine: Option<(Arc<OnMachine>, Vec<Diagnostic>)>,
 }
 
 /// What a program checked without its machine's environment (no
@@ -177,9 +182,32 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
+    let mut told = analysis::MachinesTold::default();
     for result in results {
         match result {
-            Ok(checked) => {
+            Ok(mut checked) => {
+                // The machine file's findings, as those of one more file.
+                if let Some((on, diagnostics)) = checked.machine.take() {
+                    if !diagnostics.is_empty() && told.first(&on) {
+                        files += 1;
+                        counts.add(Counts::of(&diagnostics));
+                        fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
+                        let (name, source) = (on.name.as_str(), on.source.as_slice());
+                        let report = FileReport {
+                            name,
+                            source,
+                            diagnostics: &diagnostics,
+                        };
+                        match args.format {
+                            Format::Json | Format::Sarif => {
+                                located.push(Located::new(name, source, diagnostics));
+                            }
+                            Format::Short => short(&report, &mut text),
+                            Format::Github => github(&report, &mut text),
+                            Format::Human => human(&report, colour, &mut text),
+                        }
+                    }
+                }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
@@ -260,6 +288,15 @@ fn check_file(
         counts: Counts::default(),
         unchecked: Unchecked::default(),
         files: 0,
+        machine: settings.machine.as_ref().map(|on| {
+            let selection = &settings.selection;
+            let kept = on
+                .machine
+                .diagnostics
+                .iter()
+                .filter(|d| selection.enables(d.code) && d.severity >= selection.severity_min);
+            (on.clone(), kept.cloned().collect())
+        }),
     };
     let mut reports = Vec::new();
     for (program, outcome) in opened.programs(&file.bytes).into_iter().zip(outcomes) {

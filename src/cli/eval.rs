@@ -13,17 +13,21 @@ use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
 use crate::kinematics::{Record, Swivel};
 use crate::semantic::cycle600::{Argument, Provenance};
-use crate::semantic::machine::Reading;
-use crate::semantic::swivels::{self, Asked, Unsolved};
+use crate::semantic::swivels::{self, Asked, OnMachine, Unsolved};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths, args.allow_empty)?;
-    let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
+    let workspace = Workspace::new(Given {
+        machine: args.machine.clone(),
+        fine_offsets: args.fine_offsets,
+        ..analysis::given_to_rewrite(&args.analysis)
+    })?;
     let outcomes = parallel::each(paths.len(), |index| match &paths[index] {
         Ok(path) => eval_file(path, args, &workspace),
         Err(error) => Err(CliError::Read {
@@ -33,9 +37,12 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     });
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
+    let mut told = analysis::MachinesTold::default();
     for outcome in outcomes {
         match outcome {
             Ok(evaluated) => {
+                let format = args.analysis.message_format;
+                worst = worst.max(told.tell(evaluated.machine.as_deref(), format));
                 eprint!("{}", evaluated.diagnostics);
                 if evaluated.failed {
                     worst = worst.max(ExitStatus::Failure);
@@ -76,25 +83,15 @@ struct Evaluated {
     output: Output,
     diagnostics: String,
     failed: bool,
+    /// The machine the swivels were solved on, whose findings the run
+    /// tells once.
+    machine: Option<Arc<OnMachine>>,
 }
 
 fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
     let file = read(path)?;
     let resolved = workspace.for_rewrite(path)?;
-    let machine_path = match &args.machine {
-        Some(path) => Some(path.clone()),
-        None => resolved
-            .config
-            .machine
-            .as_ref()
-            .map(|p| resolved.config.resolve(p)),
-    };
-    let reading = Reading {
-        fine_offsets: args.fine_offsets,
-    };
-    let machine = machine_path
-        .map(|path| axes::load(&path, reading))
-        .transpose()?;
+    let machine = workspace.machine(&resolved.config)?;
     let mut settings = resolved.settings;
     let opened = Opened::read(&file.bytes, &file.name)?;
     opened.settings(&file.bytes, &mut settings);
@@ -107,6 +104,7 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
         },
         diagnostics: String::new(),
         failed: false,
+        machine: machine.clone(),
     };
     for program in opened.programs(&file.bytes) {
         let (name, source) = (program.name.as_str(), program.document.source);
@@ -179,7 +177,7 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
 /// The swivel a rotating call makes on its record (what CYCLE800 gets),
 /// solved; `None` for a call that does not turn or turns from a frame only
 /// the control knows (additive).
-fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Solved> {
+fn swivel(site: &CallSite, machine: &OnMachine) -> Option<Solved> {
     Some(solve_asked(&swivels::of_cycle600(site)?, machine))
 }
 
@@ -187,7 +185,7 @@ fn swivel(site: &CallSite, machine: &axes::Loaded) -> Option<Solved> {
 type Solved = Result<(Record, Swivel), String>;
 
 /// A swivel asked of the machine, solved on the record it names.
-fn solve_asked(asked: &Asked, machine: &axes::Loaded) -> Solved {
+fn solve_asked(asked: &Asked, machine: &OnMachine) -> Solved {
     match swivels::solve_on(asked, &machine.machine) {
         Ok((record, swivel)) => Ok((record.clone(), swivel)),
         Err(Unsolved::NoRecord) => Err(format!(
@@ -202,7 +200,7 @@ fn solve_asked(asked: &Asked, machine: &axes::Loaded) -> Solved {
 /// axis positions each takes: found only where a machine is given.
 fn cycle800_swivels(
     document: &crate::document::Document,
-    machine: &axes::Loaded,
+    machine: &OnMachine,
 ) -> Vec<(Asked, Solved)> {
     if !crate::semantic::mentions_cycle(document.source, b"800") {
         return Vec::new();
@@ -231,11 +229,11 @@ fn solved_json(solved: &Solved) -> serde_json::Value {
     }
 }
 
-fn swivel_text(site: &CallSite, machine: &axes::Loaded) -> Option<String> {
+fn swivel_text(site: &CallSite, machine: &OnMachine) -> Option<String> {
     Some(solved_text(&swivel(site, machine)?))
 }
 
-fn swivel_json(site: &CallSite, machine: &axes::Loaded) -> serde_json::Value {
+fn swivel_json(site: &CallSite, machine: &OnMachine) -> serde_json::Value {
     swivel(site, machine).map_or(serde_json::Value::Null, |solved| solved_json(&solved))
 }
 

@@ -1,12 +1,16 @@
 //! Writing files so that an interrupted run never leaves a partial one.
 //!
-//! Every file is written into a temporary file beside it (a random name,
-//! created exclusively, readable by its owner only, locked while the run
-//! lives), synced, given the original's owner, group and mode, and renamed
-//! over it. A run that was killed leaves its temporary file unlocked; the
-//! next run that writes beside it removes it. A rename replaces the
-//! directory entry: a file that has other hard links keeps its old bytes
-//! under them. Unix only, as is the mapping of large programs.
+//! Every file is written into a temporary file beside it (readable by its
+//! owner only, locked while the run lives), synced, given the original's
+//! owner, group and mode, and renamed over it. On Linux the temporary file
+//! has no name while it is written (`O_TMPFILE`): it is linked in under a
+//! random name once complete and renamed at once, so a run killed before
+//! that leaves nothing. Elsewhere, and on file systems without `O_TMPFILE`,
+//! it is created under a random name, exclusively; a run that was killed
+//! leaves it unlocked, and the next run that writes beside it removes it. A
+//! rename replaces the directory entry: a file that has other hard links
+//! keeps its old bytes under them. Unix only, as is the mapping of large
+//! programs; what is Linux's alone is behind `cfg` here.
 
 use std::fs::{self, File, Metadata, OpenOptions};
 use std::hash::{BuildHasher, Hasher};
@@ -117,24 +121,145 @@ fn replace(
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     remove_stale_temporaries(&dir, &name);
-    let (mut file, temporary) = create_temporary(&dir, &name, like.is_some())?;
+    let (mut file, mut temporary) = Temporary::create(&dir, &name, like.is_some())?;
     let result = (|| {
         write_buffered(&mut file, write)?;
         file.sync_all()?;
         if let Some(like) = like {
             keep_owner_and_mode(&file, like)?;
         }
-        fs::rename(&temporary, target)?;
+        let path = temporary.named(&file, &dir, &name)?;
+        fs::rename(path, target)?;
         // The rename is durable once the directory is synced.
         if let Ok(dir) = File::open(&dir) {
             let _ = dir.sync_all();
         }
         Ok(())
     })();
-    if result.is_err() {
-        let _ = fs::remove_file(&temporary);
+    if let (Err(_), Temporary::Named(path)) = (&result, &temporary) {
+        let _ = fs::remove_file(path);
     }
     result
+}
+
+/// Where a write goes before it replaces the target.
+enum Temporary {
+    /// A file of its own name beside the target, locked while the run lives.
+    Named(PathBuf),
+    /// A file without a name in the target's directory (Linux `O_TMPFILE`):
+    /// a run killed while it writes leaves nothing behind. It is linked in
+    /// under a temporary name once complete, then renamed like the other.
+    #[cfg(target_os = "linux")]
+    Nameless,
+}
+
+impl Temporary {
+    /// A nameless file where the platform and the file system allow, else a
+    /// named one.
+    fn create(dir: &Path, name: &str, private: bool) -> std::io::Result<(File, Temporary)> {
+        #[cfg(target_os = "linux")]
+        if let Some(file) = nameless::create(dir, private)? {
+            return Ok((file, Temporary::Nameless));
+        }
+        let (file, path) = create_temporary(dir, name, private)?;
+        Ok((file, Temporary::Named(path)))
+    }
+
+    /// The complete file's path, to rename over the target: a nameless file
+    /// is given its temporary name now.
+    fn named(&mut self, file: &File, dir: &Path, name: &str) -> std::io::Result<PathBuf> {
+        match self {
+            Temporary::Named(path) => Ok(path.clone()),
+            #[cfg(target_os = "linux")]
+            Temporary::Nameless => {
+                let path = nameless::link(file, dir, &temporary_prefix(name))?;
+                *self = Temporary::Named(path.clone());
+                Ok(path)
+            }
+        }
+    }
+}
+
+/// Nameless temporary files (Linux 3.11 and later, on the file systems that
+/// support `O_TMPFILE`: ext4, XFS, Btrfs, tmpfs and others).
+#[cfg(target_os = "linux")]
+mod nameless {
+    use std::ffi::CString;
+    use std::fs::{File, OpenOptions};
+    use std::os::unix::ffi::OsStrExt;
+    use std::os::unix::fs::OpenOptionsExt;
+    use std::os::unix::io::AsRawFd;
+    use std::path::{Path, PathBuf};
+
+    use super::{random, TEMPORARY_SUFFIX};
+
+    /// A new file without a name in `dir`, locked (so that once it has a
+    /// name no other run's clean-up takes it), or `None` where the file
+    /// system or the kernel cannot make one: the caller makes a named one.
+    pub(super) fn create(dir: &Path, private: bool) -> std::io::Result<Option<File>> {
+        // The file is linked in through its descriptor's entry in /proc.
+        if !Path::new("/proc/self/fd").is_dir() {
+            return Ok(None);
+        }
+        let opened = OpenOptions::new()
+            .write(true)
+            .custom_flags(libc::O_TMPFILE | libc::O_CLOEXEC)
+            .mode(if private { 0o600 } else { 0o666 })
+            .open(dir);
+        let file = match opened {
+            Ok(file) => file,
+            // No O_TMPFILE on this file system (EOPNOTSUPP), or a kernel
+            // that predates it (EISDIR: it read the flag as O_DIRECTORY; or
+            // EINVAL).
+            Err(e)
+                if matches!(
+                    e.raw_os_error(),
+                    Some(libc::EOPNOTSUPP | libc::EISDIR | libc::EINVAL)
+                ) =>
+            {
+                return Ok(None)
+            }
+            Err(e) => return Err(e),
+        };
+        file.try_lock().map_err(std::io::Error::other)?;
+        Ok(Some(file))
+    }
+
+    /// Gives the complete nameless `file` a new temporary name in `dir`
+    /// (`prefix`, random digits, `.tmp`), which a rename then moves over the
+    /// target: `linkat` cannot replace a name. Only between the two can a
+    /// killed run leave a file behind, which the next run removes.
+    pub(super) fn link(file: &File, dir: &Path, prefix: &str) -> std::io::Result<PathBuf> {
+        let descriptor = CString::new(format!("/proc/self/fd/{}", file.as_raw_fd()))
+            .map_err(std::io::Error::other)?;
+        for _ in 0..64 {
+            let path = dir.join(format!("{prefix}{:016x}{TEMPORARY_SUFFIX}", random()));
+            let name = CString::new(path.as_os_str().as_bytes()).map_err(std::io::Error::other)?;
+            #[allow(unsafe_code)]
+            // SAFETY: both arguments are NUL-terminated strings that live
+            // across the call, which only reads them; no memory is shared.
+            let linked = unsafe {
+                libc::linkat(
+                    libc::AT_FDCWD,
+                    descriptor.as_ptr(),
+                    libc::AT_FDCWD,
+                    name.as_ptr(),
+                    libc::AT_SYMLINK_FOLLOW,
+                )
+            };
+            if linked == 0 {
+                return Ok(path);
+            }
+            let error = std::io::Error::last_os_error();
+            if error.kind() != std::io::ErrorKind::AlreadyExists {
+                return Err(error);
+            }
+        }
+        Err(std::io::Error::new(
+            std::io::ErrorKind::AlreadyExists,
+            "no temporary name could be given to the file",
+        ))
+    }
 }
 
 fn write_buffered(

@@ -6,6 +6,7 @@
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::archive::Form;
 use crate::cli::analysis;
@@ -17,6 +18,7 @@ use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
+use crate::semantic::swivels::OnMachine;
 use crate::workspace::{Given, Workspace};
 
 /// Where a program's rewrite goes.
@@ -34,6 +36,9 @@ struct Outcome {
     status: ExitStatus,
     stdout: Vec<u8>,
     stderr: String,
+    /// The machine the axes comments were solved on, whose findings the run
+    /// tells once.
+    machine: Option<Arc<OnMachine>>,
 }
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
@@ -57,7 +62,10 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
     });
     let mut worst = ExitStatus::Success;
+    let mut told = analysis::MachinesTold::default();
     for outcome in outcomes {
+        let format = args.analysis.message_format;
+        worst = worst.max(told.tell(outcome.machine.as_deref(), format));
         eprint!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
         worst = worst.max(outcome.status);
@@ -71,6 +79,7 @@ fn failed(message: String) -> Outcome {
         status: ExitStatus::Error,
         stdout: Vec::new(),
         stderr: format!("{message}\n"),
+        machine: None,
     }
 }
 
@@ -125,6 +134,7 @@ fn rewrite_file(
         status: ExitStatus::Success,
         stdout: Vec::new(),
         stderr: String::new(),
+        machine: settings.machine.clone(),
     };
     // Every program's edits, as edits of the file (an archive's member's
     // shifted to where it lies, its header made to match).

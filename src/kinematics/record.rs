@@ -112,6 +112,14 @@ pub struct Record {
     pub direction_axis: Option<usize>,
 }
 
+/// The largest axis limit (`$TC_CARR30..33`, degrees) a record may give.
+/// Siemens documents no range for them (REAL); the control's own software
+/// limit switches (MD36100/36110) default to ±1e8, its way of saying "no
+/// limit", so a limit past that is a typo or garbage, and no real axis's.
+/// Bounding it also keeps the placement and the table's search exact: at
+/// 1e8 two neighbouring doubles lie 1.5e-8 degrees apart.
+pub const LIMIT_BOUND_DEG: f64 = 1e8;
+
 /// A record that cannot describe a machine: the solver refuses it.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum RecordError {
@@ -121,6 +129,15 @@ pub enum RecordError {
     MixedWithOneAxis,
     #[error("the two rotary axes are parallel: together they turn about one direction only")]
     ParallelAxes,
+    #[error("{axis}: its {which} position {value:e} is no rotary axis's (beyond ±{LIMIT_BOUND_DEG:e} degrees)")]
+    LimitBeyondBound {
+        axis: String,
+        /// 0 or 1.
+        index: usize,
+        /// "minimum" (`$TC_CARR30/31`) or "maximum" (`32/33`).
+        which: &'static str,
+        value: f64,
+    },
     #[error("{axis}: its minimum position {min} is above its maximum {max}")]
     LimitsReversed {
         axis: String,
@@ -161,6 +178,16 @@ impl Record {
         }
         for (index, axis) in self.axes.iter().enumerate() {
             if let Some((min, max)) = axis.limits {
+                for (which, value) in [("minimum", min), ("maximum", max)] {
+                    if value.is_nan() || value.abs() > LIMIT_BOUND_DEG {
+                        return Err(RecordError::LimitBeyondBound {
+                            axis: axis.label(index),
+                            index,
+                            which,
+                            value,
+                        });
+                    }
+                }
                 if min > max {
                     return Err(RecordError::LimitsReversed {
                         axis: axis.label(index),

@@ -83,6 +83,12 @@ pub fn split(
     let (low, high) = axis
         .limits
         .unwrap_or((table_current - 180.0, table_current + 180.0));
+    // The head sees the table's angle modulo a turn: the turn of the limits
+    // nearest the current position holds an angle as good as any other,
+    // and, of equally good ones, the one nearest the current position. So
+    // limits of many turns (up to ±1e8 degrees) are searched over one.
+    let low = (table_current - 180.0).max(low).min(low.max(high - 360.0));
+    let high = high.min(low + 360.0);
     // (score, γ) of the best of `gammas`.
     let best_of =
         |gammas: &mut dyn Iterator<Item = f64>| -> Result<Option<(f64, f64)>, SplitError> {
@@ -137,7 +143,11 @@ pub fn split(
     split_at(table, head, request, gamma, TableAngle::Chosen)
 }
 
-/// The minimum of `f` on `[a, b]` by golden-section search, to 1e-10°.
+/// The minimum of `f` on `[a, b]` by golden-section search, to 1e-10° or
+/// as near as the numbers there resolve: far from zero two neighbouring
+/// doubles lie more than 1e-10 apart (from 2^19 degrees on), so the steps
+/// are counted too (the bracket shrinks by 0.618 a step: 100 steps take any
+/// bracket of this search below a double's resolution).
 fn golden(
     mut a: f64,
     mut b: f64,
@@ -146,7 +156,10 @@ fn golden(
     let ratio = (5f64.sqrt() - 1.0) / 2.0;
     let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
     let (mut fc, mut fd) = (f(c)?, f(d)?);
-    while b - a > 1e-10 {
+    for _ in 0..100 {
+        if b - a <= 1e-10 {
+            break;
+        }
         if fc < fd {
             (b, d, fd) = (d, c, fc);
             c = b - ratio * (b - a);
@@ -285,6 +298,16 @@ mod tests {
     }
 
     #[test]
+    fn the_fine_search_ends_where_doubles_are_coarser_than_its_tolerance() {
+        // About 1e8 two neighbouring doubles lie 1.5e-8 apart: a bracket
+        // never gets narrower than 1e-10 there.
+        let centre = 1e8 + 0.25;
+        let found =
+            golden(centre - 0.005, centre + 0.005, |g| Ok((g - centre).abs())).expect("no error");
+        assert!((found - centre).abs() < 1e-7, "{found}");
+    }
+
+    #[test]
     fn a_tilt_beyond_the_head_s_reach_goes_to_the_table() {
         let (table, head) = machine();
         // The tool 60° about Y: the head alone (A at most 30°) cannot.
@@ -298,6 +321,26 @@ mod tests {
         assert!((split.table - 60.0).abs() < 1e-6, "{}", split.table);
         let positions = split.head.solutions[split.head.chosen.expect("taken")].positions;
         assert!(positions[1].abs() < 1e-6, "{positions:?}");
+    }
+
+    #[test]
+    fn limits_of_many_turns_choose_as_one_turn_does() {
+        let (mut table, head) = machine();
+        let asked = request(from_axis_angle(Vector3::y(), 60.0));
+        let mut chosen = Vec::new();
+        for limits in [(-360.0, 360.0), (-1e8, 1e8), (-1e8, 50.5), (-70.0, 1e8)] {
+            table.axes[0].limits = Some(limits);
+            let split = split(&table, &head, &asked, 0.0, None).expect("valid");
+            chosen.push(split.table);
+        }
+        // The whole tilt on the table, at the turn nearest 0 the limits
+        // allow (-300 is 60 a turn lower); once the coarse search of a range
+        // of 2e8 degrees sampled its first 100,000 only, at the lower end.
+        let round = |x: f64| (x * 1e6).round() / 1e6;
+        assert_eq!(
+            chosen.iter().map(|&x| round(x)).collect::<Vec<_>>(),
+            [60.0, 60.0, -300.0, 60.0]
+        );
     }
 
     #[test]

@@ -215,18 +215,20 @@ fn place(record: &Record, f: &Vector3<f64>, angles: [f64; 2], current: [f64; 2])
     best
 }
 
-/// `position` ± 360° inside `[min, max]`, nearest `current`.
+/// `position` ± 360° inside `[min, max]`, nearest `current` (of two as
+/// near, the lower), in constant time whatever the limits: the turns are
+/// counted, not stepped through.
 fn inside(position: f64, min: f64, max: f64, current: f64) -> Option<f64> {
-    let lowest = position - 360.0 * ((position - min) / 360.0).floor();
-    let mut best: Option<f64> = None;
-    let mut candidate = lowest;
-    while candidate <= max + 1e-9 {
-        if best.is_none_or(|b| (candidate - current).abs() < (b - current).abs()) {
-            best = Some(candidate);
-        }
-        candidate += 360.0;
+    // The candidates are `position + 360 k` for whole k in [lowest, highest].
+    let lowest = ((min - position) / 360.0).ceil();
+    let highest = ((max + 1e-9 - position) / 360.0).floor();
+    if lowest.is_nan() || highest.is_nan() || lowest > highest {
+        return None;
     }
-    best
+    // The turn nearest `current`, a tie to the lower one (the lowest where
+    // `current` is no number).
+    let nearest = ((current - position) / 360.0 - 0.5).ceil();
+    Some(position + 360.0 * nearest.max(lowest).min(highest))
 }
 
 /// `position` ± 360° within half a turn of `current` (an axis without limits).
@@ -475,6 +477,57 @@ mod tests {
             assert!((solution.positions[1] / 2.5).fract().abs() < 1e-12);
             assert!(solution.hirth_error_deg > 0.0 && solution.hirth_error_deg < 1.25);
         }
+    }
+
+    /// The stepping search `inside` replaced, as the reference.
+    fn inside_by_steps(position: f64, min: f64, max: f64, current: f64) -> Option<f64> {
+        let lowest = position - 360.0 * ((position - min) / 360.0).floor();
+        let mut best: Option<f64> = None;
+        let mut candidate = lowest;
+        while candidate <= max + 1e-9 {
+            if best.is_none_or(|b| (candidate - current).abs() < (b - current).abs()) {
+                best = Some(candidate);
+            }
+            candidate += 360.0;
+        }
+        best
+    }
+
+    #[test]
+    fn placement_inside_the_limits_counts_turns_as_stepping_did() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |range: f64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 * range - range
+        };
+        for _ in 0..20_000 {
+            let (a, b) = (next(2000.0).round(), next(2000.0).round());
+            let (min, max) = (a.min(b), a.max(b));
+            let (position, current) = (next(1000.0), next(3000.0));
+            let (found, stepped) = (
+                inside(position, min, max, current),
+                inside_by_steps(position, min, max, current),
+            );
+            match (found, stepped) {
+                (Some(f), Some(s)) => assert!(
+                    (f - s).abs() < 1e-9,
+                    "{position} in {min}..{max} near {current}: {f} vs {s}"
+                ),
+                _ => assert_eq!(found, stepped, "{position} in {min}..{max} near {current}"),
+            }
+        }
+        // Exactly between two turns: the lower, as the search took it.
+        assert_eq!(inside(0.0, -720.0, 720.0, 180.0), Some(0.0));
+        assert_eq!(inside(10.0, 0.0, 100.0, 200.0), Some(10.0));
+        assert_eq!(inside(10.0, 20.0, 100.0, 0.0), None);
+        assert_eq!(inside(f64::NAN, 0.0, 100.0, 0.0), None);
+        assert_eq!(inside(10.0, 0.0, 800.0, f64::NAN), Some(10.0));
+        // Limits of any size take no longer.
+        assert_eq!(inside(30.0, -1e300, 1e300, 0.0), Some(30.0));
+        let far = inside(30.0, -10.0, 1e300, 1e200).expect("inside");
+        assert!((far - 1e200).abs() <= 1e200 * 1e-15, "{far}");
     }
 
     #[test]

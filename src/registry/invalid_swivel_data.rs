@@ -1,5 +1,6 @@
 //! K001 `invalid-swivel-data`: found where a machine file is read
-//! (`semantic::machine`) for `axes`, `eval` and `check`; this file documents it.
+//! (`semantic::machine`, through `workspace::Workspace::machine` for every
+//! command); this file documents it.
 
 use crate::diagnostic::{RuleInfo, Severity};
 
@@ -14,8 +15,10 @@ parameter (1 to 65 less 47-54 and 61-63: the control raises an alarm for them), 
 that is not a whole number from 1 on, a value that is not a constant or not of the parameter's
 type, a kinematic type other than T, P or M (`$TC_CARR23`, alarm 14153), and a record with a
 name or axes whose data cannot describe a machine: rotary axis 1 without a direction vector,
-mixed kinematics with one axis, two parallel axes, a minimum position above the maximum, a
-negative Hirth increment.
+mixed kinematics with one axis, two parallel axes, a position limit (`$TC_CARR30..33`) beyond
+±100,000,000 degrees (no rotary axis has one: it is a typo or garbage), a minimum position above
+the maximum, a negative Hirth increment. `check`, `eval`, `rewrite` and `axes` read a machine file
+the same way and report the same findings; K001 is an error (exit 1).
 
 ## Why it matters
 sinuprep computes the rotary axis positions from these data; a record it cannot trust gives no

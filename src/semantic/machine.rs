@@ -142,6 +142,14 @@ impl Machine {
             })
     }
 
+    /// Whether a finding makes the file fail (K001 and syntax errors are
+    /// errors): the same for every command that reads it.
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics
+            .iter()
+            .any(|d| d.severity == crate::diagnostic::Severity::Error)
+    }
+
     /// The records that describe a rotary axis, for messages.
     pub fn usable(&self) -> impl Iterator<Item = &Record> {
         self.records.iter().filter(|r| r.axis_count() > 0)
@@ -263,6 +271,9 @@ fn build(
             RecordError::NoFirstAxis => 7,
             RecordError::MixedWithOneAxis => 23,
             RecordError::ParallelAxes => 10,
+            RecordError::LimitBeyondBound { index, which, .. } => {
+                30 + 2 * u32::from(*which == "maximum") + u32::from(*index == 1)
+            }
             RecordError::LimitsReversed { axis, .. } => {
                 30 + u32::from(axis == &record.axes[1].label(1))
             }
@@ -309,6 +320,30 @@ mod tests {
         assert_eq!(record.offsets[0].y, 100.5, "fine offsets not asked for");
         let fine = Machine::read(HEAD.as_bytes(), Reading { fine_offsets: true });
         assert_eq!(fine.records[0].offsets[0].y, 100.75);
+    }
+
+    #[test]
+    fn a_limit_no_axis_has_is_told_at_its_assignment_with_its_value() {
+        for (value, told) in [
+            ("1EX11", "maximum position 1e11"),
+            ("-1EX300", "maximum position -1e300"),
+        ] {
+            let source = format!("{HEAD}$TC_CARR32[1]={value}\n");
+            let machine = Machine::read(source.as_bytes(), Reading::default());
+            let index = crate::span::LineIndex::new(source.as_bytes());
+            let [finding] = machine.diagnostics.as_slice() else {
+                panic!("{:?}", machine.diagnostics);
+            };
+            assert_eq!(index.position(finding.span.start).row, 10);
+            assert!(finding.message.contains(told), "{}", finding.message);
+            assert!(machine.records[0].check().is_err());
+        }
+        let source = format!("{HEAD}$TC_CARR30[1]=-1EX8 $TC_CARR32[1]=1EX8\n");
+        let machine = Machine::read(source.as_bytes(), Reading::default());
+        assert!(
+            machine.diagnostics.is_empty(),
+            "the bound itself is allowed"
+        );
     }
 
     #[test]

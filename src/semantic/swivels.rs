@@ -24,6 +24,9 @@ use nalgebra::Rotation3;
 pub struct OnMachine {
     /// The file it was read from, for messages.
     pub name: String,
+    /// What was read (the file, or an archive's data members joined): the
+    /// machine's findings point into it.
+    pub source: Vec<u8>,
     pub machine: Machine,
     /// The orientation error (degrees) Hirth rounding may make unreported.
     pub hirth_tolerance_deg: f64,

@@ -234,7 +234,10 @@ impl Workspace {
         Ok(environment)
     }
 
-    /// The machine given (or else sinuprep.toml's), read once a run.
+    /// The machine given (or else sinuprep.toml's), read once a run: the one
+    /// way every command (`check`, `rewrite`, `eval`, `axes`) reads a
+    /// machine file, so that each finds the same in it (its findings are
+    /// [`Machine::diagnostics`], the caller's to report once a run).
     pub fn machine(&self, config: &Config) -> Result<Option<Arc<OnMachine>>, SettingsError> {
         let (path, key) = match (&self.given.machine, &config.machine) {
             (Some(path), _) => (path.clone(), None),
@@ -260,8 +263,9 @@ impl Workspace {
             }
         })?;
         let on = Arc::new(OnMachine {
-            name: data.name,
             machine: Machine::read(&data.bytes, reading),
+            name: data.name,
+            source: data.bytes.into_owned(),
             hirth_tolerance_deg: config
                 .hirth_tolerance
                 .unwrap_or(swivels::HIRTH_TOLERANCE_DEG),
