@@ -149,7 +149,8 @@ fn with_did_you_mean(message: &str) -> String {
     }
 }
 
-fn nearest(start: &Path) -> Option<PathBuf> {
+/// The nearest `sinuprep.toml` from `start` upward.
+pub(crate) fn nearest(start: &Path) -> Option<PathBuf> {
     let start = if start.is_dir() {
         start.to_path_buf()
     } else {
