@@ -408,3 +408,48 @@ fn a_folder_is_rewritten_file_by_file() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn check_prints_each_file_as_soon_as_the_files_before_it_are_done() {
+    let dir = scratch("files-stream");
+    fs::write(dir.join("A.MPF"), b"GOTOF NOWHERE\nM30\n").expect("write");
+    // The second program comes through a FIFO: written only once the first
+    // one's finding has been read.
+    let fifo = dir.join("B.MPF");
+    if !Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|s| s.success())
+    {
+        eprintln!("NOTE: mkfifo is not available here; the test was skipped");
+        return;
+    }
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short", "A.MPF", "B.MPF"])
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let stdout = child.stdout.take().expect("stdout");
+    let (sender, first_line) = std::sync::mpsc::channel();
+    let reader = std::thread::spawn(move || {
+        use std::io::BufRead;
+        let mut lines = std::io::BufReader::new(stdout).lines();
+        let _ = sender.send(lines.next());
+        lines.count()
+    });
+    let first = first_line.recv_timeout(Duration::from_secs(10));
+    // Whatever came, the FIFO is written so that the run ends.
+    fs::write(&fifo, b"GOTOF ELSEWHERE\nM30\n").expect("write the FIFO");
+    let _ = reader.join();
+    let output = child.wait_with_output().expect("ends");
+    assert_exit(&output, 1);
+    let first = first
+        .expect("the first file's finding came before the second file was read")
+        .expect("a line")
+        .expect("text");
+    assert!(first.starts_with("A.MPF:1:"), "{first}");
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -11,16 +11,18 @@ use crate::cli::error::CliError;
 use crate::cli::input::{expand, read, Bytes};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
-use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
+use crate::cli::render::{
+    github, human, json_end, json_file, short, FileReport, Located, Sarif, JSON_BETWEEN, JSON_START,
+};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
 use crate::workspace::Workspace;
 
-/// One file's outcome, with what its report needs of the source taken out
-/// in the worker: the source is dropped as soon as its file is checked, so
-/// checking a directory holds the findings, not every file.
+/// One file's outcome, its report rendered in the worker: the source is
+/// dropped as soon as its file is checked, and the report printed as soon
+/// as the files before it are.
 struct Checked {
     report: Report,
     fails: bool,
@@ -152,57 +154,63 @@ impl Counts {
 }
 
 enum Report {
-    /// The file's part of a per-file format (short, GitHub, human).
+    /// The file's part of the output: of a per-file format (short, GitHub,
+    /// human), or its entries of the JSON document's `files`.
     Text(String),
-    /// For the whole-run formats (JSON, SARIF): one per program.
-    Located(Vec<Located>),
+    /// SARIF's results of its programs: the log is written at the end.
+    Sarif(Sarif),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(analysis::given_to_check(args))?;
     let paths = expand(&args.paths, args.allow_empty)?;
     let colour = std::io::stdout().is_terminal();
-    let results = parallel::each(paths.len(), |index| match &paths[index] {
+    let work = |index: usize| match &paths[index] {
         Ok(path) => check_file(path, args, colour, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
         }),
-    });
+    };
 
     let mut failed = false;
     let mut fails = false;
-    let mut text = String::new();
-    let mut located = Vec::new();
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
-    for result in results {
+    let mut sarif = Sarif::default();
+    if args.format == Format::Json {
+        write_stdout(JSON_START.as_bytes())?;
+    }
+    // Each file's report printed as soon as it and those before it are done.
+    parallel::each(paths.len(), work, |result| {
         match result {
             Ok(checked) => {
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                files += checked.files;
                 match checked.report {
-                    // One file's report (the common case) is taken, not copied.
-                    Report::Text(part) if text.is_empty() => text = part,
-                    Report::Text(part) => text.push_str(&part),
-                    Report::Located(files) => located.extend(files),
+                    Report::Text(part) if args.format == Format::Json && files > 0 => {
+                        write_stdout(JSON_BETWEEN.as_bytes())?;
+                        write_stdout(part.as_bytes())?;
+                    }
+                    Report::Text(part) => write_stdout(part.as_bytes())?,
+                    Report::Sarif(part) => sarif.extend(part),
                 }
+                files += checked.files;
             }
             Err(error) => {
                 failed = true;
                 eprintln!("{:?}", miette::Report::new(error));
             }
         }
+        Ok::<(), CliError>(())
+    })?;
+    match args.format {
+        Format::Json => write_stdout(json_end(files).as_bytes())?,
+        Format::Sarif => write_stdout(sarif.finish().as_bytes())?,
+        Format::Short | Format::Github | Format::Human => {}
     }
-    let out = match args.format {
-        Format::Json => json(&located),
-        Format::Sarif => sarif(&located),
-        Format::Short | Format::Github | Format::Human => text,
-    };
-    write_stdout(out.as_bytes())?;
     // For people: on stderr, so that what tools read stays the findings.
     if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
         eprintln!("{}", counts.summary(files));
@@ -253,7 +261,7 @@ fn check_file(
     }
     let mut checked = Checked {
         report: match args.format {
-            Format::Json | Format::Sarif => Report::Located(Vec::new()),
+            Format::Sarif => Report::Sarif(Sarif::default()),
             _ => Report::Text(String::new()),
         },
         fails: false,
@@ -289,9 +297,15 @@ fn check_file(
             Report::Text(text) => match args.format {
                 Format::Short => short(&file_report, text),
                 Format::Github => github(&file_report, text),
+                Format::Json => {
+                    if !text.is_empty() {
+                        text.push_str(JSON_BETWEEN);
+                    }
+                    text.push_str(&json_file(&Located::new(&name, source, diagnostics)));
+                }
                 _ => human(&file_report, colour, text),
             },
-            Report::Located(located) => located.push(Located::new(&name, source, diagnostics)),
+            Report::Sarif(sarif) => sarif.add(&Located::new(&name, source, diagnostics)),
         }
     }
     Ok(checked)

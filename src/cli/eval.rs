@@ -24,16 +24,17 @@ use std::path::{Path, PathBuf};
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths, args.allow_empty)?;
     let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
-    let outcomes = parallel::each(paths.len(), |index| match &paths[index] {
+    let mut worst = ExitStatus::Success;
+    let mut documents = Vec::new();
+    let work = |index: usize| match &paths[index] {
         Ok(path) => eval_file(path, args, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
         }),
-    });
-    let mut worst = ExitStatus::Success;
-    let mut documents = Vec::new();
-    for outcome in outcomes {
+    };
+    // Each file's evaluation printed as soon as it and those before it are done.
+    parallel::each(paths.len(), work, |outcome| {
         match outcome {
             Ok(evaluated) => {
                 eprint!("{}", evaluated.diagnostics);
@@ -50,7 +51,8 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
                 worst = ExitStatus::Error;
             }
         }
-    }
+        Ok::<(), CliError>(())
+    })?;
     if args.json {
         // One program: its document; several (files, or an archive's
         // programs): an array of them, in order.

@@ -48,20 +48,22 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         fine_offsets: args.fine_offsets,
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let outcomes = parallel::each(paths.len(), |index| {
+    let mut worst = ExitStatus::Success;
+    let work = |index: usize| {
         let path = match &paths[index] {
             Ok(path) => path,
             Err(error) => return failed(error.to_string()),
         };
         rewrite_file(path, args, &workspace, several)
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
-    });
-    let mut worst = ExitStatus::Success;
-    for outcome in outcomes {
+    };
+    // Each program's messages as soon as it and those before it are done.
+    parallel::each(paths.len(), work, |outcome| {
         eprint!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
         worst = worst.max(outcome.status);
-    }
+        Ok::<(), CliError>(())
+    })?;
     Ok(worst)
 }
 
