@@ -4,7 +4,8 @@
 //! their order, not after the last) and the peak resident memory.
 //!
 //! `cargo bench --bench folders` (counts: `SINUPREP_BENCH_FOLDERS`, default
-//! `2000 8000 50000`). Needs `/usr/bin/time`; nothing is asserted.
+//! `2000 8000 50000`; another build to compare: `SINUPREP_BENCH_BINARY`).
+//! Needs `/usr/bin/time`; nothing is asserted.
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -17,13 +18,18 @@ fn main() {
         .split_whitespace()
         .filter_map(|n| n.parse().ok())
         .collect();
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let status = Command::new("cargo")
-        .args(["build", "--release", "--quiet"])
-        .current_dir(&root)
-        .status();
-    assert!(status.is_ok_and(|s| s.success()), "release build failed");
-    let binary = root.join("target/release/sinuprep");
+    let binary = match std::env::var_os("SINUPREP_BENCH_BINARY") {
+        Some(binary) => PathBuf::from(binary),
+        None => {
+            let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+            let status = Command::new("cargo")
+                .args(["build", "--release", "--quiet"])
+                .current_dir(&root)
+                .status();
+            assert!(status.is_ok_and(|s| s.success()), "release build failed");
+            root.join("target/release/sinuprep")
+        }
+    };
     let dir = std::env::temp_dir().join(format!("sinuprep-bench-folders-{}", std::process::id()));
     println!("shape  programs   total s   µs/program   first line s   peak RSS MiB");
     for &count in &counts {

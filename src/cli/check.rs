@@ -12,7 +12,8 @@ use crate::cli::input::{expand, read, Bytes};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
-    github, human, json_end, json_file, short, FileReport, Located, Sarif, JSON_BETWEEN, JSON_START,
+    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, JSON_BETWEEN,
+    JSON_START,
 };
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
@@ -340,7 +341,10 @@ fn fix(
             continue;
         }
         if diagnostics.iter().any(|d| d.code.starts_with('S')) {
-            eprintln!("{}: not fixed, because of its syntax errors", program.name);
+            eprintln!(
+                "{}: not fixed, because of its syntax errors",
+                printable(&program.name)
+            );
             continue;
         }
         let shifted = match (&opened.archive, program.member) {
@@ -350,7 +354,7 @@ fn fix(
         let Some(shifted) = shifted else {
             eprintln!(
                 "{}: not fixed: its new size does not fit the archive's header",
-                program.name
+                printable(&program.name)
             );
             continue;
         };
@@ -363,6 +367,6 @@ fn fix(
     let fixed = apply(bytes, &edits);
     write_atomically(target, |out| out.write_all(&fixed), None)?;
     let s = if answered == 1 { "" } else { "s" };
-    eprintln!("{}: fixed {answered} finding{s}", opened.name);
+    eprintln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
 }

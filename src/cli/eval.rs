@@ -8,6 +8,7 @@ use crate::cli::axes;
 use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::parallel;
+use crate::cli::render::printable;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -148,6 +149,8 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
                 documents.push(document);
             }
             Output::Text(text) => {
+                let name = printable(name);
+                let name: &str = &name;
                 let index = LineIndex::new(source);
                 for site in calls {
                     table(site, name, source, &index, options, text);

@@ -20,14 +20,35 @@ pub struct FileReport<'a> {
     pub diagnostics: &'a [Diagnostic],
 }
 
+/// A file's or member's name as text output prints it: its control
+/// characters escaped as Rust writes them (`\n`, `\u{1b}`), so that a
+/// name holding a line break cannot print a line of its own (which GitHub
+/// Actions or a problem matcher would read as a finding) and one holding an
+/// escape sequence cannot drive the terminal. Every text format and message
+/// naming a file goes through it; JSON and SARIF escape them as JSON does.
+pub fn printable(name: &str) -> std::borrow::Cow<'_, str> {
+    if !name.chars().any(char::is_control) {
+        return std::borrow::Cow::Borrowed(name);
+    }
+    let mut out = String::with_capacity(name.len() + 8);
+    for c in name.chars() {
+        if c.is_control() {
+            out.extend(c.escape_debug());
+        } else {
+            out.push(c);
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 /// `path:line:col: severity[CODE] message`, one per line.
 pub fn short(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
+    let name = printable(report.name);
     for diagnostic in report.diagnostics {
         let Position { row, column } = index.position(diagnostic.span.start);
         out.push_str(&format!(
-            "{}:{row}:{column}: {}[{}] {}\n",
-            report.name,
+            "{name}:{row}:{column}: {}[{}] {}\n",
             diagnostic.severity.as_str(),
             diagnostic.code,
             diagnostic.message
@@ -112,7 +133,7 @@ impl Window {
             _ => (bytes.iter().map(|&b| b as char).collect(), true),
         };
         Self {
-            name: report.name.to_string(),
+            name: printable(report.name).into_owned(),
             text,
             start,
             first_row: index.position(start).row - 1,
@@ -379,7 +400,7 @@ pub fn github(report: &FileReport, out: &mut String) {
         };
         out.push_str(&format!(
             "::{level} file={},line={},col={},endLine={},endColumn={},title={}::{}\n",
-            escape_property(report.name),
+            printable(&escape_property(report.name)),
             start.row,
             start.column,
             end.row,

@@ -15,6 +15,7 @@ use crate::cli::error::CliError;
 use crate::cli::input::{expand, read};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
+use crate::cli::render::printable;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
 use crate::workspace::{Given, Workspace};
@@ -162,7 +163,7 @@ fn rewrite_file(
                 errors = true;
                 outcome.stderr.push_str(&format!(
                     "{}: not rewritten: its new size does not fit the archive's header\n",
-                    program.name
+                    printable(&program.name)
                 ));
             }
         }
@@ -173,7 +174,7 @@ fn rewrite_file(
         if changed {
             outcome.stderr.push_str(&format!(
                 "{}: would rewrite {rewritten} CYCLE600 call(s)\n",
-                file.name
+                printable(&file.name)
             ));
         }
         outcome.status = status(errors || changed);
@@ -191,7 +192,7 @@ fn rewrite_file(
             if errors {
                 outcome.stderr.push_str(&format!(
                     "{}: not rewritten in place, because of the errors above\n",
-                    file.name
+                    printable(&file.name)
                 ));
                 return Ok(outcome);
             }
