@@ -453,3 +453,101 @@ fn check_prints_each_file_as_soon_as_the_files_before_it_are_done() {
     assert!(first.starts_with("A.MPF:1:"), "{first}");
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// A FIFO at `path`, or `false` (and a note) where mkfifo is missing.
+fn fifo(path: &Path) -> bool {
+    let made = Command::new("mkfifo")
+        .arg(path)
+        .status()
+        .is_ok_and(|s| s.success());
+    if !made {
+        eprintln!("NOTE: mkfifo is not available here; the FIFO cases were skipped");
+    }
+    made
+}
+
+#[test]
+fn directory_walks_skip_links_and_whatever_is_no_regular_file_and_say_so() {
+    let dir = scratch("files-walk-links");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Outside the tree: a file whose lines a report would print.
+    fs::write(dir.join("secret"), b"SECRET LINE X\nM30\n").expect("write");
+    symlink(dir.join("secret"), programs.join("shadow.MPF")).expect("symlink");
+    symlink("/dev/zero", programs.join("zero.MPF")).expect("symlink");
+    symlink("/", programs.join("root")).expect("symlink");
+    let has_fifo = fifo(&programs.join("PIPE.MPF"));
+    let output = run_in(&dir, &["check", "--format", "short", "programs"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!String::from_utf8_lossy(&output.stdout).contains("SECRET"));
+    for skipped in ["shadow.MPF", "zero.MPF", "programs/root"] {
+        let note = format!(
+            "note: skipped programs/{}",
+            skipped.trim_start_matches("programs/")
+        );
+        assert!(stderr.contains(&note), "{note} in {stderr}");
+    }
+    if has_fifo {
+        assert!(
+            stderr.contains("skipped programs/PIPE.MPF: not a regular file"),
+            "{stderr}"
+        );
+    }
+    assert!(stderr.contains("in 1 file"), "{stderr}");
+
+    // Asked to follow links, the walk reads the linked program, and still
+    // opens no device or FIFO.
+    fs::remove_file(programs.join("root")).expect("unlink");
+    let output = run_in(
+        &dir,
+        &["check", "--format", "short", "--follow-links", "programs"],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(String::from_utf8_lossy(&output.stdout).contains("shadow.MPF"));
+    assert!(
+        stderr.contains("skipped programs/zero.MPF: not a regular file"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("in 2 files"), "{stderr}");
+
+    // A rewrite into a directory copies nothing from outside the tree.
+    let output = run_in(&dir, &["rewrite", "-o", "out", "programs"]);
+    assert_exit(&output, 0);
+    assert_eq!(names(&dir.join("out")), ["A.MPF"]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn files_the_settings_name_must_be_regular_files_of_a_sane_size() {
+    let dir = scratch("files-settings");
+    fs::write(dir.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Sparse: 64 MiB and one byte, no disk taken.
+    let big = fs::File::create(dir.join("BIG.DEF")).expect("create");
+    big.set_len((64 << 20) + 1).expect("sparse");
+    let mut cases = vec![vec!["check", "--definitions", "BIG.DEF", "A.MPF"]];
+    if fifo(&dir.join("PIPE")) {
+        for option in [
+            "--definitions",
+            "--machine",
+            "--heads",
+            "--values",
+            "--config",
+        ] {
+            cases.push(vec!["check", option, "PIPE", "A.MPF"]);
+        }
+        cases.push(vec!["eval", "--values", "PIPE", "A.MPF"]);
+        cases.push(vec!["rewrite", "--heads", "PIPE", "A.MPF"]);
+    }
+    for args in cases {
+        let output = run_in(&dir, &args);
+        assert_exit(&output, 2);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("not a regular file") || stderr.contains("larger than 64 MiB"),
+            "{args:?}: {stderr}"
+        );
+    }
+    let _ = fs::remove_dir_all(&dir);
+}

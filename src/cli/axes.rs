@@ -111,7 +111,7 @@ pub struct Loaded {
 /// Reads the machine file at `path`; what is wrong in it goes to stderr
 /// (K001), and the records it leaves usable are kept.
 pub fn load(path: &Path, reading: Reading) -> Result<Loaded, CliError> {
-    let source = std::fs::read(path).map_err(|source| CliError::Read {
+    let source = crate::workspace::file::read(path).map_err(|source| CliError::Read {
         path: path.to_path_buf(),
         source,
     })?;

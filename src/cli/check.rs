@@ -8,7 +8,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Bytes};
+use crate::cli::input::{expand, read, Bytes, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
@@ -164,10 +164,10 @@ enum Report {
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(analysis::given_to_check(args))?;
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let colour = std::io::stdout().is_terminal();
     let work = |index: usize| match &paths[index] {
-        Ok(path) => check_file(path, args, colour, &workspace),
+        Ok(found) => check_file(found, args, colour, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
@@ -230,14 +230,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
 }
 
 fn check_file(
-    path: &Path,
+    found: &Found,
     args: &CheckArgs,
     colour: bool,
     workspace: &Workspace,
 ) -> Result<Checked, CliError> {
+    let path = found.path.as_path();
     // Refused before anything is read: stdin, a FIFO, a device.
     let fix_target = args.fix.then(|| in_place_target(path)).transpose()?;
-    let mut file = read(path)?;
+    let mut file = read(found)?;
     // stdin with --stdin-filename: report and look things up as that file.
     let named = match (&args.stdin_filename, path == Path::new("-")) {
         (Some(name), true) => {

@@ -6,7 +6,7 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read};
+use crate::cli::input::{expand, read, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::{write_stdout, ExitStatus};
@@ -20,15 +20,15 @@ use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
 use crate::workspace::Workspace;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     let work = |index: usize| match &paths[index] {
-        Ok(path) => eval_file(path, args, &workspace),
+        Ok(found) => eval_file(found, args, &workspace),
         Err(error) => Err(CliError::Read {
             path: PathBuf::new(),
             source: std::io::Error::other(error.to_string()),
@@ -81,8 +81,9 @@ struct Evaluated {
     failed: bool,
 }
 
-fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
-    let file = read(path)?;
+fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
+    let path = found.path.as_path();
+    let file = read(found)?;
     let resolved = workspace.for_rewrite(path)?;
     let machine_path = match &args.machine {
         Some(path) => Some(path.clone()),

@@ -12,7 +12,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read};
+use crate::cli::input::{expand, read, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
@@ -38,7 +38,7 @@ struct Outcome {
 }
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
     if several && !writes_files {
@@ -51,11 +51,11 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     })?;
     let mut worst = ExitStatus::Success;
     let work = |index: usize| {
-        let path = match &paths[index] {
-            Ok(path) => path,
+        let found = match &paths[index] {
+            Ok(found) => found,
             Err(error) => return failed(error.to_string()),
         };
-        rewrite_file(path, args, &workspace, several)
+        rewrite_file(found, args, &workspace, several)
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
     };
     // Each program's messages as soon as it and those before it are done.
@@ -110,13 +110,14 @@ fn mirror(dir: &Path, given: &[PathBuf], path: &Path) -> PathBuf {
 }
 
 fn rewrite_file(
-    path: &Path,
+    found: &Found,
     args: &RewriteArgs,
     workspace: &Workspace,
     several: bool,
 ) -> Result<Outcome, CliError> {
+    let path = found.path.as_path();
     let target = target(path, args, several)?;
-    let file = read(path)?;
+    let file = read(found)?;
     let resolved = workspace.for_rewrite(path)?;
     let mut settings = resolved.settings;
     settings.machine = workspace.machine(&resolved.config)?;

@@ -12,6 +12,7 @@
 
 mod config;
 mod error;
+pub mod file;
 mod values;
 
 use std::collections::HashMap;
@@ -398,10 +399,14 @@ impl Workspace {
                 _ => continue,
             };
             if head_def.is_none() && stem.eq_ignore_ascii_case("HEAD_DEF") {
+                // Read when a program needs it: one that is no regular file
+                // is then an error naming it.
                 head_def = Some(path.clone());
             }
-            let Ok(source) = std::fs::read(&path) else {
-                continue; // a file that vanished or cannot be read: not found
+            // A subprogram that vanished, cannot be read, or is no regular
+            // file of a sane size is not found (its calls are unchecked).
+            let Ok(source) = file::read(&path) else {
+                continue;
             };
             let mut environment = Environment::default();
             environment.read_procedure(&source);
@@ -441,7 +446,7 @@ fn own_directory(program: &Path) -> PathBuf {
 fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
     for path in files {
-        let bytes = std::fs::read(path).map_err(|source| SettingsError::Read {
+        let bytes = file::read(path).map_err(|source| SettingsError::Read {
             path: path.clone(),
             source,
         })?;
@@ -502,7 +507,7 @@ fn read_setting(
     path: &Path,
     key: Option<&'static str>,
 ) -> Result<Vec<u8>, SettingsError> {
-    std::fs::read(path).map_err(|source| match key {
+    file::read(path).map_err(|source| match key {
         Some(key) => SettingsError::ReadSetting {
             path: path.to_path_buf(),
             key,
