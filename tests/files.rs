@@ -551,3 +551,28 @@ fn files_the_settings_name_must_be_regular_files_of_a_sane_size() {
     }
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_program_deeper_than_the_path_limit_is_an_error_that_names_it() {
+    let dir = scratch("files-deep");
+    fs::write(dir.join("TOP.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Folders of 200-character names, 30 one in the other: past any
+    // system's path limit (Linux's is 4,096 bytes; 3,000 folders of one
+    // letter are past it too, and slow to make).
+    let name = "d".repeat(200);
+    let script = format!(
+        "mkdir deep && cd deep || exit 1; i=0; while [ $i -lt 30 ]; do mkdir {name} && cd -P {name} || exit 1; i=$((i+1)); done; echo M30 > PART.MPF"
+    );
+    let made = Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .current_dir(&dir)
+        .status()
+        .expect("sh runs");
+    assert!(made.success());
+    let output = run_in(&dir, &["check", "."]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("cannot read ./deep/"), "{stderr}");
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -31,6 +31,8 @@ struct Checked {
     unchecked: Unchecked,
     /// Programs reported: 1 for a file, its programs for an archive.
     files: usize,
+    /// What of an archive was left unchecked, for stderr.
+    notes: Option<String>,
 }
 
 /// What a program checked without its machine's environment (no
@@ -187,6 +189,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     parallel::each(paths.len(), work, |result| {
         match result {
             Ok(checked) => {
+                if let Some(notes) = &checked.notes {
+                    eprint!("{notes}");
+                }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
@@ -270,6 +275,7 @@ fn check_file(
         counts: Counts::default(),
         unchecked: Unchecked::default(),
         files: 0,
+        notes: opened.unchecked(),
     };
     let mut reports = Vec::new();
     for (program, outcome) in opened.programs(&file.bytes).into_iter().zip(outcomes) {

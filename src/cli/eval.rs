@@ -109,7 +109,7 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
         } else {
             Output::Text(String::new())
         },
-        diagnostics: String::new(),
+        diagnostics: opened.unchecked().unwrap_or_default(),
         failed: false,
     };
     for program in opened.programs(&file.bytes) {

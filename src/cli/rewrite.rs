@@ -128,7 +128,7 @@ fn rewrite_file(
     let mut outcome = Outcome {
         status: ExitStatus::Success,
         stdout: Vec::new(),
-        stderr: String::new(),
+        stderr: opened.unchecked().unwrap_or_default(),
     };
     // Every program's edits, as edits of the file (an archive's member's
     // shifted to where it lies, its header made to match).
