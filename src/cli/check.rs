@@ -2,13 +2,13 @@
 //! stable order.
 
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Bytes, Found};
+use crate::cli::input::{again, expand, read, Bytes, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
@@ -170,10 +170,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let colour = std::io::stdout().is_terminal();
     let work = |index: usize| match &paths[index] {
         Ok(found) => check_file(found, args, colour, &workspace),
-        Err(error) => Err(CliError::Read {
-            path: PathBuf::new(),
-            source: std::io::Error::other(error.to_string()),
-        }),
+        Err(error) => Err(again(error)),
     };
 
     let mut failed = false;

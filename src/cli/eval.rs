@@ -6,7 +6,7 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Found};
+use crate::cli::input::{again, expand, read, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::{write_stdout, ExitStatus};
@@ -20,7 +20,6 @@ use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
 use crate::workspace::Workspace;
-use std::path::PathBuf;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
@@ -29,10 +28,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let mut documents = Vec::new();
     let work = |index: usize| match &paths[index] {
         Ok(found) => eval_file(found, args, &workspace),
-        Err(error) => Err(CliError::Read {
-            path: PathBuf::new(),
-            source: std::io::Error::other(error.to_string()),
-        }),
+        Err(error) => Err(again(error)),
     };
     // Each file's evaluation printed as soon as it and those before it are done.
     parallel::each(paths.len(), work, |outcome| {

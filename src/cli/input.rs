@@ -95,6 +95,21 @@ pub fn expand(
     Ok(out)
 }
 
+/// The walk's error about one entry (a directory it could not read), made
+/// again for that entry's place in the report: an error is not `Clone`.
+pub fn again(error: &CliError) -> CliError {
+    match error {
+        CliError::Read { path, source } => CliError::Read {
+            path: path.clone(),
+            source: std::io::Error::new(source.kind(), source.to_string()),
+        },
+        other => CliError::Read {
+            path: PathBuf::new(),
+            source: std::io::Error::other(other.to_string()),
+        },
+    }
+}
+
 /// Whether `path` has not been met before (a path that cannot be read is
 /// taken, to be reported when it is read).
 fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {

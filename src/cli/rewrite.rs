@@ -12,7 +12,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Found};
+use crate::cli::input::{again, expand, read, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
@@ -53,7 +53,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let work = |index: usize| {
         let found = match &paths[index] {
             Ok(found) => found,
-            Err(error) => return failed(error.to_string()),
+            Err(error) => return failed(format!("{:?}", miette::Report::new(again(error)))),
         };
         rewrite_file(found, args, &workspace, several)
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
