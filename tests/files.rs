@@ -576,3 +576,32 @@ fn a_program_deeper_than_the_path_limit_is_an_error_that_names_it() {
     assert!(stderr.contains("cannot read ./deep/"), "{stderr}");
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
+    let dir = scratch("files-heads-link");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("P.MPF"), PROGRAM).expect("write");
+    fs::write(
+        dir.join("outside"),
+        b"_HEAD_NAME=\"SECRETHEAD\"\n_HEAD_ALLOWED=1\n",
+    )
+    .expect("write");
+    symlink(dir.join("outside"), programs.join("HEAD_DEF.SPF")).expect("symlink");
+    let output = run_in(&dir, &["check", "--format", "human", "programs"]);
+    let shown = format!(
+        "{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(!shown.contains("SECRETHEAD"), "{shown}");
+    assert!(shown.contains("C610"), "HEAD_DEF is missing: {shown}");
+    let output = run_in(
+        &dir,
+        &["check", "--format", "human", "--follow-links", "programs"],
+    );
+    let shown = String::from_utf8_lossy(&output.stdout);
+    assert!(shown.contains("SECRETHEAD"), "{shown}");
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -19,7 +19,7 @@ use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 
 /// One file's outcome, its report rendered in the worker: the source is
 /// dropped as soon as its file is checked, and the report printed as soon
@@ -165,7 +165,10 @@ enum Report {
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
-    let workspace = Workspace::new(analysis::given_to_check(args))?;
+    let workspace = Workspace::new(Given {
+        follow_links: args.follow_links,
+        ..analysis::given_to_check(args)
+    })?;
     let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let colour = std::io::stdout().is_terminal();
     let work = |index: usize| match &paths[index] {

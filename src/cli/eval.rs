@@ -19,11 +19,14 @@ use crate::semantic::swivels::{self, Asked, Unsolved};
 use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
-    let workspace = Workspace::new(analysis::given_to_rewrite(&args.analysis))?;
+    let workspace = Workspace::new(Given {
+        follow_links: args.follow_links,
+        ..analysis::given_to_rewrite(&args.analysis)
+    })?;
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     let work = |index: usize| match &paths[index] {

@@ -46,6 +46,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     }
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
+        follow_links: args.follow_links,
         fine_offsets: args.fine_offsets,
         ..analysis::given_to_rewrite(&args.analysis)
     })?;

@@ -51,6 +51,10 @@ pub struct Given {
     pub definitions: Vec<PathBuf>,
     /// Cycle directories, searched after the program's own directory.
     pub cycles: Vec<PathBuf>,
+    /// Whether a link met in a directory (a subprogram or HEAD_DEF beside
+    /// the program, in a cycle directory) is followed, as the walk's
+    /// `--follow-links`; by default it is not found there.
+    pub follow_links: bool,
     /// The machine's swivel data records, for `check`'s swivel rules.
     pub machine: Option<PathBuf>,
     /// Whether the records' fine offsets apply (SD42974).
@@ -393,6 +397,11 @@ impl Workspace {
         let mut procedures = Procedures::new();
         let mut head_def = None;
         for entry in std::fs::read_dir(dir)?.flatten() {
+            // A link in the folder names what may lie outside the tree.
+            let link = entry.file_type().is_ok_and(|kind| kind.is_symlink());
+            if link && !self.given.follow_links {
+                continue;
+            }
             let path = entry.path();
             let stem = match (path.file_stem(), path.extension()) {
                 (Some(stem), Some(extension)) if extension.eq_ignore_ascii_case("spf") => stem,
