@@ -138,12 +138,16 @@ impl<T> Shared<T> {
     }
 }
 
-/// Counts a thread out when it ends.
+/// Counts a thread out when it ends; one that panicked stops the others,
+/// which would otherwise wait for the window to move past its item.
 struct Ended<'a, T>(&'a Shared<T>);
 
 impl<T> Drop for Ended<'_, T> {
     fn drop(&mut self) {
-        self.0.lock().running -= 1;
+        let mut state = self.0.lock();
+        state.running -= 1;
+        state.stop |= std::thread::panicking();
+        drop(state);
         self.0.changed.notify_all();
     }
 }
@@ -174,6 +178,22 @@ mod tests {
         );
         assert_eq!(result, Ok(()));
         assert_eq!(seen, (0..1000).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn a_panic_in_one_item_ends_the_run_instead_of_hanging_it() {
+        let run = std::panic::catch_unwind(|| {
+            each(
+                10_000,
+                |index| {
+                    assert_ne!(index, 5, "the item that fails");
+                    index
+                },
+                |_| Ok::<(), ()>(()),
+            )
+        });
+        // With one core the panic comes straight from the item.
+        assert!(run.is_err());
     }
 
     #[test]
