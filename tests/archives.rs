@@ -414,3 +414,36 @@ fn an_archive_on_stdin_is_read_as_its_members() {
         stdout(&named)
     );
 }
+
+#[test]
+fn what_an_archive_holds_unchecked_is_named() {
+    let dir = scratch("archives-unchecked");
+    let program: &[u8] = b"GOTOF NOWHERE\nM30\n";
+    let mut archive = binary_archive(&[
+        ("/_N_MPF_DIR/_N_PART_MPF", b"M30\n"),
+        // Saved without its suffix: a program nobody checks.
+        ("/_N_MPF_DIR/_N_NOSUFFIX", program),
+    ]);
+    // A block of NULs ends the archive; a member written after it.
+    archive.extend_from_slice(&[0; 512]);
+    let hidden = binary_archive(&[("/_N_MPF_DIR/_N_HIDDEN_MPF", program)]);
+    archive.extend_from_slice(&hidden[512..]);
+    let path = dir.join("SAVED.ARC");
+    std::fs::write(&path, &archive).expect("write");
+    let path = path.to_str().expect("utf-8");
+    for args in [
+        vec!["check", path],
+        vec!["rewrite", "--check", path],
+        vec!["eval", path],
+    ] {
+        let output = run(&args, b"");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("SAVED.ARC: 1 member not checked") && stderr.contains("NOSUFFIX"),
+            "{args:?}: {stderr}"
+        );
+        let after = format!("from byte {} on, after the block of NULs", 3 * 1024 + 512);
+        assert!(stderr.contains(&after), "{args:?}: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

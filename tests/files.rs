@@ -408,3 +408,200 @@ fn a_folder_is_rewritten_file_by_file() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn check_prints_each_file_as_soon_as_the_files_before_it_are_done() {
+    let dir = scratch("files-stream");
+    fs::write(dir.join("A.MPF"), b"GOTOF NOWHERE\nM30\n").expect("write");
+    // The second program comes through a FIFO: written only once the first
+    // one's finding has been read.
+    let fifo = dir.join("B.MPF");
+    if !Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|s| s.success())
+    {
+        eprintln!("NOTE: mkfifo is not available here; the test was skipped");
+        return;
+    }
+    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short", "A.MPF", "B.MPF"])
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let stdout = child.stdout.take().expect("stdout");
+    let (sender, first_line) = std::sync::mpsc::channel();
+    let reader = std::thread::spawn(move || {
+        use std::io::BufRead;
+        let mut lines = std::io::BufReader::new(stdout).lines();
+        let _ = sender.send(lines.next());
+        lines.count()
+    });
+    let first = first_line.recv_timeout(Duration::from_secs(10));
+    // Whatever came, the FIFO is written so that the run ends.
+    fs::write(&fifo, b"GOTOF ELSEWHERE\nM30\n").expect("write the FIFO");
+    let _ = reader.join();
+    let output = child.wait_with_output().expect("ends");
+    assert_exit(&output, 1);
+    let first = first
+        .expect("the first file's finding came before the second file was read")
+        .expect("a line")
+        .expect("text");
+    assert!(first.starts_with("A.MPF:1:"), "{first}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// A FIFO at `path`, or `false` (and a note) where mkfifo is missing.
+fn fifo(path: &Path) -> bool {
+    let made = Command::new("mkfifo")
+        .arg(path)
+        .status()
+        .is_ok_and(|s| s.success());
+    if !made {
+        eprintln!("NOTE: mkfifo is not available here; the FIFO cases were skipped");
+    }
+    made
+}
+
+#[test]
+fn directory_walks_skip_links_and_whatever_is_no_regular_file_and_say_so() {
+    let dir = scratch("files-walk-links");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Outside the tree: a file whose lines a report would print.
+    fs::write(dir.join("secret"), b"SECRET LINE X\nM30\n").expect("write");
+    symlink(dir.join("secret"), programs.join("shadow.MPF")).expect("symlink");
+    symlink("/dev/zero", programs.join("zero.MPF")).expect("symlink");
+    symlink("/", programs.join("root")).expect("symlink");
+    let has_fifo = fifo(&programs.join("PIPE.MPF"));
+    let output = run_in(&dir, &["check", "--format", "short", "programs"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!String::from_utf8_lossy(&output.stdout).contains("SECRET"));
+    for skipped in ["shadow.MPF", "zero.MPF", "programs/root"] {
+        let note = format!(
+            "note: skipped programs/{}",
+            skipped.trim_start_matches("programs/")
+        );
+        assert!(stderr.contains(&note), "{note} in {stderr}");
+    }
+    if has_fifo {
+        assert!(
+            stderr.contains("skipped programs/PIPE.MPF: not a regular file"),
+            "{stderr}"
+        );
+    }
+    assert!(stderr.contains("in 1 file"), "{stderr}");
+
+    // Asked to follow links, the walk reads the linked program, and still
+    // opens no device or FIFO.
+    fs::remove_file(programs.join("root")).expect("unlink");
+    let output = run_in(
+        &dir,
+        &["check", "--format", "short", "--follow-links", "programs"],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(String::from_utf8_lossy(&output.stdout).contains("shadow.MPF"));
+    assert!(
+        stderr.contains("skipped programs/zero.MPF: not a regular file"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("in 2 files"), "{stderr}");
+
+    // A rewrite into a directory copies nothing from outside the tree.
+    let output = run_in(&dir, &["rewrite", "-o", "out", "programs"]);
+    assert_exit(&output, 0);
+    assert_eq!(names(&dir.join("out")), ["A.MPF"]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn files_the_settings_name_must_be_regular_files_of_a_sane_size() {
+    let dir = scratch("files-settings");
+    fs::write(dir.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Sparse: 64 MiB and one byte, no disk taken.
+    let big = fs::File::create(dir.join("BIG.DEF")).expect("create");
+    big.set_len((64 << 20) + 1).expect("sparse");
+    let mut cases = vec![vec!["check", "--definitions", "BIG.DEF", "A.MPF"]];
+    if fifo(&dir.join("PIPE")) {
+        for option in [
+            "--definitions",
+            "--machine",
+            "--heads",
+            "--values",
+            "--config",
+        ] {
+            cases.push(vec!["check", option, "PIPE", "A.MPF"]);
+        }
+        cases.push(vec!["eval", "--values", "PIPE", "A.MPF"]);
+        cases.push(vec!["rewrite", "--heads", "PIPE", "A.MPF"]);
+    }
+    for args in cases {
+        let output = run_in(&dir, &args);
+        assert_exit(&output, 2);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("not a regular file") || stderr.contains("larger than 64 MiB"),
+            "{args:?}: {stderr}"
+        );
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_program_deeper_than_the_path_limit_is_an_error_that_names_it() {
+    let dir = scratch("files-deep");
+    fs::write(dir.join("TOP.MPF"), b"N10 X1\nM30\n").expect("write");
+    // Folders of 200-character names, 30 one in the other: past any
+    // system's path limit (Linux's is 4,096 bytes; 3,000 folders of one
+    // letter are past it too, and slow to make).
+    let name = "d".repeat(200);
+    let script = format!(
+        "mkdir deep && cd deep || exit 1; i=0; while [ $i -lt 30 ]; do mkdir {name} && cd -P {name} || exit 1; i=$((i+1)); done; echo M30 > PART.MPF"
+    );
+    let made = Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .current_dir(&dir)
+        .status()
+        .expect("sh runs");
+    assert!(made.success());
+    let output = run_in(&dir, &["check", "."]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("cannot read ./deep/"), "{stderr}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
+    let dir = scratch("files-heads-link");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("P.MPF"), PROGRAM).expect("write");
+    fs::write(
+        dir.join("outside"),
+        b"_HEAD_NAME=\"SECRETHEAD\"\n_HEAD_ALLOWED=1\n",
+    )
+    .expect("write");
+    symlink(dir.join("outside"), programs.join("HEAD_DEF.SPF")).expect("symlink");
+    let output = run_in(&dir, &["check", "--format", "human", "programs"]);
+    let shown = format!(
+        "{}{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(!shown.contains("SECRETHEAD"), "{shown}");
+    assert!(shown.contains("C610"), "HEAD_DEF is missing: {shown}");
+    let output = run_in(
+        &dir,
+        &["check", "--format", "human", "--follow-links", "programs"],
+    );
+    let shown = String::from_utf8_lossy(&output.stdout);
+    assert!(shown.contains("SECRETHEAD"), "{shown}");
+    let _ = fs::remove_dir_all(&dir);
+}

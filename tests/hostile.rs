@@ -434,3 +434,45 @@ fn a_five_megabyte_block_is_refused_not_read() {
         "{codes:?}"
     );
 }
+
+#[test]
+fn names_with_line_breaks_and_escape_sequences_are_printed_escaped() {
+    let dir = support::scratch("hostile-names");
+    let program = b"GOTOF NOWHERE\nM30\n";
+    std::fs::write(dir.join("A\n::error file=X::forged.MPF"), program).expect("write");
+    std::fs::write(dir.join("B\x1b]0;title\x07\x1b[2J.MPF"), program).expect("write");
+    // An archive whose member's name holds a line break and an escape.
+    let archive = support::binary_archive(&[(
+        "/_N_MPF_DIR/_N_C\n::error file=Y::member\x1b[31m_MPF",
+        &program[..],
+    )]);
+    std::fs::write(dir.join("SAVED.ARC"), archive).expect("write");
+    let folder = dir.to_str().expect("utf-8");
+    for format in ["short", "human", "github"] {
+        let output = run(&["check", "--format", format, folder], b"");
+        assert_exit(&output, 1);
+        let text = String::from_utf8_lossy(&output.stdout);
+        for name in ["forged.MPF", "title", "member\\u{1b}[31m_MPF"] {
+            assert!(text.contains(name), "{format}: {name} missing in {text}");
+        }
+        assert!(
+            !text.contains('\x1b') && !text.contains('\x07'),
+            "{format}: {text:?}"
+        );
+        // Every finding's line begins as the format begins one.
+        let begins = match format {
+            "short" => dir.to_str().expect("utf-8"),
+            "github" => "::error ",
+            _ => "",
+        };
+        for line in text
+            .lines()
+            .filter(|l| l.contains("forged") || l.contains("member"))
+        {
+            assert!(line.contains(begins), "{format}: {line:?}");
+            assert!(!line.starts_with("::error file=X"), "{format}: {line:?}");
+            assert!(!line.starts_with("::error file=Y"), "{format}: {line:?}");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -15,7 +15,8 @@
 //!
 //! The first record's name is the form's mark, `@@MMCIBN.002`. A block of
 //! NULs, or the end of the file, ends the archive; whatever follows a block
-//! of NULs is kept as it is.
+//! of NULs is kept as it is, and where it begins told ([`read`]) so that
+//! what it may hide is not passed over in silence.
 
 use std::ops::Range;
 
@@ -41,12 +42,21 @@ pub fn is_binary(bytes: &[u8]) -> bool {
 /// The members of a binary archive, each checked against its header's
 /// checksum and its size against the bytes there are.
 pub fn members(bytes: &[u8]) -> Result<Vec<Member>, ArchiveError> {
+    Ok(read(bytes)?.0)
+}
+
+/// The members, and where data that is not all NULs begins after the
+/// block of NULs that ends the archive: it is not read (a member written
+/// there is neither checked nor rewritten).
+pub fn read(bytes: &[u8]) -> Result<(Vec<Member>, Option<usize>), ArchiveError> {
     let mut members = Vec::new();
     let mut at = 0;
     while at < bytes.len() {
         let rest = &bytes[at..];
         if rest.iter().take(BLOCK).all(|&b| b == 0) {
-            break;
+            let after = at + BLOCK.min(rest.len());
+            let unread = bytes[after..].iter().position(|&b| b != 0);
+            return Ok((members, unread.map(|offset| after + offset)));
         }
         let fail = |member: Option<&str>, why: String| ArchiveError {
             member: member.map(str::to_string),
@@ -91,7 +101,7 @@ pub fn members(bytes: &[u8]) -> Result<Vec<Member>, ArchiveError> {
         // A last member's padding may be missing; nothing else is lost.
         at = (start + padded(size)).min(bytes.len());
     }
-    Ok(members)
+    Ok((members, None))
 }
 
 /// A member's name for reports: the last part of its NC path without
@@ -266,6 +276,24 @@ mod tests {
     }
 
     #[test]
+    fn data_after_the_block_of_nuls_is_told() {
+        let whole = archive(&[("PART.MPF", "/_N_MPF_DIR/_N_PART_MPF", b"M30\n")]);
+        assert_eq!(read(&whole).expect("readable").1, None);
+        let mut ended = whole.clone();
+        ended.extend_from_slice(&[0; 2 * BLOCK]);
+        assert_eq!(read(&ended).expect("readable").1, None);
+        let hidden = archive(&[("HIDDEN.MPF", "/_N_MPF_DIR/_N_HIDDEN_MPF", b"M30\n")]);
+        let mut with_more = whole.clone();
+        with_more.extend_from_slice(&[0; BLOCK]);
+        with_more.extend_from_slice(&hidden);
+        assert_eq!(
+            read(&with_more).expect("readable").1,
+            Some(whole.len() + BLOCK)
+        );
+        assert_eq!(members(&with_more).expect("readable").len(), 2);
+    }
+
+    #[test]
     fn a_member_changed_gets_its_size_checksum_and_padding() {
         let bytes = archive(&[
             ("PART.MPF", "/_N_MPF_DIR/_N_PART_MPF", b"G0 X0\nM30\n"),
@@ -278,6 +306,7 @@ mod tests {
         let archive = super::super::Archive {
             form: super::super::Form::Binary,
             members: before.clone(),
+            unread: None,
         };
         let edits = archive.edits(&bytes, 1, &[edit]).expect("readable");
         let changed = apply(&bytes, &edits);

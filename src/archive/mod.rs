@@ -27,6 +27,9 @@ use crate::syntax::ProgramKind;
 pub struct Archive {
     pub form: Form,
     pub members: Vec<Member>,
+    /// Where bytes other than NULs begin after the block of NULs that ends
+    /// a binary archive: left as they are, and not read.
+    pub unread: Option<usize>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -118,9 +121,10 @@ pub struct ArchiveError {
 /// archive; two sections or more make one whatever the name.
 pub fn read(bytes: &[u8], name: &str) -> Option<Result<Archive, ArchiveError>> {
     if binary::is_binary(bytes) {
-        return Some(binary::members(bytes).map(|members| Archive {
+        return Some(binary::read(bytes).map(|(members, unread)| Archive {
             form: Form::Binary,
             members,
+            unread,
         }));
     }
     let named_archive = std::path::Path::new(name)
@@ -130,6 +134,7 @@ pub fn read(bytes: &[u8], name: &str) -> Option<Result<Archive, ArchiveError>> {
     (members.len() >= 2 || named_archive).then_some(Ok(Archive {
         form: Form::Text,
         members,
+        unread: None,
     }))
 }
 

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::archive::{self, Archive, MemberKind};
 use crate::cli::error::CliError;
+use crate::cli::render::printable;
 use crate::diagnostic::Diagnostic;
 use crate::document::Document;
 use crate::lint::Settings;
@@ -97,6 +98,48 @@ impl Opened {
                 })
             })
             .collect()
+    }
+
+    /// What of the archive is left unchecked, as notes for stderr naming
+    /// it: members that are no program, definitions or data (their NC path
+    /// names no `_MPF` or `_SPF`: a log, a screen form, a program saved
+    /// without its suffix), and bytes after the block of NULs that ends a
+    /// binary archive. `None` for a plain file, or an archive read whole.
+    pub fn unchecked(&self) -> Option<String> {
+        let archive = self.archive.as_ref()?;
+        let name = printable(&self.name);
+        let mut notes = String::new();
+        let others: Vec<String> = archive
+            .members
+            .iter()
+            .enumerate()
+            // A binary archive's first record is the form's mark.
+            .filter(|(index, member)| {
+                member.kind == MemberKind::Other
+                    && !(*index == 0 && member.name.as_bytes().starts_with(archive::binary::MARK))
+            })
+            .map(|(_, member)| printable(&member.name).into_owned())
+            .collect();
+        if !others.is_empty() {
+            let mut names: Vec<&str> = others.iter().map(String::as_str).take(10).collect();
+            if others.len() > names.len() {
+                names.push("...");
+            }
+            let count = match others.len() {
+                1 => "1 member".to_string(),
+                n => format!("{n} members"),
+            };
+            notes.push_str(&format!(
+                "note: {name}: {count} not checked, its NC path naming no program (_MPF, _SPF), definitions or data: {}\n",
+                names.join(", ")
+            ));
+        }
+        if let Some(offset) = archive.unread {
+            notes.push_str(&format!(
+                "note: {name}: the bytes from byte {offset} on, after the block of NULs that ends the archive, are not read: a member there is not checked\n"
+            ));
+        }
+        (!notes.is_empty()).then_some(notes)
     }
 
     /// A member's bytes in `bytes` (the archive's).

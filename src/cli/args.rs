@@ -141,6 +141,9 @@ pub struct CheckArgs {
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,
+    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
+    #[arg(long)]
+    pub follow_links: bool,
     /// No summary line (`3 errors, 2 warnings in 5 files`) after the human and short reports.
     #[arg(long, short)]
     pub quiet: bool,
@@ -233,6 +236,9 @@ pub struct RewriteArgs {
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,
+    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
+    #[arg(long)]
+    pub follow_links: bool,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// Do not keep the original call as a `; sinuprep:` comment above the new code.
@@ -274,6 +280,9 @@ pub struct EvalArgs {
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
     pub allow_empty: bool,
+    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
+    #[arg(long)]
+    pub follow_links: bool,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// The machine's swivel data records: each swivelling call shows the rotary axis

@@ -2,27 +2,30 @@
 //! stable order.
 
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Arc;
 
 use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read, Bytes};
+use crate::cli::input::{again, expand, read, Bytes, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
-use crate::cli::render::{github, human, json, sarif, short, FileReport, Located};
+use crate::cli::render::{
+    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, JSON_BETWEEN,
+    JSON_START,
+};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
 use crate::semantic::swivels::OnMachine;
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 
-/// One file's outcome, with what its report needs of the source taken out
-/// in the worker: the source is dropped as soon as its file is checked, so
-/// checking a directory holds the findings, not every file.
+/// One file's outcome, its report rendered in the worker: the source is
+/// dropped as soon as its file is checked, and the report printed as soon
+/// as the files before it are.
 struct Checked {
     report: Report,
     fails: bool,
@@ -30,6 +33,8 @@ struct Checked {
     unchecked: Unchecked,
     /// Programs reported: 1 for a file, its programs for an archive.
     files: usize,
+    /// What of an archive was left unchecked, for stderr.
+    notes: Option<String>,
     /// The machine the file was checked on, with its findings the
     /// selection keeps: reported once a run, before the first file.
     machine: Option<(Arc<OnMachine>, Vec<Diagnostic>)>,
@@ -157,80 +162,71 @@ impl Counts {
 }
 
 enum Report {
-    /// The file's part of a per-file format (short, GitHub, human).
+    /// The file's part of the output: of a per-file format (short, GitHub,
+    /// human), or its entries of the JSON document's `files`.
     Text(String),
-    /// For the whole-run formats (JSON, SARIF): one per program.
-    Located(Vec<Located>),
+    /// SARIF's results of its programs: the log is written at the end.
+    Sarif(Sarif),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
-    let workspace = Workspace::new(analysis::given_to_check(args))?;
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let workspace = Workspace::new(Given {
+        follow_links: args.follow_links,
+        ..analysis::given_to_check(args)
+    })?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let colour = std::io::stdout().is_terminal();
-    let results = parallel::each(paths.len(), |index| match &paths[index] {
-        Ok(path) => check_file(path, args, colour, &workspace),
-        Err(error) => Err(CliError::Read {
-            path: PathBuf::new(),
-            source: std::io::Error::other(error.to_string()),
-        }),
-    });
+    let work = |index: usize| match &paths[index] {
+        Ok(found) => check_file(found, args, colour, &workspace),
+        Err(error) => Err(again(error)),
+    };
 
     let mut failed = false;
     let mut fails = false;
-    let mut text = String::new();
-    let mut located = Vec::new();
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
+    let mut sarif = Sarif::default();
     let mut told = analysis::MachinesTold::default();
-    for result in results {
+    if args.format == Format::Json {
+        write_stdout(JSON_START.as_bytes())?;
+    }
+    // Each file's report printed as soon as it and those before it are done.
+    parallel::each(paths.len(), work, |result| {
         match result {
             Ok(mut checked) => {
+                if let Some(notes) = &checked.notes {
+                    eprint!("{notes}");
+                }
                 // The machine file's findings, as those of one more file.
                 if let Some((on, diagnostics)) = checked.machine.take() {
                     if !diagnostics.is_empty() && told.first(&on) {
-                        files += 1;
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
-                        let (name, source) = (on.name.as_str(), on.source.as_slice());
-                        let report = FileReport {
-                            name,
-                            source,
-                            diagnostics: &diagnostics,
-                        };
-                        match args.format {
-                            Format::Json | Format::Sarif => {
-                                located.push(Located::new(name, source, diagnostics));
-                            }
-                            Format::Short => short(&report, &mut text),
-                            Format::Github => github(&report, &mut text),
-                            Format::Human => human(&report, colour, &mut text),
-                        }
+                        let mut report = Report::new(args.format);
+                        report.add(args.format, colour, &on.name, &on.source, diagnostics);
+                        print(report, args.format, files == 0, &mut sarif)?;
+                        files += 1;
                     }
                 }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
+                print(checked.report, args.format, files == 0, &mut sarif)?;
                 files += checked.files;
-                match checked.report {
-                    // One file's report (the common case) is taken, not copied.
-                    Report::Text(part) if text.is_empty() => text = part,
-                    Report::Text(part) => text.push_str(&part),
-                    Report::Located(files) => located.extend(files),
-                }
             }
             Err(error) => {
                 failed = true;
                 eprintln!("{:?}", miette::Report::new(error));
             }
         }
+        Ok::<(), CliError>(())
+    })?;
+    match args.format {
+        Format::Json => write_stdout(json_end(files).as_bytes())?,
+        Format::Sarif => write_stdout(sarif.finish().as_bytes())?,
+        Format::Short | Format::Github | Format::Human => {}
     }
-    let out = match args.format {
-        Format::Json => json(&located),
-        Format::Sarif => sarif(&located),
-        Format::Short | Format::Github | Format::Human => text,
-    };
-    write_stdout(out.as_bytes())?;
     // For people: on stderr, so that what tools read stays the findings.
     if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
         eprintln!("{}", counts.summary(files));
@@ -249,14 +245,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
 }
 
 fn check_file(
-    path: &Path,
+    found: &Found,
     args: &CheckArgs,
     colour: bool,
     workspace: &Workspace,
 ) -> Result<Checked, CliError> {
+    let path = found.path.as_path();
     // Refused before anything is read: stdin, a FIFO, a device.
     let fix_target = args.fix.then(|| in_place_target(path)).transpose()?;
-    let mut file = read(path)?;
+    let mut file = read(found)?;
     // stdin with --stdin-filename: report and look things up as that file.
     let named = match (&args.stdin_filename, path == Path::new("-")) {
         (Some(name), true) => {
@@ -280,14 +277,12 @@ fn check_file(
         }
     }
     let mut checked = Checked {
-        report: match args.format {
-            Format::Json | Format::Sarif => Report::Located(Vec::new()),
-            _ => Report::Text(String::new()),
-        },
+        report: Report::new(args.format),
         fails: false,
         counts: Counts::default(),
         unchecked: Unchecked::default(),
         files: 0,
+        notes: opened.unchecked(),
         machine: settings.machine.as_ref().map(|on| {
             let selection = &settings.selection;
             let kept = on
@@ -317,21 +312,66 @@ fn check_file(
         checked.fails |= diagnostics.iter().any(|d| {
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
+        checked
+            .report
+            .add(args.format, colour, &name, source, diagnostics);
+    }
+    Ok(checked)
+}
+
+impl Report {
+    fn new(format: Format) -> Self {
+        match format {
+            Format::Sarif => Report::Sarif(Sarif::default()),
+            _ => Report::Text(String::new()),
+        }
+    }
+
+    /// Adds the findings of the program `name`, whose bytes are `source`.
+    fn add(
+        &mut self,
+        format: Format,
+        colour: bool,
+        name: &str,
+        source: &[u8],
+        diagnostics: Vec<Diagnostic>,
+    ) {
         let file_report = FileReport {
-            name: &name,
+            name,
             source,
             diagnostics: &diagnostics,
         };
-        match &mut checked.report {
-            Report::Text(text) => match args.format {
+        match self {
+            Report::Text(text) => match format {
                 Format::Short => short(&file_report, text),
                 Format::Github => github(&file_report, text),
+                Format::Json => {
+                    if !text.is_empty() {
+                        text.push_str(JSON_BETWEEN);
+                    }
+                    text.push_str(&json_file(&Located::new(name, source, diagnostics)));
+                }
                 _ => human(&file_report, colour, text),
             },
-            Report::Located(located) => located.push(Located::new(&name, source, diagnostics)),
+            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics)),
         }
     }
-    Ok(checked)
+}
+
+/// Prints a file's report (`first`: no file's came before it), or keeps
+/// SARIF's results for the log written at the end.
+fn print(report: Report, format: Format, first: bool, sarif: &mut Sarif) -> Result<(), CliError> {
+    match report {
+        Report::Text(part) if format == Format::Json && !first => {
+            write_stdout(JSON_BETWEEN.as_bytes())?;
+            write_stdout(part.as_bytes())
+        }
+        Report::Text(part) => write_stdout(part.as_bytes()),
+        Report::Sarif(part) => {
+            sarif.extend(part);
+            Ok(())
+        }
+    }
 }
 
 /// What `check` reports of each program of `opened`, in their order.
@@ -363,7 +403,10 @@ fn fix(
             continue;
         }
         if diagnostics.iter().any(|d| d.code.starts_with('S')) {
-            eprintln!("{}: not fixed, because of its syntax errors", program.name);
+            eprintln!(
+                "{}: not fixed, because of its syntax errors",
+                printable(&program.name)
+            );
             continue;
         }
         let shifted = match (&opened.archive, program.member) {
@@ -373,7 +416,7 @@ fn fix(
         let Some(shifted) = shifted else {
             eprintln!(
                 "{}: not fixed: its new size does not fit the archive's header",
-                program.name
+                printable(&program.name)
             );
             continue;
         };
@@ -386,6 +429,6 @@ fn fix(
     let fixed = apply(bytes, &edits);
     write_atomically(target, |out| out.write_all(&fixed), None)?;
     let s = if answered == 1 { "" } else { "s" };
-    eprintln!("{}: fixed {answered} finding{s}", opened.name);
+    eprintln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
 }

@@ -1,12 +1,19 @@
 //! Failures of the tool itself (exit status 2), as opposed to findings in
 //! the programs it reads.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+use crate::cli::render::printable;
+
+/// A path in a message, its control characters escaped.
+fn shown(path: &Path) -> String {
+    printable(&path.display().to_string()).into_owned()
+}
 
 #[derive(Debug, thiserror::Error, miette::Diagnostic)]
 pub enum CliError {
     // The cause is `source`, which miette prints below the message.
-    #[error("cannot read {path}")]
+    #[error("cannot read {}", shown(path))]
     #[diagnostic(
         code(sinuprep::read),
         help("check that the path exists and is readable")
@@ -16,7 +23,10 @@ pub enum CliError {
         source: std::io::Error,
     },
 
-    #[error("{path} holds no program (.mpf, .spf or .arc archive, any case)")]
+    #[error(
+        "{} holds no program (.mpf, .spf or .arc archive, any case)",
+        shown(path)
+    )]
     #[diagnostic(
         code(sinuprep::no_programs),
         help("check the path; with --allow-empty a folder without programs is no error")
@@ -30,7 +40,7 @@ pub enum CliError {
     )]
     SeveralToStdout { count: usize },
 
-    #[error("{name}: the archive cannot be read: {error}")]
+    #[error("{}: the archive cannot be read: {error}", printable(name))]
     #[diagnostic(
         code(sinuprep::archive),
         help("the archive is damaged or truncated; save it from the control again. Nothing was written")
@@ -40,7 +50,7 @@ pub enum CliError {
         error: crate::archive::ArchiveError,
     },
 
-    #[error("{path} is a directory")]
+    #[error("{} is a directory", shown(path))]
     #[diagnostic(
         code(sinuprep::read),
         help(

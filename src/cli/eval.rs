@@ -6,8 +6,9 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read};
+use crate::cli::input::{again, expand, read, Found};
 use crate::cli::parallel;
+use crate::cli::render::printable;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -18,27 +19,25 @@ use crate::semantic::value::Value;
 use crate::semantic::CallSite;
 use crate::span::LineIndex;
 use crate::workspace::{Given, Workspace};
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
+        follow_links: args.follow_links,
         fine_offsets: args.fine_offsets,
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let outcomes = parallel::each(paths.len(), |index| match &paths[index] {
-        Ok(path) => eval_file(path, args, &workspace),
-        Err(error) => Err(CliError::Read {
-            path: PathBuf::new(),
-            source: std::io::Error::other(error.to_string()),
-        }),
-    });
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     let mut told = analysis::MachinesTold::default();
-    for outcome in outcomes {
+    let work = |index: usize| match &paths[index] {
+        Ok(found) => eval_file(found, args, &workspace),
+        Err(error) => Err(again(error)),
+    };
+    // Each file's evaluation printed as soon as it and those before it are done.
+    parallel::each(paths.len(), work, |outcome| {
         match outcome {
             Ok(evaluated) => {
                 let format = args.analysis.message_format;
@@ -57,7 +56,8 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
                 worst = ExitStatus::Error;
             }
         }
-    }
+        Ok::<(), CliError>(())
+    })?;
     if args.json {
         // One program: its document; several (files, or an archive's
         // programs): an array of them, in order.
@@ -88,8 +88,9 @@ struct Evaluated {
     machine: Option<Arc<OnMachine>>,
 }
 
-fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
-    let file = read(path)?;
+fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
+    let path = found.path.as_path();
+    let file = read(found)?;
     let resolved = workspace.for_rewrite(path)?;
     let machine = workspace.machine(&resolved.config)?;
     let mut settings = resolved.settings;
@@ -102,7 +103,7 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
         } else {
             Output::Text(String::new())
         },
-        diagnostics: String::new(),
+        diagnostics: opened.unchecked().unwrap_or_default(),
         failed: false,
         machine: machine.clone(),
     };
@@ -144,6 +145,8 @@ fn eval_file(path: &Path, args: &EvalArgs, workspace: &Workspace) -> Result<Eval
                 documents.push(document);
             }
             Output::Text(text) => {
+                let name = printable(name);
+                let name: &str = &name;
                 let index = LineIndex::new(source);
                 for site in calls {
                     table(site, name, source, &index, options, text);

@@ -33,33 +33,81 @@ impl Deref for Bytes {
     }
 }
 
+/// A program to read: named on the command line, or found by a directory
+/// walk.
+pub struct Found {
+    pub path: PathBuf,
+    /// Found by a walk: read only as a regular file, and not through a link
+    /// unless links are followed. A file named is read as it is named,
+    /// through a link, or from a FIFO as stdin is.
+    walked: Option<Links>,
+}
+
+/// Whether a walk follows symbolic links (`--follow-links`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Links {
+    Skip,
+    Follow,
+}
+
 /// Expands the command-line paths: a directory yields its `.mpf`/`.spf` files
 /// and `.arc` archives
 /// (any case, recursively, sorted); a file is taken whatever its extension.
 /// Every file and directory is taken once, by its device and inode, so
-/// symlinks that loop (`a -> .`, `up -> ..`) or name a file twice do not
+/// links that loop (`a -> .`, `up -> ..`) or name a file twice do not
 /// repeat it.
+///
+/// As ripgrep and ruff walk: a link met in a directory is not followed
+/// unless `follow_links`, and nothing but a regular file is taken (a FIFO
+/// named `*.MPF` would hang the run, a device never ends); what is skipped
+/// is named in a note on stderr. A directory that cannot be read, an entry
+/// whose kind cannot be told (a path past the system's length limit), is an
+/// error naming it. A path named on the command line is taken through a link.
 ///
 /// A directory that holds no program is an error unless `allow_empty`: a
 /// CI run over a mistyped or emptied folder must not pass in silence.
 pub fn expand(
     paths: &[PathBuf],
     allow_empty: bool,
-) -> Result<Vec<Result<PathBuf, CliError>>, CliError> {
+    follow_links: bool,
+) -> Result<Vec<Result<Found, CliError>>, CliError> {
+    let links = if follow_links {
+        Links::Follow
+    } else {
+        Links::Skip
+    };
     let mut out = Vec::new();
     let mut seen = HashSet::new();
     for path in paths {
         if path.is_dir() {
             let before = out.len();
-            walk(path, &mut seen, &mut out);
+            walk(path, links, &mut seen, &mut out);
             if out.len() == before && !allow_empty {
                 return Err(CliError::NoPrograms { path: path.clone() });
             }
         } else if first_time(path, &mut seen) {
-            out.push(Ok(path.clone()));
+            out.push(Ok(Found {
+                path: path.clone(),
+                walked: None,
+            }));
         }
     }
     Ok(out)
+}
+
+/// The walk's error about one entry (a directory it could not read), made
+/// again for that entry's place in the report: an error is not `Clone`.
+pub fn again(error: &CliError) -> CliError {
+    match error {
+        CliError::Read { path, source } => CliError::Read {
+            path: path.clone(),
+            source: std::io::Error::new(source.kind(), source.to_string()),
+        },
+        other => CliError::Read {
+            path: PathBuf::new(),
+            source: std::io::Error::other(other.to_string()),
+        },
+    }
 }
 
 /// Whether `path` has not been met before (a path that cannot be read is
@@ -71,31 +119,31 @@ fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
     }
 }
 
-/// Standard input: read whole while it is small; from [`MAPPED_FROM`] bytes
+/// Standard input, or a FIFO or device named: read whole while it is
+/// small; from [`MAPPED_FROM`] bytes
 /// on, what came and what follows go to an unnamed file in the temporary
 /// directory (`TMPDIR`), which is mapped as a large program is: a program
 /// piped in takes no more of the process's own memory than one read from a
 /// file. The file is removed from its directory as soon as it is
 /// made, so nothing is left behind, whatever ends the run. A file
 /// redirected to stdin is mapped as it is.
-fn read_stdin() -> std::io::Result<Bytes> {
-    let mut stdin = std::io::stdin().lock();
+fn read_stream<R: Read + AsFd>(mut stream: R) -> std::io::Result<Bytes> {
     // A file redirected to stdin (`< PART.MPF`), unread so far: map it.
-    let mut file = std::fs::File::from(stdin.as_fd().try_clone_to_owned()?);
+    let mut file = std::fs::File::from(stream.as_fd().try_clone_to_owned()?);
     if let (Ok(metadata), Ok(0)) = (file.metadata(), file.stream_position()) {
         if metadata.is_file() && metadata.len() >= MAPPED_FROM {
             return Ok(Bytes::Mapped(Mapped::new(&file)?));
         }
     }
     let mut head = Vec::new();
-    (&mut stdin).take(MAPPED_FROM).read_to_end(&mut head)?;
+    (&mut stream).take(MAPPED_FROM).read_to_end(&mut head)?;
     if (head.len() as u64) < MAPPED_FROM {
         return Ok(Bytes::Read(head));
     }
     let mut spool = unnamed_file()?;
     spool.write_all(&head)?;
     drop(head);
-    std::io::copy(&mut stdin, &mut spool)?;
+    std::io::copy(&mut stream, &mut spool)?;
     Ok(Bytes::Mapped(Mapped::new(&spool)?))
 }
 
@@ -134,28 +182,77 @@ pub fn identity(metadata: &std::fs::Metadata) -> (u64, u64) {
     (metadata.dev(), metadata.ino())
 }
 
-fn walk(dir: &Path, seen: &mut HashSet<(u64, u64)>, out: &mut Vec<Result<PathBuf, CliError>>) {
+fn walk(
+    dir: &Path,
+    links: Links,
+    seen: &mut HashSet<(u64, u64)>,
+    out: &mut Vec<Result<Found, CliError>>,
+) {
     if !first_time(dir, seen) {
         return;
     }
+    let fail = |path: &Path, source| {
+        Err(CliError::Read {
+            path: path.to_path_buf(),
+            source,
+        })
+    };
     let entries = match std::fs::read_dir(dir) {
         Ok(entries) => entries,
-        Err(source) => {
-            return out.push(Err(CliError::Read {
-                path: dir.to_path_buf(),
-                source,
-            }))
-        }
+        Err(source) => return out.push(fail(dir, source)),
     };
-    let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-    paths.sort();
-    for path in paths {
-        if path.is_dir() {
-            walk(&path, seen, out);
-        } else if is_program(&path) && first_time(&path, seen) {
-            out.push(Ok(path));
+    // The kind of each entry as the directory gives it (the link itself,
+    // not what it names), without opening anything.
+    let mut entries: Vec<(PathBuf, std::io::Result<std::fs::FileType>)> = entries
+        .filter_map(|e| e.ok().map(|e| (e.path(), e.file_type())))
+        .collect();
+    entries.sort_by(|a, b| a.0.cmp(&b.0));
+    for (path, kind) in entries {
+        let kind = match kind {
+            Ok(kind) => kind,
+            Err(source) => {
+                out.push(fail(&path, source));
+                continue;
+            }
+        };
+        let kind = if kind.is_symlink() {
+            // What the link names, looked up without opening it.
+            let Ok(target) = std::fs::metadata(&path) else {
+                if is_program(&path) {
+                    skipped(&path, "a link that names nothing");
+                }
+                continue;
+            };
+            let target = target.file_type();
+            if links == Links::Skip {
+                if target.is_dir() || is_program(&path) {
+                    skipped(&path, "a symbolic link (--follow-links follows links)");
+                }
+                continue;
+            }
+            target
+        } else {
+            kind
+        };
+        if kind.is_dir() {
+            walk(&path, links, seen, out);
+        } else if is_program(&path) {
+            if !kind.is_file() {
+                skipped(&path, "not a regular file (a FIFO, a socket or a device)");
+            } else if first_time(&path, seen) {
+                out.push(Ok(Found {
+                    path,
+                    walked: Some(links),
+                }));
+            }
         }
     }
+}
+
+/// A note on stderr naming what a walk left out.
+fn skipped(path: &Path, why: &str) {
+    let name = crate::cli::render::printable(&path.display().to_string()).into_owned();
+    eprintln!("note: skipped {name}: {why}");
 }
 
 fn is_program(path: &Path) -> bool {
@@ -166,14 +263,19 @@ fn is_program(path: &Path) -> bool {
     })
 }
 
-/// Reads a file, or stdin for `-`; a file of [`MAPPED_FROM`] bytes or more
-/// is mapped instead, and so is stdin from that size on, spooled to a file.
-pub fn read(path: &Path) -> Result<SourceFile, CliError> {
+/// Reads a program: stdin for `-`; a file of [`MAPPED_FROM`] bytes or
+/// more is mapped instead, and so is stdin from that size on, spooled to a
+/// file, and a FIFO or device named on the command line as stdin is. A file
+/// a walk found is opened only if it is still the regular file the walk
+/// saw (a link, unless followed, or a FIFO put in its place is refused).
+pub fn read(found: &Found) -> Result<SourceFile, CliError> {
+    let path = found.path.as_path();
+    let fail = |source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    };
     if path == Path::new("-") {
-        let bytes = read_stdin().map_err(|source| CliError::Read {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let bytes = read_stream(std::io::stdin().lock()).map_err(fail)?;
         return Ok(SourceFile {
             name: "<stdin>".to_string(),
             bytes,
@@ -184,13 +286,25 @@ pub fn read(path: &Path) -> Result<SourceFile, CliError> {
             path: path.to_path_buf(),
         });
     }
-    let fail = |source| CliError::Read {
-        path: path.to_path_buf(),
-        source,
+    let seen = match found.walked {
+        None => None,
+        Some(Links::Skip) => Some(std::fs::symlink_metadata(path).map_err(fail)?),
+        Some(Links::Follow) => Some(std::fs::metadata(path).map_err(fail)?),
     };
+    if seen.as_ref().is_some_and(|m| !m.is_file()) {
+        return Err(fail(not_regular()));
+    }
     let mut file = std::fs::File::open(path).map_err(fail)?;
     let metadata = file.metadata().map_err(fail)?;
-    let bytes = if metadata.is_file() && metadata.len() >= MAPPED_FROM {
+    if let Some(seen) = &seen {
+        if !metadata.is_file() || identity(&metadata) != identity(seen) {
+            return Err(fail(not_regular()));
+        }
+    }
+    let bytes = if !metadata.is_file() {
+        // A FIFO or device named on the command line: read as stdin is.
+        read_stream(file).map_err(fail)?
+    } else if metadata.len() >= MAPPED_FROM {
         Bytes::Mapped(Mapped::new(&file).map_err(fail)?)
     } else {
         let mut bytes = Vec::with_capacity(metadata.len().try_into().unwrap_or(0));
@@ -201,4 +315,11 @@ pub fn read(path: &Path) -> Result<SourceFile, CliError> {
         name: path.display().to_string(),
         bytes,
     })
+}
+
+fn not_regular() -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::InvalidInput,
+        "no longer the regular file the directory walk found",
+    )
 }

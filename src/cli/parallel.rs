@@ -1,42 +1,213 @@
-//! Work over many files on all cores, results in the files' order.
+//! Work over many files on all cores, each result handed on in the files'
+//! order as soon as it and those before it are done.
+//!
+//! Results are not collected: the threads run at most [`WINDOW`] items
+//! ahead of the one the caller waits for, so a run over 50,000 files holds
+//! a few dozen files' results, and the first file's findings are printed
+//! while the others are still being checked.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::collections::VecDeque;
+use std::sync::{Condvar, Mutex, MutexGuard};
+
+/// Items done or being worked on ahead of the next one handed on: enough
+/// that one slow file does not leave the other threads idle, few enough
+/// that what waits is small.
+const WINDOW: usize = 64;
 
 /// `work(0..count)` on as many threads as there are cores (none started for
 /// one item: the editor-on-save case reads no cgroup files), each item taken
-/// by the next free thread; the results in item order.
-pub fn each<T: Send>(count: usize, work: impl Fn(usize) -> T + Sync) -> Vec<T> {
-    if count <= 1 {
-        return (0..count).map(work).collect();
-    }
-    let results: Vec<Mutex<Option<T>>> = (0..count).map(|_| Mutex::new(None)).collect();
-    let next = AtomicUsize::new(0);
-    let worker = || loop {
-        let index = next.fetch_add(1, Ordering::Relaxed);
-        if index >= count {
-            break;
-        }
-        let result = work(index);
-        if let Ok(mut slot) = results[index].lock() {
-            *slot = Some(result);
-        }
+/// by the next free thread; each result handed to `take` on the calling
+/// thread, in item order. An error from `take` (output that cannot be
+/// written) ends the run: no further item is started, and it is returned.
+pub fn each<T: Send, E>(
+    count: usize,
+    work: impl Fn(usize) -> T + Sync,
+    mut take: impl FnMut(T) -> Result<(), E>,
+) -> Result<(), E> {
+    let workers = match count {
+        0 | 1 => 1,
+        _ => std::thread::available_parallelism()
+            .map_or(1, |n| n.get())
+            .min(count),
     };
-    let workers = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .min(count);
+    if workers == 1 {
+        return (0..count).try_for_each(|index| take(work(index)));
+    }
+    let shared = Shared {
+        state: Mutex::new(State {
+            next: 0,
+            handed: 0,
+            done: VecDeque::new(),
+            running: workers,
+            stop: false,
+        }),
+        changed: Condvar::new(),
+    };
     std::thread::scope(|scope| {
         for _ in 0..workers {
-            scope.spawn(worker);
+            scope.spawn(|| shared.work(count, &work));
         }
-    });
-    results
-        .into_iter()
-        .map(|slot| {
-            slot.into_inner()
-                .ok()
-                .flatten()
-                .expect("every item is worked on once its thread ends")
-        })
-        .collect()
+        let result = shared.hand_on(count, &mut take);
+        // On an error the threads finish the items they hold, then stop.
+        shared.lock().stop = true;
+        shared.changed.notify_all();
+        result
+    })
+}
+
+struct Shared<T> {
+    state: Mutex<State<T>>,
+    /// Signalled when an item is done, handed on, or a thread ends.
+    changed: Condvar,
+}
+
+struct State<T> {
+    /// The next item a thread takes.
+    next: usize,
+    /// Items handed on so far; `done[i]` is item `handed + i`.
+    handed: usize,
+    done: VecDeque<Option<T>>,
+    /// Threads not yet ended.
+    running: usize,
+    stop: bool,
+}
+
+impl<T> Shared<T> {
+    fn lock(&self) -> MutexGuard<'_, State<T>> {
+        // A thread that panicked holding the lock leaves the state as it
+        // was between two steps: still usable.
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    fn wait<'a>(&self, guard: MutexGuard<'a, State<T>>) -> MutexGuard<'a, State<T>> {
+        self.changed.wait(guard).unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// One thread: takes the next item while it is within the window.
+    fn work(&self, count: usize, work: &(impl Fn(usize) -> T + Sync)) {
+        // Counts this thread out however it ends, a panic included, so that
+        // the caller never waits for an item no thread will finish.
+        let _ended = Ended(self);
+        loop {
+            let index = {
+                let mut state = self.lock();
+                while !state.stop && state.next < count && state.next >= state.handed + WINDOW {
+                    state = self.wait(state);
+                }
+                if state.stop || state.next >= count {
+                    return;
+                }
+                state.next += 1;
+                state.next - 1
+            };
+            let result = work(index);
+            let mut state = self.lock();
+            let at = index - state.handed;
+            if state.done.len() <= at {
+                state.done.resize_with(at + 1, || None);
+            }
+            state.done[at] = Some(result);
+            drop(state);
+            self.changed.notify_all();
+        }
+    }
+
+    /// The calling thread: hands each result on in order as it comes.
+    fn hand_on<E>(&self, count: usize, take: &mut impl FnMut(T) -> Result<(), E>) -> Result<(), E> {
+        for _ in 0..count {
+            let result = {
+                let mut state = self.lock();
+                loop {
+                    if let Some(result) = state.done.front_mut().and_then(Option::take) {
+                        state.done.pop_front();
+                        state.handed += 1;
+                        break result;
+                    }
+                    if state.running == 0 {
+                        // Every thread ended without this item: one
+                        // panicked, and the scope's join passes that on.
+                        return Ok(());
+                    }
+                    state = self.wait(state);
+                }
+            };
+            self.changed.notify_all();
+            take(result)?;
+        }
+        Ok(())
+    }
+}
+
+/// Counts a thread out when it ends; one that panicked stops the others,
+/// which would otherwise wait for the window to move past its item.
+struct Ended<'a, T>(&'a Shared<T>);
+
+impl<T> Drop for Ended<'_, T> {
+    fn drop(&mut self) {
+        let mut state = self.0.lock();
+        state.running -= 1;
+        state.stop |= std::thread::panicking();
+        drop(state);
+        self.0.changed.notify_all();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    #[test]
+    fn results_come_in_order_and_the_threads_stay_within_the_window() {
+        let started = AtomicUsize::new(0);
+        let mut seen = Vec::new();
+        let result: Result<(), ()> = each(
+            1000,
+            |index| {
+                started.fetch_add(1, Ordering::SeqCst);
+                // Later items finish first.
+                std::thread::sleep(std::time::Duration::from_micros(((index * 7) % 13) as u64));
+                index
+            },
+            |index| {
+                // No thread ran further ahead than the window.
+                assert!(started.load(Ordering::SeqCst) <= index + 1 + WINDOW);
+                seen.push(index);
+                Ok(())
+            },
+        );
+        assert_eq!(result, Ok(()));
+        assert_eq!(seen, (0..1000).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn a_panic_in_one_item_ends_the_run_instead_of_hanging_it() {
+        let run = std::panic::catch_unwind(|| {
+            each(
+                10_000,
+                |index| {
+                    assert_ne!(index, 5, "the item that fails");
+                    index
+                },
+                |_| Ok::<(), ()>(()),
+            )
+        });
+        // With one core the panic comes straight from the item.
+        assert!(run.is_err());
+    }
+
+    #[test]
+    fn an_error_from_the_taker_ends_the_run() {
+        let started = AtomicUsize::new(0);
+        let result = each(
+            10_000,
+            |index| {
+                started.fetch_add(1, Ordering::SeqCst);
+                index
+            },
+            |index| if index == 3 { Err(index) } else { Ok(()) },
+        );
+        assert_eq!(result, Err(3));
+        assert!(started.load(Ordering::SeqCst) <= 4 + WINDOW);
+    }
 }

@@ -20,14 +20,35 @@ pub struct FileReport<'a> {
     pub diagnostics: &'a [Diagnostic],
 }
 
+/// A file's or member's name as text output prints it: its control
+/// characters escaped as Rust writes them (`\n`, `\u{1b}`), so that a
+/// name holding a line break cannot print a line of its own (which GitHub
+/// Actions or a problem matcher would read as a finding) and one holding an
+/// escape sequence cannot drive the terminal. Every text format and message
+/// naming a file goes through it; JSON and SARIF escape them as JSON does.
+pub fn printable(name: &str) -> std::borrow::Cow<'_, str> {
+    if !name.chars().any(char::is_control) {
+        return std::borrow::Cow::Borrowed(name);
+    }
+    let mut out = String::with_capacity(name.len() + 8);
+    for c in name.chars() {
+        if c.is_control() {
+            out.extend(c.escape_debug());
+        } else {
+            out.push(c);
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 /// `path:line:col: severity[CODE] message`, one per line.
 pub fn short(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
+    let name = printable(report.name);
     for diagnostic in report.diagnostics {
         let Position { row, column } = index.position(diagnostic.span.start);
         out.push_str(&format!(
-            "{}:{row}:{column}: {}[{}] {}\n",
-            report.name,
+            "{name}:{row}:{column}: {}[{}] {}\n",
             diagnostic.severity.as_str(),
             diagnostic.code,
             diagnostic.message
@@ -112,7 +133,7 @@ impl Window {
             _ => (bytes.iter().map(|&b| b as char).collect(), true),
         };
         Self {
-            name: report.name.to_string(),
+            name: printable(report.name).into_owned(),
             text,
             start,
             first_row: index.position(start).row - 1,
@@ -222,12 +243,6 @@ impl miette::Diagnostic for Shown<'_> {
 }
 
 #[derive(serde::Serialize)]
-struct JsonDocument<'a> {
-    version: u32,
-    files: Vec<JsonFile<'a>>,
-}
-
-#[derive(serde::Serialize)]
 struct JsonFile<'a> {
     path: &'a str,
     diagnostics: Vec<JsonDiagnostic<'a>>,
@@ -319,36 +334,56 @@ fn applicability(applicability: Applicability) -> &'static str {
     }
 }
 
-/// One JSON document for all files.
-pub fn json(reports: &[Located]) -> String {
-    let files = reports
-        .iter()
-        .map(|report| {
-            let diagnostics = report
-                .each()
-                .map(|(d, start, end)| JsonDiagnostic {
-                    code: d.code,
-                    name: d.name,
-                    severity: d.severity,
-                    message: &d.message,
-                    help: d.help.as_deref(),
-                    location: start,
-                    end_location: end,
-                    offset: d.span.start,
-                    length: d.span.len(),
-                    fix: d.fix.as_deref().map(JsonFix::of),
-                })
-                .collect();
-            JsonFile {
-                path: &report.name,
-                diagnostics,
-            }
+/// The JSON document for all files, written a file at a time: this, then
+/// each file's [`json_file`] (after [`JSON_BETWEEN`] from the second on),
+/// then [`json_end`]. The text is what one pretty-printed document would be.
+pub const JSON_START: &str = "{\n  \"version\": 1,\n  \"files\": [";
+pub const JSON_BETWEEN: &str = ",";
+
+/// One file's entry of the JSON document, indented for its place there,
+/// preceded by its line break.
+pub fn json_file(report: &Located) -> String {
+    let diagnostics = report
+        .each()
+        .map(|(d, start, end)| JsonDiagnostic {
+            code: d.code,
+            name: d.name,
+            severity: d.severity,
+            message: &d.message,
+            help: d.help.as_deref(),
+            location: start,
+            end_location: end,
+            offset: d.span.start,
+            length: d.span.len(),
+            fix: d.fix.as_deref().map(JsonFix::of),
         })
         .collect();
-    let mut text =
-        serde_json::to_string_pretty(&JsonDocument { version: 1, files }).unwrap_or_default();
-    text.push('\n');
-    text
+    let file = JsonFile {
+        path: &report.name,
+        diagnostics,
+    };
+    indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
+}
+
+/// The end of the JSON document, after `files` entries.
+pub fn json_end(files: usize) -> &'static str {
+    match files {
+        0 => "]\n}\n",
+        _ => "\n  ]\n}\n",
+    }
+}
+
+/// Pretty-printed JSON moved right by `by` spaces, each line after a line
+/// break (a JSON text has line breaks only between its tokens).
+fn indented(json: &str, by: usize) -> String {
+    let pad = " ".repeat(by);
+    let mut out = String::with_capacity(json.len() + by * 8);
+    for line in json.lines() {
+        out.push('\n');
+        out.push_str(&pad);
+        out.push_str(line);
+    }
+    out
 }
 
 /// GitHub Actions workflow commands: one `::error file=...::message` line
@@ -365,7 +400,7 @@ pub fn github(report: &FileReport, out: &mut String) {
         };
         out.push_str(&format!(
             "::{level} file={},line={},col={},endLine={},endColumn={},title={}::{}\n",
-            escape_property(report.name),
+            printable(&escape_property(report.name)),
             start.row,
             start.column,
             end.row,
@@ -388,33 +423,24 @@ fn escape_property(text: &str) -> String {
     escape_data(text).replace(':', "%3A").replace(',', "%2C")
 }
 
-/// SARIF 2.1.0: one run, the rules that were found, one result each.
-pub fn sarif(reports: &[Located]) -> String {
-    let mut codes: Vec<&str> = reports
-        .iter()
-        .flat_map(|r| r.diagnostics.iter().map(|d| d.code))
-        .collect();
-    codes.sort_unstable();
-    codes.dedup();
-    let rules: Vec<serde_json::Value> = codes
-        .iter()
-        .filter_map(|code| crate::lint::rule(code))
-        .map(|info| {
-            let summary = info.docs.lines().nth(1).unwrap_or_default();
-            serde_json::json!({
-                "id": info.code,
-                "name": info.name,
-                "shortDescription": { "text": summary },
-                "fullDescription": { "text": info.docs },
-                "help": { "text": info.docs, "markdown": info.docs },
-                "defaultConfiguration": { "level": level(info.severity) },
-            })
-        })
-        .collect();
-    let mut results = Vec::new();
-    for report in reports {
+/// SARIF 2.1.0: one run, the rules that were found, one result each. The
+/// results of each file are rendered as it comes ([`Sarif::add`]); the log
+/// keeps their text and the codes found, and is written at the end, since
+/// the rules stand in it after them.
+#[derive(Default)]
+pub struct Sarif {
+    /// The results, each indented for its place and after its line break,
+    /// separated by commas.
+    results: String,
+    codes: std::collections::BTreeSet<&'static str>,
+}
+
+impl Sarif {
+    /// One file's results.
+    pub fn add(&mut self, report: &Located) {
         let location = artifact(&report.name);
         for (d, start, end) in report.each() {
+            self.codes.insert(d.code);
             let mut result = serde_json::json!({
                 "ruleId": d.code,
                 "level": level(d.severity),
@@ -441,22 +467,64 @@ pub fn sarif(reports: &[Located]) -> String {
                     "artifactChanges": [{ "artifactLocation": location, "replacements": replacements }]
                 }]);
             }
-            results.push(result);
+            if !self.results.is_empty() {
+                self.results.push(',');
+            }
+            let text = serde_json::to_string_pretty(&result).unwrap_or_default();
+            self.results.push_str(&indented(&text, 8));
         }
     }
-    let document = serde_json::json!({
-        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
-        "version": "2.1.0",
-        "runs": [{
-            "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
-            "columnKind": "unicodeCodePoints",
-            "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
-            "results": results,
-        }],
-    });
-    let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
-    text.push('\n');
-    text
+
+    /// Another's results after these.
+    pub fn extend(&mut self, other: Sarif) {
+        if !self.results.is_empty() && !other.results.is_empty() {
+            self.results.push(',');
+        }
+        self.results.push_str(&other.results);
+        self.codes.extend(other.codes);
+    }
+
+    /// The log.
+    pub fn finish(self) -> String {
+        let rules: Vec<serde_json::Value> = self
+            .codes
+            .iter()
+            .filter_map(|code| crate::lint::rule(code))
+            .map(|info| {
+                let summary = info.docs.lines().nth(1).unwrap_or_default();
+                serde_json::json!({
+                    "id": info.code,
+                    "name": info.name,
+                    "shortDescription": { "text": summary },
+                    "fullDescription": { "text": info.docs },
+                    "help": { "text": info.docs, "markdown": info.docs },
+                    "defaultConfiguration": { "level": level(info.severity) },
+                })
+            })
+            .collect();
+        let document = serde_json::json!({
+            "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+            "version": "2.1.0",
+            "runs": [{
+                "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
+                "columnKind": "unicodeCodePoints",
+                "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
+                "results": [],
+            }],
+        });
+        let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
+        if !self.results.is_empty() {
+            // The empty list's text: no string holds it (a quote inside a
+            // string is escaped), so it is the key's.
+            let empty = "\"results\": []";
+            if let Some(at) = text.find(empty) {
+                let filled = format!("\"results\": [{}\n      ]", self.results);
+                text.replace_range(at..at + empty.len(), &filled);
+            }
+        }
+        text.push('\n');
+        text
+    }
 }
 
 /// The base the relative paths of a SARIF log are read against: the

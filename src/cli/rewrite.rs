@@ -13,9 +13,10 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{expand, read};
+use crate::cli::input::{again, expand, read, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
+use crate::cli::render::printable;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
 use crate::semantic::swivels::OnMachine;
@@ -42,7 +43,7 @@ struct Outcome {
 }
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
-    let paths = expand(&args.paths, args.allow_empty)?;
+    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
     let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
     if several && !writes_files {
@@ -50,26 +51,29 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     }
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
+        follow_links: args.follow_links,
         fine_offsets: args.fine_offsets,
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let outcomes = parallel::each(paths.len(), |index| {
-        let path = match &paths[index] {
-            Ok(path) => path,
-            Err(error) => return failed(error.to_string()),
-        };
-        rewrite_file(path, args, &workspace, several)
-            .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
-    });
     let mut worst = ExitStatus::Success;
+    let work = |index: usize| {
+        let found = match &paths[index] {
+            Ok(found) => found,
+            Err(error) => return failed(format!("{:?}", miette::Report::new(again(error)))),
+        };
+        rewrite_file(found, args, &workspace, several)
+            .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
+    };
+    // Each program's messages as soon as it and those before it are done.
     let mut told = analysis::MachinesTold::default();
-    for outcome in outcomes {
+    parallel::each(paths.len(), work, |outcome| {
         let format = args.analysis.message_format;
         worst = worst.max(told.tell(outcome.machine.as_deref(), format));
         eprint!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
         worst = worst.max(outcome.status);
-    }
+        Ok::<(), CliError>(())
+    })?;
     Ok(worst)
 }
 
@@ -116,13 +120,14 @@ fn mirror(dir: &Path, given: &[PathBuf], path: &Path) -> PathBuf {
 }
 
 fn rewrite_file(
-    path: &Path,
+    found: &Found,
     args: &RewriteArgs,
     workspace: &Workspace,
     several: bool,
 ) -> Result<Outcome, CliError> {
+    let path = found.path.as_path();
     let target = target(path, args, several)?;
-    let file = read(path)?;
+    let file = read(found)?;
     let resolved = workspace.for_rewrite(path)?;
     let mut settings = resolved.settings;
     settings.machine = workspace.machine(&resolved.config)?;
@@ -133,7 +138,7 @@ fn rewrite_file(
     let mut outcome = Outcome {
         status: ExitStatus::Success,
         stdout: Vec::new(),
-        stderr: String::new(),
+        stderr: opened.unchecked().unwrap_or_default(),
         machine: settings.machine.clone(),
     };
     // Every program's edits, as edits of the file (an archive's member's
@@ -170,7 +175,7 @@ fn rewrite_file(
                 errors = true;
                 outcome.stderr.push_str(&format!(
                     "{}: not rewritten: its new size does not fit the archive's header\n",
-                    program.name
+                    printable(&program.name)
                 ));
             }
         }
@@ -181,7 +186,7 @@ fn rewrite_file(
         if changed {
             outcome.stderr.push_str(&format!(
                 "{}: would rewrite {rewritten} CYCLE600 call(s)\n",
-                file.name
+                printable(&file.name)
             ));
         }
         outcome.status = status(errors || changed);
@@ -199,7 +204,7 @@ fn rewrite_file(
             if errors {
                 outcome.stderr.push_str(&format!(
                     "{}: not rewritten in place, because of the errors above\n",
-                    file.name
+                    printable(&file.name)
                 ));
                 return Ok(outcome);
             }

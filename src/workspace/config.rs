@@ -82,10 +82,13 @@ impl Config {
     }
 
     pub fn read(path: &Path) -> Result<Config, SettingsError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SettingsError::Read {
+        let read = |source| SettingsError::Read {
             path: path.to_path_buf(),
             source,
-        })?;
+        };
+        let bytes = super::file::read(path).map_err(read)?;
+        let text = String::from_utf8(bytes)
+            .map_err(|e| read(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
         let mut config: Config = toml::from_str(&text).map_err(|error| {
             let at = error.span().map_or(0, |span| span.start);
             let position = crate::span::LineIndex::new(text.as_bytes()).position(at);
@@ -149,7 +152,8 @@ fn with_did_you_mean(message: &str) -> String {
     }
 }
 
-fn nearest(start: &Path) -> Option<PathBuf> {
+/// The nearest `sinuprep.toml` from `start` upward.
+pub(crate) fn nearest(start: &Path) -> Option<PathBuf> {
     let start = if start.is_dir() {
         start.to_path_buf()
     } else {

@@ -12,6 +12,7 @@
 
 mod config;
 mod error;
+pub mod file;
 mod values;
 
 use std::collections::HashMap;
@@ -50,6 +51,10 @@ pub struct Given {
     pub definitions: Vec<PathBuf>,
     /// Cycle directories, searched after the program's own directory.
     pub cycles: Vec<PathBuf>,
+    /// Whether a link met in a directory (a subprogram or HEAD_DEF beside
+    /// the program, in a cycle directory) is followed, as the walk's
+    /// `--follow-links`; by default it is not found there.
+    pub follow_links: bool,
     /// The machine's swivel data records, for `check`'s swivel rules.
     pub machine: Option<PathBuf>,
     /// Whether the records' fine offsets apply (SD42974).
@@ -70,20 +75,56 @@ pub struct Resolved {
     pub deny_warnings: bool,
 }
 
-/// The settings of a run over many programs: [`Given`], the definition
-/// files read so far (by the list that names them) and the subprograms of
-/// the directories searched so far.
+/// The settings of a run over many programs: [`Given`], and what was read
+/// for the programs so far, shared by the threads that check them: the
+/// definition files (by the list that names them), the directories (each
+/// listed once, however many programs lie in it: looking beside each program
+/// anew made a folder of n programs cost n listings of n names), the
+/// settings files and the HEAD_DEF files.
 #[derive(Default)]
 pub struct Workspace {
     given: Given,
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
-    directories: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
+    folders: Mutex<HashMap<PathBuf, Arc<Folder>>>,
     machines: Mutex<HashMap<PathBuf, Arc<OnMachine>>>,
+    /// The nearest `sinuprep.toml` of a program's directory.
+    nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
+    configs: Mutex<HashMap<PathBuf, Config>>,
+    heads: Mutex<HashMap<PathBuf, Heads>>,
 }
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
 /// the parameter count of its PROC.
 type Procedures = HashMap<String, usize>;
+
+/// What the programs of one directory look up in it, from one listing.
+#[derive(Default)]
+struct Folder {
+    procedures: Arc<Procedures>,
+    /// Its `HEAD_DEF.SPF`, any case.
+    head_def: Option<PathBuf>,
+}
+
+/// `cache[key]`, made by `make` the first time it is asked for. Two threads
+/// asking at once may both make it; one is kept.
+fn cached<K, V>(
+    cache: &Mutex<HashMap<K, V>>,
+    key: &K,
+    make: impl FnOnce() -> Result<V, SettingsError>,
+) -> Result<V, SettingsError>
+where
+    K: std::hash::Hash + Eq + Clone,
+    V: Clone,
+{
+    if let Some(known) = cache.lock().ok().and_then(|c| c.get(key).cloned()) {
+        return Ok(known);
+    }
+    let made = make()?;
+    if let Ok(mut cache) = cache.lock() {
+        cache.insert(key.clone(), made.clone());
+    }
+    Ok(made)
+}
 
 impl Workspace {
     /// Refuses a rule code that names no rule before any program is read.
@@ -140,7 +181,7 @@ impl Workspace {
         } else {
             program
         };
-        let config = Config::find(given.config.as_deref(), start)?;
+        let config = self.config(start)?;
         let (supplied, heads) = self.inputs(&config, program)?;
         let emit = self.options(&config);
         let deny_warnings = given.deny_warnings || config.deny_warnings == Some(true);
@@ -154,6 +195,27 @@ impl Workspace {
             },
             deny_warnings,
         })
+    }
+
+    /// `--config FILE`, or the nearest `sinuprep.toml` from `start` upward;
+    /// each directory is looked up and each file read once a run.
+    fn config(&self, start: &Path) -> Result<Config, SettingsError> {
+        let path = match &self.given.config {
+            Some(path) => Some(path.clone()),
+            None => {
+                let dir = if start.is_dir() {
+                    start
+                } else {
+                    start.parent().unwrap_or(Path::new(""))
+                };
+                let key = dir.to_path_buf();
+                cached(&self.nearest, &key, || Ok(config::nearest(start)))?
+            }
+        };
+        match path {
+            Some(path) => cached(&self.configs, &path, || Config::read(&path)),
+            None => Ok(Config::default()),
+        }
     }
 
     /// Measured values and HEAD_DEF: given first, then `sinuprep.toml`.
@@ -178,9 +240,11 @@ impl Workspace {
             values::read_set(text, &mut supplied)?;
         }
         let heads = match setting(&given.heads, &config.heads, "heads")
-            .or_else(|| heads_beside(program).map(|path| (path, None)))
+            .or_else(|| self.heads_beside(program).map(|path| (path, None)))
         {
-            Some((path, key)) => Some(Heads::read(path.display().to_string(), &read(&path, key)?)),
+            Some((path, key)) => Some(cached(&self.heads, &path, || {
+                Ok(Heads::read(path.display().to_string(), &read(&path, key)?))
+            })?),
             None => None,
         };
         Ok((supplied, heads))
@@ -285,12 +349,7 @@ impl Workspace {
         config: &Config,
         program: &Path,
     ) -> Result<Arc<Procedures>, SettingsError> {
-        let own = match program.parent() {
-            _ if program == Path::new("-") => PathBuf::from("."),
-            Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        let mut searched = vec![(own, None)];
+        let mut searched = vec![(own_directory(program), None)];
         if self.given.cycles.is_empty() {
             let listed = config.cycles.iter().flatten();
             searched.extend(listed.map(|dir| (config.resolve(dir), Some(config))));
@@ -301,8 +360,8 @@ impl Workspace {
         for (index, (dir, from_config)) in searched.iter().enumerate() {
             // The program's own directory may be unreadable (stdin in a
             // directory one cannot list): nothing is found there.
-            let found = match self.directory(dir) {
-                Ok(found) => found,
+            let found = match self.folder(dir) {
+                Ok(found) => found.procedures.clone(),
                 Err(_) if index == 0 => continue,
                 Err(source) => {
                     return Err(match from_config {
@@ -332,37 +391,65 @@ impl Workspace {
         Ok(out.unwrap_or_default())
     }
 
-    /// The subprograms of one directory (its `.SPF` files, any case).
-    fn directory(&self, dir: &Path) -> std::io::Result<Arc<Procedures>> {
-        if let Some(known) = self
-            .directories
-            .lock()
-            .ok()
-            .and_then(|d| d.get(dir).cloned())
-        {
+    /// What the programs of `dir` look up there: its subprograms (its
+    /// `.SPF` files, any case) and its HEAD_DEF. Each directory is listed
+    /// once a run.
+    fn folder(&self, dir: &Path) -> std::io::Result<Arc<Folder>> {
+        if let Some(known) = self.folders.lock().ok().and_then(|f| f.get(dir).cloned()) {
             return Ok(known);
         }
-        let mut found = Procedures::new();
+        let mut procedures = Procedures::new();
+        let mut head_def = None;
         for entry in std::fs::read_dir(dir)?.flatten() {
+            // A link in the folder names what may lie outside the tree.
+            let link = entry.file_type().is_ok_and(|kind| kind.is_symlink());
+            if link && !self.given.follow_links {
+                continue;
+            }
             let path = entry.path();
             let stem = match (path.file_stem(), path.extension()) {
                 (Some(stem), Some(extension)) if extension.eq_ignore_ascii_case("spf") => stem,
                 _ => continue,
             };
-            let Ok(source) = std::fs::read(&path) else {
-                continue; // a file that vanished or cannot be read: not found
+            if head_def.is_none() && stem.eq_ignore_ascii_case("HEAD_DEF") {
+                // Read when a program needs it: one that is no regular file
+                // is then an error naming it.
+                head_def = Some(path.clone());
+            }
+            // A subprogram that vanished, cannot be read, or is no regular
+            // file of a sane size is not found (its calls are unchecked).
+            let Ok(source) = file::read(&path) else {
+                continue;
             };
             let mut environment = Environment::default();
             environment.read_procedure(&source);
             if let Some(&count) = environment.procedures.values().next() {
-                found.insert(stem.to_string_lossy().to_ascii_uppercase(), count);
+                procedures.insert(stem.to_string_lossy().to_ascii_uppercase(), count);
             }
         }
-        let found = Arc::new(found);
-        if let Ok(mut directories) = self.directories.lock() {
-            directories.insert(dir.to_path_buf(), found.clone());
+        let found = Arc::new(Folder {
+            procedures: Arc::new(procedures),
+            head_def,
+        });
+        if let Ok(mut folders) = self.folders.lock() {
+            folders.insert(dir.to_path_buf(), found.clone());
         }
         Ok(found)
+    }
+
+    /// A HEAD_DEF.SPF (any case) beside the program (in the current
+    /// directory for stdin).
+    fn heads_beside(&self, program: &Path) -> Option<PathBuf> {
+        self.folder(&own_directory(program)).ok()?.head_def.clone()
+    }
+}
+
+/// The directory a program lies in (the current one for stdin).
+fn own_directory(program: &Path) -> PathBuf {
+    match program.parent() {
+        _ if program == Path::new("-") => PathBuf::from("."),
+        Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+        _ => PathBuf::from("."),
     }
 }
 
@@ -372,7 +459,7 @@ impl Workspace {
 fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
     for path in files {
-        let bytes = std::fs::read(path).map_err(|source| SettingsError::Read {
+        let bytes = file::read(path).map_err(|source| SettingsError::Read {
             path: path.clone(),
             source,
         })?;
@@ -433,7 +520,7 @@ fn read_setting(
     path: &Path,
     key: Option<&'static str>,
 ) -> Result<Vec<u8>, SettingsError> {
-    std::fs::read(path).map_err(|source| match key {
+    file::read(path).map_err(|source| match key {
         Some(key) => SettingsError::ReadSetting {
             path: path.to_path_buf(),
             key,
@@ -454,30 +541,6 @@ fn codes(list: &[String], origin: &str) -> Result<Vec<String>, SettingsError> {
         code: unknown.code,
         did_you_mean: unknown.did_you_mean,
     })
-}
-
-/// A HEAD_DEF.SPF (any case) beside the program (in the current directory for stdin).
-fn heads_beside(program: &Path) -> Option<PathBuf> {
-    let dir = if program == Path::new("-") {
-        PathBuf::from(".")
-    } else {
-        program.parent().map(|p| {
-            if p.as_os_str().is_empty() {
-                PathBuf::from(".")
-            } else {
-                p.to_path_buf()
-            }
-        })?
-    };
-    std::fs::read_dir(dir)
-        .ok()?
-        .filter_map(|e| e.ok())
-        .map(|e| e.path())
-        .find(|p| {
-            p.file_name()
-                .and_then(|n| n.to_str())
-                .is_some_and(|n| n.eq_ignore_ascii_case("HEAD_DEF.SPF"))
-        })
 }
 
 #[cfg(test)]
@@ -529,6 +592,31 @@ mod tests {
         assert_eq!(resolved.settings.selection.ignore, ["N005"]);
         assert_eq!(resolved.settings.selection.severity_min, Severity::Error);
         assert_eq!(resolved.settings.emit.precision, 5);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_directory_is_listed_once_for_all_its_programs() {
+        let dir = scratch("listed-once");
+        let workspace = Workspace::new(Given::default()).expect("no codes");
+        let first = workspace
+            .for_check(&dir.join("parts/A.MPF"))
+            .expect("settings");
+        assert!(first.settings.heads.is_none());
+        // Made after the folder was read: the run does not list it again
+        // for the next program (a folder of n programs cost n listings).
+        std::fs::write(dir.join("parts/HEAD_DEF.SPF"), "PROC HEAD_DEF\nM17\n").expect("heads");
+        std::fs::write(dir.join("parts/SUB.SPF"), "PROC SUB(REAL _A)\nM17\n").expect("sub");
+        let second = workspace
+            .for_check(&dir.join("parts/B.MPF"))
+            .expect("settings");
+        assert!(second.settings.heads.is_none());
+        assert!(second.settings.environment.procedures.is_empty());
+        // A new run reads it.
+        let fresh = Workspace::new(Given::default()).expect("no codes");
+        let third = fresh.for_check(&dir.join("parts/B.MPF")).expect("settings");
+        assert!(third.settings.heads.is_some());
+        assert!(third.settings.environment.procedures.contains_key("SUB"));
         let _ = std::fs::remove_dir_all(&dir);
     }
 

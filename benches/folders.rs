@@ -1,0 +1,93 @@
+//! Many programs: `check` over n small programs in one folder, and the same
+//! n split over folders of 100 (per-program time should be the same), with
+//! the time to the first finding printed (findings come as files finish, in
+//! their order, not after the last) and the peak resident memory.
+//!
+//! `cargo bench --bench folders` (counts: `SINUPREP_BENCH_FOLDERS`, default
+//! `2000 8000 50000`; another build to compare: `SINUPREP_BENCH_BINARY`).
+//! Needs `/usr/bin/time`; nothing is asserted.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::Instant;
+
+fn main() {
+    let counts: Vec<usize> = std::env::var("SINUPREP_BENCH_FOLDERS")
+        .unwrap_or_else(|_| "2000 8000 50000".to_string())
+        .split_whitespace()
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    let binary = match std::env::var_os("SINUPREP_BENCH_BINARY") {
+        Some(binary) => PathBuf::from(binary),
+        None => {
+            let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+            let status = Command::new("cargo")
+                .args(["build", "--release", "--quiet"])
+                .current_dir(&root)
+                .status();
+            assert!(status.is_ok_and(|s| s.success()), "release build failed");
+            root.join("target/release/sinuprep")
+        }
+    };
+    let dir = std::env::temp_dir().join(format!("sinuprep-bench-folders-{}", std::process::id()));
+    println!("shape  programs   total s   µs/program   first line s   peak RSS MiB");
+    for &count in &counts {
+        let _ = std::fs::remove_dir_all(&dir);
+        let flat = dir.join("flat");
+        let split = dir.join("split");
+        for i in 0..count {
+            let name = format!("P{i:06}.MPF");
+            // One finding each (N001, a jump to no label), so that every
+            // program prints a line.
+            let program = format!("G0 X{i} Y0\nGOTOF NOWHERE\nM30\n");
+            let folder = split.join(format!("D{:04}", i / 100));
+            for path in [flat.join(&name), folder.join(&name)] {
+                if let Some(parent) = path.parent() {
+                    std::fs::create_dir_all(parent).expect("bench directory");
+                }
+                std::fs::write(path, &program).expect("write");
+            }
+        }
+        for (shape, path) in [("flat", &flat), ("split", &split)] {
+            let (total, first, peak) = measure(&binary, path);
+            println!(
+                "{shape:<6} {count:>8} {total:>9.2} {:>12.1} {first:>14.3} {:>14.1}",
+                total * 1e6 / count as f64,
+                peak as f64 / 1024.0
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Seconds to the end, seconds to the first byte on stdout, peak RSS in KiB.
+fn measure(binary: &Path, folder: &Path) -> (f64, f64, u64) {
+    let start = Instant::now();
+    let mut child = Command::new("/usr/bin/time")
+        .args(["-f", "%M"])
+        .arg(binary)
+        .args(["check", "--quiet", "--format", "short"])
+        .arg(folder)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("/usr/bin/time runs");
+    let mut stdout = child.stdout.take().expect("piped");
+    let mut buffer = vec![0; 1 << 16];
+    let mut first = None;
+    while let Ok(n) = stdout.read(&mut buffer) {
+        if n == 0 {
+            break;
+        }
+        first.get_or_insert_with(|| start.elapsed().as_secs_f64());
+    }
+    let output = child.wait_with_output().expect("finishes");
+    let total = start.elapsed().as_secs_f64();
+    let peak = String::from_utf8_lossy(&output.stderr)
+        .lines()
+        .last()
+        .and_then(|l| l.trim().parse().ok())
+        .unwrap_or(0);
+    (total, first.unwrap_or(total), peak)
+}

@@ -1,0 +1,84 @@
+//! Reading the files the settings name (definition files, the machine's
+//! records, HEAD_DEF, measured values, `sinuprep.toml`, a cycle directory's
+//! subprograms): each must be a regular file of at most [`LIMIT`] bytes.
+//! A FIFO would hang the run and a device never ends (`--definitions
+//! /dev/zero` once took 4 GB); no control holds a settings file near the
+//! limit. Programs are not read here: they are mapped, at any size.
+
+use std::io::Read;
+use std::path::Path;
+
+/// The most a settings file may hold: 64 MiB.
+pub const LIMIT: u64 = 64 << 20;
+
+/// The bytes of the file at `path` (through a link), refused when it is no
+/// regular file or larger than [`LIMIT`]. Whether it is one is asked before
+/// it is opened (a FIFO is never opened) and of what was opened.
+pub fn read(path: &Path) -> std::io::Result<Vec<u8>> {
+    regular(&std::fs::metadata(path)?)?;
+    let file = std::fs::File::open(path)?;
+    let length = regular(&file.metadata()?)?;
+    let mut bytes = Vec::with_capacity(usize::try_from(length).unwrap_or(0));
+    // A file that grows while it is read stops at the limit, too.
+    file.take(LIMIT + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > LIMIT {
+        return Err(too_large());
+    }
+    Ok(bytes)
+}
+
+/// A regular file's length, or why it cannot be read as a settings file.
+fn regular(metadata: &std::fs::Metadata) -> std::io::Result<u64> {
+    if !metadata.is_file() {
+        let what = if metadata.is_dir() {
+            "a directory"
+        } else {
+            "not a regular file (a FIFO, a socket or a device)"
+        };
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!("{what}: settings are read from regular files"),
+        ));
+    }
+    if metadata.len() > LIMIT {
+        return Err(too_large());
+    }
+    Ok(metadata.len())
+}
+
+fn too_large() -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::FileTooLarge,
+        format!(
+            "larger than {} MiB, more than any settings file of a control holds",
+            LIMIT >> 20
+        ),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_regular_file_is_read_and_anything_else_refused() {
+        let dir = std::env::temp_dir().join(format!("sinuprep-file-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("dir");
+        let file = dir.join("GUD.DEF");
+        std::fs::write(&file, b"DEF NCK INT A\n").expect("write");
+        assert_eq!(read(&file).expect("regular"), b"DEF NCK INT A\n");
+        let error = read(&dir).expect_err("a directory");
+        assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput);
+        #[cfg(unix)]
+        {
+            let error = read(Path::new("/dev/zero")).expect_err("a device");
+            assert!(error.to_string().contains("not a regular file"), "{error}");
+        }
+        let big = dir.join("BIG.DEF");
+        let handle = std::fs::File::create(&big).expect("create");
+        handle.set_len(LIMIT + 1).expect("sparse");
+        let error = read(&big).expect_err("too large");
+        assert_eq!(error.kind(), std::io::ErrorKind::FileTooLarge);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
