@@ -32,23 +32,32 @@ fn limited(args: &[&str], stdin: Option<(&Path, bool)>) -> Output {
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
+    let mut cat = None;
     match stdin {
         Some((path, true)) => {
             command.stdin(std::fs::File::open(path).expect("input"));
         }
         Some((path, false)) => {
-            let cat = Command::new("cat")
+            let mut child = Command::new("cat")
                 .arg(path)
                 .stdout(Stdio::piped())
                 .spawn()
                 .expect("cat runs");
-            command.stdin(cat.stdout.expect("a pipe"));
+            command.stdin(child.stdout.take().expect("a pipe"));
+            cat = Some(child);
         }
         None => {
             command.stdin(Stdio::null());
         }
     }
-    command.output().expect("sh runs")
+    let output = command.output().expect("sh runs");
+    // The pipe's end the command held is closed: `cat` cannot wait on it.
+    drop(command);
+    if let Some(mut cat) = cat {
+        // It ends once the run has read its input or closed the pipe.
+        let _ = cat.wait();
+    }
+    output
 }
 
 fn assert_within_limit(output: &Output, code: i32, what: &str) {
