@@ -44,6 +44,7 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
 /// storing them in a vector of their number: a statement is large (about
 /// 150 bytes), and room for a CAM block's eight, reserved on every block,
 /// took the allocator's slow path, 500 instructions a block of code.
+#[inline]
 pub fn parse_block_with(
     input: Input,
     scratch: &mut Vec<Statement>,

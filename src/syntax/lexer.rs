@@ -216,6 +216,7 @@ pub fn keyword<'a>(word: &'static str) -> impl Fn(Input<'a>) -> PResult<'a, Name
 
 /// `number := decimal | "'H" hex+ "'" | "'B" ('0'|'1')+ "'"`
 /// `decimal := (digit+ ('.' digit*)? | '.' digit+) ('EX' ('+'|'-')? digit+)?`
+#[inline]
 pub fn parse_number(input: Input) -> PResult<Number> {
     match peek(&input) {
         Some(b'\'') => parse_radix_number(input),

@@ -198,6 +198,7 @@ pub const MAX_PARSED_LINE: usize = 64 * 1024;
 
 /// The line's kind and tree, its statements gathered in `scratch` (see
 /// [`block::parse_block_with`]).
+#[inline]
 pub(crate) fn parse_line_kind(
     content: &[u8],
     start: usize,
