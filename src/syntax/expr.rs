@@ -50,23 +50,24 @@ const MULTIPLICATIVE: u8 = 10;
 fn peek_binary_operator(input: Input) -> Option<(BinaryOp, u8, Input)> {
     let at = parse_blank(input);
     let bytes = at.fragment();
-    let two = bytes.get(..2);
-    let symbol = match two {
-        Some(b"==") => Some((BinaryOp::Eq, COMPARISON, 2)),
-        Some(b"<>") => Some((BinaryOp::Ne, COMPARISON, 2)),
-        Some(b"<=") => Some((BinaryOp::Le, COMPARISON, 2)),
-        Some(b">=") => Some((BinaryOp::Ge, COMPARISON, 2)),
-        Some(b"<<") => Some((BinaryOp::Concat, CONCAT, 2)),
-        _ => match bytes.first() {
-            Some(b'<') => Some((BinaryOp::Lt, COMPARISON, 1)),
-            Some(b'>') => Some((BinaryOp::Gt, COMPARISON, 1)),
-            Some(b'+') => Some((BinaryOp::Add, ADDITIVE, 1)),
-            Some(b'-') => Some((BinaryOp::Sub, ADDITIVE, 1)),
-            Some(b'*') => Some((BinaryOp::Mul, MULTIPLICATIVE, 1)),
-            Some(b'/') => Some((BinaryOp::Div, MULTIPLICATIVE, 1)),
-            Some(b':') => Some((BinaryOp::Chain, CHAIN, 1)),
-            _ => None,
-        },
+    // By the first byte: only `=`, `<` and `>` start a two-byte operator.
+    let second = bytes.get(1).copied();
+    let symbol = match *bytes.first()? {
+        b'=' if second == Some(b'=') => Some((BinaryOp::Eq, COMPARISON, 2)),
+        b'<' => Some(match second {
+            Some(b'>') => (BinaryOp::Ne, COMPARISON, 2),
+            Some(b'=') => (BinaryOp::Le, COMPARISON, 2),
+            Some(b'<') => (BinaryOp::Concat, CONCAT, 2),
+            _ => (BinaryOp::Lt, COMPARISON, 1),
+        }),
+        b'>' if second == Some(b'=') => Some((BinaryOp::Ge, COMPARISON, 2)),
+        b'>' => Some((BinaryOp::Gt, COMPARISON, 1)),
+        b'+' => Some((BinaryOp::Add, ADDITIVE, 1)),
+        b'-' => Some((BinaryOp::Sub, ADDITIVE, 1)),
+        b'*' => Some((BinaryOp::Mul, MULTIPLICATIVE, 1)),
+        b'/' => Some((BinaryOp::Div, MULTIPLICATIVE, 1)),
+        b':' => Some((BinaryOp::Chain, CHAIN, 1)),
+        _ => None,
     };
     if let Some((op, level, len)) = symbol {
         return Some((op, level, at.take_from(len)));
