@@ -1,18 +1,31 @@
 //! Whole-program throughput of the release binary: generates its inputs (a
-//! 5-axis CAM program, the outside corpus replicated, the same program with
+//! 5-axis CAM program, the outside corpus replicated, the machine builders'
+//! hand-written cycles of that corpus replicated, the CAM program with
 //! CYCLE600 calls scattered through it), runs `check` and `rewrite` on each,
 //! and prints MB/s, blocks/s and peak memory, with `wc -l` as the floor.
+//! First, in this process, the syntax layer alone on 10 MB of the CAM
+//! program and of the hand-written cycles (`SINUPREP_BENCH_SYNTAX_MB`):
+//! the syntax pass (plain lines scanned, the others parsed) and every line
+//! parsed into its tree, each tree dropped once built.
 //! Memory is given twice: the peak resident set (file pages of a mapped
 //! program included, which the kernel drops at will) and the peak of the
 //! process's own anonymous memory (`RssAnon`, sampled every millisecond).
 //!
 //! `cargo bench --bench throughput` (size in MB: `SINUPREP_BENCH_MB`, default
-//! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs). The resident peak comes
-//! from `/usr/bin/time -f %M`; nothing is asserted.
+//! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs; `SINUPREP_BENCH_ONLY=syntax`
+//! stops after the syntax table). The resident peak comes from
+//! `/usr/bin/time -f %M`; nothing is asserted.
 
+use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
+
+use sinuprep::syntax::lines::raw_lines;
+use sinuprep::syntax::LineParser;
+
+#[path = "support/best.rs"]
+mod support;
 
 fn main() {
     let megabytes: usize = std::env::var("SINUPREP_BENCH_MB")
@@ -21,6 +34,10 @@ fn main() {
         .unwrap_or(100);
     let size = megabytes * 1_000_000;
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    syntax_only(&root);
+    if std::env::var("SINUPREP_BENCH_ONLY").is_ok_and(|only| only == "syntax") {
+        return;
+    }
     let status = Command::new("cargo")
         .args(["build", "--release", "--quiet"])
         .current_dir(&root)
@@ -36,6 +53,8 @@ fn main() {
     std::fs::write(&with_cycle600, cam_program(size, 10_000)).expect("write");
     let corpus = dir.join("CORPUS.MPF");
     std::fs::write(&corpus, replicated_corpus(&root, size)).expect("write");
+    let hand_written = dir.join("HAND_WRITTEN.MPF");
+    std::fs::write(&hand_written, hand_written_cycles(&root, size)).expect("write");
     let heads = root.join("samples/HEAD_DEF.SPF");
     let heads = heads.to_str().expect("utf-8");
 
@@ -43,7 +62,7 @@ fn main() {
         "{:<44} {:>9} {:>10} {:>12} {:>10} {:>10}",
         "run", "seconds", "MB/s", "blocks/s", "peak MiB", "anon MiB"
     );
-    for input in [&cam, &corpus, &with_cycle600] {
+    for input in [&cam, &corpus, &hand_written, &with_cycle600] {
         let bytes = std::fs::metadata(input).map(|m| m.len()).unwrap_or(0) as f64;
         let blocks = std::fs::read(input)
             .map(|b| b.iter().filter(|&&c| c == b'\n').count())
@@ -116,6 +135,58 @@ fn main() {
     } else {
         println!("inputs kept in {}", dir.display());
     }
+}
+
+/// The syntax layer in this process, in MB/s (best of five after a warm-up):
+/// the pass `check` and `rewrite` start with ([`sinuprep::syntax::diagnostics`]:
+/// plain lines scanned, the others parsed), and every line parsed into its
+/// tree and dropped.
+fn syntax_only(root: &Path) {
+    let megabytes: usize = std::env::var("SINUPREP_BENCH_SYNTAX_MB")
+        .ok()
+        .and_then(|m| m.parse().ok())
+        .unwrap_or(10);
+    let size = megabytes * 1_000_000;
+    println!(
+        "{:<44} {:>9} {:>10}",
+        format!("syntax only, {megabytes} MB in process"),
+        "seconds",
+        "MB/s"
+    );
+    for (name, source) in [
+        ("CAM program", cam_program(size, 0)),
+        ("hand-written cycles", hand_written_cycles(root, size)),
+    ] {
+        let passes: [(&str, Pass); 2] = [
+            ("syntax pass", syntax_pass),
+            ("every line parsed", parse_every_line),
+        ];
+        for (pass, run) in passes {
+            let seconds = support::best_of_five(|| run(black_box(&source)) as f64);
+            println!(
+                "{:<44} {seconds:>9.3} {:>10.1}",
+                format!("{pass}, {name}"),
+                source.len() as f64 / seconds / 1e6
+            );
+        }
+    }
+}
+
+/// A pass over a program's bytes, and a count it makes.
+type Pass = fn(&[u8]) -> usize;
+
+/// The syntax diagnostics `check` and `rewrite` start with; their count.
+fn syntax_pass(source: &[u8]) -> usize {
+    sinuprep::syntax::diagnostics(source).len()
+}
+
+/// Every line parsed into its tree, which is dropped at once; the count of
+/// lines with an error.
+fn parse_every_line(source: &[u8]) -> usize {
+    let mut parser = LineParser::default();
+    raw_lines(source)
+        .map(|raw| black_box(parser.parse_line(source, raw)).1.is_some() as usize)
+        .sum()
 }
 
 /// Best of three runs: wall seconds, peak resident memory and peak
@@ -199,21 +270,51 @@ fn cam_program(size: usize, every: usize) -> Vec<u8> {
 
 /// The real programs of the outside corpus, one after another until `size`.
 fn replicated_corpus(root: &Path, size: usize) -> Vec<u8> {
+    replicated(corpus_files(root, |_| true), size)
+}
+
+/// The programs of the outside corpus that people wrote rather than a CAM
+/// system: machine builders' warm-up cycles with a PROC, DEF, IF, FOR and
+/// EXTERN (`alloyx-828d`), small programs of control flow, CASE, GOTO,
+/// arrays and expressions (`cead-examples`), and a setup file of system
+/// variables with indices and strings (`philip-cas/KUL_DEMO.INI`); one
+/// after another until `size`.
+fn hand_written_cycles(root: &Path, size: usize) -> Vec<u8> {
+    let files = corpus_files(root, |path| {
+        let folder = path.parent().and_then(Path::file_name);
+        folder.is_some_and(|f| f == "alloyx-828d" || f == "cead-examples")
+            || path.file_name().is_some_and(|n| n == "KUL_DEMO.INI")
+    });
+    replicated(files, size)
+}
+
+/// The files of the outside corpus (`SINUPREP_CORPUS`, else
+/// `../shared/corpus`) that `keep` accepts, in a fixed order.
+fn corpus_files(root: &Path, keep: impl Fn(&Path) -> bool) -> Vec<Vec<u8>> {
     let dir = std::env::var_os("SINUPREP_CORPUS")
         .map(PathBuf::from)
         .unwrap_or_else(|| root.join("../shared/corpus"));
-    let mut files = Vec::new();
+    let mut paths = Vec::new();
     let mut stack = vec![dir];
     while let Some(dir) = stack.pop() {
         for entry in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
             let path = entry.path();
             if path.is_dir() {
                 stack.push(path);
-            } else if path.extension().is_none_or(|e| e != "md") {
-                files.extend(std::fs::read(&path));
+            } else if path.extension().is_none_or(|e| e != "md") && keep(&path) {
+                paths.push(path);
             }
         }
     }
+    paths.sort();
+    paths
+        .iter()
+        .filter_map(|path| std::fs::read(path).ok())
+        .collect()
+}
+
+/// `files` one after another, each ending with a newline, until `size`.
+fn replicated(files: Vec<Vec<u8>>, size: usize) -> Vec<u8> {
     let mut out = Vec::with_capacity(size);
     while !files.is_empty() && out.len() < size {
         for file in &files {

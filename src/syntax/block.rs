@@ -37,6 +37,37 @@ fn text_in<'a>(input: &Input<'a>, span: crate::span::Span) -> &'a [u8] {
 ///
 /// Returns the block and, if a statement could not be read, the error.
 pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
+    parse_block_with(input, &mut Vec::new())
+}
+
+/// [`parse_block`], gathering the statements in `scratch` (left empty) and
+/// storing them in a vector of their number: a statement is large (about
+/// 150 bytes), and room for a CAM block's eight, reserved on every block,
+/// took the allocator's slow path, 500 instructions a block of code.
+#[inline]
+pub fn parse_block_with(
+    input: Input,
+    scratch: &mut Vec<Statement>,
+) -> (Block, Option<SyntaxError>) {
+    scratch.clear();
+    let (mut block, error) = parse_statements(input, scratch);
+    block.statements = if scratch.len() <= MANY_STATEMENTS {
+        let mut statements = Vec::with_capacity(scratch.len());
+        statements.append(scratch);
+        statements
+    } else {
+        // A long block of address words keeps the gathered vector itself,
+        // so that it is neither copied nor held on to for the next line.
+        std::mem::take(scratch)
+    };
+    (block, error)
+}
+
+/// More statements than a block of the control holds (512 characters).
+const MANY_STATEMENTS: usize = 256;
+
+/// The block of `input` without its statements, which go to `statements`.
+fn parse_statements(input: Input, statements: &mut Vec<Statement>) -> (Block, Option<SyntaxError>) {
     let line = input;
     let mut block = Block::default();
     let mut input = parse_blank(input);
@@ -52,10 +83,6 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
         block.label = Some(label);
         input = parse_blank(rest);
     }
-    if !matches!(peek(&parse_blank(input)), None | Some(b';')) {
-        // A CAM block has about seven words: allocate once.
-        block.statements.reserve(8);
-    }
     loop {
         input = parse_blank(input);
         match peek(&input) {
@@ -66,15 +93,23 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
             }
             Some(_) => {}
         }
-        if let Some(Err(error)) = block.statements.last().map(|p| may_follow(p, input)) {
-            return unparsed(block, line, input, error);
+        if let Some(Err(error)) = statements.last().map(|p| may_follow(p, input)) {
+            return unparsed(block, statements, line, input, error);
         }
-        let (rest, statement) = match plain_word(input) {
-            Some(word) => word,
+        // Pushed where it is read: a statement is large, and every move of
+        // it costs a copy.
+        let rest = match plain_word(input) {
+            Some((rest, word)) => {
+                statements.push(word);
+                rest
+            }
             None => match parse_statement(input) {
-                Ok(statement) => statement,
+                Ok((rest, statement)) => {
+                    statements.push(statement);
+                    rest
+                }
                 Err(nom::Err::Error(error) | nom::Err::Failure(error)) => {
-                    return unparsed(block, line, input, error)
+                    return unparsed(block, statements, line, input, error)
                 }
                 // Complete parsers never ask for more input; should one, the
                 // line is still kept and reported, not a panic.
@@ -83,17 +118,17 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
                         offset(&input),
                         SyntaxErrorKind::Expected("a complete statement"),
                     );
-                    return unparsed(block, line, input, error);
+                    return unparsed(block, statements, line, input, error);
                 }
             },
         };
-        if !block.statements.is_empty() {
-            if let Some(what) = stands_alone(&statement.kind) {
-                let error = SyntaxError::new(statement.span.start, SyntaxErrorKind::NotAlone(what));
-                return unparsed(block, line, input, error);
+        if let [_, .., last] = statements.as_slice() {
+            if let Some(what) = stands_alone(&last.kind) {
+                let error = SyntaxError::new(last.span.start, SyntaxErrorKind::NotAlone(what));
+                statements.pop();
+                return unparsed(block, statements, line, input, error);
             }
         }
-        block.statements.push(statement);
         input = rest;
     }
 }
@@ -102,11 +137,12 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
 /// that stopped it.
 fn unparsed<'a>(
     mut block: Block,
+    statements: &[Statement],
     line: Input<'a>,
     rest: Input<'a>,
     mut error: SyntaxError,
 ) -> (Block, Option<SyntaxError>) {
-    error.meant = misspelt_keyword(&line, &block);
+    error.meant = misspelt_keyword(&line, statements);
     let end = rest.take_from(rest.input_len());
     block.unparsed = Some(span_between(&rest, &end));
     (block, Some(error))
@@ -120,8 +156,11 @@ const KEYWORDS_WITH_OPERANDS: [&str; 20] = [
 ];
 
 /// The keyword a broken block's first word was probably meant to be.
-fn misspelt_keyword(line: &Input, block: &Block) -> Option<(&'static str, crate::span::Span)> {
-    let StatementKind::Command(name) = &block.statements.first()?.kind else {
+fn misspelt_keyword(
+    line: &Input,
+    statements: &[Statement],
+) -> Option<(&'static str, crate::span::Span)> {
+    let StatementKind::Command(name) = &statements.first()?.kind else {
         return None;
     };
     let word = std::str::from_utf8(text_in(line, name.span)).ok()?;
@@ -249,6 +288,7 @@ pub fn parse_label(input: Input) -> PResult<Name> {
 }
 
 /// `statement := keyword_statement | word | assignment | call | command`
+#[inline]
 pub fn parse_statement(input: Input) -> PResult<Statement> {
     let start = input;
     let (rest, kind) = parse_statement_kind(input)?;
@@ -284,7 +324,8 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     {
         return parse_sync_action(input);
     }
-    if !is_assignment_like {
+    // Only C and R start the multi-letter addresses.
+    if !is_assignment_like && matches!(first | 0x20, b'c' | b'r') {
         if let Some(len) = multi_letter_address(&input.fragment()[..name.span.len()]) {
             return SyntaxError::fail(
                 offset(&input) + len,

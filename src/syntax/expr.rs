@@ -7,9 +7,10 @@
 
 use nom::Input as _;
 
+use crate::span::Span;
 use crate::syntax::lexer::{
-    is_name_start, offset, parse_blank, parse_name, parse_number, parse_string, peek, peek_at,
-    span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
+    is_name_start, is_one_of, offset, parse_blank, parse_name, parse_number, parse_string, peek,
+    peek_at, span_between, Input, PResult, SyntaxError, SyntaxErrorKind,
 };
 use crate::syntax::tree::{Argument, Arguments, BinaryOp, Call, Expr, ExprKind, UnaryOp, Variable};
 
@@ -49,28 +50,31 @@ const MULTIPLICATIVE: u8 = 10;
 fn peek_binary_operator(input: Input) -> Option<(BinaryOp, u8, Input)> {
     let at = parse_blank(input);
     let bytes = at.fragment();
-    let two = bytes.get(..2);
-    let symbol = match two {
-        Some(b"==") => Some((BinaryOp::Eq, COMPARISON, 2)),
-        Some(b"<>") => Some((BinaryOp::Ne, COMPARISON, 2)),
-        Some(b"<=") => Some((BinaryOp::Le, COMPARISON, 2)),
-        Some(b">=") => Some((BinaryOp::Ge, COMPARISON, 2)),
-        Some(b"<<") => Some((BinaryOp::Concat, CONCAT, 2)),
-        _ => match bytes.first() {
-            Some(b'<') => Some((BinaryOp::Lt, COMPARISON, 1)),
-            Some(b'>') => Some((BinaryOp::Gt, COMPARISON, 1)),
-            Some(b'+') => Some((BinaryOp::Add, ADDITIVE, 1)),
-            Some(b'-') => Some((BinaryOp::Sub, ADDITIVE, 1)),
-            Some(b'*') => Some((BinaryOp::Mul, MULTIPLICATIVE, 1)),
-            Some(b'/') => Some((BinaryOp::Div, MULTIPLICATIVE, 1)),
-            Some(b':') => Some((BinaryOp::Chain, CHAIN, 1)),
-            _ => None,
-        },
+    // By the first byte: only `=`, `<` and `>` start a two-byte operator.
+    let second = bytes.get(1).copied();
+    let symbol = match *bytes.first()? {
+        b'=' if second == Some(b'=') => Some((BinaryOp::Eq, COMPARISON, 2)),
+        b'<' => Some(match second {
+            Some(b'>') => (BinaryOp::Ne, COMPARISON, 2),
+            Some(b'=') => (BinaryOp::Le, COMPARISON, 2),
+            Some(b'<') => (BinaryOp::Concat, CONCAT, 2),
+            _ => (BinaryOp::Lt, COMPARISON, 1),
+        }),
+        b'>' if second == Some(b'=') => Some((BinaryOp::Ge, COMPARISON, 2)),
+        b'>' => Some((BinaryOp::Gt, COMPARISON, 1)),
+        b'+' => Some((BinaryOp::Add, ADDITIVE, 1)),
+        b'-' => Some((BinaryOp::Sub, ADDITIVE, 1)),
+        b'*' => Some((BinaryOp::Mul, MULTIPLICATIVE, 1)),
+        b'/' => Some((BinaryOp::Div, MULTIPLICATIVE, 1)),
+        b':' => Some((BinaryOp::Chain, CHAIN, 1)),
+        _ => None,
     };
     if let Some((op, level, len)) = symbol {
         return Some((op, level, at.take_from(len)));
     }
-    if !peek(&at).is_some_and(is_name_start) {
+    // Only these letters start a word operator (DIV, MOD, B_..., AND, XOR,
+    // OR): most names after an operand are the block's next word.
+    if !matches!(peek(&at)? | 0x20, b'd' | b'm' | b'b' | b'a' | b'x' | b'o') {
         return None;
     }
     let (rest, name) = parse_name(at).ok()?;
@@ -107,7 +111,10 @@ impl SpanOfFragment for crate::span::Span {
 /// `binary(level) := unary (operator(level' >= level) binary(level' + 1))*`
 fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
     let depth = deeper(&input, depth)?;
-    let (mut input, mut lhs) = parse_unary(input, depth)?;
+    let (mut input, mut lhs) = match simple_operand(input, depth) {
+        Some(operand) => operand,
+        None => parse_unary(input, depth)?,
+    };
     // Each operator in a chain deepens the (left-leaning) tree by one.
     let mut chain_depth = depth;
     while let Some((op, level, after)) = peek_binary_operator(input) {
@@ -143,6 +150,58 @@ fn parse_binary(input: Input, min_level: u8, depth: usize) -> PResult<Expr> {
     Ok((input, lhs))
 }
 
+/// The operands most expressions are made of, a number or a variable
+/// without indices (`120`, `x_start`, `$P_GG`), read as [`parse_unary`] reads
+/// them without its layers; `None` for anything else, which it reads.
+#[inline]
+fn simple_operand(input: Input, depth: usize) -> Option<(Input, Expr)> {
+    // Where the general path refuses to go deeper, it says so.
+    if depth >= MAX_DEPTH {
+        return None;
+    }
+    match peek(&input)? {
+        b'0'..=b'9' | b'.' => {
+            let (rest, number) = parse_number(input).ok()?;
+            let kind = ExprKind::Number(number);
+            Some((
+                rest,
+                Expr {
+                    span: number.span,
+                    kind,
+                },
+            ))
+        }
+        byte if byte == b'$' || is_name_start(byte) => {
+            let (rest, name) = parse_name(input).ok()?;
+            let text = name.span.of_fragment(&input);
+            // An operator written as a word, DO, a call or an index: the
+            // general path.
+            let is_word = text.len() <= 5
+                && (is_one_of(text, &["NOT", "B_NOT", "DO"])
+                    || WORD_OPERATORS
+                        .iter()
+                        .any(|(word, ..)| word.as_bytes().eq_ignore_ascii_case(text)));
+            if is_word || matches!(peek(&parse_blank(rest)), Some(b'(' | b'[')) {
+                return None;
+            }
+            let variable = Variable {
+                span: name.span,
+                name,
+                indices: Vec::new(),
+            };
+            let kind = ExprKind::Variable(variable);
+            Some((
+                rest,
+                Expr {
+                    span: name.span,
+                    kind,
+                },
+            ))
+        }
+        _ => None,
+    }
+}
+
 /// `unary := ('-' | '+' | '<<' | 'NOT' | 'B_NOT') unary | primary`
 fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
     let depth = deeper(&input, depth)?;
@@ -154,6 +213,10 @@ fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
         _ => None,
     };
     let word = symbol.or_else(|| {
+        // Only `N` and `B` start NOT and B_NOT.
+        if !matches!(peek(&input)? | 0x20, b'n' | b'b') {
+            return None;
+        }
         let (_, name) = parse_name(input).ok()?;
         let text = name.span.of_fragment(&input);
         if text.eq_ignore_ascii_case(b"NOT") {
@@ -306,15 +369,17 @@ pub fn parse_indices(input: Input, depth: usize) -> PResult<Vec<crate::syntax::t
     if peek(&input) != Some(b'[') {
         return Ok((input, Vec::new()));
     }
-    let (rest, list) = parse_list(input, b'[', b']', depth)?;
-    let mut indices = Vec::with_capacity(list.items.len());
-    for item in list.items {
-        match item.value {
-            Some(value) => indices.push(value),
-            None => {
-                return SyntaxError::fail(item.span.start, SyntaxErrorKind::Expected("an index"))
-            }
+    // Read straight into the indices, not into a list of arguments first.
+    let mut indices = Vec::new();
+    let mut first_empty = None;
+    let (rest, _) = parse_items(input, b'[', b']', depth, |span, value| match value {
+        Some(value) => indices.push(value),
+        None => {
+            first_empty.get_or_insert(span.start);
         }
+    })?;
+    if let Some(at) = first_empty {
+        return SyntaxError::fail(at, SyntaxErrorKind::Expected("an index"));
     }
     Ok((rest, indices))
 }
@@ -326,24 +391,43 @@ pub fn parse_arguments(input: Input, depth: usize) -> PResult<Arguments> {
 
 /// A bracketed, comma-separated list whose items may be empty.
 pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Arguments> {
+    // Frames and cycles take a dozen arguments (`CTRANS(X,0,Y,0,Z,0,...)`):
+    // room for as many as there are commas before the first closing
+    // bracket, within the next 256 bytes, instead of growing three times.
+    let ahead = &input.fragment()[..input.input_len().min(256)];
+    let end = memchr::memchr(close, ahead).unwrap_or(ahead.len());
+    let commas = memchr::memchr_iter(b',', &ahead[..end]).count();
+    let mut items = match commas {
+        0..4 => Vec::new(),
+        _ => Vec::with_capacity(commas + 1),
+    };
+    let (rest, span) = parse_items(input, open, close, depth, |span, value| {
+        items.push(Argument { span, value })
+    })?;
+    Ok((rest, Arguments { span, items }))
+}
+
+/// The items of a bracketed, comma-separated list, each given to `item`
+/// with its span (an empty one: where it stands) as it is read; the list's
+/// span, brackets included.
+fn parse_items<'a>(
+    input: Input<'a>,
+    open: u8,
+    close: u8,
+    depth: usize,
+    mut item: impl FnMut(Span, Option<Expr>),
+) -> PResult<'a, Span> {
     let start = input;
     if peek(&input) != Some(open) {
         return SyntaxError::at(&input, SyntaxErrorKind::Expected("an argument list"));
     }
     let depth = deeper(&input, depth)?;
     let mut input = input.take_from(1);
-    let mut items = Vec::new();
     // `CYCLE800()` has no arguments at all, not one empty one.
     let inside = parse_blank(input);
     if peek(&inside) == Some(close) {
         let rest = inside.take_from(1);
-        return Ok((
-            rest,
-            Arguments {
-                span: span_between(&start, &rest),
-                items,
-            },
-        ));
+        return Ok((rest, span_between(&start, &rest)));
     }
     loop {
         input = parse_blank(input);
@@ -366,19 +450,13 @@ pub fn parse_list(input: Input, open: u8, close: u8, depth: usize) -> PResult<Ar
             Some(value) => value.span,
             None => span_between(&item_start, &item_start),
         };
-        items.push(Argument { span, value });
+        item(span, value);
         input = parse_blank(input);
         match peek(&input) {
             Some(b',') => input = input.take_from(1),
             Some(b) if b == close => {
                 let rest = input.take_from(1);
-                return Ok((
-                    rest,
-                    Arguments {
-                        span: span_between(&start, &rest),
-                        items,
-                    },
-                ));
+                return Ok((rest, span_between(&start, &rest)));
             }
             _ => return close_error(&start, &input, open),
         }
@@ -478,6 +556,38 @@ mod tests {
         ));
         let fine = "1".to_string() + &"+1".repeat(200);
         assert!(parse_expr(Input::new(fine.as_bytes(), 0)).is_ok());
+    }
+
+    proptest::proptest! {
+        /// The shortcut reads an operand exactly as the general path does,
+        /// or leaves it to the general path.
+        #[test]
+        fn simple_operands_read_as_the_general_path_reads_them(
+            text in "(NOT|b_not|Do|AND|mod|X|\\$?[A-Za-z_][A-Za-z0-9_]{0,5}|[0-9.]{1,8}([eE][xX][-+]?[0-9]?)?)( ?[-+*/,)\\](\\[=<>:]| AND| DO| X)?",
+            depth in proptest::prop_oneof![proptest::strategy::Just(1usize), proptest::strategy::Just(MAX_DEPTH - 1), proptest::strategy::Just(MAX_DEPTH)],
+        ) {
+            let input = Input::new(text.as_bytes(), 40);
+            if let Some((rest, operand)) = simple_operand(input, depth) {
+                let (general_rest, general) = parse_unary(input, depth).expect("the general path reads it");
+                proptest::prop_assert_eq!(rest, general_rest);
+                proptest::prop_assert_eq!(operand, general);
+            }
+        }
+    }
+
+    #[test]
+    fn indices_report_the_first_error_in_the_order_read() {
+        let error = |text: &str| match parse_indices(Input::new(text.as_bytes(), 0), 0) {
+            Err(nom::Err::Failure(error)) => (error.at, error.kind),
+            other => panic!("{text}: {other:?}"),
+        };
+        // An empty index is reported once the list is read, after any
+        // error inside it.
+        assert_eq!(error("[,1]"), (1, SyntaxErrorKind::Expected("an index")));
+        assert_eq!(error("[1,,2,]"), (3, SyntaxErrorKind::Expected("an index")));
+        assert_eq!(error("[,1+]"), (4, SyntaxErrorKind::UnmatchedClose(b']')));
+        let (_, indices) = parse_indices(Input::new(b"[1, R2+1]", 0), 0).expect("indices");
+        assert_eq!(indices.len(), 2);
     }
 
     #[test]

@@ -216,6 +216,7 @@ pub fn keyword<'a>(word: &'static str) -> impl Fn(Input<'a>) -> PResult<'a, Name
 
 /// `number := decimal | "'H" hex+ "'" | "'B" ('0'|'1')+ "'"`
 /// `decimal := (digit+ ('.' digit*)? | '.' digit+) ('EX' ('+'|'-')? digit+)?`
+#[inline]
 pub fn parse_number(input: Input) -> PResult<Number> {
     match peek(&input) {
         Some(b'\'') => parse_radix_number(input),
@@ -227,25 +228,26 @@ pub fn parse_number(input: Input) -> PResult<Number> {
 fn parse_decimal(input: Input) -> PResult<Number> {
     let start = input;
     let bytes = input.fragment();
-    // One pass over digits and point, keeping the value while it is exact.
-    let mut len = 0;
-    let mut point = None;
+    // The digits before and after the point, keeping the value while it is
+    // exact (at most 19 digits; more wrap, and take the general parser).
     let mut mantissa: u64 = 0;
-    let mut significant = 0;
-    while let Some(&byte) = bytes.get(len) {
-        match byte {
-            b'0'..=b'9' => {
-                significant += usize::from(mantissa != 0 || byte != b'0');
-                mantissa = mantissa
-                    .wrapping_mul(10)
-                    .wrapping_add(u64::from(byte - b'0'));
-            }
-            b'.' if point.is_none() => point = Some(len),
-            _ => break,
+    let mut len = 0;
+    let mut digits = |len: &mut usize| {
+        while let Some(&byte @ b'0'..=b'9') = bytes.get(*len) {
+            mantissa = mantissa
+                .wrapping_mul(10)
+                .wrapping_add(u64::from(byte - b'0'));
+            *len += 1;
         }
+    };
+    digits(&mut len);
+    let point = (bytes.get(len) == Some(&b'.')).then_some(len);
+    if point.is_some() {
         len += 1;
+        digits(&mut len);
     }
-    if len == usize::from(point.is_some()) {
+    let digit_count = len - usize::from(point.is_some());
+    if digit_count == 0 {
         return SyntaxError::at(&input, SyntaxErrorKind::Expected("a number"));
     }
     let mantissa_len = len;
@@ -277,7 +279,7 @@ fn parse_decimal(input: Input) -> PResult<Number> {
         );
     }
     let decimals = point.map_or(0, |p| mantissa_len - p - 1);
-    let value = match exact_decimal(mantissa, significant, decimals) {
+    let value = match exact_decimal(mantissa, digit_count, decimals) {
         Some(value) if exponent.is_none() => value,
         _ => decimal_value(&bytes[..mantissa_len], exponent),
     };
@@ -325,11 +327,12 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
 ];
 
 /// `mantissa / 10^decimals` when it can be computed exactly: a mantissa of at
-/// most 15 significant digits is an exact integer, 10^k for k <= 22 is exact,
-/// and one IEEE division is correctly rounded (Clinger's fast path). CNC
-/// numbers nearly always qualify; others take the general parser.
-fn exact_decimal(mantissa: u64, significant: usize, decimals: usize) -> Option<f64> {
-    if significant > 15 {
+/// most 15 digits is an exact integer, 10^k for k <= 22 is exact, and one
+/// IEEE division is correctly rounded (Clinger's fast path). CNC numbers
+/// nearly always qualify; others (leading zeros counted) take the general
+/// parser, which rounds the same.
+fn exact_decimal(mantissa: u64, digits: usize, decimals: usize) -> Option<f64> {
+    if digits > 15 {
         return None;
     }
     Some(mantissa as f64 / *EXACT_POWERS_OF_TEN.get(decimals)?)

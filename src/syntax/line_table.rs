@@ -84,7 +84,11 @@ impl<'src> Lines<'src> {
             }
         }
         let raw = self.raw(index);
-        let (kind, _) = parse_line_kind(raw.content.of(self.source), raw.content.start);
+        let (kind, _) = parse_line_kind(
+            raw.content.of(self.source),
+            raw.content.start,
+            &mut Vec::new(),
+        );
         Cow::Owned(Line { raw, kind })
     }
 

@@ -142,6 +142,8 @@ impl WordFinder {
 pub struct LineParser {
     row: usize,
     open_call: Option<OpenCall>,
+    /// Where a block's statements are gathered, kept from line to line.
+    statements: Vec<tree::Statement>,
 }
 
 struct OpenCall {
@@ -167,7 +169,7 @@ impl LineParser {
         self.row += 1;
         let content = raw.content.of(source);
         let continued = self.open_call.take();
-        let (kind, error) = parse_line_kind(content, raw.content.start);
+        let (kind, error) = parse_line_kind(content, raw.content.start, &mut self.statements);
         let diagnostic = error.map(|error| {
             if let (Some(open), LineKind::Block(block)) = (&continued, &kind) {
                 if block.statements.is_empty() {
@@ -194,7 +196,14 @@ impl LineParser {
 /// block. The bytes stay as they are, with an error (S009).
 pub const MAX_PARSED_LINE: usize = 64 * 1024;
 
-pub(crate) fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option<SyntaxError>) {
+/// The line's kind and tree, its statements gathered in `scratch` (see
+/// [`block::parse_block_with`]).
+#[inline]
+pub(crate) fn parse_line_kind(
+    content: &[u8],
+    start: usize,
+    scratch: &mut Vec<tree::Statement>,
+) -> (LineKind, Option<SyntaxError>) {
     if content.len() > MAX_PARSED_LINE {
         let block = Block {
             unparsed: Some(Span::new(start, start + content.len())),
@@ -220,7 +229,7 @@ pub(crate) fn parse_line_kind(content: &[u8], start: usize) -> (LineKind, Option
             None,
         );
     }
-    let (block, error) = block::parse_block(Input::new(content, start));
+    let (block, error) = block::parse_block_with(Input::new(content, start), scratch);
     (LineKind::Block(block), error)
 }
 
