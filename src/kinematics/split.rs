@@ -56,6 +56,12 @@ pub enum SplitError {
 /// half width of the fine search around the best sample.
 const COARSE_STEP: f64 = 1.0;
 const FINE_STEPS: usize = 200;
+/// Valleys of the coarse search closed in on, the lowest first, and as
+/// many jumps of the head's positions.
+const VALLEYS: usize = 6;
+/// A change of a head position (degrees) between two coarse samples that
+/// only a pole or a change of solution makes.
+const POLE_JUMP: f64 = 30.0;
 
 /// The table's and the head's positions for `request` (the table's
 /// current position `table_current`), the table's fixed at `fixed` if given.
@@ -116,27 +122,57 @@ pub fn split(
         }
         None => {
             let steps = ((high - low) / COARSE_STEP).ceil() as usize;
-            let coarse = (0..=steps.min(100_000)).map(|k| (low + k as f64 * COARSE_STEP).min(high));
-            let coarse = best_of(&mut coarse.chain([table_current.clamp(low, high)]))?;
-            match coarse {
-                Some((_, centre)) => {
-                    let fine = COARSE_STEP / FINE_STEPS as f64;
-                    let around = (0..=2 * FINE_STEPS)
-                        .map(|k| centre - COARSE_STEP + k as f64 * fine)
-                        .filter(|gamma| (low..=high).contains(gamma))
-                        .chain([centre]);
-                    match best_of(&mut around.into_iter())? {
-                        // A minimum between the samples: closed in on.
-                        Some((spread, gamma)) if spread > 1e-9 && spread.is_finite() => {
-                            let (a, b) = ((gamma - fine).max(low), (gamma + fine).min(high));
-                            let refined = golden(a, b, spread_at)?;
-                            best_of(&mut [gamma, refined].into_iter())?
-                        }
-                        other => other,
+            // (spread, γ, the head's positions) a coarse step apart.
+            let coarse: Vec<(f64, f64, Option<[f64; 2]>)> = (0..=steps.min(100_000))
+                .map(|k| (low + k as f64 * COARSE_STEP).min(high))
+                .map(|gamma| {
+                    let swivel = head_at(table, head, request, gamma)?;
+                    let positions = swivel.chosen.map(|c| swivel.solutions[c].positions);
+                    Ok((score(head, &swivel), gamma, positions))
+                })
+                .collect::<Result<_, SplitError>>()?;
+            // A valley of the spread narrower than a coarse step shows as a
+            // sample no higher than its neighbours, not always the lowest
+            // one; near a pole of the head (its first axis free) the
+            // valley lies where the head's positions jump between two
+            // samples. The lowest of the first and each of the second are
+            // closed in on.
+            let mut valleys: Vec<(f64, f64)> = (0..coarse.len())
+                .filter(|&k| {
+                    let here = coarse[k].0;
+                    here.is_finite()
+                        && (k == 0 || here <= coarse[k - 1].0)
+                        && coarse.get(k + 1).is_none_or(|next| here <= next.0)
+                })
+                .map(|k| (coarse[k].0, coarse[k].1))
+                .collect();
+            valleys.sort_by(|a, b| a.0.total_cmp(&b.0));
+            valleys.truncate(VALLEYS);
+            let jumps = coarse.windows(2).filter_map(|pair| {
+                let (Some(a), Some(b)) = (pair[0].2, pair[1].2) else {
+                    return None;
+                };
+                let jump = (0..2).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
+                (jump > POLE_JUMP).then_some((f64::NAN, (pair[0].1 + pair[1].1) / 2.0))
+            });
+            valleys.extend(jumps.take(VALLEYS));
+            let mut candidates = vec![table_current.clamp(low, high)];
+            for &(_, centre) in &valleys {
+                candidates.push(centre);
+                let fine = COARSE_STEP / FINE_STEPS as f64;
+                let around = (0..=2 * FINE_STEPS)
+                    .map(|k| centre - COARSE_STEP + k as f64 * fine)
+                    .filter(|gamma| (low..=high).contains(gamma));
+                if let Some((spread, gamma)) = best_of(&mut around.into_iter())? {
+                    candidates.push(gamma);
+                    // A minimum between the samples: closed in on.
+                    if spread > 1e-9 && spread.is_finite() {
+                        let (a, b) = ((gamma - fine).max(low), (gamma + fine).min(high));
+                        candidates.push(golden(a, b, spread_at)?);
                     }
                 }
-                None => None,
             }
+            best_of(&mut candidates.into_iter())?
         }
     };
     let gamma = best.map_or(table_current, |(_, gamma)| gamma);
