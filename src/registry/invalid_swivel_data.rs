@@ -17,6 +17,11 @@ name or axes whose data cannot describe a machine: rotary axis 1 without a direc
 mixed kinematics with one axis, two parallel axes, a minimum position above the maximum, a
 negative Hirth increment.
 
+Only swivel *data* are checked so: the machine file, and an archive's data members. In a program
+(a measuring cycle that writes what it measured, `$TC_CARR5[1]=_RT_HOEHE_Y`) a `$TC_CARR`
+assignment is a write at run time, whose value may be any expression: `check` reports nothing
+there.
+
 ## Why it matters
 sinuprep computes the rotary axis positions from these data; a record it cannot trust gives no
 answer rather than a wrong one.
