@@ -108,6 +108,8 @@ pub(crate) const BUILTINS: &[&str] = &[
     "EAUTO",
     "G64",
     "SETINT",
+    "CLRINT",
+    "BLSYNC",
     "PRIO",
     "MEAS",
     "MEAW",
