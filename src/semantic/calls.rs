@@ -93,6 +93,8 @@ pub(crate) const BUILTINS: &[&str] = &[
     "WAITM",
     "WAITE",
     "WAITS",
+    "WAITP",
+    "WAITMC",
     "SPOS",
     "SPOSA",
     "TRAILON",
