@@ -439,6 +439,23 @@ fn blocks_after_the_end_are_reported_once() {
     assert_eq!(codes("N10 G1 X10 F100\nN20 G0 Z100\n"), ["N010"]);
 }
 
+/// A broken `$TC_CARR` line is one syntax error, in a program and in swivel
+/// data alike: the records are read from the same lines the rules parse
+/// (a program's line was read again as swivel data, its S002 reported twice).
+#[test]
+fn a_syntax_error_in_a_swivel_data_line_is_reported_once() {
+    let source = b"N10 $TC_CARR5[1=3\nN20 M30\n";
+    for swivel_data in [false, true] {
+        let settings = lint::Settings {
+            swivel_data,
+            ..lint::Settings::default()
+        };
+        let found = lint::check(source, "P.MPF", ProgramKind::Main, &settings);
+        let s002 = found.iter().filter(|d| d.code == "S002").count();
+        assert_eq!(s002, 1, "swivel data: {swivel_data}: {found:#?}");
+    }
+}
+
 /// `docs/rules.md` is the rules' own documentation: regenerate it with
 /// `SINUPREP_WRITE_DOCS=1 cargo test --test lint the_rule_reference` after
 /// changing a rule.

@@ -228,7 +228,13 @@ fn lint(
         found.extend(swivel_findings(model, analysis.as_ref(), on));
     }
     if settings.swivel_data && selection.enables(invalid_swivel_data::RULE.code) {
-        found.extend(Machine::read(source, Reading::default()).diagnostics);
+        // The syntax errors of its lines are the model's, reported above.
+        let records = Machine::read(source, Reading::default()).diagnostics;
+        found.extend(
+            records
+                .into_iter()
+                .filter(|d| d.code == invalid_swivel_data::RULE.code),
+        );
     }
 
     let index = LineIndex::new(source);
