@@ -50,6 +50,8 @@ fn lint_fixture(path: &Path) {
         },
         heads,
         machine: code.starts_with('K').then(sample_machine),
+        // K001's fixtures are machine files, but for those named as programs.
+        swivel_data: code == "K001" && !name.contains("_program"),
         ..lint::Settings::default()
     };
     let diagnostics = lint::check(&source, name, program_kind(Some(name), &source), &settings);
@@ -436,6 +438,23 @@ fn blocks_after_the_end_are_reported_once() {
         ["N027", "N010"]
     );
     assert_eq!(codes("N10 G1 X10 F100\nN20 G0 Z100\n"), ["N010"]);
+}
+
+/// A broken `$TC_CARR` line is one syntax error, in a program and in swivel
+/// data alike: the records are read from the same lines the rules parse
+/// (a program's line was read again as swivel data, its S002 reported twice).
+#[test]
+fn a_syntax_error_in_a_swivel_data_line_is_reported_once() {
+    let source = b"N10 $TC_CARR5[1=3\nN20 M30\n";
+    for swivel_data in [false, true] {
+        let settings = lint::Settings {
+            swivel_data,
+            ..lint::Settings::default()
+        };
+        let found = lint::check(source, "P.MPF", ProgramKind::Main, &settings);
+        let s002 = found.iter().filter(|d| d.code == "S002").count();
+        assert_eq!(s002, 1, "swivel data: {swivel_data}: {found:#?}");
+    }
 }
 
 /// `docs/rules.md` is the rules' own documentation: regenerate it with

@@ -30,7 +30,6 @@ use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
 use crate::syntax::ProgramKind;
-use crate::syntax::WordFinder;
 
 /// Which findings to report.
 #[derive(Clone, Debug)]
@@ -89,6 +88,11 @@ pub struct Settings {
     /// The machine the swivels are solved on (K002-K005); shared by the
     /// programs of a run.
     pub machine: Option<std::sync::Arc<OnMachine>>,
+    /// The file is swivel data, not a program: the machine file (`--machine`,
+    /// `machine =`) or an archive's data member. Its `$TC_CARR` assignments
+    /// are then the records the control holds, checked as such (K001); in a
+    /// program they are run-time writes, whose values may be anything.
+    pub swivel_data: bool,
 }
 
 /// Where `check` reports a rule at another severity than its own, how: a
@@ -175,10 +179,6 @@ fn lint(
     let mut suppressions = Suppressions::default();
     let walk = crate::semantic::mentions_cycle600(source);
     let mut model = ModelBuilder::new(source, walk);
-    // A machine file checked as a program gets its swivel data checked.
-    let swivel_data_wanted = selection.enables(invalid_swivel_data::RULE.code);
-    let mut swivel_data = false;
-    let swivel_finder = WordFinder::new("$TC_CARR");
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) => {
@@ -199,12 +199,6 @@ fn lint(
             }
             Scanned::Other(raw) => raw,
         };
-        // Swivel data are assignments to `$` variables: never plain lines.
-        swivel_data = swivel_data
-            || (swivel_data_wanted && {
-                let text = raw.content.of(source);
-                memchr::memchr(b'$', text).is_some() && swivel_finder.in_line(text)
-            });
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -233,8 +227,14 @@ fn lint(
     if let Some(on) = &settings.machine {
         found.extend(swivel_findings(model, analysis.as_ref(), on));
     }
-    if swivel_data {
-        found.extend(Machine::read(source, Reading::default()).diagnostics);
+    if settings.swivel_data && selection.enables(invalid_swivel_data::RULE.code) {
+        // The syntax errors of its lines are the model's, reported above.
+        let records = Machine::read(source, Reading::default()).diagnostics;
+        found.extend(
+            records
+                .into_iter()
+                .filter(|d| d.code == invalid_swivel_data::RULE.code),
+        );
     }
 
     let index = LineIndex::new(source);

@@ -20,6 +20,11 @@ mixed kinematics with one axis, two parallel axes, a position limit (`$TC_CARR30
 the maximum, a negative Hirth increment. `check`, `eval`, `rewrite` and `axes` read a machine file
 the same way and report the same findings; K001 is an error (exit 1).
 
+Only swivel *data* are checked so: the machine file, and an archive's data members. In a program
+(a measuring cycle that writes what it measured, `$TC_CARR5[1]=_RT_HOEHE_Y`) a `$TC_CARR`
+assignment is a write at run time, whose value may be any expression: `check` reports nothing
+there.
+
 ## Why it matters
 sinuprep computes the rotary axis positions from these data; a record it cannot trust gives no
 answer rather than a wrong one.

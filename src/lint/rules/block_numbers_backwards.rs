@@ -3,7 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
 use crate::syntax::plain::digits_value;
-use crate::syntax::tree::BlockNumber;
+use crate::syntax::tree::{Block, BlockNumber, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N014",
@@ -16,6 +16,10 @@ Finds a block number lower than the one before it.
 Block numbers are not executed in order, but a jump to a block number searches in a direction,
 and readers expect them to grow: a number going backwards often marks blocks pasted from
 elsewhere.
+
+Machine data are not checked: an `.INI` file (`INITIAL.INI`, `TO_INI.INI`), and elsewhere a
+block that assigns machine or setting data (`N10000 $MN_AXCONF_MACHAX_NAME_TAB[0]="X1"`), number
+their blocks by machine-data number, not in the order they are written.
 
 ## Example
 ```
@@ -41,7 +45,9 @@ impl Check for Checker {
         out: &mut Vec<Diagnostic>,
     ) {
         if let Some(block) = line.block {
-            self.number(file, block.number, out);
+            if !is_machine_data(file.source, block) {
+                self.number(file, block.number, out);
+            }
         }
     }
 
@@ -50,6 +56,9 @@ impl Check for Checker {
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
+        if is_ini_file(file.name) {
+            return;
+        }
         for line in lines {
             self.number(file, line.facts.number, out);
         }
@@ -63,6 +72,9 @@ impl Checker {
         number: Option<BlockNumber>,
         out: &mut Vec<Diagnostic>,
     ) {
+        if is_ini_file(file.name) {
+            return;
+        }
         let Some(number) = number.filter(|n| !n.main) else {
             return;
         };
@@ -74,6 +86,29 @@ impl Checker {
         }
         self.previous = Some(value);
     }
+}
+
+/// An `.INI` file: machine data, numbered by machine-data number.
+fn is_ini_file(name: &str) -> bool {
+    std::path::Path::new(name)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("ini"))
+}
+
+/// A block assigning machine or setting data (`$MN_`, `$MC_`, `$MA_`,
+/// `$SN_`, `$SC_`, `$SA_`), whose block number is the datum's number.
+fn is_machine_data(source: &[u8], block: &Block) -> bool {
+    block.statements.iter().any(|s| match &s.kind {
+        StatementKind::Assign(assign) => {
+            let name = assign.target.name.span.of(source);
+            name.len() > 4
+                && name[0] == b'$'
+                && matches!(name[1].to_ascii_uppercase(), b'M' | b'S')
+                && matches!(name[2].to_ascii_uppercase(), b'N' | b'C' | b'A')
+                && name[3] == b'_'
+        }
+        _ => false,
+    })
 }
 
 /// Apart and cold, so that the path every line takes does not set up the

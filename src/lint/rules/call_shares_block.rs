@@ -19,7 +19,9 @@ declares (EXTERN, or its own PROC) sharing its block with other statements.
 ## Why it matters
 The control requires STOPRE in a block of its own, and a subprogram call in a separate block
 (Siemens, Job Planning, "STOPRE" and "Subprogram call"; a cycle is a subprogram). A block number, a
-label, a comment and the call's repetition count (`P=3`) may stand beside it. Calls of other names
+label, a comment and the call's repetition count (`P=3`) may stand beside it. The routine named
+in a SETINT block (`SETINT(1) PRIO=4 CYCLE_T LIFTFAST`) is the interrupt routine SETINT assigns,
+not a call in the block (Job Planning, "SETINT"). Calls of other names
 are not checked, since a bare name may be a command of the control; CYCLE600 is C616's.
 
 ## Example
@@ -73,9 +75,20 @@ impl Check for Checker {
         if block.statements.len() < 2 {
             return;
         }
+        // `SETINT(1) PRIO=4 CYCLE_T LIFTFAST`: the routine an interrupt
+        // starts is SETINT's to name, not a call of its own.
+        let interrupt = block.statements.iter().any(|s| match &s.kind {
+            StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {
+                name.is(source, "SETINT")
+            }
+            _ => false,
+        });
         let alone = |statement: &Statement| {
             if is_stopre(source, statement) {
                 return Some("STOPRE".to_string());
+            }
+            if interrupt {
+                return None;
             }
             let name = match &statement.kind {
                 StatementKind::Call(Call { name, .. }) | StatementKind::Command(name) => {

@@ -1,8 +1,8 @@
-//! N010 `missing-program-end`: Finds a program whose last block neither ends it (M30, M2, M17, RET) nor jumps unconditionally.
+//! N010 `missing-program-end`: Finds a program whose last block neither ends it (M30, M2, M17, RET, a REPOS command) nor jumps unconditionally (GOTO, ENDLOOP).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{is_definition_file, program_end};
+use crate::lint::rules::support::{command_name, is_definition_file, program_end};
 use crate::span::Span;
 use crate::syntax::tree::{StatementKind, WordValue};
 use crate::syntax::ProgramKind;
@@ -13,7 +13,9 @@ pub static RULE: RuleInfo = RuleInfo {
     severity: Severity::Warning,
     docs: r#"## What it does
 Finds a program whose last block neither ends it (M30, M2, M17, RET) nor jumps unconditionally.
-A macro of the definition files given that stands for one of them (`DEFINE ENDE AS M30`) ends the
+`ENDLOOP` jumps back to its `LOOP` (an endless loop never falls off the end), and an ASUB
+(interrupt routine) returns to the program it interrupted through `REPOSA` (or another REPOS
+command: REPOSL, REPOSQ, REPOSQA, REPOSH, REPOSHA): either may be the last block. A macro of the definition files given that stands for one of them (`DEFINE ENDE AS M30`) ends the
 program where it is written, as the control expands it. Blocks after the end that jumps reach often end with a jump back (`GOTOB LOOP`). A main program may end with M17 or RET as a subprogram does (it can be called as one; the
 Programming Manual allows M2, M17 or M30 as the last block), and a subprogram with M30 or M2.
 Files that are not programs (`.DEF` definition files, `.INI` setup data) are not checked. When
@@ -34,6 +36,10 @@ N20 G1 X100 F500 M5
 ## Fix
 End a main program with `M30` (or `M2`), a subprogram with `M17` or `RET`."#,
 };
+
+/// The commands through which an ASUB returns to the interrupted program
+/// (Job Planning, "Repositioning at the contour (REPOS)").
+const REPOS: [&str; 6] = ["REPOSA", "REPOSL", "REPOSQ", "REPOSQA", "REPOSH", "REPOSHA"];
 
 /// Remembers only which line the last block is; `finish` takes its tree
 /// from the model, so that the millions of blocks before it cost nothing.
@@ -108,9 +114,16 @@ impl Check for Checker {
             && block
                 .statements
                 .iter()
-                .any(|s| matches!(s.kind, StatementKind::Goto(_)));
+                .any(|s| matches!(s.kind, StatementKind::Goto(_) | StatementKind::EndLoop));
+        // An ASUB returns to the program it interrupted through a REPOS
+        // command, repositioning on the way.
+        let returns = block.statements.iter().any(|s| {
+            command_name(s)
+                .is_some_and(|name| REPOS.iter().any(|repos| name.is(file.source, repos)))
+        });
         let addresses = crate::semantic::addresses::of_block(file.source, &block);
         let ends = jumps
+            || returns
             || m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
             || program_end(file, &block, &addresses).is_some();
         // A broken last block may still hold its end where the parser stopped.

@@ -1,20 +1,26 @@
-//! N012 `traori-at-end`: Finds a program that switches on TRAORI and ends with it still active.
+//! N012 `traori-at-end`: Finds a main program that switches on TRAORI and ends with it still active.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView};
 use crate::lint::rules::support::command_name;
 use crate::span::Span;
+use crate::syntax::ProgramKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N012",
     name: "traori-at-end",
     severity: Severity::Warning,
     docs: r#"## What it does
-Finds a program that switches on TRAORI and ends with it still active.
+Finds a main program that switches on TRAORI and ends with it still active.
 
 ## Why it matters
 The next program starts with the 5-axis transformation on (unless machine data resets it), so its
 coordinates mean something else than its author assumed.
+
+Subprograms are not checked: a cycle returns to its caller, and one that switches the caller's
+transformation back on before `M17` (`IF _VA_TRAFO_AKTIV==TRUE TRAORI ENDIF`) restores the state
+it was called in. Whether a subprogram is one is read from its PROC line, its header or its
+extension.
 
 ## Example
 ```
@@ -55,7 +61,10 @@ impl Check for Checker {
         }
     }
 
-    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        if file.kind != ProgramKind::Main {
+            return;
+        }
         if let Some(span) = self.active {
             out.push(
                 RULE.at(span)

@@ -34,8 +34,8 @@ orientation names of `PO[...]` (`PHI`, `PSI`, `THT`, `XH`, `YH`, `ZH`), the mach
 and `$MN_AXCONF_MACHAX_NAME_TAB` lines of a machine data `.INI` given as a definition file), the
 globals and macros of the definition files given (`--definitions MGUD.DEF`, `definitions =
 [...]` in sinuprep.toml), a bare name given to an AXIS variable
-(`DEF AXIS _AX` then `_AX=AX1`) and a machine axis by its number as the index of a system variable
-(`$MA_IS_ROT_AX[AX4]`) are not checked. A name defined before it
+(`DEF AXIS _AX` then `_AX=XC`), a machine axis by its number (`AX1` ... `AXn`, known on every
+machine: `SPOS[AX4]`, `TRAILON(AX2,AX1)`, `$MA_IS_ROT_AX[AX4]`) and `NO_AXIS` are not checked. A name defined before it
 within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
 unsafe fix (`check --fix --unsafe-fixes`)."#,
 };
@@ -97,38 +97,15 @@ fn axis_value(
     }
 }
 
-/// `AX<n>` (upper case): a machine axis by its number.
-fn is_axis_number(name: &str) -> bool {
-    name.strip_prefix("AX")
-        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-}
-
-/// The bare `AX<n>` indices of system variables (`$MA_IS_ROT_AX[AX4]`,
-/// `$AA_IM[AX1]`): the machine axis by its number, as machine data and
-/// system variables are indexed, not a read.
-fn axis_indices<'l>(
-    source: &[u8],
-    statement: &'l Statement,
-    reads: impl Iterator<Item = &'l crate::syntax::tree::Variable>,
-) -> Vec<Span> {
-    let target = match &statement.kind {
-        StatementKind::Assign(assign) => Some(&assign.target),
-        _ => None,
-    };
-    let mut out = Vec::new();
-    for variable in reads.chain(target) {
-        if !variable.name.text(source).starts_with(b"$") {
-            continue;
-        }
-        for index in &variable.indices {
-            if let ExprKind::Variable(v) = &index.kind {
-                if v.indices.is_empty() && is_axis_number(&upper(source, v.name.span)) {
-                    out.push(v.name.span);
-                }
-            }
-        }
-    }
-    out
+/// `AX<n>` (upper case): a machine axis by its number, which the language
+/// knows on every machine (`SPOS[AX4]`, `TRAILON(AX2,AX1)`,
+/// `$MA_IS_ROT_AX[AX4]`); `NO_AXIS`: no axis, the value of an empty AXIS
+/// variable (Job Planning, "Axis types" and "Variable types").
+fn is_axis_identifier(name: &str) -> bool {
+    name == "NO_AXIS"
+        || name
+            .strip_prefix("AX")
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
 }
 
 impl Check for Checker {
@@ -154,10 +131,7 @@ impl Check for Checker {
                     && !file.environment.defines(&name)
                     && !PREDEFINED.contains(&name.as_str())
                     && !is_global_r_parameter(&name)
-                    // Looked for only where it could be one (`AX4`): rare.
-                    && (!is_axis_number(&name)
-                        || !axis_indices(file.source, statement, line.reads(index))
-                            .contains(&variable.name.span))
+                    && !is_axis_identifier(&name)
                     && self.reported.insert(name.clone())
                 {
                     out.push(self.undefined(name, variable.name.span));
