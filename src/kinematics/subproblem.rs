@@ -42,13 +42,18 @@ pub fn intermediates(
     let beta = (b.dot(p) - d * a.dot(q)) / denominator;
     let gamma_squared =
         (1.0 - alpha * alpha - beta * beta - 2.0 * alpha * beta * d) / c.norm_squared();
-    // Rounding puts a tangent case a few ulps either side of zero.
-    const TANGENT: f64 = 1e-12;
-    if gamma_squared < -TANGENT {
+    // Rounding puts a tangent case a few ulps either side of zero: below
+    // zero it is taken for the touching direction. Above, the two
+    // directions are kept as far apart as they are: taking them for the
+    // touching one moves the tool by γ (a γ² of 1e-13, near a pole, missed
+    // the frame by 3e-7), so only a γ below 1e-9 is that close.
+    const BELOW_TANGENT: f64 = 1e-12;
+    const ABOVE_TANGENT: f64 = 1e-18;
+    if gamma_squared < -BELOW_TANGENT {
         return Vec::new();
     }
     let base = a * alpha + b * beta;
-    if gamma_squared <= TANGENT {
+    if gamma_squared <= ABOVE_TANGENT {
         return vec![base.normalize()];
     }
     let gamma = gamma_squared.sqrt();
