@@ -1,7 +1,9 @@
 //! The CYCLE600 walk on the shapes that once made it slow: loops nested
 //! deep, each writing a variable of its own; many IFs with unknown
-//! conditions over many variables; a CYCLE600 inside all of them.
-//! `cargo bench --bench walk`; whole programs are `throughput`'s job.
+//! conditions over many variables; a CYCLE600 inside all of them; 100
+//! loops around 100,000 blocks and 100,000 nested IFs (issue 29: lines
+//! times depth). `cargo bench --bench walk`; whole programs are
+//! `throughput`'s job.
 
 use divan::{black_box, Bencher};
 use sinuprep::semantic::{analyze, Model, Supplied};
@@ -58,6 +60,47 @@ fn unknown_ifs_over_many_variables(bencher: Bencher, count: usize) {
         program.push_str(&format!("IF R{i}>0\nV{i}=V{i}+1\nENDIF\n"));
     }
     program.push_str(CALL);
+    program.push_str("M30\n");
+    bencher.bench(|| {
+        let model = Model::of(black_box(program.as_bytes()));
+        analyze(&model, &Supplied::default(), None)
+    });
+}
+
+/// 100 nested FOR loops around `lines` blocks, each reading and writing one
+/// of 100 R parameters (100,000 lines: 0.9 MB).
+#[divan::bench(args = [100_000])]
+fn hundred_loops_around_many_lines(bencher: Bencher, lines: usize) {
+    let mut program = String::new();
+    for i in 0..100 {
+        program.push_str(&format!("FOR R{i}=0 TO 2\n"));
+    }
+    for j in 0..lines {
+        program.push_str(&format!("R{n}=R{n}+1\n", n = 1000 + j % 100));
+    }
+    program.push_str(CALL);
+    for _ in 0..100 {
+        program.push_str("ENDFOR\n");
+    }
+    program.push_str("M30\n");
+    bencher.bench(|| {
+        let model = Model::of(black_box(program.as_bytes()));
+        analyze(&model, &Supplied::default(), None)
+    });
+}
+
+/// `depth` nested IFs with unknown conditions, each writing an R parameter,
+/// a CYCLE600 inside all of them (deeper than the walk follows: C618).
+#[divan::bench(args = [100_000])]
+fn nested_unknown_ifs(bencher: Bencher, depth: usize) {
+    let mut program = String::new();
+    for i in 0..depth {
+        program.push_str(&format!("IF R{}>0\nR{}=1\n", i % 100, 100 + i % 100));
+    }
+    program.push_str(CALL);
+    for _ in 0..depth {
+        program.push_str("ENDIF\n");
+    }
     program.push_str("M30\n");
     bencher.bench(|| {
         let model = Model::of(black_box(program.as_bytes()));

@@ -1,7 +1,9 @@
 //! The state of the walk at one point of the program: variables, the arrays
 //! a measuring cycle has filled, and the active swivel rotation.
 
+use std::cell::Cell;
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use nalgebra::Rotation3;
 
@@ -54,10 +56,96 @@ impl Active {
     }
 }
 
+/// Where each name is written: what a region of lines makes unknown when a
+/// loop or a jump forgets it. A site is one name one statement writes; its
+/// position orders the sites of one line as the statements stand.
+#[derive(Debug, Default)]
+pub(crate) struct Writers {
+    /// Every site, in program order: its line.
+    lines: Vec<usize>,
+    /// The name of each site (an index into `names`), by position.
+    written: Vec<usize>,
+    /// Each name written, and the positions of its sites, ascending.
+    names: Vec<(String, Vec<usize>)>,
+    /// Name -> its index in `names`.
+    index: HashMap<String, usize>,
+}
+
+impl Writers {
+    /// Records that `line` writes `name` (lines in order).
+    pub(crate) fn push(&mut self, line: usize, name: String) {
+        let position = self.lines.len();
+        self.lines.push(line);
+        let id = match self.index.get(&name) {
+            Some(&id) => id,
+            None => {
+                let id = self.names.len();
+                self.index.insert(name.clone(), id);
+                self.names.push((name, Vec::new()));
+                id
+            }
+        };
+        self.names[id].1.push(position);
+        self.written.push(id);
+    }
+
+    fn sites_of(&self, name: &str) -> Option<&[usize]> {
+        let id = *self.index.get(name)?;
+        Some(&self.names[id].1)
+    }
+
+    /// The position of the last site of `sites` on a line of `start..end`.
+    fn last_in(&self, sites: &[usize], start: usize, end: usize) -> Option<usize> {
+        let after = sites.partition_point(|&p| self.lines[p] < end);
+        let last = *sites.get(after.checked_sub(1)?)?;
+        (self.lines[last] >= start).then_some(last)
+    }
+
+    /// Whether a line of `start..end` writes `name`.
+    pub(crate) fn writes(&self, name: &str, start: usize, end: usize) -> bool {
+        self.sites_of(name)
+            .is_some_and(|sites| self.last_in(sites, start, end).is_some())
+    }
+
+    /// The positions of the sites on lines of `start..end`.
+    fn range(&self, start: usize, end: usize) -> std::ops::Range<usize> {
+        self.lines.partition_point(|&l| l < start)..self.lines.partition_point(|&l| l < end)
+    }
+}
+
+/// A region whose written names a loop or a jump made unknown, not yet
+/// applied to the bindings: a name reads as `unknown` when a line of the
+/// region writes it and nothing bound it since. Nested loops forget nested
+/// regions again and again; applying each in full cost lines × depth.
+#[derive(Clone, Debug)]
+struct Mark {
+    start: usize,
+    end: usize,
+    /// Later than every binding made before the region was forgotten.
+    stamp: u64,
+    /// `Binding::Unknown` with the region's origin.
+    unknown: Binding,
+}
+
+/// Marks held before they are applied all at once: a read looks through at
+/// most this many.
+const MAX_MARKS: usize = 64;
+
+/// A binding and when it was made (`None`: removed), against the marks.
+#[derive(Clone, Debug)]
+struct Slot {
+    binding: Option<Binding>,
+    stamp: u64,
+}
+
 /// Bindings by key, with the keys of each array's elements and of the R
 /// parameters at hand: forgetting an array or every R parameter costs what
-/// they hold, not the whole table (a loop forgets all it writes, and loops
-/// nest).
+/// they hold, not the whole table.
+///
+/// A region a loop or a jump forgets is a [`Mark`], read lazily; the marks
+/// are applied (in one sweep over the sites they cover, each site once) when
+/// an IF forks or joins, before every R parameter is forgotten at once, and
+/// when more than [`MAX_MARKS`] are held.
 ///
 /// While a branch is walked, every key it changes is journalled with its
 /// binding from before the branch, so that the branches of an IF are
@@ -65,36 +153,228 @@ impl Active {
 /// the whole table at every IF.
 #[derive(Clone, Debug, Default)]
 struct Vars {
-    bindings: HashMap<String, Binding>,
+    slots: HashMap<String, Slot>,
     /// Array name -> the keys of its elements that have a binding.
     elements: HashMap<String, HashSet<String>>,
     r_parameters: HashSet<String>,
-    /// One level per branch being walked: key -> its binding before it.
+    /// One level per branch being walked: key -> its slot before it.
     journal: Vec<Journal>,
+    writers: Arc<Writers>,
+    marks: Vec<Mark>,
+    clock: u64,
+    /// Units of work spent on forgetting: marks looked at, sites swept,
+    /// keys changed. Bounded by the program's size times a constant.
+    work: Cell<u64>,
 }
 
-type Journal = HashMap<String, Option<Binding>>;
+type Journal = HashMap<String, Option<Slot>>;
+
+/// What the newest mark later than a binding says of its key.
+enum Hit<'a> {
+    Unknown(&'a Binding),
+    Removed,
+}
 
 impl Vars {
     fn get(&self, key: &str) -> Option<&Binding> {
-        self.bindings.get(key)
+        let slot = self.slots.get(key);
+        let since = slot.map_or(0, |s| s.stamp);
+        if self.marks.last().is_some_and(|m| m.stamp > since) {
+            match self.marked(key, since) {
+                Some(Hit::Unknown(binding)) => return Some(binding),
+                Some(Hit::Removed) => return None,
+                None => {}
+            }
+        }
+        slot.and_then(|s| s.binding.as_ref())
     }
 
-    /// Journals `key`'s binding, the first time the open branch changes it.
+    /// The newest mark later than `since` that changes `key`: a region that
+    /// writes it makes it unknown; one that writes its array removes an
+    /// element; one with a subprogram call (name `R`) removes an R
+    /// parameter, unless the parameter is written after the call there.
+    fn marked(&self, key: &str, since: u64) -> Option<Hit<'_>> {
+        let name = base(key);
+        let element = name.len() != key.len();
+        let own = self.writers.sites_of(name);
+        let calls = (!element && is_r_parameter(key))
+            .then(|| self.writers.sites_of("R"))
+            .flatten();
+        if own.is_none() && calls.is_none() {
+            return None;
+        }
+        for mark in self.marks.iter().rev() {
+            if mark.stamp <= since {
+                break;
+            }
+            self.work.set(self.work.get() + 1);
+            let last = |sites: Option<&[usize]>| {
+                sites.and_then(|s| self.writers.last_in(s, mark.start, mark.end))
+            };
+            match (last(own), last(calls)) {
+                (None, None) => continue,
+                (Some(written), call) if !element && call.is_none_or(|c| written > c) => {
+                    return Some(Hit::Unknown(&mark.unknown))
+                }
+                _ => return Some(Hit::Removed),
+            }
+        }
+        None
+    }
+
+    /// Forgets what lines `start..end` write, lazily (at most
+    /// [`MAX_MARKS`] held: settle first).
+    fn mark(&mut self, start: usize, end: usize, origin: Origin) {
+        self.work.set(self.work.get() + self.marks.len() as u64 + 1);
+        // A region inside this one says nothing this one does not override.
+        self.marks.retain(|m| !(m.start >= start && m.end <= end));
+        self.clock += 1;
+        self.marks.push(Mark {
+            start,
+            end,
+            stamp: self.clock,
+            unknown: Binding::Unknown { origin },
+        });
+    }
+
+    /// Applies the marks held to the bindings, as forgetting each region in
+    /// turn would: each key takes the newest mark that changes it, and the
+    /// sites each mark covers are swept once, whatever the nesting.
+    /// Returns the names made unknown (their arrays lose their defaults).
+    fn settle(&mut self) -> Vec<String> {
+        if self.marks.is_empty() {
+            return Vec::new();
+        }
+        let marks = std::mem::take(&mut self.marks);
+        let writers = Arc::clone(&self.writers);
+        // Name -> (stamp, position, mark) of the newest mark covering one of
+        // its sites, the last such site among that mark's.
+        let mut newest: HashMap<&str, (u64, usize, usize)> = HashMap::new();
+        let mut by_start: Vec<usize> = (0..marks.len()).collect();
+        by_start.sort_by_key(|&i| marks[i].start);
+        let mut covering = std::collections::BinaryHeap::new();
+        let mut next = 0;
+        let mut position = 0;
+        let mut swept = 0u64;
+        while next < by_start.len() || !covering.is_empty() {
+            // Skip to the next region when no mark covers the sites here.
+            if covering.is_empty() {
+                let mark = &marks[by_start[next]];
+                position = position.max(writers.range(mark.start, mark.end).start);
+            }
+            let Some(&line) = writers.lines.get(position) else {
+                break;
+            };
+            while let Some(&i) = by_start.get(next) {
+                if marks[i].start > line {
+                    break;
+                }
+                covering.push((marks[i].stamp, marks[i].end, i));
+                next += 1;
+            }
+            while covering.peek().is_some_and(|&(_, end, _)| end <= line) {
+                covering.pop();
+            }
+            let Some(&(stamp, _, i)) = covering.peek() else {
+                continue;
+            };
+            swept += 1;
+            let entry = newest
+                .entry(writers.names[writers.written[position]].0.as_str())
+                .or_insert((stamp, position, i));
+            *entry = (*entry).max((stamp, position, i));
+            position += 1;
+        }
+        let mut changes: Vec<(u64, usize, usize, &str)> = newest
+            .into_iter()
+            .map(|(name, (stamp, position, i))| (stamp, position, i, name))
+            .collect();
+        changes.sort_unstable();
+        let mut forgotten = Vec::new();
+        self.work
+            .set(self.work.get() + swept + changes.len() as u64);
+        for (stamp, _, i, name) in changes {
+            let Binding::Unknown { origin } = &marks[i].unknown else {
+                continue;
+            };
+            if name == "R" {
+                let older: Vec<String> = self
+                    .r_parameters
+                    .iter()
+                    .filter(|key| self.older(key, stamp))
+                    .cloned()
+                    .collect();
+                for key in older {
+                    self.r_parameters.remove(&key);
+                    self.tombstone(key);
+                }
+            } else if self.older(name, stamp) {
+                let elements = self.elements.remove(name).unwrap_or_default();
+                for key in elements {
+                    if self.older(&key, stamp) {
+                        self.tombstone(key);
+                    } else {
+                        self.elements
+                            .entry(name.to_string())
+                            .or_default()
+                            .insert(key);
+                    }
+                }
+                self.insert(
+                    name.to_string(),
+                    Binding::Unknown {
+                        origin: origin.clone(),
+                    },
+                );
+                forgotten.push(name.to_string());
+            }
+        }
+        forgotten
+    }
+
+    /// Whether `key` was bound before `stamp` (or never).
+    fn older(&self, key: &str, stamp: u64) -> bool {
+        self.slots.get(key).is_none_or(|s| s.stamp < stamp)
+    }
+
+    #[cfg(test)]
+    fn work(&self) -> u64 {
+        self.work.get()
+    }
+
+    /// Journals `key`'s slot, the first time the open branch changes it.
     fn record(&mut self, key: &str) {
         if let Some(level) = self.journal.last_mut() {
             if !level.contains_key(key) {
-                level.insert(key.to_string(), self.bindings.get(key).cloned());
+                level.insert(key.to_string(), self.slots.get(key).cloned());
             }
         }
     }
 
     fn insert(&mut self, key: String, binding: Binding) {
         self.record(&key);
-        self.insert_unrecorded(key, binding);
+        self.insert_unrecorded(
+            key,
+            Slot {
+                binding: Some(binding),
+                stamp: self.clock,
+            },
+        );
     }
 
-    fn insert_unrecorded(&mut self, key: String, binding: Binding) {
+    fn tombstone(&mut self, key: String) {
+        self.record(&key);
+        let stamp = self.clock;
+        self.slots.insert(
+            key,
+            Slot {
+                binding: None,
+                stamp,
+            },
+        );
+    }
+
+    fn insert_unrecorded(&mut self, key: String, slot: Slot) {
         let name = base(&key);
         if name.len() != key.len() {
             self.elements
@@ -104,24 +384,23 @@ impl Vars {
         } else if is_r_parameter(&key) {
             self.r_parameters.insert(key.clone());
         }
-        self.bindings.insert(key, binding);
+        self.slots.insert(key, slot);
     }
 
     /// Removes `name` and every element of it.
     fn remove_all(&mut self, name: &str) {
-        self.record(name);
-        self.bindings.remove(name);
+        self.tombstone(name.to_string());
         self.r_parameters.remove(name);
         for key in self.elements.remove(name).into_iter().flatten() {
-            self.record(&key);
-            self.bindings.remove(&key);
+            self.tombstone(key);
         }
     }
 
+    /// Every R parameter (settled first: one a mark made unknown is in no
+    /// index until then).
     fn remove_r_parameters(&mut self) {
         for key in std::mem::take(&mut self.r_parameters) {
-            self.record(&key);
-            self.bindings.remove(&key);
+            self.tombstone(key);
         }
     }
 
@@ -131,12 +410,12 @@ impl Vars {
             .into_iter()
             .map(|(key, before)| {
                 let now = match before {
-                    Some(binding) => {
-                        let now = self.bindings.get(&key).cloned();
-                        self.insert_unrecorded(key.clone(), binding);
+                    Some(slot) => {
+                        let now = self.slots.get(&key).cloned();
+                        self.insert_unrecorded(key.clone(), slot);
                         now
                     }
-                    None => self.bindings.remove(&key),
+                    None => self.slots.remove(&key),
                 };
                 (key, now)
             })
@@ -144,11 +423,21 @@ impl Vars {
     }
 
     /// A branch's changes become the enclosing branch's, where it had not
-    /// changed those keys itself.
-    fn hand_up(&mut self, journal: Journal) {
+    /// changed those keys itself. The larger journal is kept and the smaller
+    /// poured into it, so a chain of nested IFs costs what they change, not
+    /// that times their depth.
+    fn hand_up(&mut self, mut journal: Journal) {
         if let Some(level) = self.journal.last_mut() {
-            for (key, before) in journal {
-                level.entry(key).or_insert(before);
+            if level.len() < journal.len() {
+                std::mem::swap(level, &mut journal);
+                // `journal` now holds the enclosing level's own, older entries.
+                for (key, before) in journal {
+                    level.insert(key, before);
+                }
+            } else {
+                for (key, before) in journal {
+                    level.entry(key).or_insert(before);
+                }
             }
         }
     }
@@ -226,6 +515,42 @@ pub fn is_measured_system_variable(key: &str) -> bool {
 }
 
 impl Env {
+    /// The state at the start of a program whose names are written where
+    /// `writers` says.
+    pub(crate) fn of_program(writers: Arc<Writers>) -> Self {
+        let mut env = Self::default();
+        env.vars.writers = writers;
+        env
+    }
+
+    /// Whatever lines `start..end` write is unknown from here, with
+    /// `origin`: their names (read lazily, see [`Mark`]), an array's
+    /// elements, and the R parameters where a subprogram is called there.
+    pub(crate) fn forget_region(&mut self, start: usize, end: usize, origin: Origin) {
+        if self.vars.marks.len() >= MAX_MARKS {
+            self.settle();
+        }
+        if self.vars.writers.writes("R", start, end) {
+            self.r_clobbered = Some(origin.clone());
+        }
+        self.vars.mark(start, end, origin);
+    }
+
+    /// Applies the regions forgotten lazily.
+    fn settle(&mut self) {
+        for name in self.vars.settle() {
+            self.array_defaults.remove(&name);
+        }
+    }
+
+    /// Units of work forgetting has cost so far (regions marked, marks read,
+    /// sites swept): a measure of the walk's cost that no machine's speed
+    /// changes.
+    #[cfg(test)]
+    pub(crate) fn work(&self) -> u64 {
+        self.vars.work()
+    }
+
     pub fn set(&mut self, key: String, binding: Binding) {
         self.vars.insert(key, binding);
     }
@@ -258,6 +583,7 @@ impl Env {
 
     /// A subprogram call may have written any R parameter.
     pub fn clobber_r_parameters(&mut self, origin: Origin) {
+        self.settle();
         self.vars.remove_r_parameters();
         self.r_clobbered = Some(origin);
     }
@@ -306,6 +632,7 @@ impl Env {
 
     /// Starts walking one branch of an IF.
     pub fn fork(&mut self) -> Fork {
+        self.settle();
         self.vars.journal.push(Journal::new());
         Fork { rest: self.rest() }
     }
@@ -313,6 +640,7 @@ impl Env {
     /// Ends the branch walked since `fork`: what it left, with the state put
     /// back as it was at the fork, and the other branch started from there.
     pub fn rewind(&mut self, fork: Fork) -> Branch {
+        self.settle();
         let journal = self.vars.journal.pop().unwrap_or_default();
         let rest = self.take_rest();
         self.put_rest(fork.rest);
@@ -324,12 +652,16 @@ impl Env {
     /// Ends the other branch (walked since [`Env::rewind`]) and joins it with
     /// the first one, `then`: what differs between them is unknown.
     pub fn join(&mut self, then: Branch, line: usize) {
+        self.settle();
         let journal = self.vars.journal.pop().unwrap_or_default();
         let mut differing = Vec::new();
+        fn binding(slot: &Option<Slot>) -> Option<&Binding> {
+            slot.as_ref().and_then(|s| s.binding.as_ref())
+        }
         for key in journal.keys().chain(then.values.keys()) {
             let now = self.vars.get(key);
-            let before = journal.get(key).map_or(now, Option::as_ref);
-            let in_then = then.values.get(key).map_or(before, Option::as_ref);
+            let before = journal.get(key).map_or(now, binding);
+            let in_then = then.values.get(key).map_or(before, binding);
             if in_then != now {
                 differing.push(key.clone());
             }

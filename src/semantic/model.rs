@@ -28,6 +28,15 @@ use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 /// Plain lines passed to [`ModelBuilder::plain_lines`] at once, at most.
 pub(crate) const PLAIN_RUN: usize = 256;
 
+/// The trees kept take at most about this much memory, whatever the
+/// program: past it, a pass that asks for a line parses it again. The line
+/// table's own bound counts source bytes, and a file of short lines
+/// (`IF R1>0`, `ENDIF`) takes some forty times its size as trees.
+const KEPT_TREE_BYTES: usize = 8 << 20;
+
+/// The expressions' nodes a byte of a line's source makes, about.
+const TREE_BYTES_PER_BYTE: usize = 8;
+
 /// A name a DEF or a PROC parameter list defines.
 #[derive(Clone, Debug)]
 pub struct Symbol {
@@ -269,6 +278,8 @@ pub struct PlainLine {
 pub struct ModelBuilder<'src> {
     source: &'src [u8],
     keep_trees: bool,
+    /// What the trees kept take, about ([`KEPT_TREE_BYTES`]).
+    kept: usize,
     table: LinesRecorder,
     parser: LineParser,
     row: usize,
@@ -288,6 +299,7 @@ impl<'src> ModelBuilder<'src> {
         Self {
             source,
             keep_trees,
+            kept: 0,
             table: LinesRecorder::default(),
             parser: LineParser::default(),
             row: 0,
@@ -383,7 +395,16 @@ impl<'src> ModelBuilder<'src> {
     /// (if the builder keeps trees; passes asking for a line not kept parse it).
     pub fn keep(&mut self, line: Line) {
         if self.keep_trees {
-            self.table.keep(line);
+            let statements = match &line.kind {
+                LineKind::Block(block) => block.statements.len(),
+                _ => 0,
+            };
+            self.kept += std::mem::size_of::<(usize, Line)>()
+                + statements * std::mem::size_of::<Statement>()
+                + TREE_BYTES_PER_BYTE * line.raw.content.len();
+            if self.kept <= KEPT_TREE_BYTES {
+                self.table.keep(line);
+            }
         }
     }
 
@@ -490,5 +511,24 @@ mod tests {
             }
             proptest::prop_assert_eq!(&model.syntax, &program.diagnostics);
         }
+    }
+
+    /// A file of short lines keeps no more trees than the bound allows (by
+    /// source bytes alone, 1 MiB of `IF R1>0` kept 130,000 trees, a
+    /// kilobyte each); the lines past it are parsed again when asked.
+    #[test]
+    fn short_lines_keep_trees_within_the_bound() {
+        let text = "IF R1>0\n".repeat(150_000);
+        let model = Model::of(text.as_bytes());
+        let kept = model
+            .lines
+            .other_lines()
+            .filter(|(_, line)| matches!(line, std::borrow::Cow::Borrowed(_)))
+            .count();
+        let each = std::mem::size_of::<(usize, Line)>() + std::mem::size_of::<Statement>();
+        assert!(kept > 0);
+        assert!(kept * each <= KEPT_TREE_BYTES, "{kept} trees kept");
+        let program = crate::syntax::parse(text.as_bytes());
+        assert_eq!(*model.lines.line(149_999), program.lines[149_999]);
     }
 }

@@ -6,9 +6,11 @@
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use crate::semantic::blocks::{BlockMatcher, Event};
 use crate::semantic::calls::{call_kind, CallKind};
+use crate::semantic::env::Writers;
 use crate::semantic::eval::key;
 use crate::semantic::frames;
 use crate::semantic::model::Model;
@@ -21,14 +23,14 @@ use crate::syntax::Lines;
 
 /// Names a line writes, for forgetting them.
 #[derive(Default, Clone)]
-pub(crate) struct Written {
-    pub(crate) names: Vec<String>,
+struct Written {
+    names: Vec<String>,
     /// A CYCLE800 (or another call that certainly swivels) is there.
-    pub(crate) rotation: bool,
+    rotation: bool,
     /// Lines of CYCLE600 calls: they swivel or write their results.
-    pub(crate) cycle600_lines: Vec<usize>,
+    cycle600_lines: Vec<usize>,
     /// A frame statement of the program's own is there.
-    pub(crate) frames: bool,
+    frames: bool,
 }
 
 /// How the walk goes through a block: into an IF, a loop, past an ELSE.
@@ -125,8 +127,14 @@ pub(crate) struct Structure {
     pub(crate) numbers: Vec<(u64, usize)>,
     /// First line of a region a backward jump repeats -> its last line.
     pub(crate) loop_starts: HashMap<usize, usize>,
-    /// What each line that writes anything writes, in line order.
-    pub(crate) writes: Vec<(usize, Written)>,
+    /// Where each name is written, for forgetting a region's names.
+    pub(crate) writers: Arc<Writers>,
+    /// Lines with a CYCLE800 (or another call that certainly swivels), in order.
+    pub(crate) rotation_lines: Vec<usize>,
+    /// Lines with a frame statement of the program's own, in order.
+    pub(crate) frame_lines: Vec<usize>,
+    /// Lines with a CYCLE600 call (or a `; sinuprep:` line keeping one), in order.
+    pub(crate) cycle600_lines: Vec<usize>,
     /// `; sinuprep:` lines -> the CYCLE600 call they keep.
     pub(crate) marked: HashMap<usize, Statement>,
     /// Lines sinuprep emitted with frames or CYCLE800 for a marked call.
@@ -142,7 +150,10 @@ impl Structure {
             else_ends: HashMap::new(),
             numbers: Vec::new(),
             loop_starts: HashMap::new(),
-            writes: Vec::new(),
+            writers: Arc::default(),
+            rotation_lines: Vec::new(),
+            frame_lines: Vec::new(),
+            cycle600_lines: Vec::new(),
             marked: HashMap::new(),
             emitted: HashSet::new(),
         };
@@ -150,14 +161,11 @@ impl Structure {
         let mut blocks = BlockMatcher::default();
         // Jumps, resolved once every label is known.
         let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
+        let mut writers = Writers::default();
         for line in 0..lines.len() {
             if structure.marked.contains_key(&line) {
                 // The call it keeps may swivel or recalculate, as it did.
-                let call = Written {
-                    cycle600_lines: vec![line],
-                    ..Written::default()
-                };
-                structure.writes.push((line, call));
+                structure.cycle600_lines.push(line);
             }
             if lines.is_plain(line) {
                 continue;
@@ -167,13 +175,16 @@ impl Structure {
             };
             let block = &*block;
             let writes = block_writes(source, block, line, structure.is_emitted(line));
-            if !writes.names.is_empty()
-                || writes.rotation
-                || writes.frames
-                || !writes.cycle600_lines.is_empty()
-            {
-                structure.writes.push((line, writes));
+            for name in writes.names {
+                writers.push(line, name);
             }
+            if writes.rotation {
+                structure.rotation_lines.push(line);
+            }
+            if writes.frames {
+                structure.frame_lines.push(line);
+            }
+            structure.cycle600_lines.extend(writes.cycle600_lines);
             jumps.extend(gotos(block).into_iter().map(|goto| (line, goto.clone())));
             let ends = &mut structure.ends;
             blocks.line(line, block, &mut |event| {
@@ -182,6 +193,7 @@ impl Structure {
                 }
             });
         }
+        structure.writers = Arc::new(writers);
         for &(else_line, end) in structure.ends.values() {
             if let Some(else_line) = else_line {
                 structure.else_ends.insert(else_line, end);
@@ -247,16 +259,11 @@ impl Structure {
         !self.emitted.is_empty() && self.emitted.contains(&line)
     }
 
-    /// What each line in `start..end` that writes anything writes.
-    pub(crate) fn writes_in(
-        &self,
-        start: usize,
-        end: usize,
-    ) -> impl Iterator<Item = &(usize, Written)> {
-        let first = self.writes.partition_point(|(line, _)| *line < start);
-        self.writes[first..]
-            .iter()
-            .take_while(move |(line, _)| *line < end)
+    /// The lines of `lines` (in order) within `start..end`.
+    pub(crate) fn within(lines: &[usize], start: usize, end: usize) -> &[usize] {
+        let first = lines.partition_point(|&line| line < start);
+        let last = lines.partition_point(|&line| line < end);
+        &lines[first..last.max(first)]
     }
 
     /// The line a jump from `from` lands on, searching as its kind says.

@@ -13,6 +13,7 @@
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::rotation::{self, Kind, Sequence};
@@ -87,32 +88,16 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let source = model.source;
-    let structure = model.structure();
     let mut modes = HashMap::new();
     loop {
-        let mut walker = Walker {
-            model,
-            structure,
-            source,
-            supplied,
-            heads,
-            pending: HashMap::new(),
-            analysis: Analysis::default(),
-            depth: 0,
-            modes: &modes,
-            assumed: HashSet::new(),
-            replayed: Vec::new(),
-            too_deep: HashSet::new(),
-        };
-        let mut env = Env::default();
-        walker.walk(0, model.lines.len(), &mut env);
+        let (walker, env) = walk_once(model, supplied, heads, &modes);
+        let assumed = walker.assumed();
         let learned: Vec<(usize, Mode)> = walker
             .analysis
             .calls
             .iter()
             .chain(&walker.replayed)
-            .filter(|c| walker.assumed.contains(&c.line))
+            .filter(|c| assumed.contains(&c.line))
             .filter_map(|c| Some((c.line, c.mode()?)))
             .collect();
         if learned.is_empty() {
@@ -122,6 +107,45 @@ pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analys
         }
         modes.extend(learned);
     }
+}
+
+/// One walk through the program, knowing what the calls on `modes`' lines do.
+fn walk_once<'a>(
+    model: &'a Model<'a>,
+    supplied: &'a Supplied,
+    heads: Option<&'a Heads>,
+    modes: &'a HashMap<usize, Mode>,
+) -> (Walker<'a>, Env) {
+    let structure = model.structure();
+    let mut calls = [Vec::new(), Vec::new(), Vec::new()];
+    for &line in &structure.cycle600_lines {
+        let kind = match modes.get(&line) {
+            Some(Mode::Swivel) => 0,
+            Some(Mode::Recalculate) => 1,
+            None => 2,
+        };
+        calls[kind].push(line);
+    }
+    let [swivel_calls, recalculating_calls, unknown_calls] = calls;
+    let mut walker = Walker {
+        model,
+        structure,
+        source: model.source,
+        supplied,
+        heads,
+        pending: HashMap::new(),
+        analysis: Analysis::default(),
+        depth: 0,
+        swivel_calls,
+        recalculating_calls,
+        unknown_calls,
+        forgotten: Vec::new(),
+        replayed: Vec::new(),
+        too_deep: HashSet::new(),
+    };
+    let mut env = Env::of_program(Arc::clone(&structure.writers));
+    walker.walk(0, model.lines.len(), &mut env);
+    (walker, env)
 }
 
 /// What a CYCLE600 call does, by its `_SW_REC`.
@@ -156,10 +180,14 @@ struct Walker<'a> {
     /// How many blocks the walk is inside; bounded, so that no program can
     /// exhaust the stack.
     depth: usize,
-    /// What the CYCLE600 calls on these lines do, as an earlier walk found.
-    modes: &'a HashMap<usize, Mode>,
-    /// CYCLE600 lines a forget had to assume both things of.
-    assumed: HashSet<usize>,
+    /// Lines of the CYCLE600 calls an earlier walk found to swivel, to
+    /// recalculate only, and the others (in order): what a region with
+    /// them in it may change.
+    swivel_calls: Vec<usize>,
+    recalculating_calls: Vec<usize>,
+    unknown_calls: Vec<usize>,
+    /// The regions forgotten (`start..end`), in the order they were.
+    forgotten: Vec<(usize, usize)>,
     /// The calls kept in `; sinuprep:` lines, as the walk met them.
     replayed: Vec<CallSite>,
     /// Lines of calls reported as nested too deep.
@@ -172,6 +200,25 @@ struct Walker<'a> {
 pub const MAX_NESTING: usize = 512;
 
 impl<'a> Walker<'a> {
+    /// The CYCLE600 lines a forgotten region held without knowing what the
+    /// call there does: the forget assumed both.
+    fn assumed(&self) -> HashSet<usize> {
+        let mut regions = self.forgotten.clone();
+        regions.sort_unstable();
+        let mut assumed = HashSet::new();
+        let mut calls = self.unknown_calls.iter().copied().peekable();
+        let mut covered_to = 0;
+        for (start, end) in regions {
+            let start = start.max(covered_to);
+            while calls.next_if(|&line| line < start).is_some() {}
+            while let Some(line) = calls.next_if(|&line| line < end) {
+                assumed.insert(line);
+            }
+            covered_to = covered_to.max(end);
+        }
+        assumed
+    }
+
     fn block(&self, line: usize) -> Option<Cow<'a, Block>> {
         self.model.lines.block(line)
     }
@@ -179,10 +226,8 @@ impl<'a> Walker<'a> {
     fn walk(&mut self, start: usize, end: usize, env: &mut Env) {
         if self.depth >= MAX_NESTING {
             let structure = self.structure;
-            for (_, written) in structure.writes_in(start, end) {
-                for &line in &written.cycle600_lines {
-                    self.too_deep(line, env);
-                }
+            for &line in Structure::within(&structure.cycle600_lines, start, end) {
+                self.too_deep(line, env);
             }
             self.forget(
                 start,
@@ -392,31 +437,21 @@ impl<'a> Walker<'a> {
         None
     }
 
-    /// Makes unknown what lines `start..end` may write (the per-line
-    /// summaries the structure pass recorded): their variables, the active
-    /// rotation if anything there may swivel, `_CYC600_1..6` if a CYCLE600
-    /// there may recalculate, and the frames if a frame statement is there.
-    /// Read in place, never copied: loops nest, and each forgets its region.
+    /// Makes unknown what lines `start..end` may write (the structure
+    /// pass's indices): their variables (lazily: see `env::Mark`), the
+    /// active rotation if anything there may swivel, `_CYC600_1..6` if a
+    /// CYCLE600 there may recalculate, and the frames if a frame statement
+    /// is there. Loops nest and each forgets its region twice: this costs
+    /// a few binary searches, not the region's length.
     fn forget(&mut self, start: usize, end: usize, env: &mut Env, origin: &Origin) {
         let structure = self.structure;
-        let (mut swivels, mut recalculates, mut frames) = (false, false, false);
-        for (_, written) in structure.writes_in(start, end) {
-            for name in &written.names {
-                env.forget(name, origin.clone());
-            }
-            swivels |= written.rotation;
-            frames |= written.frames;
-            for line in &written.cycle600_lines {
-                match self.modes.get(line) {
-                    Some(Mode::Swivel) => swivels = true,
-                    Some(Mode::Recalculate) => recalculates = true,
-                    None => {
-                        self.assumed.insert(*line);
-                        (swivels, recalculates) = (true, true);
-                    }
-                }
-            }
-        }
+        let any = |lines: &[usize]| !Structure::within(lines, start, end).is_empty();
+        let unknown = any(&self.unknown_calls);
+        let swivels = unknown || any(&structure.rotation_lines) || any(&self.swivel_calls);
+        let recalculates = unknown || any(&self.recalculating_calls);
+        let frames = any(&structure.frame_lines);
+        self.forgotten.push((start, end));
+        env.forget_region(start, end, origin.clone());
         if recalculates {
             for n in 1..=6 {
                 env.forget(&format!("_CYC600_{n}"), origin.clone());
@@ -872,5 +907,103 @@ impl<'a> Walker<'a> {
                 });
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CALL: &str =
+        "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R1000, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
+
+    /// `depth` FOR loops around `lines` blocks, each reading and writing
+    /// one of 100 R parameters, and a CYCLE600 reading one of them.
+    fn nested_loops(depth: usize, lines: usize) -> String {
+        let mut program = String::new();
+        for i in 0..depth {
+            program.push_str(&format!("FOR R{i}=0 TO 2\n"));
+        }
+        for j in 0..lines {
+            program.push_str(&format!("R{n}=R{n}+1\n", n = 1000 + j % 100));
+        }
+        program.push_str(CALL);
+        for _ in 0..depth {
+            program.push_str("ENDFOR\n");
+        }
+        program.push_str("M30\n");
+        program
+    }
+
+    /// Forgetting what nested loops write costs the program's length times
+    /// a constant, not times the depth: each loop forgot every line of its
+    /// region, twice (100 loops around 2,000 lines: 400,000 names forgotten).
+    #[test]
+    fn nested_loops_cost_their_length_not_length_times_depth() {
+        for depth in [100, 400] {
+            let program = nested_loops(depth, 2000);
+            let model = Model::of(program.as_bytes());
+            let (analysis, env) = run(&model, &Supplied::default(), None);
+            let lines = program.lines().count() as u64;
+            assert!(
+                env.work() <= 100 * lines,
+                "depth {depth}: {} units of work for {lines} lines",
+                env.work()
+            );
+            // The loops' writes are unknown at the call, named by the
+            // innermost loop (it forgot them last).
+            let call = &analysis.calls[0];
+            let bound = call.bound.as_ref().expect("bound");
+            let inner = depth; // 1-based line of the innermost FOR
+            assert!(
+                matches!(
+                    &bound.arguments[7].value,
+                    Err(Unknown::Variables(vars))
+                        if vars[0].1 == Origin::ControlFlow { line: inner, what: "loop" }
+                ),
+                "{:?}",
+                bound.arguments[7].value
+            );
+            // After the loops, the outermost one forgot them last.
+            assert_eq!(
+                env.binding("R1000"),
+                Some(&Binding::Unknown {
+                    origin: Origin::ControlFlow {
+                        line: 1,
+                        what: "loop"
+                    }
+                })
+            );
+        }
+    }
+
+    /// A region forgotten lazily reads as forgetting it eagerly did: an
+    /// array's elements go, an R parameter a subprogram call there may
+    /// change goes unless written after the call, a name bound after the
+    /// loop keeps its value.
+    #[test]
+    fn a_forgotten_region_reads_as_forgotten_name_by_name() {
+        let program = "DEF REAL A[3]\nA[1]=5\nR1=1\nR2=2\nR3=3\nWHILE R9<3\nA[2]=1\nR1=4\nMYSUB\nR2=5\nENDWHILE\nR3=7\nM30\n";
+        let model = Model::of(program.as_bytes());
+        let (_, env) = run(&model, &Supplied::default(), None);
+        let loop_origin = Origin::ControlFlow {
+            line: 6,
+            what: "loop",
+        };
+        let unknown = Binding::Unknown {
+            origin: loop_origin.clone(),
+        };
+        assert_eq!(env.binding("A"), Some(&unknown));
+        assert_eq!(env.binding("A[1]"), None);
+        // R1 written before the call in the loop: the call removes it.
+        assert_eq!(env.binding("R1"), None);
+        assert_eq!(env.binding("R2"), Some(&unknown));
+        assert_eq!(env.value("R3"), Some(&Value::Number(7.0)));
+        let supplied = Supplied::default();
+        let scope = env.scope(&supplied, 13);
+        assert_eq!(
+            crate::semantic::eval::Lookup::variable(&scope, "R1"),
+            Err(Unknown::Variables(vec![("R1".into(), loop_origin)]))
+        );
     }
 }
