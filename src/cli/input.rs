@@ -2,12 +2,11 @@
 
 use std::io::{Read, Seek, Write};
 use std::ops::Deref;
-use std::os::fd::AsFd;
-use std::os::unix::fs::OpenOptionsExt;
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
 use crate::cli::mapped::{Mapped, MAPPED_FROM};
+use crate::cli::platform::{self, identity};
 use std::collections::HashSet;
 
 /// A program's name for reports, and its bytes.
@@ -114,7 +113,7 @@ pub fn again(error: &CliError) -> CliError {
 /// taken, to be reported when it is read).
 fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
     match std::fs::metadata(path) {
-        Ok(metadata) => seen.insert(identity(&metadata)),
+        Ok(metadata) => identity(&metadata).is_none_or(|id| seen.insert(id)),
         Err(_) => true,
     }
 }
@@ -127,9 +126,9 @@ fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
 /// file. The file is removed from its directory as soon as it is
 /// made, so nothing is left behind, whatever ends the run. A file
 /// redirected to stdin is mapped as it is.
-fn read_stream<R: Read + AsFd>(mut stream: R) -> std::io::Result<Bytes> {
+fn read_stream<R: Read + platform::Stream>(mut stream: R) -> std::io::Result<Bytes> {
     // A file redirected to stdin (`< PART.MPF`), unread so far: map it.
-    let mut file = std::fs::File::from(stream.as_fd().try_clone_to_owned()?);
+    let mut file = platform::file_behind(&stream)?;
     if let (Ok(metadata), Ok(0)) = (file.metadata(), file.stream_position()) {
         if metadata.is_file() && metadata.len() >= MAPPED_FROM {
             return Ok(Bytes::Mapped(Mapped::new(&file)?));
@@ -155,17 +154,8 @@ fn unnamed_file() -> std::io::Result<std::fs::File> {
             ".sinuprep-stdin-{:016x}",
             crate::cli::output::random()
         ));
-        match std::fs::OpenOptions::new()
-            .read(true)
-            .write(true)
-            .create_new(true)
-            .mode(0o600)
-            .open(&path)
-        {
-            Ok(file) => {
-                std::fs::remove_file(&path)?;
-                return Ok(file);
-            }
+        match platform::unnamed_at(&path) {
+            Ok(file) => return Ok(file),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => return Err(e),
         }
@@ -174,12 +164,6 @@ fn unnamed_file() -> std::io::Result<std::fs::File> {
         std::io::ErrorKind::AlreadyExists,
         "no file could be made in the temporary directory for standard input",
     ))
-}
-
-/// A file's identity: device and inode.
-pub fn identity(metadata: &std::fs::Metadata) -> (u64, u64) {
-    use std::os::unix::fs::MetadataExt;
-    (metadata.dev(), metadata.ino())
 }
 
 fn walk(

@@ -14,7 +14,7 @@
 use std::fs::File;
 use std::ops::Deref;
 
-use memmap2::{Advice, Mmap};
+use memmap2::Mmap;
 
 /// Files from this size on are mapped; smaller ones are read.
 pub const MAPPED_FROM: u64 = 4 << 20;
@@ -35,7 +35,8 @@ impl Mapped {
         #[allow(unsafe_code)]
         let map = unsafe { Mmap::map(file)? };
         // Only a hint for read-ahead; a refusal changes nothing.
-        let _ = map.advise(Advice::Sequential);
+        #[cfg(unix)]
+        let _ = map.advise(memmap2::Advice::Sequential);
         Ok(Self { map })
     }
 }

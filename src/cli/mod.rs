@@ -13,6 +13,7 @@ mod input;
 mod mapped;
 mod output;
 mod parallel;
+mod platform;
 pub mod render;
 mod rewrite;
 mod rule;

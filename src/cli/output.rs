@@ -9,17 +9,16 @@
 //! it is created under a random name, exclusively; a run that was killed
 //! leaves it unlocked, and the next run that writes beside it removes it. A
 //! rename replaces the directory entry: a file that has other hard links
-//! keeps its old bytes under them. Unix only, as is the mapping of large
-//! programs; what is Linux's alone is behind `cfg` here.
+//! keeps its old bytes under them. What is Linux's alone is behind `cfg`
+//! here; what differs between Unix and Windows is in `cli::platform`.
 
 use std::fs::{self, File, Metadata, OpenOptions};
 use std::hash::{BuildHasher, Hasher};
 use std::io::Write;
-use std::os::unix::fs::{fchown, FileTypeExt, MetadataExt, OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
-use crate::cli::input::identity;
+use crate::cli::platform::{identity, keep_owner_and_mode, kind};
 
 /// The regular file an in-place rewrite of `path` replaces: the file a
 /// symlink points to (the link stays). Standard input, FIFOs, devices and
@@ -51,10 +50,7 @@ pub fn in_place_target(path: &Path) -> Result<PathBuf, CliError> {
 
 /// Whether `output` names the same file as `input` (through links).
 pub fn same_file(input: &Path, output: &Path) -> bool {
-    match (fs::metadata(input), fs::metadata(output)) {
-        (Ok(a), Ok(b)) => identity(&a) == identity(&b),
-        _ => false,
-    }
+    crate::cli::platform::same_file(input, output)
 }
 
 /// Writes `path` with `write`: atomically where `path` is a regular file or
@@ -167,6 +163,8 @@ impl Temporary {
 
     /// The complete file's path, to rename over the target: a nameless file
     /// is given its temporary name now.
+    // Only a nameless file (Linux) needs what it is given.
+    #[cfg_attr(not(target_os = "linux"), allow(unused_variables))]
     fn named(&mut self, file: &File, dir: &Path, name: &str) -> std::io::Result<PathBuf> {
         match self {
             Temporary::Named(path) => Ok(path.clone()),
@@ -287,12 +285,7 @@ fn create_temporary(dir: &Path, name: &str, private: bool) -> std::io::Result<(F
     let prefix = temporary_prefix(name);
     for _ in 0..64 {
         let path = dir.join(format!("{prefix}{:016x}{TEMPORARY_SUFFIX}", random()));
-        let file = match OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .mode(if private { 0o600 } else { 0o666 })
-            .open(&path)
-        {
+        let file = match crate::cli::platform::new_file(private).open(&path) {
             Ok(file) => file,
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => return Err(e),
@@ -340,36 +333,6 @@ fn remove_stale_temporaries(dir: &Path, name: &str) {
         if file.try_lock().is_ok() {
             let _ = fs::remove_file(&path);
         }
-    }
-}
-
-/// Gives the temporary file the replaced file's owner, group and mode. Where
-/// the owner cannot be kept (not root), the file is this user's, and the
-/// setuid and setgid bits are not put back on it.
-fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> {
-    let _ = fchown(file, Some(like.uid()), Some(like.gid()))
-        .or_else(|_| fchown(file, None, Some(like.gid())));
-    let own = file.metadata()?;
-    let owner_kept = own.uid() == like.uid() && own.gid() == like.gid();
-    let mut mode = like.mode() & 0o7777;
-    if !owner_kept {
-        mode &= !0o6000;
-    }
-    file.set_permissions(fs::Permissions::from_mode(mode))
-}
-
-fn kind(metadata: &Metadata) -> &'static str {
-    let file_type = metadata.file_type();
-    if file_type.is_fifo() {
-        "a FIFO"
-    } else if file_type.is_char_device() || file_type.is_block_device() {
-        "a device"
-    } else if file_type.is_socket() {
-        "a socket"
-    } else if file_type.is_dir() {
-        "a directory"
-    } else {
-        "not a regular file"
     }
 }
 

@@ -1,0 +1,140 @@
+//! What differs between the platforms the command line runs on, in one
+//! place: a file's identity, the modes and owners a replaced file keeps, a
+//! temporary file nobody else reads, and the file behind standard input.
+//! Unix (Linux, macOS) keeps all of it; Windows has no owner, group or mode
+//! bits to keep (the read-only attribute is kept), and its identity of a
+//! file is not in the standard library's stable API, so a file met twice
+//! there (through a link the walk was asked to follow) is read twice.
+
+use std::fs::{File, Metadata, OpenOptions};
+use std::path::Path;
+
+/// A file's identity (device and inode), where the platform tells it.
+#[cfg(unix)]
+pub fn identity(metadata: &Metadata) -> Option<(u64, u64)> {
+    use std::os::unix::fs::MetadataExt;
+    Some((metadata.dev(), metadata.ino()))
+}
+
+#[cfg(not(unix))]
+pub fn identity(_metadata: &Metadata) -> Option<(u64, u64)> {
+    None
+}
+
+/// Whether `a` and `b` are one file: by identity, else by canonical path.
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(ma), Ok(mb)) => match (identity(&ma), identity(&mb)) {
+            (Some(ia), Some(ib)) => ia == ib,
+            _ => match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+                (Ok(ca), Ok(cb)) => ca == cb,
+                _ => false,
+            },
+        },
+        _ => false,
+    }
+}
+
+/// Options for a new file, created exclusively: readable by its owner only
+/// where `private` (the mode of the file it replaces is given once it is
+/// written), else with the usual mode (0666 less the umask).
+pub fn new_file(private: bool) -> OpenOptions {
+    let mut options = OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.mode(if private { 0o600 } else { 0o666 });
+    }
+    #[cfg(not(unix))]
+    let _ = private;
+    options
+}
+
+/// A new file at `path`, readable and writable by this process only, whose
+/// name is gone once the caller holds it: removed at once on Unix, deleted
+/// when it is closed on Windows (where an open file cannot be removed).
+pub fn unnamed_at(path: &Path) -> std::io::Result<File> {
+    let mut options = OpenOptions::new();
+    options.read(true).write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.mode(0o600);
+        let file = options.open(path)?;
+        std::fs::remove_file(path)?;
+        Ok(file)
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt;
+        const FILE_FLAG_DELETE_ON_CLOSE: u32 = 0x0400_0000;
+        options.custom_flags(FILE_FLAG_DELETE_ON_CLOSE);
+        options.open(path)
+    }
+}
+
+/// Gives `file` the owner, group and mode of `like` (the file it replaces).
+/// Where the owner cannot be kept (not root), the file is this user's, and
+/// the setuid and setgid bits are not put back on it. On Windows: the
+/// read-only attribute.
+#[cfg(unix)]
+pub fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> {
+    use std::os::unix::fs::{fchown, MetadataExt, PermissionsExt};
+    let _ = fchown(file, Some(like.uid()), Some(like.gid()))
+        .or_else(|_| fchown(file, None, Some(like.gid())));
+    let own = file.metadata()?;
+    let owner_kept = own.uid() == like.uid() && own.gid() == like.gid();
+    let mut mode = like.mode() & 0o7777;
+    if !owner_kept {
+        mode &= !0o6000;
+    }
+    file.set_permissions(std::fs::Permissions::from_mode(mode))
+}
+
+#[cfg(not(unix))]
+pub fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> {
+    file.set_permissions(like.permissions())
+}
+
+/// What a file that is not a regular one is, for messages.
+pub fn kind(metadata: &Metadata) -> &'static str {
+    let file_type = metadata.file_type();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if file_type.is_fifo() {
+            return "a FIFO";
+        } else if file_type.is_char_device() || file_type.is_block_device() {
+            return "a device";
+        } else if file_type.is_socket() {
+            return "a socket";
+        }
+    }
+    if file_type.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// A stream whose file can be looked at: standard input, or a file opened.
+#[cfg(unix)]
+pub trait Stream: std::os::fd::AsFd {}
+#[cfg(unix)]
+impl<T: std::os::fd::AsFd> Stream for T {}
+
+#[cfg(windows)]
+pub trait Stream: std::os::windows::io::AsHandle {}
+#[cfg(windows)]
+impl<T: std::os::windows::io::AsHandle> Stream for T {}
+
+/// The file behind `stream` (a file redirected to stdin, a pipe, a device),
+/// as a file of its own.
+pub fn file_behind(stream: &impl Stream) -> std::io::Result<File> {
+    #[cfg(unix)]
+    let owned = stream.as_fd().try_clone_to_owned()?;
+    #[cfg(windows)]
+    let owned = stream.as_handle().try_clone_to_owned()?;
+    Ok(File::from(owned))
+}
