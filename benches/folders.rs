@@ -8,9 +8,13 @@
 //! Needs `/usr/bin/time`; nothing is asserted.
 
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::Instant;
+
+#[path = "support/process.rs"]
+#[allow(dead_code)] // the process's memory is not measured here
+mod process;
 
 fn main() {
     let counts: Vec<usize> = std::env::var("SINUPREP_BENCH_FOLDERS")
@@ -18,18 +22,7 @@ fn main() {
         .split_whitespace()
         .filter_map(|n| n.parse().ok())
         .collect();
-    let binary = match std::env::var_os("SINUPREP_BENCH_BINARY") {
-        Some(binary) => PathBuf::from(binary),
-        None => {
-            let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-            let status = Command::new("cargo")
-                .args(["build", "--release", "--quiet"])
-                .current_dir(&root)
-                .status();
-            assert!(status.is_ok_and(|s| s.success()), "release build failed");
-            root.join("target/release/sinuprep")
-        }
-    };
+    let binary = process::release_binary();
     let dir = std::env::temp_dir().join(format!("sinuprep-bench-folders-{}", std::process::id()));
     println!("shape  programs   total s   µs/program   first line s   peak RSS MiB");
     for &count in &counts {

@@ -10,12 +10,11 @@
 //! case under a data limit).
 
 use std::path::PathBuf;
-use std::process::Command;
 
 #[path = "support/process.rs"]
 mod process;
 
-use process::{measure, Input};
+use process::{measure, release_binary, Input};
 
 fn main() {
     let megabytes: usize = std::env::var("SINUPREP_BENCH_MB")
@@ -23,12 +22,7 @@ fn main() {
         .and_then(|m| m.parse().ok())
         .unwrap_or(1000);
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let status = Command::new("cargo")
-        .args(["build", "--release", "--quiet"])
-        .current_dir(&root)
-        .status();
-    assert!(status.is_ok_and(|s| s.success()), "release build failed");
-    let binary = root.join("target/release/sinuprep");
+    let binary = release_binary();
     let binary = binary.to_str().expect("utf-8");
     let heads = root.join("samples/HEAD_DEF.SPF");
     let heads = heads.to_str().expect("utf-8");

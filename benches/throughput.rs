@@ -18,12 +18,12 @@
 
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
-use std::process::Command;
-use std::time::Instant;
 
 use sinuprep::syntax::lines::raw_lines;
 use sinuprep::syntax::LineParser;
 
+#[path = "support/process.rs"]
+mod process;
 #[path = "support/best.rs"]
 mod support;
 
@@ -38,12 +38,7 @@ fn main() {
     if std::env::var("SINUPREP_BENCH_ONLY").is_ok_and(|only| only == "syntax") {
         return;
     }
-    let status = Command::new("cargo")
-        .args(["build", "--release", "--quiet"])
-        .current_dir(&root)
-        .status();
-    assert!(status.is_ok_and(|s| s.success()), "release build failed");
-    let binary = root.join("target/release/sinuprep");
+    let binary = process::release_binary();
     let dir = std::env::temp_dir().join("sinuprep-bench");
     std::fs::create_dir_all(&dir).expect("bench directory");
 
@@ -98,7 +93,7 @@ fn main() {
             ),
         ];
         for (label, command) in runs {
-            let (seconds, peak, anon) = measure(&command);
+            let (seconds, peak, anon) = process::measure(&command, process::Input::Nothing);
             println!(
                 "{label:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1} {:>10.1}",
                 bytes / seconds / 1e6,
@@ -120,7 +115,7 @@ fn main() {
         "short",
         path,
     ];
-    let (seconds, peak, anon) = measure(&command);
+    let (seconds, peak, anon) = process::measure(&command, process::Input::Nothing);
     println!(
         "{:<44} {seconds:>9.2} {:>10} {:>12} {:>10.1} {:>10.1}",
         "check MANY_FINDINGS.MPF (5,000 x 4 findings)",
@@ -187,53 +182,6 @@ fn parse_every_line(source: &[u8]) -> usize {
     raw_lines(source)
         .map(|raw| black_box(parser.parse_line(source, raw)).1.is_some() as usize)
         .sum()
-}
-
-/// Best of three runs: wall seconds, peak resident memory and peak
-/// anonymous memory, both in KiB.
-fn measure(command: &[&str]) -> (f64, u64, u64) {
-    let mut best = (f64::INFINITY, 0, 0);
-    for _ in 0..3 {
-        let started = Instant::now();
-        let mut child = Command::new("/usr/bin/time")
-            .arg("-f")
-            .arg("%M")
-            .args(command)
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::piped())
-            .spawn()
-            .expect("/usr/bin/time runs");
-        let mut anon = 0;
-        while child.try_wait().expect("wait").is_none() {
-            anon = anon.max(anonymous_kib(child.id()).unwrap_or(0));
-            std::thread::sleep(std::time::Duration::from_millis(1));
-        }
-        let output = child.wait_with_output().expect("output");
-        let seconds = started.elapsed().as_secs_f64();
-        let peak = String::from_utf8_lossy(&output.stderr)
-            .lines()
-            .last()
-            .and_then(|l| l.trim().parse().ok())
-            .unwrap_or(0);
-        if seconds < best.0 {
-            best = (seconds, peak, anon);
-        }
-    }
-    best
-}
-
-/// `RssAnon` of the command `/usr/bin/time` (process `time`) runs, in KiB.
-fn anonymous_kib(time: u32) -> Option<u64> {
-    let children = std::fs::read_to_string(format!("/proc/{time}/task/{time}/children")).ok()?;
-    let child: u32 = children.split_whitespace().next()?.parse().ok()?;
-    let status = std::fs::read_to_string(format!("/proc/{child}/status")).ok()?;
-    status
-        .lines()
-        .find_map(|l| l.strip_prefix("RssAnon:"))?
-        .split_whitespace()
-        .next()?
-        .parse()
-        .ok()
 }
 
 /// `N.. G1 X.. Y.. Z.. B.. C..` with an occasional feed, after a header with

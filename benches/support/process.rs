@@ -3,13 +3,28 @@
 //! mapped program included, which the kernel drops at will) and the peak of
 //! the process's own anonymous memory (`RssAnon`, sampled every millisecond).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Instant;
 
+/// The binary measured: `SINUPREP_BENCH_BINARY` (another build, to compare
+/// with), else this checkout's release build, built now.
+pub fn release_binary() -> PathBuf {
+    if let Some(binary) = std::env::var_os("SINUPREP_BENCH_BINARY") {
+        return PathBuf::from(binary);
+    }
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let status = Command::new("cargo")
+        .args(["build", "--release", "--quiet"])
+        .current_dir(&root)
+        .status();
+    assert!(status.is_ok_and(|s| s.success()), "release build failed");
+    root.join("target/release/sinuprep")
+}
+
 /// Where a measured command's standard input comes from.
 #[derive(Clone, Copy)]
-#[allow(dead_code)]
+#[allow(dead_code)] // each bench uses the inputs it needs
 pub enum Input<'a> {
     Nothing,
     /// The file itself, as `< FILE` gives it.
