@@ -1,3 +1,4 @@
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -8,7 +9,8 @@ fn main() -> ExitCode {
     let status = match run(&args) {
         Ok(status) => status,
         Err(error) => {
-            eprintln!("{:?}", miette::Report::new(error));
+            // A closed standard error silences the message, not the status.
+            let _ = writeln!(std::io::stderr(), "{:?}", miette::Report::new(error));
             ExitStatus::Error
         }
     };

@@ -1245,3 +1245,30 @@ fn completions_and_the_man_page_name_every_command() {
     }
     assert_exit(&run(&["completions", "tcsh"], b""), 2);
 }
+
+/// A reader that goes away (`sinuprep check 2>&1 | head -1`) takes standard
+/// output and standard error with it: the run ends with its own status, not
+/// a panic (exit 101).
+#[test]
+fn a_closed_stdout_and_stderr_are_no_panic() {
+    use std::process::{Command, Stdio};
+    for args in [
+        &["check", "tests/fixtures/lint"][..],
+        &["rewrite", "samples/PAPER_EXAMPLE3.MPF"][..],
+        &["eval", "samples/PAPER_EXAMPLE3.MPF"][..],
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("binary runs");
+        // Both pipes closed before the first byte is written.
+        drop(child.stdout.take());
+        drop(child.stderr.take());
+        let status = child.wait().expect("binary ends");
+        assert!(matches!(status.code(), Some(0..=2)), "{args:?}: {status:?}");
+    }
+}

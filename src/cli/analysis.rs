@@ -90,7 +90,7 @@ impl MachinesTold {
             return ExitStatus::Success;
         };
         if !on.machine.diagnostics.is_empty() && self.first(on) {
-            eprint!("{}", machine_report(on, format));
+            tell!("{}", machine_report(on, format));
         }
         if on.machine.has_errors() {
             ExitStatus::Failure

@@ -196,7 +196,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         match result {
             Ok(mut checked) => {
                 if let Some(notes) = &checked.notes {
-                    eprint!("{notes}");
+                    tell!("{notes}");
                 }
                 // The machine file's findings, as those of one more file.
                 if let Some((on, diagnostics)) = checked.machine.take() {
@@ -217,7 +217,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
             }
             Err(error) => {
                 failed = true;
-                eprintln!("{:?}", miette::Report::new(error));
+                tellln!("{:?}", miette::Report::new(error));
             }
         }
         Ok::<(), CliError>(())
@@ -229,9 +229,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     }
     // For people: on stderr, so that what tools read stays the findings.
     if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
-        eprintln!("{}", counts.summary(files));
+        tellln!("{}", counts.summary(files));
         if let Some(note) = unchecked.note() {
-            eprintln!("{note}");
+            tellln!("{note}");
         }
     }
 
@@ -403,7 +403,7 @@ fn fix(
             continue;
         }
         if diagnostics.iter().any(|d| d.code.starts_with('S')) {
-            eprintln!(
+            tellln!(
                 "{}: not fixed, because of its syntax errors",
                 printable(&program.name)
             );
@@ -414,7 +414,7 @@ fn fix(
             _ => Some(own),
         };
         let Some(shifted) = shifted else {
-            eprintln!(
+            tellln!(
                 "{}: not fixed: its new size does not fit the archive's header",
                 printable(&program.name)
             );
@@ -429,6 +429,6 @@ fn fix(
     let fixed = apply(bytes, &edits);
     write_atomically(target, |out| out.write_all(&fixed), None)?;
     let s = if answered == 1 { "" } else { "s" };
-    eprintln!("{}: fixed {answered} finding{s}", printable(&opened.name));
+    tellln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
 }

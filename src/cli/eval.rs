@@ -42,7 +42,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
             Ok(evaluated) => {
                 let format = args.analysis.message_format;
                 worst = worst.max(told.tell(evaluated.machine.as_deref(), format));
-                eprint!("{}", evaluated.diagnostics);
+                tell!("{}", evaluated.diagnostics);
                 if evaluated.failed {
                     worst = worst.max(ExitStatus::Failure);
                 }
@@ -52,7 +52,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
                 }
             }
             Err(error) => {
-                eprintln!("{:?}", miette::Report::new(error));
+                tellln!("{:?}", miette::Report::new(error));
                 worst = ExitStatus::Error;
             }
         }

@@ -236,7 +236,7 @@ fn walk(
 /// A note on stderr naming what a walk left out.
 fn skipped(path: &Path, why: &str) {
     let name = crate::cli::render::printable(&path.display().to_string()).into_owned();
-    eprintln!("note: skipped {name}: {why}");
+    tellln!("note: skipped {name}: {why}");
 }
 
 fn is_program(path: &Path) -> bool {

@@ -1,5 +1,23 @@
 //! The command line: the only module that prints.
 
+/// Writes a message to standard error. A closed standard error
+/// (`sinuprep check 2>&1 | head -1`) silences the messages; it never ends
+/// the run, as `eprint!` would with a panic.
+macro_rules! tell {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stderr().lock(), $($arg)*);
+    }};
+}
+
+/// [`tell!`], with a line ending.
+macro_rules! tellln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr().lock(), $($arg)*);
+    }};
+}
+
 mod analysis;
 mod archive;
 pub mod args;

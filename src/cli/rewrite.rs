@@ -69,7 +69,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     parallel::each(paths.len(), work, |outcome| {
         let format = args.analysis.message_format;
         worst = worst.max(told.tell(outcome.machine.as_deref(), format));
-        eprint!("{}", outcome.stderr);
+        tell!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
         worst = worst.max(outcome.status);
         Ok::<(), CliError>(())
