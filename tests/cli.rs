@@ -1251,7 +1251,6 @@ fn completions_and_the_man_page_name_every_command() {
 /// a panic (exit 101).
 #[test]
 fn a_closed_stdout_and_stderr_are_no_panic() {
-    use std::process::{Command, Stdio};
     for args in [
         &["check", "tests/fixtures/lint"][..],
         &["rewrite", "samples/PAPER_EXAMPLE3.MPF"][..],
@@ -1271,4 +1270,55 @@ fn a_closed_stdout_and_stderr_are_no_panic() {
         let status = child.wait().expect("binary ends");
         assert!(matches!(status.code(), Some(0..=2)), "{args:?}: {status:?}");
     }
+}
+
+/// `check` with no path checks the current directory (stdin only with `-`
+/// or --stdin-filename); `rewrite` and `eval` with no path read a program
+/// piped in.
+#[test]
+fn no_path_is_the_current_directory_for_check_and_stdin_for_rewrite() {
+    let dir = scratch("no-path");
+    std::fs::copy(
+        support::repo().join("tests/fixtures/lint/N022_trigger.mpf"),
+        dir.join("PART.MPF"),
+    )
+    .expect("copied");
+    let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short"])
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("binary runs");
+    assert_exit(&output, 1);
+    assert!(
+        stdout(&output).contains("PART.MPF:2:12: error[N022]"),
+        "{}",
+        stdout(&output)
+    );
+    let program =
+        std::fs::read(support::repo().join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    for command in ["rewrite", "eval"] {
+        let output = run(&[command], &program);
+        assert!(
+            stdout(&output).contains("37.792346"),
+            "{command}: {}",
+            stdout(&output)
+        );
+    }
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--stdin-filename",
+            "samples/X.MPF",
+        ],
+        b"N10 G1 X1 X2\nM30\n",
+    );
+    assert!(
+        stdout(&output).contains("samples/X.MPF:1:"),
+        "{}",
+        stdout(&output)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -102,8 +102,7 @@ pub struct AxesArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
-    #[arg(default_value = "-")]
+    /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
     pub paths: Vec<PathBuf>,
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]
@@ -229,9 +228,8 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
+    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     /// Several programs need --in-place, -o DIR, --check or --diff.
-    #[arg(default_value = "-")]
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
@@ -274,8 +272,7 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct EvalArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin.
-    #[arg(default_value = "-")]
+    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]

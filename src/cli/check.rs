@@ -2,7 +2,7 @@
 //! stable order.
 
 use std::io::IsTerminal;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::cli::analysis;
@@ -174,7 +174,14 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         follow_links: args.follow_links,
         ..analysis::given_to_check(args)
     })?;
-    let paths = expand(&args.paths, args.allow_empty, args.follow_links)?;
+    // No path: the current directory, as ruff and ripgrep do; stdin only
+    // with `-` (or with --stdin-filename, the editors' way).
+    let named = match (args.paths.is_empty(), &args.stdin_filename) {
+        (false, _) => args.paths.clone(),
+        (true, Some(_)) => vec![PathBuf::from("-")],
+        (true, None) => vec![PathBuf::from(".")],
+    };
+    let paths = expand(&named, args.allow_empty, args.follow_links)?;
     let colour = std::io::stdout().is_terminal();
     let work = |index: usize| match &paths[index] {
         Ok(found) => check_file(found, args, colour, &workspace),

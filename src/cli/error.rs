@@ -82,6 +82,10 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::angles), help("give three angles, as `sinuprep convert 30 45 60 --from e:XYZ --to i:ZXY`, or pipe one triple per line into stdin"))]
     NoAngles,
 
+    #[error("no program given, and stdin is a terminal")]
+    #[diagnostic(code(sinuprep::program), help("name the program, as `sinuprep {command} PART.MPF`, or pipe it in: `sinuprep {command} - < PART.MPF`"))]
+    NoProgram { command: &'static str },
+
     #[error("stdin:{line}:{column}: {why}")]
     #[diagnostic(code(sinuprep::angles), help("give one triple of angles in degrees per line, separated by blanks or commas, as `30 45 -16.28`; empty lines and `#` comments are skipped"))]
     Angles {

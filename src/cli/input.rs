@@ -109,6 +109,17 @@ pub fn again(error: &CliError) -> CliError {
     }
 }
 
+/// The paths a command reads when none is named: standard input, unless it
+/// is a terminal, where waiting for a program to be typed would look like a
+/// hang.
+pub fn stdin_unless_terminal(command: &'static str) -> Result<Vec<PathBuf>, CliError> {
+    use std::io::IsTerminal;
+    if std::io::stdin().is_terminal() {
+        return Err(CliError::NoProgram { command });
+    }
+    Ok(vec![PathBuf::from("-")])
+}
+
 /// Whether `path` has not been met before (a path that cannot be read is
 /// taken, to be reported when it is read).
 fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
