@@ -189,8 +189,9 @@ fn rewrite_file(
     if args.check {
         if changed {
             outcome.stderr.push_str(&format!(
-                "{}: would rewrite {rewritten} CYCLE600 call(s)\n",
-                printable(&file.name)
+                "{}: would rewrite {rewritten} CYCLE600 call{}\n",
+                printable(&file.name),
+                if rewritten == 1 { "" } else { "s" }
             ));
         }
         outcome.status = status(errors || changed);
