@@ -1322,3 +1322,32 @@ fn no_path_is_the_current_directory_for_check_and_stdin_for_rewrite() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A file that cannot be read is an error of its own (exit 2), never
+/// summed up as "no findings in 0 files", which reads as a pass.
+#[test]
+fn an_unreadable_file_is_not_summed_up_as_a_pass() {
+    let output = run(&["check", "--format", "short", "NOT_THERE.MPF"], b"");
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("cannot read") && !stderr.contains("in 0 files"),
+        "{stderr}"
+    );
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "NOT_THERE.MPF",
+            "samples/PAPER_EXAMPLE3.MPF",
+        ],
+        b"",
+    );
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("in 1 file; 1 file could not be checked"),
+        "{stderr}"
+    );
+}

@@ -188,7 +188,8 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         Err(error) => Err(again(error)),
     };
 
-    let mut failed = false;
+    // Files that could not be read or checked (an error each, on stderr).
+    let mut failed = 0;
     let mut fails = false;
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
@@ -223,7 +224,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                 files += checked.files;
             }
             Err(error) => {
-                failed = true;
+                failed += 1;
                 tellln!("{:?}", miette::Report::new(error));
             }
         }
@@ -235,14 +236,21 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         Format::Short | Format::Github | Format::Human => {}
     }
     // For people: on stderr, so that what tools read stays the findings.
-    if matches!(args.format, Format::Human | Format::Short) && !args.quiet {
-        tellln!("{}", counts.summary(files));
+    // Nothing checked after an error: the error says it all ("no findings
+    // in 0 files" read as a pass).
+    let summary = !(failed > 0 && files == 0);
+    if matches!(args.format, Format::Human | Format::Short) && !args.quiet && summary {
+        match failed {
+            0 => tellln!("{}", counts.summary(files)),
+            1 => tellln!("{}; 1 file could not be checked", counts.summary(files)),
+            n => tellln!("{}; {n} files could not be checked", counts.summary(files)),
+        }
         if let Some(note) = unchecked.note() {
             tellln!("{note}");
         }
     }
 
-    Ok(if failed {
+    Ok(if failed > 0 {
         ExitStatus::Error
     } else if fails {
         ExitStatus::Failure
