@@ -1351,3 +1351,17 @@ fn an_unreadable_file_is_not_summed_up_as_a_pass() {
         "{stderr}"
     );
 }
+
+/// `rule` takes a rule's name as well as its code, and suggests the nearest
+/// of either for one it does not know.
+#[test]
+fn rule_takes_a_name_and_suggests_the_nearest() {
+    let by_code = run(&["rule", "N005"], b"");
+    let by_name = run(&["rule", "undefined-variable"], b"");
+    assert_exit(&by_name, 0);
+    assert_eq!(by_code.stdout, by_name.stdout);
+    let output = run(&["rule", "N05"], b"");
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("did you mean `N005`?"), "{stderr}");
+}

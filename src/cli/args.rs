@@ -172,7 +172,7 @@ pub struct InputArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct RuleArgs {
-    /// The rule's code, as `N001` or `C605`.
+    /// The rule's code or name, as `N001`, `C605` or `undefined-variable`.
     #[arg(required_unless_present = "all")]
     pub code: Option<String>,
     /// List every rule: code, name, severity.

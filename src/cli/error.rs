@@ -74,9 +74,12 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::mode), help("give the sequence code of three rotations about the turned axes: 57 (X, Y', Z''), 45 (X, Z', Y''), 54 (Y, X', Z''), 30 (Y, Z', X''), 39 (Z, X', Y''), 27 (Z, Y', X''); the solid-angle, projection and direct modes are not computed"))]
     Mode(i64),
 
-    #[error("no rule has the code `{0}`")]
-    #[diagnostic(code(sinuprep::rule), help("`sinuprep rule --all` lists every rule"))]
-    UnknownRule(String),
+    #[error("no rule has the code or name `{code}`")]
+    #[diagnostic(code(sinuprep::rule), help("{}`sinuprep rule --all` lists every rule", nearest.map(|n| format!("did you mean `{n}`? ")).unwrap_or_default()))]
+    UnknownRule {
+        code: String,
+        nearest: Option<&'static str>,
+    },
 
     #[error("no angles given, and stdin is a terminal")]
     #[diagnostic(code(sinuprep::angles), help("give three angles, as `sinuprep convert 30 45 60 --from e:XYZ --to i:ZXY`, or pipe one triple per line into stdin"))]

@@ -8,9 +8,10 @@ use crate::lint::reference::{page, severity_text};
 
 pub fn run(args: &RuleArgs) -> Result<ExitStatus, CliError> {
     let text = match &args.code {
-        Some(code) if !args.all => {
-            page(lint::rule(code).ok_or_else(|| CliError::UnknownRule(code.clone()))?)
-        }
+        Some(code) if !args.all => page(lint::rule(code).ok_or_else(|| CliError::UnknownRule {
+            code: code.clone(),
+            nearest: lint::nearest_rule(code),
+        })?),
         _ => lint::rules::all()
             .iter()
             .map(|r| {

@@ -110,11 +110,20 @@ pub fn severity_in_check(code: &str) -> Option<&'static str> {
 }
 
 /// The documentation of `code`, if it is one.
+/// The documentation of the rule `code` names: its code or its name
+/// (`N005`, `undefined-variable`), in any case.
 pub fn rule(code: &str) -> Option<&'static RuleInfo> {
     rules::all()
         .into_iter()
         .map(|r| r.info)
-        .find(|info| info.code.eq_ignore_ascii_case(code))
+        .find(|info| info.code.eq_ignore_ascii_case(code) || info.name.eq_ignore_ascii_case(code))
+}
+
+/// The code or name of a rule nearest `word`, for a did-you-mean.
+pub fn nearest_rule(word: &str) -> Option<&'static str> {
+    let infos: Vec<&'static RuleInfo> = rules::all().into_iter().map(|r| r.info).collect();
+    let names = infos.iter().flat_map(|info| [info.code, info.name]);
+    crate::suggest::closest(word, names.collect::<Vec<_>>().iter().copied(), 3)
 }
 
 /// Everything `check` reports for one program, in source order.
