@@ -1365,3 +1365,15 @@ fn rule_takes_a_name_and_suggests_the_nearest() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("did you mean `N005`?"), "{stderr}");
 }
+
+/// `--exit-zero` reports the findings and exits 0; a tool failure still
+/// exits 2.
+#[test]
+fn exit_zero_reports_without_failing() {
+    let trigger = "tests/fixtures/lint/N022_trigger.mpf";
+    let output = run(&["check", "--format", "short", "--exit-zero", trigger], b"");
+    assert_exit(&output, 0);
+    assert!(stdout(&output).contains("error[N022]"));
+    let output = run(&["check", "--exit-zero", "NOT_THERE.MPF"], b"");
+    assert_exit(&output, 2);
+}

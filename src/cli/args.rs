@@ -119,6 +119,9 @@ pub struct CheckArgs {
     /// Exit 1 on warnings too.
     #[arg(long)]
     pub deny_warnings: bool,
+    /// Exit 0 whatever the findings (2 still when the tool fails), to report without failing.
+    #[arg(long, conflicts_with = "deny_warnings")]
+    pub exit_zero: bool,
     /// The name of the program read from stdin, for paths in reports, HEAD_DEF and sinuprep.toml lookup.
     #[arg(long, value_name = "NAME")]
     pub stdin_filename: Option<PathBuf>,

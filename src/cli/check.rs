@@ -252,7 +252,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
 
     Ok(if failed > 0 {
         ExitStatus::Error
-    } else if fails {
+    } else if fails && !args.exit_zero {
         ExitStatus::Failure
     } else {
         ExitStatus::Success
