@@ -1377,3 +1377,33 @@ fn exit_zero_reports_without_failing() {
     let output = run(&["check", "--exit-zero", "NOT_THERE.MPF"], b"");
     assert_exit(&output, 2);
 }
+
+/// `--color always` colours a report sent to a pipe, `never` and NO_COLOR
+/// keep it plain, CLICOLOR_FORCE colours it where NO_COLOR is not set.
+#[test]
+fn colour_follows_the_option_and_the_environment() {
+    let trigger = "tests/fixtures/lint/N022_trigger.mpf";
+    let coloured = |args: &[&str], env: &[(&str, &str)]| {
+        let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .env_remove("NO_COLOR")
+            .env_remove("CLICOLOR_FORCE")
+            .envs(env.iter().copied())
+            .stdin(Stdio::null())
+            .output()
+            .expect("binary runs");
+        output.stdout.contains(&0x1b)
+    };
+    assert!(!coloured(&["check", trigger], &[]));
+    assert!(coloured(&["check", "--color", "always", trigger], &[]));
+    assert!(!coloured(
+        &["check", "--color", "never", trigger],
+        &[("CLICOLOR_FORCE", "1")]
+    ));
+    assert!(coloured(&["check", trigger], &[("CLICOLOR_FORCE", "1")]));
+    assert!(!coloured(
+        &["check", trigger],
+        &[("CLICOLOR_FORCE", "1"), ("NO_COLOR", "1")]
+    ));
+}

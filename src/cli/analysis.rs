@@ -103,7 +103,11 @@ impl MachinesTold {
 fn render(report: &FileReport, format: MessageFormat) -> String {
     let mut text = String::new();
     match format {
-        MessageFormat::Human => human(report, std::io::stderr().is_terminal(), &mut text),
+        MessageFormat::Human => human(
+            report,
+            crate::cli::colour(std::io::stderr().is_terminal()),
+            &mut text,
+        ),
         MessageFormat::Short => short(report, &mut text),
     }
     text

@@ -17,6 +17,16 @@ use crate::workspace::SeverityName;
 pub struct Args {
     #[command(subcommand)]
     pub command: Command,
+    /// Colour in reports and messages: `auto` on a terminal, unless NO_COLOR is set (CLICOLOR_FORCE forces it).
+    #[arg(long, global = true, value_enum, default_value_t = ColorChoice::Auto, value_name = "WHEN")]
+    pub color: ColorChoice,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    Auto,
+    Always,
+    Never,
 }
 
 #[derive(Debug, Subcommand)]

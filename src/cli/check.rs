@@ -182,7 +182,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, None) => vec![PathBuf::from(".")],
     };
     let paths = expand(&named, args.allow_empty, args.follow_links)?;
-    let colour = std::io::stdout().is_terminal();
+    let colour = crate::cli::colour(std::io::stdout().is_terminal());
     let work = |index: usize| match &paths[index] {
         Ok(found) => check_file(found, args, colour, &workspace),
         Err(error) => Err(again(error)),

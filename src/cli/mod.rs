@@ -64,7 +64,37 @@ pub(crate) fn write_stdout_with(
     }
 }
 
+/// The colour asked for with `--color`, set once a run.
+static COLOUR: std::sync::OnceLock<args::ColorChoice> = std::sync::OnceLock::new();
+
+/// Whether to colour what goes to a stream that is (or is not) a terminal:
+/// `--color always` or `never`; with `auto`, a terminal unless `NO_COLOR`
+/// is set, and anything where `CLICOLOR_FORCE` is (the conventions of
+/// no-color.org and bixense.com/clicolors).
+pub(crate) fn colour(terminal: bool) -> bool {
+    let set = |name: &str| std::env::var_os(name).is_some_and(|v| !v.is_empty() && v != "0");
+    match COLOUR.get().copied().unwrap_or(args::ColorChoice::Auto) {
+        args::ColorChoice::Always => true,
+        args::ColorChoice::Never => false,
+        args::ColorChoice::Auto => {
+            std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+                && (terminal || set("CLICOLOR_FORCE"))
+        }
+    }
+}
+
 pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
+    let _ = COLOUR.set(args.color);
+    // The tool's own errors (miette's reports on stderr) follow the choice.
+    use std::io::IsTerminal;
+    let errors_in_colour = colour(std::io::stderr().is_terminal());
+    let _ = miette::set_hook(Box::new(move |_| {
+        Box::new(
+            miette::MietteHandlerOpts::new()
+                .color(errors_in_colour)
+                .build(),
+        )
+    }));
     match &args.command {
         args::Command::Check(check) => check::run(check),
         args::Command::Rewrite(rewrite) => rewrite::run(rewrite),
