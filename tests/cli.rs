@@ -1407,3 +1407,29 @@ fn colour_follows_the_option_and_the_environment() {
         &[("CLICOLOR_FORCE", "1"), ("NO_COLOR", "1")]
     ));
 }
+
+/// The summary says how many findings `--fix` would answer, and how many
+/// more `--unsafe-fixes` would.
+#[test]
+fn the_summary_counts_what_fix_would_answer() {
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "tests/fixtures/lint/N001_trigger.mpf",
+            "tests/fixtures/lint/N099_trigger.mpf",
+        ],
+        b"",
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("in 2 files (1 fixable with `--fix`, 1 more with `--unsafe-fixes`)"),
+        "{stderr}"
+    );
+    let output = run(
+        &["check", "--format", "short", "samples/PAPER_EXAMPLE3.MPF"],
+        b"",
+    );
+    assert!(!String::from_utf8_lossy(&output.stderr).contains("fixable"));
+}

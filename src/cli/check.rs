@@ -17,7 +17,7 @@ use crate::cli::render::{
     JSON_START,
 };
 use crate::cli::{write_stdout, ExitStatus};
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
 use crate::semantic::swivels::OnMachine;
@@ -114,6 +114,9 @@ struct Counts {
     errors: usize,
     warnings: usize,
     infos: usize,
+    /// Findings with a safe fix (`--fix` applies it), and with an unsafe one.
+    fixable: usize,
+    unsafe_fixable: usize,
 }
 
 impl Counts {
@@ -124,10 +127,19 @@ impl Counts {
                 .filter(|d| d.severity == severity)
                 .count()
         };
+        let fixes = |applicability| {
+            diagnostics
+                .iter()
+                .filter_map(|d| d.fix.as_deref())
+                .filter(|fix| fix.applicability == applicability)
+                .count()
+        };
         Self {
             errors: count(Severity::Error),
             warnings: count(Severity::Warning),
             infos: count(Severity::Info),
+            fixable: fixes(Applicability::Safe),
+            unsafe_fixable: fixes(Applicability::Unsafe),
         }
     }
 
@@ -135,6 +147,8 @@ impl Counts {
         self.errors += other.errors;
         self.warnings += other.warnings;
         self.infos += other.infos;
+        self.fixable += other.fixable;
+        self.unsafe_fixable += other.unsafe_fixable;
     }
 
     /// `3 errors, 2 warnings in 5 files`, as ruff and clippy sum up.
@@ -157,7 +171,17 @@ impl Counts {
         } else {
             parts.join(", ")
         };
-        format!("{found} in {}", plural(files, "file"))
+        let mut summary = format!("{found} in {}", plural(files, "file"));
+        match (self.fixable, self.unsafe_fixable) {
+            (0, 0) => {}
+            (0, n) => summary += &format!(" ({n} fixable with `--fix --unsafe-fixes`)"),
+            (n, 0) => summary += &format!(" ({n} fixable with `--fix`)"),
+            (n, more) => {
+                summary +=
+                    &format!(" ({n} fixable with `--fix`, {more} more with `--unsafe-fixes`)")
+            }
+        }
+        summary
     }
 }
 
