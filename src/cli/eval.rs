@@ -6,7 +6,7 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, read, stdin_unless_terminal, Found};
+use crate::cli::input::{again, expand, named_or_stdin, read, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::{write_stdout, ExitStatus};
@@ -22,10 +22,7 @@ use crate::workspace::{Given, Workspace};
 use std::sync::Arc;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
-    let named = match args.paths.is_empty() {
-        true => stdin_unless_terminal("eval")?,
-        false => args.paths.clone(),
-    };
+    let named = named_or_stdin(&args.paths, "eval")?;
     let paths = expand(&named, args.allow_empty, args.follow_links)?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),

@@ -109,11 +109,14 @@ pub fn again(error: &CliError) -> CliError {
     }
 }
 
-/// The paths a command reads when none is named: standard input, unless it
+/// The paths `command` reads: those named, else standard input, unless it
 /// is a terminal, where waiting for a program to be typed would look like a
 /// hang.
-pub fn stdin_unless_terminal(command: &'static str) -> Result<Vec<PathBuf>, CliError> {
+pub fn named_or_stdin(paths: &[PathBuf], command: &'static str) -> Result<Vec<PathBuf>, CliError> {
     use std::io::IsTerminal;
+    if !paths.is_empty() {
+        return Ok(paths.to_vec());
+    }
     if std::io::stdin().is_terminal() {
         return Err(CliError::NoProgram { command });
     }

@@ -13,7 +13,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, read, stdin_unless_terminal, Found};
+use crate::cli::input::{again, expand, named_or_stdin, read, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
@@ -43,10 +43,7 @@ struct Outcome {
 }
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
-    let named = match args.paths.is_empty() {
-        true => stdin_unless_terminal("rewrite")?,
-        false => args.paths.clone(),
-    };
+    let named = named_or_stdin(&args.paths, "rewrite")?;
     let paths = expand(&named, args.allow_empty, args.follow_links)?;
     let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
