@@ -4,6 +4,7 @@
 
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::cycle600::{rewrite, Rewrite};
+pub use crate::lint::Analyzed;
 use crate::lint::{self, Settings};
 use crate::semantic::{analyze, Analysis, Model};
 use crate::syntax::{program_kind, ProgramKind};
@@ -16,7 +17,12 @@ pub struct Document<'src> {
 }
 
 /// What a rewrite makes of a program.
-pub struct Rewritten {
+pub struct Rewritten<'src> {
+    /// The model the rewrite read, for other questions about the same
+    /// program (`eval`'s CYCLE800 calls), its syntax errors moved to
+    /// `diagnostics`; `None` for a program that never names CYCLE600, which
+    /// only the streaming syntax pass reads.
+    pub model: Option<Model<'src>>,
     /// How each CYCLE600 call evaluated.
     pub analysis: Analysis,
     /// The edits, and the calls rewritten and refused.
@@ -26,7 +32,7 @@ pub struct Rewritten {
     pub diagnostics: Vec<Diagnostic>,
 }
 
-impl Rewritten {
+impl Rewritten<'_> {
     pub fn has_errors(&self) -> bool {
         self.diagnostics
             .iter()
@@ -54,20 +60,28 @@ impl<'src> Document<'src> {
         lint::check_outcome(self.source, self.name, self.kind, settings)
     }
 
+    /// [`Self::check`], keeping what the analysis built: the model, the
+    /// CYCLE600 walk's results and the findings with their fixes, for the
+    /// questions an editor asks after the findings.
+    pub fn analyze(&self, settings: &Settings) -> Analyzed<'src> {
+        lint::analyze_program(self.source, self.name, self.kind, settings)
+    }
+
     /// The CYCLE600 calls rewritten as `settings.emit` asks, with the
     /// measured values and HEAD_DEF of `settings`.
-    pub fn rewrite(&self, settings: &Settings) -> Rewritten {
+    pub fn rewrite(&self, settings: &Settings) -> Rewritten<'src> {
         // A program that never names CYCLE600 has nothing to rewrite: it
         // needs only the streaming syntax pass, not its trees in memory.
         if !crate::semantic::mentions_cycle600(self.source) {
             return Rewritten {
+                model: None,
                 analysis: Analysis::default(),
                 rewrite: Rewrite::default(),
                 diagnostics: crate::syntax::diagnostics(self.source),
             };
         }
         // One parse for the syntax diagnostics, the walk and the rewrite.
-        let model = Model::build(self.source, self.kind);
+        let mut model = Model::build(self.source, self.kind);
         let heads = settings.heads.as_ref();
         let analysis = analyze(&model, &settings.supplied, heads);
         let mut rewrite = rewrite(&model, &analysis, &settings.emit);
@@ -75,16 +89,56 @@ impl<'src> Document<'src> {
             let comments = crate::emit::axes::comments(self.source, &analysis, &rewrite.edits, on);
             rewrite.edits.extend(comments);
         }
-        let mut diagnostics = model.syntax;
+        let mut diagnostics = std::mem::take(&mut model.syntax);
         if heads.is_none() && !analysis.calls.is_empty() {
             diagnostics.push(crate::semantic::head_def::not_found());
         }
         diagnostics.extend(rewrite.diagnostics.iter().cloned());
         diagnostics.sort_by_key(|d| (d.span.start, d.code));
         Rewritten {
+            model: Some(model),
             analysis,
             rewrite,
             diagnostics,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An editor's server answers requests on several threads from one
+    /// analysis: the model, its line table included, reads alike from each.
+    #[test]
+    fn one_analysis_answers_on_several_threads() {
+        let mut text = String::from("DEF REAL _A\nSTART:\n");
+        for n in 0..2_000 {
+            text.push_str(&format!("IF R{n}>0\nG1 X{n} F100\nENDIF\n"));
+        }
+        text.push_str("GOTOB START\nM30\n");
+        let document = Document::new("SHARED.MPF", text.as_bytes());
+        let analyzed = document.analyze(&Settings::default());
+        let expected: Vec<&str> = text.lines().collect();
+        let lines = &analyzed.model.lines;
+        assert_eq!(lines.len(), expected.len());
+        std::thread::scope(|scope| {
+            for (step, first) in [(1, 0), (7, 3), (13, 5)] {
+                let (expected, text) = (&expected, &text);
+                scope.spawn(move || {
+                    // Each thread goes its own way, moving the shared
+                    // cursor under the others' feet.
+                    for round in 0..3 {
+                        let mut row = (first + round) % expected.len();
+                        for _ in 0..expected.len() {
+                            let content = lines.raw(row).content;
+                            assert_eq!(&text[content.start..content.end], expected[row]);
+                            row = (row + step) % expected.len();
+                        }
+                    }
+                });
+            }
+        });
+        assert!(analyzed.model.labels.any_within(0..text.len()));
     }
 }

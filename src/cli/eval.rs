@@ -131,7 +131,7 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                 if let Some(machine) = &machine {
                     let index = LineIndex::new(source);
                     let written: Vec<serde_json::Value> =
-                        cycle800_swivels(&program.document, machine)
+                        cycle800_swivels(&program.document, analyzed.model.as_ref(), machine)
                             .iter()
                             .map(|(asked, solved)| {
                                 serde_json::json!({
@@ -163,7 +163,9 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                     text.push_str(&format!("{name}: no CYCLE600 call\n"));
                 }
                 if let Some(machine) = &machine {
-                    for (asked, solved) in cycle800_swivels(&program.document, machine) {
+                    for (asked, solved) in
+                        cycle800_swivels(&program.document, analyzed.model.as_ref(), machine)
+                    {
                         let row = index.position(asked.span.start).row;
                         text.push_str(&format!(
                             "{name}:{row}: {}\n  axes     {}\n\n",
@@ -201,16 +203,26 @@ fn solve_asked(asked: &Asked, machine: &OnMachine) -> Solved {
 }
 
 /// The CYCLE800 calls of a program whose arguments are constants, with the
-/// axis positions each takes: found only where a machine is given.
+/// axis positions each takes: found only where a machine is given. The
+/// rewrite's model is read when it built one; a program without CYCLE600 is
+/// parsed here, once.
 fn cycle800_swivels(
     document: &crate::document::Document,
+    model: Option<&crate::semantic::Model>,
     machine: &OnMachine,
 ) -> Vec<(Asked, Solved)> {
     if !crate::semantic::mentions_cycle(document.source, b"800") {
         return Vec::new();
     }
-    let model = crate::semantic::Model::build(document.source, document.kind);
-    swivels::cycle800_calls(&model)
+    let built;
+    let model = match model {
+        Some(model) => model,
+        None => {
+            built = crate::semantic::Model::build(document.source, document.kind);
+            &built
+        }
+    };
+    swivels::cycle800_calls(model)
         .into_iter()
         .map(|asked| {
             let solved = solve_asked(&asked, machine);

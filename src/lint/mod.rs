@@ -141,9 +141,43 @@ pub struct Outcome {
     pub unresolved_calls: Vec<String>,
 }
 
+/// One analysis of a program, everything it built kept: the model (lines,
+/// labels, definitions, block structure), the CYCLE600 walk's results and
+/// the findings with their fixes. The command line reports the findings and
+/// drops the rest; an editor's server answers its questions from the rest.
+pub struct Analyzed<'src> {
+    pub model: Model<'src>,
+    /// How each CYCLE600 call evaluated; `None` for a program that never
+    /// names CYCLE600 (no walk runs).
+    pub walk: Option<Analysis>,
+    /// What `check` reports, in source order.
+    pub findings: Vec<Diagnostic>,
+    /// As [`Outcome::unresolved_calls`].
+    pub unresolved_calls: Vec<String>,
+}
+
+impl From<Analyzed<'_>> for Outcome {
+    fn from(analyzed: Analyzed) -> Self {
+        Self {
+            diagnostics: analyzed.findings,
+            unresolved_calls: analyzed.unresolved_calls,
+        }
+    }
+}
+
 /// [`check`], with what it could not check.
 pub fn check_outcome(source: &[u8], name: &str, kind: ProgramKind, settings: &Settings) -> Outcome {
-    lint(PlainScanner::Scan, source, name, kind, settings)
+    analyze_with(PlainScanner::Scan, source, name, kind, settings).into()
+}
+
+/// [`check`], keeping the model and the walk it built.
+pub fn analyze_program<'src>(
+    source: &'src [u8],
+    name: &str,
+    kind: ProgramKind,
+    settings: &Settings,
+) -> Analyzed<'src> {
+    analyze_with(PlainScanner::Scan, source, name, kind, settings)
 }
 
 /// [`check`] with the plain-line scanner given: [`PlainScanner::ParseEveryLine`]
@@ -157,16 +191,16 @@ pub fn check_with(
     kind: ProgramKind,
     settings: &Settings,
 ) -> Vec<Diagnostic> {
-    lint(scan_plain_line, source, name, kind, settings).diagnostics
+    analyze_with(scan_plain_line, source, name, kind, settings).findings
 }
 
-fn lint(
+fn analyze_with<'src>(
     scan_plain_line: PlainScanner,
-    source: &[u8],
+    source: &'src [u8],
     name: &str,
     kind: ProgramKind,
     settings: &Settings,
-) -> Outcome {
+) -> Analyzed<'src> {
     let Settings {
         selection,
         environment,
@@ -257,9 +291,12 @@ fn lint(
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
     one_finding_per_cause(&mut kept, &model.labels);
-    Outcome {
-        diagnostics: kept,
-        unresolved_calls: file.take_unresolved().into_iter().collect(),
+    let unresolved_calls = file.take_unresolved().into_iter().collect();
+    Analyzed {
+        model: file.into_model(),
+        walk: analysis,
+        findings: kept,
+        unresolved_calls,
     }
 }
 

@@ -15,9 +15,10 @@ use crate::syntax::plain::PlainFacts;
 use crate::syntax::tree::Block;
 use crate::syntax::ProgramKind;
 
-/// The file a rule is looking at.
-pub struct FileContext<'a> {
-    pub source: &'a [u8],
+/// The file a rule is looking at: its source lives for `'src`, what the
+/// caller gives with it (its name, the machine's names) for `'a`.
+pub struct FileContext<'a, 'src> {
+    pub source: &'src [u8],
     /// The file's name as given (`<stdin>` or `--stdin-filename`).
     pub name: &'a str,
     pub kind: ProgramKind,
@@ -27,15 +28,15 @@ pub struct FileContext<'a> {
     wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
     /// The program's model, complete once the line pass is over.
-    model: OnceCell<Model<'a>>,
+    model: OnceCell<Model<'src>>,
     /// Subprograms called whose declaration was found nowhere, so that
     /// their calls could not be checked.
     unresolved: RefCell<BTreeSet<String>>,
 }
 
-impl<'a> FileContext<'a> {
+impl<'a, 'src> FileContext<'a, 'src> {
     pub fn new(
-        source: &'a [u8],
+        source: &'src [u8],
         name: &'a str,
         kind: ProgramKind,
         environment: &'a Environment,
@@ -67,13 +68,20 @@ impl<'a> FileContext<'a> {
     }
 
     /// Gives the model the line pass built, before the rules finish.
-    pub(crate) fn complete(&self, model: Model<'a>) {
+    pub(crate) fn complete(&self, model: Model<'src>) {
         let _ = self.model.set(model);
+    }
+
+    /// The model, once the rules are done with it.
+    pub(crate) fn into_model(self) -> Model<'src> {
+        self.model
+            .into_inner()
+            .expect("the model is complete once the line pass is over")
     }
 
     /// The program's model; asked for once the line pass is over (in
     /// [`Check::finish`]).
-    pub fn model(&self) -> &Model<'a> {
+    pub fn model(&self) -> &Model<'src> {
         self.model
             .get()
             .expect("the model is complete before the rules finish")

@@ -10,6 +10,7 @@
 
 use std::cell::OnceCell;
 use std::collections::HashSet;
+use std::sync::OnceLock;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
@@ -71,7 +72,8 @@ pub struct Model<'src> {
     pub first_executable: Option<(usize, usize)>,
     /// Where the line of the last declaration before it ends.
     pub declarations_end: Option<usize>,
-    structure: OnceCell<Structure>,
+    /// Built when first asked for, by whichever thread asks.
+    structure: OnceLock<Structure>,
 }
 
 impl<'src> Model<'src> {
@@ -420,7 +422,7 @@ impl<'src> ModelBuilder<'src> {
             stopre: self.stopre,
             first_executable: self.first_executable,
             declarations_end: self.declarations_end,
-            structure: OnceCell::new(),
+            structure: OnceLock::new(),
         }
     }
 }

@@ -3,7 +3,7 @@
 //! go to any line and read its tree without parsing it again.
 
 use std::borrow::Cow;
-use std::cell::Cell;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{Block, Line, LineKind};
@@ -23,15 +23,44 @@ pub struct Lines<'src> {
     /// Bit `n % 64` of word `n / 64`: line `n` is plain ([`plain::is_plain`]),
     /// asked by every pass over the lines.
     plain: Vec<u64>,
-    /// The line found last and where it starts: the passes over the lines go
-    /// forward, so the next line asked for is mostly read on from there.
-    last: Cell<(usize, usize)>,
+    /// The line found last and where it starts ([`Cursor`]): the passes over
+    /// the lines go forward, so the next line asked for is mostly read on
+    /// from there. One atomic word, so that the table can be read from
+    /// several threads (an editor's server); a reader that finds it moved
+    /// by another only reads on from an earlier start.
+    last: AtomicU64,
     /// (line, tree) of the lines not plain, in line order.
     trees: Vec<(usize, Line)>,
 }
 
 /// One line in this many has its start kept.
 const STRIDE: usize = 32;
+
+/// A line and how far past its stride's first line it starts, in one word:
+/// 32 bits each. A line past the 2^32nd, or starting 4 GiB past its
+/// stride's start, is not remembered (nothing a program holds).
+struct Cursor {
+    line: usize,
+    past_stride: usize,
+}
+
+impl Cursor {
+    const NONE: u64 = u64::MAX;
+
+    fn pack(line: usize, past_stride: usize) -> u64 {
+        match (u32::try_from(line), u32::try_from(past_stride)) {
+            (Ok(line), Ok(past)) if line != u32::MAX => (u64::from(line) << 32) | u64::from(past),
+            _ => Self::NONE,
+        }
+    }
+
+    fn unpack(word: u64) -> Option<Self> {
+        (word != Self::NONE).then(|| Self {
+            line: (word >> 32) as usize,
+            past_stride: (word & u64::from(u32::MAX)) as usize,
+        })
+    }
+}
 
 /// Source bytes of lines whose trees are kept: a tree costs about 50 bytes a
 /// byte of source, so this is about 50 MiB, against 5 MiB for the largest
@@ -64,15 +93,19 @@ impl<'src> Lines<'src> {
     pub fn raw(&self, index: usize) -> RawLine {
         assert!(index < self.len, "line {index} of {}", self.len);
         let strided = index / STRIDE * STRIDE;
-        let (mut at, mut start) = match self.last.get() {
-            (last, start) if (strided..=index).contains(&last) => (last, start),
-            _ => (strided, self.strided_starts[index / STRIDE]),
+        let strided_start = self.strided_starts[index / STRIDE];
+        let (mut at, mut start) = match Cursor::unpack(self.last.load(Ordering::Relaxed)) {
+            Some(Cursor { line, past_stride }) if (strided..=index).contains(&line) => {
+                (line, strided_start + past_stride)
+            }
+            _ => (strided, strided_start),
         };
         while at < index {
             start = lines::line_from(self.source, start).full().end;
             at += 1;
         }
-        self.last.set((index, start));
+        let cursor = Cursor::pack(index, start - strided_start);
+        self.last.store(cursor, Ordering::Relaxed);
         lines::line_from(self.source, start)
     }
 
@@ -200,7 +233,7 @@ impl LinesRecorder {
             len: self.len,
             strided_starts: self.strided_starts,
             plain: self.plain,
-            last: Cell::new((0, 0)),
+            last: AtomicU64::new(Cursor::NONE),
             trees: self.trees,
         }
     }
