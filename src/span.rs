@@ -154,27 +154,18 @@ impl<'a> LineIndex<'a> {
     fn width(&self, bytes: &[u8], unit: ColumnUnit) -> usize {
         // Only a line with other bytes than ASCII asks how the file is
         // encoded: the question reads the whole file.
-        if unit == ColumnUnit::Bytes || bytes.is_ascii() || !self.is_utf8() {
+        if unit == ColumnUnit::Bytes || bytes.is_ascii() {
             return bytes.len();
         }
-        let starts = bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count();
-        match unit {
-            ColumnUnit::Utf16 => starts + bytes.iter().filter(|&&b| b >= 0xF0).count(),
-            _ => starts,
-        }
+        width(bytes, unit, self.is_utf8())
     }
 
     /// The length in bytes of the character at `at`.
     fn char_len(&self, at: usize) -> usize {
-        let lead = self.source[at];
-        if lead < 0x80 || !self.is_utf8() {
+        if self.source[at] < 0x80 {
             return 1;
         }
-        match lead {
-            0xF0.. => 4,
-            0xE0.. => 3,
-            _ => 2,
-        }
+        char_len(self.source[at], self.is_utf8())
     }
 
     /// Where 0-based line `row` starts (the end of the file past the last).
@@ -200,8 +191,34 @@ impl<'a> LineIndex<'a> {
 }
 
 /// Whether `bytes` are UTF-8.
-fn is_utf8(bytes: &[u8]) -> bool {
+pub(crate) fn is_utf8(bytes: &[u8]) -> bool {
     std::str::from_utf8(bytes).is_ok()
+}
+
+/// The columns `bytes` (a part of one line of a file that is UTF-8 or not)
+/// take in `unit`. In a file that is not UTF-8 every byte is a character of
+/// the Basic Multilingual Plane (see [`LineIndex`]).
+pub(crate) fn width(bytes: &[u8], unit: ColumnUnit, utf8: bool) -> usize {
+    if unit == ColumnUnit::Bytes || !utf8 {
+        return bytes.len();
+    }
+    let starts = bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count();
+    match unit {
+        ColumnUnit::Utf16 => starts + bytes.iter().filter(|&&b| b >= 0xF0).count(),
+        _ => starts,
+    }
+}
+
+/// The length in bytes of the character whose first byte is `lead`.
+pub(crate) fn char_len(lead: u8, utf8: bool) -> usize {
+    if lead < 0x80 || !utf8 {
+        return 1;
+    }
+    match lead {
+        0xF0.. => 4,
+        0xE0.. => 3,
+        _ => 2,
+    }
 }
 
 // What ends a line, for every part of the program: LF, CRLF and a lone CR

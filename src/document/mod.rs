@@ -2,6 +2,8 @@
 //! writes for it out. The command line and an editor's server call these,
 //! so both report the same findings from the same analysis.
 
+pub mod text;
+
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::emit::cycle600::{rewrite, Rewrite};
 pub use crate::lint::Analyzed;
