@@ -22,6 +22,7 @@ pub(crate) mod modal;
 pub mod model;
 pub(crate) mod structure;
 pub mod swivels;
+pub mod uses;
 pub mod value;
 pub mod walk;
 
