@@ -31,6 +31,8 @@
 //! - [`archive`]: the members of archives in text (`%_N_PART_MPF` sections) and binary form
 //!   (`.arc`); a member's change as edits of the archive, headers included.
 //! - [`cli`]: the command line (options, files, reports); the only place that prints.
+//! - [`lsp`]: the language server (`sinuprep lsp`): protocol messages on stdout, its log
+//!   on stderr, every answer from the analysis the command line uses.
 
 pub mod archive;
 pub mod cli;
@@ -40,6 +42,7 @@ pub mod edit;
 pub mod emit;
 pub mod kinematics;
 pub mod lint;
+pub mod lsp;
 pub mod registry;
 pub mod rotation;
 pub mod semantic;

@@ -58,6 +58,10 @@ pub enum Command {
     Completions(CompletionsArgs),
     /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`).
     Manpage,
+    /// Serve an editor as a language server over stdin and stdout (LSP):
+    /// findings as you type, hover on CYCLE600 calls and names, definitions,
+    /// references, symbols, folding and fixes.
+    Lsp,
 }
 
 #[derive(Debug, clap::Args)]

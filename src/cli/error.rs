@@ -33,6 +33,13 @@ pub enum CliError {
     )]
     NoPrograms { path: PathBuf },
 
+    #[error("the language server stopped: {0}")]
+    #[diagnostic(
+        code(sinuprep::lsp),
+        help("`sinuprep lsp` speaks the Language Server Protocol on stdin and stdout; start it from an editor")
+    )]
+    Server(String),
+
     #[error("{count} programs to rewrite, and only one standard output")]
     #[diagnostic(
         code(sinuprep::usage),

@@ -286,6 +286,20 @@ fn provenance_text(argument: &Argument) -> String {
     }
 }
 
+/// The table `eval` prints for one call (an editor's hover shows it).
+pub(crate) fn call_table(site: &CallSite, name: &str, source: &[u8], options: &Options) -> String {
+    let mut out = String::new();
+    table(
+        site,
+        name,
+        source,
+        &LineIndex::new(source),
+        options,
+        &mut out,
+    );
+    out
+}
+
 fn table(
     site: &CallSite,
     name: &str,

@@ -26,7 +26,7 @@ mod check;
 mod convert;
 mod describe;
 pub mod error;
-mod eval;
+pub(crate) mod eval;
 mod input;
 mod mapped;
 mod output;
@@ -104,5 +104,8 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Axes(axes) => axes::run(axes),
         args::Command::Completions(completions) => describe::completions(completions.shell),
         args::Command::Manpage => describe::manpage(),
+        args::Command::Lsp => crate::lsp::run()
+            .map(|()| ExitStatus::Success)
+            .map_err(CliError::Server),
     }
 }

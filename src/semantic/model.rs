@@ -123,6 +123,15 @@ impl<'src> Model<'src> {
             .unwrap_or(self.source.len())
     }
 
+    /// Each control block (IF, WHILE, FOR, LOOP, REPEAT) that is closed:
+    /// the row it opens on and the row that closes it, 0-based.
+    pub fn block_ends(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.structure()
+            .ends
+            .iter()
+            .map(|(&open, &(_, end))| (open, end))
+    }
+
     /// The block structure the walk follows, built when first asked for.
     pub(crate) fn structure(&self) -> &Structure {
         self.structure.get_or_init(|| Structure::build(self))

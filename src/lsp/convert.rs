@@ -1,0 +1,153 @@
+//! The protocol's types from the library's and back: positions in the unit
+//! the client and server agreed on, `file:` URIs and paths, diagnostics.
+
+use std::path::PathBuf;
+
+use lsp_types as lsp;
+
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::document::text::Text;
+use crate::span::{ColumnUnit, Position, Span};
+
+/// How the client counts a line's characters: UTF-8 bytes when it offers
+/// them (no conversion at all), else the protocol's default, UTF-16 units.
+pub fn encoding(client: &lsp::ClientCapabilities) -> (lsp::PositionEncodingKind, ColumnUnit) {
+    let offered = client
+        .general
+        .as_ref()
+        .and_then(|general| general.position_encodings.as_deref())
+        .unwrap_or_default();
+    if offered.contains(&lsp::PositionEncodingKind::UTF8) {
+        (lsp::PositionEncodingKind::UTF8, ColumnUnit::Bytes)
+    } else {
+        (lsp::PositionEncodingKind::UTF16, ColumnUnit::Utf16)
+    }
+}
+
+/// The byte offset of a client's position (clamped to the text).
+pub fn offset(text: &Text, position: lsp::Position, unit: ColumnUnit) -> usize {
+    let position = Position {
+        row: position.line as usize + 1,
+        column: position.character as usize + 1,
+    };
+    text.offset(position, unit)
+}
+
+pub fn position(text: &Text, offset: usize, unit: ColumnUnit) -> lsp::Position {
+    let Position { row, column } = text.position(offset, unit);
+    lsp::Position::new(saturate(row - 1), saturate(column - 1))
+}
+
+pub fn range(text: &Text, span: Span, unit: ColumnUnit) -> lsp::Range {
+    lsp::Range::new(
+        position(text, span.start, unit),
+        position(text, span.end, unit),
+    )
+}
+
+/// The byte range of a client's range, its ends in order.
+pub fn span(text: &Text, range: lsp::Range, unit: ColumnUnit) -> Span {
+    let (a, b) = (
+        offset(text, range.start, unit),
+        offset(text, range.end, unit),
+    );
+    Span::new(a.min(b), a.max(b))
+}
+
+fn saturate(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+pub fn diagnostic(text: &Text, found: &Diagnostic, unit: ColumnUnit) -> lsp::Diagnostic {
+    let severity = match found.severity {
+        Severity::Error => lsp::DiagnosticSeverity::ERROR,
+        Severity::Warning => lsp::DiagnosticSeverity::WARNING,
+        Severity::Info => lsp::DiagnosticSeverity::INFORMATION,
+    };
+    let mut message = found.message.clone();
+    if let Some(help) = &found.help {
+        message.push_str("\nhelp: ");
+        message.push_str(help);
+    }
+    lsp::Diagnostic {
+        range: range(text, found.span, unit),
+        severity: Some(severity),
+        code: Some(lsp::NumberOrString::String(found.code.to_string())),
+        source: Some("sinuprep".to_string()),
+        message,
+        ..lsp::Diagnostic::default()
+    }
+}
+
+/// The file a `file:` URI names; `None` for another scheme (an unsaved
+/// buffer), which is checked with the default settings.
+pub fn path(uri: &lsp::Uri) -> Option<PathBuf> {
+    let rest = uri.as_str().strip_prefix("file://")?;
+    // `file:///C:/...` on Windows; `file://server/share/...` is a UNC path.
+    let rest = match rest.strip_prefix('/') {
+        Some(path) if cfg!(windows) && path.as_bytes().get(1) == Some(&b':') => path.to_string(),
+        Some(path) => format!("/{path}"),
+        None if cfg!(windows) => format!("//{rest}"),
+        None => return None,
+    };
+    let decoded = percent_decode(rest.as_bytes())?;
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStringExt;
+        Some(PathBuf::from(std::ffi::OsString::from_vec(decoded)))
+    }
+    #[cfg(not(unix))]
+    {
+        String::from_utf8(decoded).ok().map(PathBuf::from)
+    }
+}
+
+fn percent_decode(bytes: &[u8]) -> Option<Vec<u8>> {
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut at = 0;
+    while at < bytes.len() {
+        if bytes[at] == b'%' {
+            let hex = std::str::from_utf8(bytes.get(at + 1..at + 3)?).ok()?;
+            out.push(u8::from_str_radix(hex, 16).ok()?);
+            at += 3;
+        } else {
+            out.push(bytes[at]);
+            at += 1;
+        }
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::str::FromStr;
+
+    #[test]
+    fn a_file_uri_names_its_path() {
+        let uri = lsp::Uri::from_str("file:///home/cam/K%C3%BChl%20PART.MPF").expect("uri");
+        if cfg!(unix) {
+            assert_eq!(path(&uri), Some(PathBuf::from("/home/cam/Kühl PART.MPF")));
+        }
+        let untitled = lsp::Uri::from_str("untitled:Untitled-1").expect("uri");
+        assert_eq!(path(&untitled), None);
+    }
+
+    #[test]
+    fn positions_go_both_ways_in_the_agreed_unit() {
+        let text = Text::new("; ü😀\nG1 X1\n".as_bytes().to_vec());
+        let x = "; ü😀\nG1 ".len();
+        for unit in [ColumnUnit::Utf16, ColumnUnit::Bytes] {
+            let at = position(&text, x, unit);
+            assert_eq!(at.line, 1);
+            assert_eq!(offset(&text, at, unit), x);
+        }
+        let end = position(&text, "; ü😀".len(), ColumnUnit::Utf16);
+        assert_eq!(end, lsp::Position::new(0, 5));
+        // A position past the end is the end.
+        assert_eq!(
+            offset(&text, lsp::Position::new(99, 0), ColumnUnit::Utf16),
+            text.bytes().len()
+        );
+    }
+}

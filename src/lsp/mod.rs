@@ -1,0 +1,326 @@
+//! `sinuprep lsp`: the language server, over stdio with `lsp-server` (in
+//! order, synchronous: rust-analyzer's and ruff's choice). It holds the open
+//! documents and turns the protocol's requests into the library's calls and
+//! the answers back (`answers`, `convert`); every finding and every answer
+//! comes from the same analysis as `check` and `eval`. It writes protocol
+//! messages only to stdout; what it has to say otherwise goes to stderr.
+
+// `lsp_types::Uri` caches its parsed parts in a `Cell`; its `Hash` and `Eq`
+// read only its text, so it is a sound key.
+#![allow(clippy::mutable_key_type)]
+
+mod answers;
+mod convert;
+mod transport;
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_types as lsp;
+use lsp_types::notification::Notification as _;
+use lsp_types::request::Request as _;
+
+use crate::document::text::Text;
+use crate::lint::Settings;
+use crate::span::ColumnUnit;
+use crate::workspace::Workspace;
+
+use answers::Snapshot;
+
+/// Serves one client on stdin and stdout until it says `exit`.
+pub fn run() -> Result<(), String> {
+    let (connection, transport) = transport::stdio();
+    let served = serve(&connection);
+    drop(connection);
+    let joined = transport.join().map_err(|e| e.to_string());
+    joined.and(served)
+}
+
+fn serve(connection: &Connection) -> Result<(), String> {
+    let (id, params) = connection.initialize_start().map_err(|e| e.to_string())?;
+    let params: lsp::InitializeParams =
+        serde_json::from_value(params).map_err(|e| format!("initialize: {e}"))?;
+    let (encoding, unit) = convert::encoding(&params.capabilities);
+    let capabilities = lsp::ServerCapabilities {
+        position_encoding: Some(encoding),
+        text_document_sync: Some(lsp::TextDocumentSyncCapability::Options(
+            lsp::TextDocumentSyncOptions {
+                open_close: Some(true),
+                change: Some(lsp::TextDocumentSyncKind::INCREMENTAL),
+                save: Some(lsp::TextDocumentSyncSaveOptions::Supported(true)),
+                ..lsp::TextDocumentSyncOptions::default()
+            },
+        )),
+        hover_provider: Some(lsp::HoverProviderCapability::Simple(true)),
+        definition_provider: Some(lsp::OneOf::Left(true)),
+        references_provider: Some(lsp::OneOf::Left(true)),
+        document_symbol_provider: Some(lsp::OneOf::Left(true)),
+        folding_range_provider: Some(lsp::FoldingRangeProviderCapability::Simple(true)),
+        code_action_provider: Some(lsp::CodeActionProviderCapability::Simple(true)),
+        ..lsp::ServerCapabilities::default()
+    };
+    let initialized = serde_json::json!({
+        "capabilities": capabilities,
+        "serverInfo": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION") },
+    });
+    connection
+        .initialize_finish(id, initialized)
+        .map_err(|e| e.to_string())?;
+    let mut server = Server {
+        connection,
+        documents: HashMap::new(),
+        workspace: Workspace::default(),
+        unit,
+    };
+    for message in &connection.receiver {
+        match message {
+            Message::Request(request) => {
+                if connection
+                    .handle_shutdown(&request)
+                    .map_err(|e| e.to_string())?
+                {
+                    return Ok(());
+                }
+                server.request(request);
+            }
+            Message::Notification(notification) => {
+                if notification.method == lsp::notification::Exit::METHOD {
+                    return Ok(());
+                }
+                server.notification(notification);
+            }
+            Message::Response(_) => {}
+        }
+    }
+    Ok(())
+}
+
+/// A document the client has open.
+struct Open {
+    text: Text,
+    /// The path or URI its settings are found by and its findings named by.
+    name: String,
+    settings: Settings,
+}
+
+struct Server<'c> {
+    connection: &'c Connection,
+    documents: HashMap<lsp::Uri, Open>,
+    /// Settings files, HEAD_DEF and definitions read so far: read again
+    /// when the client saves or changes a file.
+    workspace: Workspace,
+    unit: ColumnUnit,
+}
+
+impl Server<'_> {
+    fn send(&self, message: Message) {
+        // A client gone away ends the loop through the receiver.
+        let _ = self.connection.sender.send(message);
+    }
+
+    fn notification(&mut self, notification: Notification) {
+        use lsp::notification as n;
+        match notification.method.as_str() {
+            n::DidOpenTextDocument::METHOD => {
+                if let Some(params) = extract::<lsp::DidOpenTextDocumentParams>(notification) {
+                    let document = params.text_document;
+                    let text = Text::new(document.text.into_bytes());
+                    self.open(document.uri, text);
+                }
+            }
+            n::DidChangeTextDocument::METHOD => {
+                if let Some(params) = extract::<lsp::DidChangeTextDocumentParams>(notification) {
+                    self.change(params);
+                }
+            }
+            n::DidCloseTextDocument::METHOD => {
+                if let Some(params) = extract::<lsp::DidCloseTextDocumentParams>(notification) {
+                    let uri = params.text_document.uri;
+                    self.documents.remove(&uri);
+                    self.publish(uri, Vec::new());
+                }
+            }
+            // A saved or changed file may be a settings file, a HEAD_DEF or
+            // a definition file that every open document reads.
+            n::DidSaveTextDocument::METHOD | n::DidChangeWatchedFiles::METHOD => {
+                self.workspace = Workspace::default();
+                let open: Vec<(lsp::Uri, Text)> = self
+                    .documents
+                    .drain()
+                    .map(|(uri, open)| (uri, open.text))
+                    .collect();
+                for (uri, text) in open {
+                    self.open(uri, text);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn open(&mut self, uri: lsp::Uri, text: Text) {
+        let path = convert::path(&uri);
+        let settings = path
+            .as_deref()
+            .map(|path| self.settings(path))
+            .unwrap_or_default();
+        let name = path.map_or_else(
+            || uri.as_str().to_string(),
+            |p| p.to_string_lossy().into_owned(),
+        );
+        let open = Open {
+            text,
+            name,
+            settings,
+        };
+        let diagnostics =
+            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
+        self.documents.insert(uri.clone(), open);
+        self.publish(uri, diagnostics);
+    }
+
+    /// The settings `check` would use for the file at `path`; the defaults,
+    /// said on stderr, when they cannot be read.
+    fn settings(&self, path: &Path) -> Settings {
+        match self.workspace.for_check(path) {
+            Ok(resolved) => resolved.settings,
+            Err(error) => {
+                eprintln!("sinuprep lsp: {}: {error}", path.display());
+                Settings::default()
+            }
+        }
+    }
+
+    fn change(&mut self, params: lsp::DidChangeTextDocumentParams) {
+        let uri = params.text_document.uri;
+        let Some(open) = self.documents.get_mut(&uri) else {
+            eprintln!(
+                "sinuprep lsp: a change to {} which is not open",
+                uri.as_str()
+            );
+            return;
+        };
+        for change in params.content_changes {
+            match change.range {
+                Some(range) => {
+                    let span = convert::span(&open.text, range, self.unit);
+                    open.text.replace(span.range(), change.text.as_bytes());
+                }
+                None => open.text = Text::new(change.text.into_bytes()),
+            }
+        }
+        let open = &self.documents[&uri];
+        let diagnostics =
+            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
+        self.publish(uri, diagnostics);
+    }
+
+    fn publish(&self, uri: lsp::Uri, diagnostics: Vec<lsp::Diagnostic>) {
+        let params = lsp::PublishDiagnosticsParams::new(uri, diagnostics, None);
+        let method = lsp::notification::PublishDiagnostics::METHOD.to_string();
+        self.send(Message::Notification(Notification::new(method, params)));
+    }
+
+    fn request(&mut self, request: Request) {
+        use lsp::request as r;
+        let id = request.id.clone();
+        let answer = match request.method.as_str() {
+            r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
+                s.hover(p.text_document_position_params.position)
+            }),
+            r::GotoDefinition::METHOD => self.answer(request, |s, p: lsp::GotoDefinitionParams| {
+                let at = p.text_document_position_params;
+                s.definition(&at.text_document.uri, at.position)
+            }),
+            r::References::METHOD => self.answer(request, |s, p: lsp::ReferenceParams| {
+                let at = p.text_document_position;
+                s.references(
+                    &at.text_document.uri,
+                    at.position,
+                    p.context.include_declaration,
+                )
+            }),
+            r::DocumentSymbolRequest::METHOD => self
+                .answer(request, |s, _: lsp::DocumentSymbolParams| {
+                    lsp::DocumentSymbolResponse::Nested(s.symbols())
+                }),
+            r::FoldingRangeRequest::METHOD => {
+                self.answer(request, |s, _: lsp::FoldingRangeParams| s.folding())
+            }
+            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
+                s.code_actions(&p.text_document.uri, p.range)
+            }),
+            method => Err((
+                ErrorCode::MethodNotFound,
+                format!("sinuprep does not answer `{method}`"),
+            )),
+        };
+        let response = match answer {
+            Ok(result) => Response::new_ok(id, result),
+            Err((code, message)) => Response::new_err(id, code as i32, message),
+        };
+        self.send(Message::Response(response));
+    }
+
+    /// The answer to a request about one open document.
+    fn answer<P, R>(
+        &self,
+        request: Request,
+        answer: impl FnOnce(&Snapshot, P) -> R,
+    ) -> Result<serde_json::Value, (ErrorCode, String)>
+    where
+        P: serde::de::DeserializeOwned + HasDocument,
+        R: serde::Serialize,
+    {
+        let params: P = serde_json::from_value(request.params)
+            .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
+        let uri = params.document().clone();
+        let Some(open) = self.documents.get(&uri) else {
+            return Err((
+                ErrorCode::InvalidParams,
+                format!("{} is not open", uri.as_str()),
+            ));
+        };
+        let snapshot = Snapshot::new(&open.text, &open.name, &open.settings, self.unit);
+        serde_json::to_value(answer(&snapshot, params))
+            .map_err(|e| (ErrorCode::InternalError, e.to_string()))
+    }
+}
+
+/// The document a request is about.
+trait HasDocument {
+    fn document(&self) -> &lsp::Uri;
+}
+
+macro_rules! has_document {
+    ($($params:ty => |$p:ident| $uri:expr;)*) => {
+        $(impl HasDocument for $params {
+            fn document(&self) -> &lsp::Uri {
+                let $p = self;
+                $uri
+            }
+        })*
+    };
+}
+
+has_document! {
+    lsp::HoverParams => |p| &p.text_document_position_params.text_document.uri;
+    lsp::GotoDefinitionParams => |p| &p.text_document_position_params.text_document.uri;
+    lsp::ReferenceParams => |p| &p.text_document_position.text_document.uri;
+    lsp::DocumentSymbolParams => |p| &p.text_document.uri;
+    lsp::FoldingRangeParams => |p| &p.text_document.uri;
+    lsp::CodeActionParams => |p| &p.text_document.uri;
+}
+
+/// A notification's parameters; one that does not parse is said on stderr
+/// and ignored, as the protocol asks of notifications.
+fn extract<P: serde::de::DeserializeOwned>(notification: Notification) -> Option<P> {
+    let method = notification.method.clone();
+    match serde_json::from_value(notification.params) {
+        Ok(params) => Some(params),
+        Err(error) => {
+            eprintln!("sinuprep lsp: {method}: {error}");
+            None
+        }
+    }
+}

@@ -1,0 +1,331 @@
+//! `sinuprep lsp` spoken to as an editor speaks to it: the protocol's
+//! framing on stdin and stdout, one request after another.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
+
+use serde_json::{json, Value};
+
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    stdout: BufReader<ChildStdout>,
+    next_id: u64,
+}
+
+impl Client {
+    /// A server, initialized with `capabilities`.
+    fn start(capabilities: Value) -> (Self, Value) {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .arg("lsp")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the server starts");
+        let stdin = child.stdin.take().expect("stdin");
+        let stdout = BufReader::new(child.stdout.take().expect("stdout"));
+        let mut client = Self {
+            child,
+            stdin,
+            stdout,
+            next_id: 0,
+        };
+        let initialized = client.request("initialize", json!({ "capabilities": capabilities }));
+        client.notify("initialized", json!({}));
+        (client, initialized)
+    }
+
+    fn write(&mut self, body: &[u8]) {
+        write!(self.stdin, "Content-Length: {}\r\n\r\n", body.len()).expect("write");
+        self.stdin.write_all(body).expect("write");
+        self.stdin.flush().expect("flush");
+    }
+
+    fn send(&mut self, message: Value) {
+        self.write(message.to_string().as_bytes());
+    }
+
+    fn receive(&mut self) -> Value {
+        let mut length = None;
+        loop {
+            let mut header = String::new();
+            self.stdout.read_line(&mut header).expect("a header");
+            assert!(header.ends_with("\r\n"), "header {header:?}");
+            if header == "\r\n" {
+                break;
+            }
+            if let Some(value) = header.strip_prefix("Content-Length: ") {
+                length = Some(value.trim().parse::<usize>().expect("a length"));
+            }
+        }
+        let mut body = vec![0; length.expect("Content-Length")];
+        self.stdout.read_exact(&mut body).expect("a body");
+        serde_json::from_slice(&body).expect("JSON")
+    }
+
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({ "jsonrpc": "2.0", "method": method, "params": params }));
+    }
+
+    /// The response to a request: its result, or its error.
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        self.next_id += 1;
+        let id = self.next_id;
+        self.send(json!({ "jsonrpc": "2.0", "id": id, "method": method, "params": params }));
+        loop {
+            let message = self.receive();
+            if message["id"] == json!(id) {
+                return match message.get("error") {
+                    Some(error) => json!({ "error": error }),
+                    None => message["result"].clone(),
+                };
+            }
+        }
+    }
+
+    /// The next diagnostics published for `uri`.
+    fn diagnostics(&mut self, uri: &str) -> Vec<Value> {
+        loop {
+            let message = self.receive();
+            if message["method"] == "textDocument/publishDiagnostics"
+                && message["params"]["uri"] == uri
+            {
+                return message["params"]["diagnostics"]
+                    .as_array()
+                    .expect("a list")
+                    .clone();
+            }
+        }
+    }
+
+    fn open(&mut self, uri: &str, text: &str) -> Vec<Value> {
+        self.notify(
+            "textDocument/didOpen",
+            json!({ "textDocument": { "uri": uri, "languageId": "sinumerik", "version": 1, "text": text } }),
+        );
+        self.diagnostics(uri)
+    }
+
+    /// Shuts the server down as the protocol says; its exit status and stderr.
+    fn stop(mut self) -> (Option<i32>, String) {
+        assert_eq!(self.request("shutdown", Value::Null), Value::Null);
+        self.notify("exit", Value::Null);
+        self.finish()
+    }
+
+    fn finish(mut self) -> (Option<i32>, String) {
+        drop(self.stdin);
+        let status = self.child.wait().expect("the server ends");
+        let mut stderr = String::new();
+        if let Some(mut pipe) = self.child.stderr.take() {
+            pipe.read_to_string(&mut stderr).expect("stderr");
+        }
+        (status.code(), stderr)
+    }
+}
+
+fn at(uri: &str, line: u32, character: u32) -> Value {
+    json!({ "textDocument": { "uri": uri }, "position": { "line": line, "character": character } })
+}
+
+fn codes(diagnostics: &[Value]) -> Vec<&str> {
+    diagnostics
+        .iter()
+        .map(|d| d["code"].as_str().expect("a code"))
+        .collect()
+}
+
+const URI: &str = "untitled:PART.MPF";
+
+/// `ü` and `😀` in the comment make UTF-8, UTF-16 and characters differ.
+const PART: &str = "\
+; ü😀 probe part
+DEF REAL _DEPTH=5
+START:
+G17 G90 F500 S1000 M3
+IF _DEPTH>0
+G1 Z=-_DEPTH
+ENDIF
+GOTOB START
+M30
+";
+
+#[test]
+fn the_server_answers_what_an_editor_asks() {
+    let (mut client, initialized) = Client::start(json!({}));
+    let capabilities = &initialized["capabilities"];
+    assert_eq!(capabilities["positionEncoding"], "utf-16");
+    assert_eq!(capabilities["textDocumentSync"]["change"], 2, "incremental");
+    let found = client.open(URI, PART);
+    assert!(codes(&found).iter().all(|c| *c != "N004"), "{found:?}");
+
+    // Hover on the jump's label names where it lands.
+    let hover = client.request("textDocument/hover", at(URI, 7, 7));
+    let text = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        text.contains("defined on line 3") && text.contains("START:"),
+        "{text}"
+    );
+
+    // The variable read on line 6 is defined on line 2, after `DEF REAL `.
+    let definition = client.request("textDocument/definition", at(URI, 5, 8));
+    assert_eq!(
+        definition["range"]["start"],
+        json!({ "line": 1, "character": 9 })
+    );
+    let references = client.request(
+        "textDocument/references",
+        json!({ "textDocument": { "uri": URI }, "position": { "line": 1, "character": 10 },
+                "context": { "includeDeclaration": true } }),
+    );
+    let lines: Vec<u64> = references
+        .as_array()
+        .expect("a list")
+        .iter()
+        .map(|r| r["range"]["start"]["line"].as_u64().expect("a line"))
+        .collect();
+    assert_eq!(lines, [1, 4, 5]);
+
+    let symbols = client.request(
+        "textDocument/documentSymbol",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    let names: Vec<&str> = symbols
+        .as_array()
+        .expect("a list")
+        .iter()
+        .map(|s| s["name"].as_str().expect("a name"))
+        .collect();
+    assert_eq!(names, ["_DEPTH", "START"]);
+    let folding = client.request(
+        "textDocument/foldingRange",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    assert_eq!(folding, json!([{ "startLine": 4, "endLine": 6 }]));
+
+    // An incremental change: ENDIF deleted, the IF is reported unclosed.
+    client.notify(
+        "textDocument/didChange",
+        json!({ "textDocument": { "uri": URI, "version": 2 },
+                "contentChanges": [{ "range": { "start": { "line": 6, "character": 0 },
+                                                "end": { "line": 7, "character": 0 } }, "text": "" }] }),
+    );
+    let found = client.diagnostics(URI);
+    let unclosed = found.iter().find(|d| d["code"] == "N004").expect("N004");
+    assert_eq!(
+        unclosed["range"]["start"],
+        json!({ "line": 4, "character": 0 })
+    );
+    let (status, stderr) = client.stop();
+    assert_eq!(status, Some(0), "{stderr}");
+}
+
+#[test]
+fn positions_count_in_the_unit_agreed() {
+    // The jump's label stands after `ü` (2 bytes, 1 UTF-16 unit) and `😀`
+    // (4 bytes, 2 units): byte 20, UTF-16 unit 17.
+    let text = "MSG(\"ü😀\") GOTOF ENDE\nENDE:\nM30\n";
+    let uri = "untitled:UNITS.MPF";
+    for (offered, unit, character) in [
+        (json!(["utf-16"]), "utf-16", 17),
+        (json!(["utf-8", "utf-16"]), "utf-8", 20),
+    ] {
+        let (mut client, initialized) =
+            Client::start(json!({ "general": { "positionEncodings": offered } }));
+        assert_eq!(initialized["capabilities"]["positionEncoding"], unit);
+        client.open(uri, text);
+        let hover = client.request("textDocument/hover", at(uri, 0, character + 1));
+        let range = &hover["range"];
+        assert_eq!(
+            range["start"],
+            json!({ "line": 0, "character": character }),
+            "{unit}"
+        );
+        assert_eq!(
+            range["end"],
+            json!({ "line": 0, "character": character + 4 }),
+            "{unit}"
+        );
+        let (status, stderr) = client.stop();
+        assert_eq!(status, Some(0), "{stderr}");
+    }
+}
+
+#[test]
+fn a_cycle600_hover_shows_what_eval_computes() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "N120 CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n";
+    client.open(URI, text);
+    let hover = client.request("textDocument/hover", at(URI, 0, 8));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    // Example 3 of the CYCLE600 paper: extrinsic X, Y, Z 30/45/60 is
+    // intrinsic Z, X', Y'' 37.792346, 20.704811, 49.106605.
+    assert!(shown.contains("37.792346  20.704811  49.106605"), "{shown}");
+    let symbols = client.request(
+        "textDocument/documentSymbol",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    assert_eq!(symbols[0]["name"], "CYCLE600");
+    client.stop();
+}
+
+#[test]
+fn a_fix_is_a_code_action() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "START:\nG1 X1 F100\nGOTOB STRAT\nM30\n";
+    let found = client.open(URI, text);
+    assert_eq!(codes(&found), ["N001"]);
+    let actions = client.request(
+        "textDocument/codeAction",
+        json!({ "textDocument": { "uri": URI },
+                "range": { "start": { "line": 2, "character": 8 }, "end": { "line": 2, "character": 8 } },
+                "context": { "diagnostics": [] } }),
+    );
+    assert_eq!(actions[0]["title"], "jump to `START`");
+    let edits = &actions[0]["edit"]["changes"][URI];
+    assert_eq!(
+        edits,
+        &json!([{ "range": { "start": { "line": 2, "character": 6 }, "end": { "line": 2, "character": 11 } },
+                  "newText": "START" }])
+    );
+    // Elsewhere, nothing to fix.
+    let none = client.request(
+        "textDocument/codeAction",
+        json!({ "textDocument": { "uri": URI },
+                "range": { "start": { "line": 0, "character": 0 }, "end": { "line": 0, "character": 3 } },
+                "context": { "diagnostics": [] } }),
+    );
+    assert_eq!(none, json!([]));
+    client.stop();
+}
+
+#[test]
+fn no_message_breaks_the_server() {
+    let (mut client, _) = Client::start(json!({}));
+    let unknown = client.request("sinuprep/unknown", json!({}));
+    assert_eq!(unknown["error"]["code"], -32601);
+    let not_open = client.request("textDocument/hover", at("untitled:NEVER.MPF", 0, 0));
+    assert_eq!(not_open["error"]["code"], -32602);
+    let bad_params = client.request("textDocument/hover", json!({ "position": "here" }));
+    assert_eq!(bad_params["error"]["code"], -32602);
+    // A change to a document never opened is said on stderr and dropped.
+    client.notify(
+        "textDocument/didChange",
+        json!({ "textDocument": { "uri": "untitled:NEVER.MPF", "version": 2 },
+                "contentChanges": [{ "text": "M30\n" }] }),
+    );
+    client.open(URI, "G1 X1\nM30\n");
+    let far = client.request("textDocument/hover", at(URI, 999, 999));
+    assert_eq!(far, Value::Null);
+    let (status, stderr) = client.stop();
+    assert_eq!(status, Some(0));
+    assert!(stderr.contains("not open"), "{stderr}");
+
+    // Malformed JSON ends the session with an error, never a panic.
+    let (mut client, _) = Client::start(json!({}));
+    client.write(b"{ not json");
+    let (status, stderr) = client.finish();
+    assert_ne!(status, Some(0));
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
