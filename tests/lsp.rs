@@ -329,3 +329,60 @@ fn no_message_breaks_the_server() {
     assert_ne!(status, Some(0));
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn a_rename_changes_every_use_or_says_why_not() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "DEF REAL _DEPTH, _FEED\nN10 _DEPTH=5\nG1 Z=-_depth F=_FEED\nGOTOB N10\nM30\n";
+    client.open(URI, text);
+    let prepared = client.request("textDocument/prepareRename", at(URI, 1, 6));
+    assert_eq!(prepared["start"], json!({ "line": 1, "character": 4 }));
+    let rename = |client: &mut Client, line, character, name: &str| {
+        let mut params = at(URI, line, character);
+        params["newName"] = json!(name);
+        client.request("textDocument/rename", params)
+    };
+    let renamed = rename(&mut client, 2, 8, "_DEEP");
+    let lines: Vec<(u64, u64)> = renamed["changes"][URI]
+        .as_array()
+        .expect("edits")
+        .iter()
+        .map(|e| {
+            let start = &e["range"]["start"];
+            (
+                start["line"].as_u64().expect("line"),
+                start["character"].as_u64().expect("character"),
+            )
+        })
+        .collect();
+    assert_eq!(lines, [(0, 9), (1, 4), (2, 6)], "{renamed}");
+    for (line, character, name, why) in [
+        (1, 6, "_FEED", "already a name"),
+        (1, 6, "1X", "not a name the control takes"),
+        (3, 7, "N20", "renumbered"),
+        (4, 1, "_X", "no name"),
+    ] {
+        let refused = rename(&mut client, line, character, name);
+        let message = refused["error"]["message"].as_str().unwrap_or_default();
+        assert!(message.contains(why), "{name}: {refused}");
+    }
+    client.stop();
+}
+
+#[test]
+fn an_inlay_hint_gives_a_cycle600_its_angles() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "N120 CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n";
+    client.open(URI, text);
+    let hints = client.request(
+        "textDocument/inlayHint",
+        json!({ "textDocument": { "uri": URI },
+                "range": { "start": { "line": 0, "character": 0 }, "end": { "line": 2, "character": 0 } } }),
+    );
+    assert_eq!(hints[0]["label"], "→ intrinsic:ZXY 37.7923 20.7048 49.1066");
+    assert_eq!(
+        hints[0]["position"],
+        json!({ "line": 0, "character": text.find(')').expect("end") + 1 })
+    );
+    client.stop();
+}

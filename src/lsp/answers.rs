@@ -129,9 +129,7 @@ impl<'t> Snapshot<'t> {
                     Namespace::Subprogram => lsp::SymbolKind::FUNCTION,
                     Namespace::Variable => lsp::SymbolKind::VARIABLE,
                     // Block numbers are every line's: only labels are named.
-                    Namespace::Label if u.name.starts_with('N') && is_number(&u.name[1..]) => {
-                        return None
-                    }
+                    Namespace::Label if is_block_number(&u.name) => return None,
                     Namespace::Label => lsp::SymbolKind::KEY,
                 };
                 Some(symbol(
@@ -203,6 +201,122 @@ impl<'t> Snapshot<'t> {
         }
         actions
     }
+}
+
+impl Snapshot<'_> {
+    /// The name under the cursor, if it can be renamed here.
+    pub fn prepare_rename(&self, position: lsp::Position) -> Result<lsp::Range, String> {
+        let found = self
+            .uses
+            .at(self.offset(position))
+            .ok_or("no name of this program here")?;
+        self.renamable(found)?;
+        Ok(self.range(found.span))
+    }
+
+    /// Every use of the name under the cursor renamed `new_name`: refused
+    /// for a name defined outside this program (the other files would keep
+    /// the old one), for a block number (renumbering is no rename), for a
+    /// name the control would not take, and for one this program already
+    /// uses for another thing of the same kind.
+    pub fn rename(
+        &self,
+        uri: &lsp::Uri,
+        position: lsp::Position,
+        new_name: &str,
+    ) -> Result<lsp::WorkspaceEdit, String> {
+        let found = self
+            .uses
+            .at(self.offset(position))
+            .ok_or("no name of this program here")?;
+        self.renamable(found)?;
+        if !is_user_name(new_name) {
+            return Err(format!(
+                "`{new_name}` is not a name the control takes: up to 31 letters, digits and \
+                 underscores, the first two letters or underscores"
+            ));
+        }
+        let upper = new_name.to_ascii_uppercase();
+        if upper != found.name
+            && self
+                .uses
+                .all()
+                .iter()
+                .any(|u| u.namespace == found.namespace && u.name == upper)
+        {
+            return Err(format!("`{new_name}` is already a name of this program"));
+        }
+        let edits = self
+            .uses
+            .references(found)
+            .map(|u| lsp::TextEdit::new(self.range(u.span), new_name.to_string()))
+            .collect();
+        Ok(lsp::WorkspaceEdit {
+            changes: Some(std::iter::once((uri.clone(), edits)).collect()),
+            ..lsp::WorkspaceEdit::default()
+        })
+    }
+
+    fn renamable(&self, found: &Use) -> Result<(), String> {
+        if found.namespace == Namespace::Label && is_block_number(&found.name) {
+            return Err("a block number is renumbered, not renamed".to_string());
+        }
+        if !self.uses.references(found).any(|u| u.role == Role::Defines) {
+            return Err(format!(
+                "`{}` is not defined in this program: renaming it here would leave its other files",
+                found.name
+            ));
+        }
+        Ok(())
+    }
+
+    /// After each CYCLE600 evaluated offline, the angles it computes.
+    pub fn inlay_hints(&self, range: lsp::Range) -> Vec<lsp::InlayHint> {
+        let wanted = convert::span(self.text, range, self.unit);
+        let precision = usize::from(self.settings.emit.precision.min(4));
+        let n = |v: f64| crate::emit::number::format(v, precision);
+        let walk = self.analyzed.walk.iter().flat_map(|walk| &walk.calls);
+        walk.filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)
+            .filter_map(|site| {
+                let evaluation = site.evaluation.as_ref()?;
+                let [a, b, c] = evaluation.output.angles;
+                let sequence = &evaluation.parameters.output;
+                Some(lsp::InlayHint {
+                    position: convert::position(self.text, site.statement.end, self.unit),
+                    label: lsp::InlayHintLabel::String(format!(
+                        "→ {sequence} {} {} {}",
+                        n(a),
+                        n(b),
+                        n(c)
+                    )),
+                    kind: None,
+                    text_edits: None,
+                    tooltip: None,
+                    padding_left: Some(true),
+                    padding_right: None,
+                    data: None,
+                })
+            })
+            .collect()
+    }
+}
+
+/// A name the control takes for a variable or a label: 2 to 31 characters,
+/// letters, digits and underscores, the first two letters or underscores
+/// (Programming Manual Fundamentals, "Variables": user-defined names).
+fn is_user_name(name: &str) -> bool {
+    let bytes = name.as_bytes();
+    (2..=31).contains(&bytes.len())
+        && bytes[..2]
+            .iter()
+            .all(|b| b.is_ascii_alphabetic() || *b == b'_')
+        && bytes
+            .iter()
+            .all(|b| b.is_ascii_alphanumeric() || *b == b'_')
+}
+
+fn is_block_number(name: &str) -> bool {
+    name.strip_prefix('N').is_some_and(is_number)
 }
 
 fn contains(span: Span, at: usize) -> bool {

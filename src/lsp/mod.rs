@@ -58,6 +58,11 @@ fn serve(connection: &Connection) -> Result<(), String> {
         document_symbol_provider: Some(lsp::OneOf::Left(true)),
         folding_range_provider: Some(lsp::FoldingRangeProviderCapability::Simple(true)),
         code_action_provider: Some(lsp::CodeActionProviderCapability::Simple(true)),
+        rename_provider: Some(lsp::OneOf::Right(lsp::RenameOptions {
+            prepare_provider: Some(true),
+            work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
+        })),
+        inlay_hint_provider: Some(lsp::OneOf::Left(true)),
         ..lsp::ServerCapabilities::default()
     };
     let initialized = serde_json::json!({
@@ -226,29 +231,40 @@ impl Server<'_> {
         let id = request.id.clone();
         let answer = match request.method.as_str() {
             r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
-                s.hover(p.text_document_position_params.position)
+                Ok(s.hover(p.text_document_position_params.position))
             }),
             r::GotoDefinition::METHOD => self.answer(request, |s, p: lsp::GotoDefinitionParams| {
                 let at = p.text_document_position_params;
-                s.definition(&at.text_document.uri, at.position)
+                Ok(s.definition(&at.text_document.uri, at.position))
             }),
             r::References::METHOD => self.answer(request, |s, p: lsp::ReferenceParams| {
                 let at = p.text_document_position;
-                s.references(
-                    &at.text_document.uri,
-                    at.position,
-                    p.context.include_declaration,
-                )
+                let with_declaration = p.context.include_declaration;
+                Ok(s.references(&at.text_document.uri, at.position, with_declaration))
             }),
-            r::DocumentSymbolRequest::METHOD => self
-                .answer(request, |s, _: lsp::DocumentSymbolParams| {
-                    lsp::DocumentSymbolResponse::Nested(s.symbols())
-                }),
+            r::DocumentSymbolRequest::METHOD => {
+                self.answer(request, |s, _: lsp::DocumentSymbolParams| {
+                    Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
+                })
+            }
             r::FoldingRangeRequest::METHOD => {
-                self.answer(request, |s, _: lsp::FoldingRangeParams| s.folding())
+                self.answer(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
             }
             r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
-                s.code_actions(&p.text_document.uri, p.range)
+                Ok(s.code_actions(&p.text_document.uri, p.range))
+            }),
+            r::PrepareRenameRequest::METHOD => {
+                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
+                    s.prepare_rename(p.position)
+                        .map(lsp::PrepareRenameResponse::Range)
+                })
+            }
+            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
+                let at = p.text_document_position;
+                s.rename(&at.text_document.uri, at.position, &p.new_name)
+            }),
+            r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
+                Ok(s.inlay_hints(p.range))
             }),
             method => Err((
                 ErrorCode::MethodNotFound,
@@ -262,11 +278,12 @@ impl Server<'_> {
         self.send(Message::Response(response));
     }
 
-    /// The answer to a request about one open document.
+    /// The answer to a request about one open document, or why the
+    /// server will not do what it asks.
     fn answer<P, R>(
         &self,
         request: Request,
-        answer: impl FnOnce(&Snapshot, P) -> R,
+        answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
     ) -> Result<serde_json::Value, (ErrorCode, String)>
     where
         P: serde::de::DeserializeOwned + HasDocument,
@@ -282,8 +299,8 @@ impl Server<'_> {
             ));
         };
         let snapshot = Snapshot::new(&open.text, &open.name, &open.settings, self.unit);
-        serde_json::to_value(answer(&snapshot, params))
-            .map_err(|e| (ErrorCode::InternalError, e.to_string()))
+        let answer = answer(&snapshot, params).map_err(|why| (ErrorCode::RequestFailed, why))?;
+        serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }
 }
 
@@ -310,6 +327,9 @@ has_document! {
     lsp::DocumentSymbolParams => |p| &p.text_document.uri;
     lsp::FoldingRangeParams => |p| &p.text_document.uri;
     lsp::CodeActionParams => |p| &p.text_document.uri;
+    lsp::TextDocumentPositionParams => |p| &p.text_document.uri;
+    lsp::RenameParams => |p| &p.text_document_position.text_document.uri;
+    lsp::InlayHintParams => |p| &p.text_document.uri;
 }
 
 /// A notification's parameters; one that does not parse is said on stderr
