@@ -273,7 +273,7 @@ impl Snapshot<'_> {
     /// After each CYCLE600 evaluated offline, the angles it computes.
     pub fn inlay_hints(&self, range: lsp::Range) -> Vec<lsp::InlayHint> {
         let wanted = convert::span(self.text, range, self.unit);
-        let precision = usize::from(self.settings.emit.precision.min(4));
+        let precision = self.settings.emit.precision.min(4);
         let n = |v: f64| crate::emit::number::format(v, precision);
         let walk = self.analyzed.walk.iter().flat_map(|walk| &walk.calls);
         walk.filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)
