@@ -386,3 +386,75 @@ fn an_inlay_hint_gives_a_cycle600_its_angles() {
     );
     client.stop();
 }
+
+/// Neovim's own client (Debian's `neovim`, 0.7 or later) starts the server,
+/// opens a program and reads its findings and a hover on its CYCLE600.
+/// Required under CI (`.ci/run` installs it); skipped elsewhere without it.
+#[test]
+fn neovim_shows_the_findings_and_a_hover() {
+    if std::process::Command::new("nvim")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
+        assert_ne!(
+            std::env::var("CI").as_deref(),
+            Ok("true"),
+            "CI must run the Neovim test"
+        );
+        eprintln!("NOTE: nvim not found: the Neovim test was SKIPPED");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("sinuprep-nvim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a directory");
+    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
+    // Alone in its folder: no HEAD_DEF beside it, so C610 is reported.
+    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
+    let script = r#"
+local out = {}
+local id = vim.lsp.start_client({ cmd = { os.getenv("SINUPREP_BIN"), "lsp" },
+                                  root_dir = vim.fn.getcwd(), name = "sinuprep" })
+vim.cmd("edit PART.MPF")
+local buf = vim.api.nvim_get_current_buf()
+vim.lsp.buf_attach_client(buf, id)
+vim.wait(20000, function() return #vim.diagnostic.get(buf) > 0 end, 50)
+for _, d in ipairs(vim.diagnostic.get(buf)) do
+  table.insert(out, "diagnostic " .. (d.lnum + 1) .. " " .. tostring(d.code))
+end
+local position = { line = 13, character = 8 }
+local params = { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = position }
+local response = vim.lsp.get_client_by_id(id).request_sync("textDocument/hover", params, 20000, buf)
+if response and response.result then
+  for line in response.result.contents.value:gmatch("[^\n]+") do
+    table.insert(out, "hover " .. line)
+  end
+end
+vim.fn.writefile(out, "out.txt")
+vim.lsp.get_client_by_id(id).stop()
+vim.wait(5000, function() return vim.lsp.get_client_by_id(id) == nil end, 50)
+vim.cmd("qa!")
+"#;
+    std::fs::write(dir.join("test.lua"), script).expect("the script");
+    let status = std::process::Command::new("nvim")
+        .args([
+            "--headless",
+            "--clean",
+            "-u",
+            "NONE",
+            "-c",
+            "luafile test.lua",
+        ])
+        .current_dir(&dir)
+        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("nvim runs");
+    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(status.status.success(), "{status:?}");
+    assert!(shown.contains("diagnostic 1 C610"), "{shown}");
+    assert!(
+        shown.contains("hover   output   intrinsic:ZXY (code 39)  37.792346  20.704811  49.106605"),
+        "{shown}"
+    );
+}

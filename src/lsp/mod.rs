@@ -78,27 +78,39 @@ fn serve(connection: &Connection) -> Result<(), String> {
         workspace: Workspace::default(),
         unit,
     };
+    // After `shutdown` the protocol allows only `exit`; a client that
+    // closes the connection instead has still ended the session in order.
+    let mut shut_down = false;
     for message in &connection.receiver {
         match message {
-            Message::Request(request) => {
-                if connection
-                    .handle_shutdown(&request)
-                    .map_err(|e| e.to_string())?
-                {
-                    return Ok(());
-                }
-                server.request(request);
+            Message::Request(request) if shut_down => {
+                let refused = "the server is shut down: only `exit` is expected".to_string();
+                let code = ErrorCode::InvalidRequest as i32;
+                server.send(Message::Response(Response::new_err(
+                    request.id, code, refused,
+                )));
             }
-            Message::Notification(notification) => {
-                if notification.method == lsp::notification::Exit::METHOD {
-                    return Ok(());
-                }
-                server.notification(notification);
+            Message::Request(request) if request.method == lsp::request::Shutdown::METHOD => {
+                shut_down = true;
+                server.send(Message::Response(Response::new_ok(request.id, ())));
             }
+            Message::Request(request) => server.request(request),
+            Message::Notification(notification)
+                if notification.method == lsp::notification::Exit::METHOD =>
+            {
+                return match shut_down {
+                    true => Ok(()),
+                    false => Err("`exit` before `shutdown`".to_string()),
+                };
+            }
+            Message::Notification(notification) => server.notification(notification),
             Message::Response(_) => {}
         }
     }
-    Ok(())
+    match shut_down {
+        true => Ok(()),
+        false => Err("the client closed the connection without `shutdown`".to_string()),
+    }
 }
 
 /// A document the client has open.
