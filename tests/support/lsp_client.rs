@@ -1,0 +1,129 @@
+//! A language server's client for the tests and the benchmark: the
+//! protocol's framing on the server's stdin and stdout, one request after
+//! another.
+#![allow(dead_code)] // each user takes what it needs
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
+
+use serde_json::{json, Value};
+
+pub struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    stdout: BufReader<ChildStdout>,
+    next_id: u64,
+}
+
+impl Client {
+    /// The server of this package's binary (the build of the test or the
+    /// benchmark), initialized with `capabilities`.
+    pub fn start(capabilities: Value) -> (Self, Value) {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .arg("lsp")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the server starts");
+        let stdin = child.stdin.take().expect("stdin");
+        let stdout = BufReader::new(child.stdout.take().expect("stdout"));
+        let mut client = Self {
+            child,
+            stdin,
+            stdout,
+            next_id: 0,
+        };
+        let initialized = client.request("initialize", json!({ "capabilities": capabilities }));
+        client.notify("initialized", json!({}));
+        (client, initialized)
+    }
+
+    pub fn write(&mut self, body: &[u8]) {
+        write!(self.stdin, "Content-Length: {}\r\n\r\n", body.len()).expect("write");
+        self.stdin.write_all(body).expect("write");
+        self.stdin.flush().expect("flush");
+    }
+
+    pub fn send(&mut self, message: Value) {
+        self.write(message.to_string().as_bytes());
+    }
+
+    pub fn receive(&mut self) -> Value {
+        let mut length = None;
+        loop {
+            let mut header = String::new();
+            self.stdout.read_line(&mut header).expect("a header");
+            assert!(header.ends_with("\r\n"), "header {header:?}");
+            if header == "\r\n" {
+                break;
+            }
+            if let Some(value) = header.strip_prefix("Content-Length: ") {
+                length = Some(value.trim().parse::<usize>().expect("a length"));
+            }
+        }
+        let mut body = vec![0; length.expect("Content-Length")];
+        self.stdout.read_exact(&mut body).expect("a body");
+        serde_json::from_slice(&body).expect("JSON")
+    }
+
+    pub fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({ "jsonrpc": "2.0", "method": method, "params": params }));
+    }
+
+    /// The response to a request: its result, or its error.
+    pub fn request(&mut self, method: &str, params: Value) -> Value {
+        self.next_id += 1;
+        let id = self.next_id;
+        self.send(json!({ "jsonrpc": "2.0", "id": id, "method": method, "params": params }));
+        loop {
+            let message = self.receive();
+            if message["id"] == json!(id) {
+                return match message.get("error") {
+                    Some(error) => json!({ "error": error }),
+                    None => message["result"].clone(),
+                };
+            }
+        }
+    }
+
+    /// The next diagnostics published for `uri`.
+    pub fn diagnostics(&mut self, uri: &str) -> Vec<Value> {
+        loop {
+            let message = self.receive();
+            if message["method"] == "textDocument/publishDiagnostics"
+                && message["params"]["uri"] == uri
+            {
+                return message["params"]["diagnostics"]
+                    .as_array()
+                    .expect("a list")
+                    .clone();
+            }
+        }
+    }
+
+    pub fn open(&mut self, uri: &str, text: &str) -> Vec<Value> {
+        self.notify(
+            "textDocument/didOpen",
+            json!({ "textDocument": { "uri": uri, "languageId": "sinumerik", "version": 1, "text": text } }),
+        );
+        self.diagnostics(uri)
+    }
+
+    /// Shuts the server down as the protocol says; its exit status and stderr.
+    pub fn stop(mut self) -> (Option<i32>, String) {
+        assert_eq!(self.request("shutdown", Value::Null), Value::Null);
+        self.notify("exit", Value::Null);
+        self.finish()
+    }
+
+    pub fn finish(mut self) -> (Option<i32>, String) {
+        drop(self.stdin);
+        let status = self.child.wait().expect("the server ends");
+        let mut stderr = String::new();
+        if let Some(mut pipe) = self.child.stderr.take() {
+            pipe.read_to_string(&mut stderr).expect("stderr");
+        }
+        (status.code(), stderr)
+    }
+}
