@@ -24,6 +24,9 @@ pub struct FileContext<'a, 'src> {
     pub kind: ProgramKind,
     /// Names the machine defines.
     pub environment: &'a Environment,
+    /// The file holds declarations only (`.DEF`, `.INI`, `.GUD`, `.COM`),
+    /// as its name says: decided once, asked on every line.
+    pub definition_file: bool,
     /// Block numbers some jump names, announced during the line pass.
     wanted_numbers: RefCell<HashSet<u64>>,
     block_numbers: OnceCell<Vec<(u64, usize)>>,
@@ -46,6 +49,7 @@ impl<'a, 'src> FileContext<'a, 'src> {
             name,
             kind,
             environment,
+            definition_file: crate::lint::rules::support::is_definition_file(name),
             wanted_numbers: RefCell::default(),
             block_numbers: OnceCell::new(),
             model: OnceCell::new(),
@@ -225,9 +229,7 @@ pub struct FromStart<R> {
 
 impl<R: FromProgramStart> FromStart<R> {
     fn reads(&self, file: &FileContext) -> bool {
-        !self.done
-            && file.kind == ProgramKind::Main
-            && !crate::lint::rules::support::is_definition_file(file.name)
+        !self.done && file.kind == ProgramKind::Main && !file.definition_file
     }
 }
 

@@ -2,7 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{FileContext, ModalRule, ModalStep};
-use crate::lint::rules::support::{is_definition_file, upper};
+use crate::lint::rules::support::upper;
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
 
@@ -58,7 +58,7 @@ pub struct Checker;
 
 impl ModalRule for Checker {
     fn reads(file: &FileContext, main: bool) -> bool {
-        main && !is_definition_file(file.name)
+        main && !file.definition_file
     }
 
     /// A plain line can end the program (an M) or change G90/G91 or the
