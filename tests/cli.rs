@@ -1433,3 +1433,69 @@ fn the_summary_counts_what_fix_would_answer() {
     );
     assert!(!String::from_utf8_lossy(&output.stderr).contains("fixable"));
 }
+
+/// `--output-file` writes the report that stdout would carry, whole, and
+/// leaves stdout empty; the summary stays on stderr. A file that cannot be
+/// written is a tool error.
+#[test]
+fn output_file_holds_the_report_stdout_would() {
+    let dir = scratch("output-file");
+    let trigger = "tests/fixtures/lint/N001_trigger.mpf";
+    for format in ["short", "json", "sarif", "github", "human"] {
+        let to_stdout = run(&["check", "--format", format, trigger], b"");
+        let path = dir.join(format!("report.{format}"));
+        std::fs::write(&path, "an older report, replaced whole\n").expect("write");
+        let path_text = path.to_str().expect("path");
+        let to_file = run(
+            &[
+                "check",
+                "--format",
+                format,
+                "--output-file",
+                path_text,
+                trigger,
+            ],
+            b"",
+        );
+        assert_exit(&to_file, 1);
+        assert!(to_file.stdout.is_empty(), "{}", stdout(&to_file));
+        assert_eq!(
+            std::fs::read(&path).expect("report"),
+            to_stdout.stdout,
+            "{format}"
+        );
+        assert_eq!(to_file.stderr, to_stdout.stderr);
+    }
+    let missing = dir.join("no/such/dir/report.txt");
+    let output = run(
+        &["check", "-o", missing.to_str().expect("path"), trigger],
+        b"",
+    );
+    assert_exit(&output, 2);
+    assert!(!missing.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--statistics` counts the findings of each rule instead of listing them,
+/// as ruff does: count, code, `[*]` where `--fix` answers some, name.
+#[test]
+fn statistics_count_the_findings_of_each_rule() {
+    let files = [
+        "tests/fixtures/lint/N001_trigger.mpf",
+        "tests/fixtures/lint/N099_trigger.mpf",
+    ];
+    let output = run(&[&["check", "--statistics"][..], &files].concat(), b"");
+    assert_exit(&output, 1);
+    assert_eq!(
+        stdout(&output),
+        "3\tN001\t[ ] undefined-label\n3\tN099\t[*] unused-suppression\n2\tN005\t[ ] undefined-variable\n"
+    );
+    let output = run(
+        &[&["check", "--statistics", "--format", "json"][..], &files].concat(),
+        b"",
+    );
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    assert_eq!(json[0]["code"], "N001");
+    assert_eq!(json[0]["count"], 3);
+    assert_eq!(json[1]["fixable"], true);
+}

@@ -117,6 +117,12 @@ pub struct CheckArgs {
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]
     pub format: Format,
+    /// Write the report to FILE (atomically: the whole report or, should the run fail, nothing) instead of stdout; the summary stays on stderr.
+    #[arg(long, short, value_name = "FILE")]
+    pub output_file: Option<PathBuf>,
+    /// Instead of the findings, how many each rule found: count, code, `[*]` where --fix answers some, name (JSON with --format json).
+    #[arg(long)]
+    pub statistics: bool,
     /// Report only these rules (codes or prefixes, comma-separated: `N,C6,S`).
     #[arg(long, value_delimiter = ',', value_name = "CODES")]
     pub select: Vec<String>,

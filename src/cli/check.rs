@@ -1,7 +1,7 @@
 //! `sinuprep check`: lint every program named, in parallel, and report in a
 //! stable order.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -10,13 +10,13 @@ use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
 use crate::cli::input::{again, expand, read, Bytes, Found};
-use crate::cli::output::{in_place_target, write_atomically};
+use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
-    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, JSON_BETWEEN,
-    JSON_START,
+    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, Statistics,
+    JSON_BETWEEN, JSON_START,
 };
-use crate::cli::{write_stdout, ExitStatus};
+use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
@@ -191,6 +191,8 @@ enum Report {
     Text(String),
     /// SARIF's results of its programs: the log is written at the end.
     Sarif(Sarif),
+    /// `--statistics`: its findings counted by rule, printed at the end.
+    Statistics(Statistics),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
@@ -206,9 +208,23 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, None) => vec![PathBuf::from(".")],
     };
     let paths = expand(&named, args.allow_empty, args.follow_links)?;
-    let colour = crate::cli::colour(std::io::stdout().is_terminal());
+    let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
+    report_to(args.output_file.as_deref(), |out| {
+        report(args, &paths, colour, &workspace, out)
+    })
+}
+
+/// Checks `paths`, writing the report to `out` as each file is done and
+/// the summary to stderr.
+fn report(
+    args: &CheckArgs,
+    paths: &[Result<Found, CliError>],
+    colour: bool,
+    workspace: &Workspace,
+    out: &mut dyn Write,
+) -> Result<ExitStatus, CliError> {
     let work = |index: usize| match &paths[index] {
-        Ok(found) => check_file(found, args, colour, &workspace),
+        Ok(found) => check_file(found, args, colour, workspace),
         Err(error) => Err(again(error)),
     };
 
@@ -218,10 +234,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
-    let mut sarif = Sarif::default();
+    let mut held = Held::default();
     let mut told = analysis::MachinesTold::default();
-    if args.format == Format::Json {
-        write_stdout(JSON_START.as_bytes())?;
+    if args.format == Format::Json && !args.statistics {
+        out.write_all(JSON_START.as_bytes())?;
     }
     // Each file's report printed as soon as it and those before it are done.
     parallel::each(paths.len(), work, |result| {
@@ -235,16 +251,16 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                     if !diagnostics.is_empty() && told.first(&on) {
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
-                        let mut report = Report::new(args.format);
-                        report.add(args.format, colour, &on.name, &on.source, diagnostics);
-                        print(report, args.format, files == 0, &mut sarif)?;
+                        let mut report = Report::new(args);
+                        report.add(args, colour, &on.name, &on.source, diagnostics);
+                        print(report, args.format, files == 0, out, &mut held)?;
                         files += 1;
                     }
                 }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                print(checked.report, args.format, files == 0, &mut sarif)?;
+                print(checked.report, args.format, files == 0, out, &mut held)?;
                 files += checked.files;
             }
             Err(error) => {
@@ -255,8 +271,9 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         Ok::<(), CliError>(())
     })?;
     match args.format {
-        Format::Json => write_stdout(json_end(files).as_bytes())?,
-        Format::Sarif => write_stdout(sarif.finish().as_bytes())?,
+        _ if args.statistics => out.write_all(held.statistics.render(args.format).as_bytes())?,
+        Format::Json => out.write_all(json_end(files).as_bytes())?,
+        Format::Sarif => out.write_all(held.sarif.finish().as_bytes())?,
         Format::Short | Format::Github | Format::Human => {}
     }
     // For people: on stderr, so that what tools read stays the findings.
@@ -316,7 +333,7 @@ fn check_file(
         }
     }
     let mut checked = Checked {
-        report: Report::new(args.format),
+        report: Report::new(args),
         fails: false,
         counts: Counts::default(),
         unchecked: Unchecked::default(),
@@ -351,16 +368,15 @@ fn check_file(
         checked.fails |= diagnostics.iter().any(|d| {
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
-        checked
-            .report
-            .add(args.format, colour, &name, source, diagnostics);
+        checked.report.add(args, colour, &name, source, diagnostics);
     }
     Ok(checked)
 }
 
 impl Report {
-    fn new(format: Format) -> Self {
-        match format {
+    fn new(args: &CheckArgs) -> Self {
+        match args.format {
+            _ if args.statistics => Report::Statistics(Statistics::default()),
             Format::Sarif => Report::Sarif(Sarif::default()),
             _ => Report::Text(String::new()),
         }
@@ -369,7 +385,7 @@ impl Report {
     /// Adds the findings of the program `name`, whose bytes are `source`.
     fn add(
         &mut self,
-        format: Format,
+        args: &CheckArgs,
         colour: bool,
         name: &str,
         source: &[u8],
@@ -381,7 +397,7 @@ impl Report {
             diagnostics: &diagnostics,
         };
         match self {
-            Report::Text(text) => match format {
+            Report::Text(text) => match args.format {
                 Format::Short => short(&file_report, text),
                 Format::Github => github(&file_report, text),
                 Format::Json => {
@@ -393,24 +409,37 @@ impl Report {
                 _ => human(&file_report, colour, text),
             },
             Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics)),
+            Report::Statistics(statistics) => statistics.add(&diagnostics, args.unsafe_fixes),
         }
     }
 }
 
-/// Prints a file's report (`first`: no file's came before it), or keeps
-/// SARIF's results for the log written at the end.
-fn print(report: Report, format: Format, first: bool, sarif: &mut Sarif) -> Result<(), CliError> {
+/// What is written at the end of a run, from every file's part.
+#[derive(Default)]
+struct Held {
+    sarif: Sarif,
+    statistics: Statistics,
+}
+
+/// Writes a file's report to `out` (`first`: no file's came before it), or
+/// keeps SARIF's results and the statistics for what is written at the end.
+fn print(
+    report: Report,
+    format: Format,
+    first: bool,
+    out: &mut dyn Write,
+    held: &mut Held,
+) -> Result<(), CliError> {
     match report {
         Report::Text(part) if format == Format::Json && !first => {
-            write_stdout(JSON_BETWEEN.as_bytes())?;
-            write_stdout(part.as_bytes())
+            out.write_all(JSON_BETWEEN.as_bytes())?;
+            out.write_all(part.as_bytes())?;
         }
-        Report::Text(part) => write_stdout(part.as_bytes()),
-        Report::Sarif(part) => {
-            sarif.extend(part);
-            Ok(())
-        }
+        Report::Text(part) => out.write_all(part.as_bytes())?,
+        Report::Sarif(part) => held.sarif.extend(part),
+        Report::Statistics(part) => held.statistics.extend(part),
     }
+    Ok(())
 }
 
 /// What `check` reports of each program of `opened`, in their order.
