@@ -1499,3 +1499,51 @@ fn statistics_count_the_findings_of_each_rule() {
     assert_eq!(json[0]["count"], 3);
     assert_eq!(json[1]["fixable"], true);
 }
+
+/// A file that cannot be checked is an entry of the JSON report (its path,
+/// the error, no diagnostics) and a notification of the SARIF log's
+/// invocation, which is then no success; not only a message on stderr.
+#[test]
+fn an_unreadable_file_is_an_entry_of_the_json_and_sarif_reports() {
+    let dir = scratch("unreadable-entry");
+    // An archive cut short cannot be read; a file that is not there neither.
+    let damaged = dir.join("CUT.ARC");
+    std::fs::write(&damaged, b"@@MMCIBN.002, and no header after it").expect("write");
+    let damaged = damaged.to_str().expect("path");
+    let files = ["NOT_THERE.MPF", "samples/PAPER_EXAMPLE3.MPF", damaged];
+    let output = run(&[&["check", "--format", "json"][..], &files].concat(), b"");
+    assert_exit(&output, 2);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let entries = json["files"].as_array().expect("files");
+    assert_eq!(entries.len(), 3, "{json}");
+    assert_eq!(entries[0]["path"], "NOT_THERE.MPF");
+    let error = entries[0]["error"].as_str().expect("error");
+    assert!(error.starts_with("cannot read NOT_THERE.MPF: "), "{error}");
+    assert_eq!(entries[0]["diagnostics"], serde_json::json!([]));
+    assert!(entries[1].get("error").is_none());
+    assert_eq!(entries[2]["path"], damaged);
+    let output = run(&[&["check", "--format", "sarif"][..], &files].concat(), b"");
+    assert_exit(&output, 2);
+    let sarif: serde_json::Value = serde_json::from_slice(&output.stdout).expect("SARIF");
+    let invocation = &sarif["runs"][0]["invocations"][0];
+    assert_eq!(invocation["executionSuccessful"], false);
+    let notes = invocation["toolExecutionNotifications"]
+        .as_array()
+        .expect("notifications");
+    assert_eq!(notes.len(), 2);
+    assert_eq!(notes[0]["level"], "error");
+    assert_eq!(
+        notes[0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+        "NOT_THERE.MPF"
+    );
+    let fine = run(
+        &["check", "--format", "sarif", "samples/PAPER_EXAMPLE3.MPF"],
+        b"",
+    );
+    let sarif: serde_json::Value = serde_json::from_slice(&fine.stdout).expect("SARIF");
+    assert_eq!(
+        sarif["runs"][0]["invocations"][0]["executionSuccessful"],
+        true
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -13,8 +13,8 @@ use crate::cli::input::{again, expand, read, Bytes, Found};
 use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
-    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, Statistics,
-    JSON_BETWEEN, JSON_START,
+    github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
+    Statistics, JSON_BETWEEN, JSON_START,
 };
 use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
@@ -223,9 +223,11 @@ fn report(
     workspace: &Workspace,
     out: &mut dyn Write,
 ) -> Result<ExitStatus, CliError> {
+    // A failure comes with the name of the file, for the JSON and SARIF reports.
     let work = |index: usize| match &paths[index] {
-        Ok(found) => check_file(found, args, colour, workspace),
-        Err(error) => Err(again(error)),
+        Ok(found) => check_file(found, args, colour, workspace)
+            .map_err(|error| (shown_name(&found.path, args), error)),
+        Err(error) => Err((walked_name(error), again(error))),
     };
 
     // Files that could not be read or checked (an error each, on stderr).
@@ -253,18 +255,19 @@ fn report(
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
                         let mut report = Report::new(args);
                         report.add(args, colour, &on.name, &on.source, diagnostics);
-                        print(report, args.format, files == 0, out, &mut held)?;
+                        print(report, args.format, out, &mut held)?;
                         files += 1;
                     }
                 }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                print(checked.report, args.format, files == 0, out, &mut held)?;
+                print(checked.report, args.format, out, &mut held)?;
                 files += checked.files;
             }
-            Err(error) => {
+            Err((name, error)) => {
                 failed += 1;
+                held.failed(args, &name, &error, out)?;
                 tellln!("{:?}", miette::Report::new(error));
             }
         }
@@ -272,7 +275,7 @@ fn report(
     })?;
     match args.format {
         _ if args.statistics => out.write_all(held.statistics.render(args.format).as_bytes())?,
-        Format::Json => out.write_all(json_end(files).as_bytes())?,
+        Format::Json => out.write_all(json_end(held.entries).as_bytes())?,
         Format::Sarif => out.write_all(held.sarif.finish().as_bytes())?,
         Format::Short | Format::Github | Format::Human => {}
     }
@@ -414,26 +417,80 @@ impl Report {
     }
 }
 
-/// What is written at the end of a run, from every file's part.
+/// What is written at the end of a run, from every file's part, and how
+/// many entries of the JSON document's `files` were written.
 #[derive(Default)]
 struct Held {
     sarif: Sarif,
     statistics: Statistics,
+    entries: usize,
 }
 
-/// Writes a file's report to `out` (`first`: no file's came before it), or
-/// keeps SARIF's results and the statistics for what is written at the end.
+impl Held {
+    /// A file that could not be checked (`name`, as reports call it): an
+    /// entry of the JSON and SARIF reports as well as the error on stderr.
+    fn failed(
+        &mut self,
+        args: &CheckArgs,
+        name: &str,
+        error: &CliError,
+        out: &mut dyn Write,
+    ) -> Result<(), CliError> {
+        let mut text = error.to_string();
+        let mut cause = std::error::Error::source(error);
+        while let Some(inner) = cause {
+            text.push_str(&format!(": {inner}"));
+            cause = inner.source();
+        }
+        match args.format {
+            _ if args.statistics => {}
+            Format::Json => print(
+                Report::Text(json_failed(name, &text)),
+                args.format,
+                out,
+                self,
+            )?,
+            Format::Sarif => self.sarif.failed(name, &text),
+            Format::Short | Format::Github | Format::Human => {}
+        }
+        Ok(())
+    }
+}
+
+/// The name a file that could not be checked goes by in the reports.
+fn shown_name(path: &Path, args: &CheckArgs) -> String {
+    match (&args.stdin_filename, path == Path::new("-")) {
+        (Some(name), true) => name.display().to_string(),
+        (None, true) => "<stdin>".to_string(),
+        _ => path.display().to_string(),
+    }
+}
+
+/// The entry a walk could not read (a folder), as reports call it.
+fn walked_name(error: &CliError) -> String {
+    match error {
+        CliError::Read { path, .. } | CliError::IsDirectory { path } => path.display().to_string(),
+        other => other.to_string(),
+    }
+}
+
+/// Writes a file's report to `out`, or keeps SARIF's results and the
+/// statistics for what is written at the end.
 fn print(
     report: Report,
     format: Format,
-    first: bool,
     out: &mut dyn Write,
     held: &mut Held,
 ) -> Result<(), CliError> {
     match report {
-        Report::Text(part) if format == Format::Json && !first => {
-            out.write_all(JSON_BETWEEN.as_bytes())?;
+        // An archive without programs has no entry.
+        Report::Text(part) if format == Format::Json && part.is_empty() => {}
+        Report::Text(part) if format == Format::Json => {
+            if held.entries > 0 {
+                out.write_all(JSON_BETWEEN.as_bytes())?;
+            }
             out.write_all(part.as_bytes())?;
+            held.entries += 1;
         }
         Report::Text(part) => out.write_all(part.as_bytes())?,
         Report::Sarif(part) => held.sarif.extend(part),

@@ -365,6 +365,25 @@ pub fn json_file(report: &Located) -> String {
     indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
 }
 
+/// The entry of the JSON document for a file that could not be checked
+/// (not found, unreadable, a directory, a damaged archive): its path, the
+/// error, and no diagnostics, so that a reader of `files` sees it without
+/// reading stderr.
+pub fn json_failed(name: &str, error: &str) -> String {
+    #[derive(serde::Serialize)]
+    struct Failed<'a> {
+        path: &'a str,
+        error: &'a str,
+        diagnostics: [(); 0],
+    }
+    let file = Failed {
+        path: name,
+        error,
+        diagnostics: [],
+    };
+    indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
+}
+
 /// The end of the JSON document, after `files` entries.
 pub fn json_end(files: usize) -> &'static str {
     match files {
@@ -433,6 +452,8 @@ pub struct Sarif {
     /// separated by commas.
     results: String,
     codes: std::collections::BTreeSet<&'static str>,
+    /// The files that could not be checked, as SARIF notifications.
+    failures: Vec<serde_json::Value>,
 }
 
 impl Sarif {
@@ -475,6 +496,16 @@ impl Sarif {
         }
     }
 
+    /// A file that could not be checked: a notification of the tool's
+    /// execution with the file's location, and the run no success.
+    pub fn failed(&mut self, name: &str, error: &str) {
+        self.failures.push(serde_json::json!({
+            "level": "error",
+            "message": { "text": error },
+            "locations": [{ "physicalLocation": { "artifactLocation": artifact(name) } }],
+        }));
+    }
+
     /// Another's results after these.
     pub fn extend(&mut self, other: Sarif) {
         if !self.results.is_empty() && !other.results.is_empty() {
@@ -482,6 +513,7 @@ impl Sarif {
         }
         self.results.push_str(&other.results);
         self.codes.extend(other.codes);
+        self.failures.extend(other.failures);
     }
 
     /// The log.
@@ -492,21 +524,34 @@ impl Sarif {
             .filter_map(|code| crate::lint::rule(code))
             .map(|info| {
                 let summary = info.docs.lines().nth(1).unwrap_or_default();
-                serde_json::json!({
+                let mut rule = serde_json::json!({
                     "id": info.code,
                     "name": info.name,
                     "shortDescription": { "text": summary },
                     "fullDescription": { "text": info.docs },
                     "help": { "text": info.docs, "markdown": info.docs },
                     "defaultConfiguration": { "level": level(info.severity) },
-                })
+                });
+                if let Some(uri) = help_uri(REPOSITORY, info) {
+                    rule["helpUri"] = uri.into();
+                }
+                rule
             })
             .collect();
+        let mut driver = serde_json::json!({ "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules });
+        if !REPOSITORY.is_empty() {
+            driver["informationUri"] = REPOSITORY.into();
+        }
+        let mut invocation = serde_json::json!({ "executionSuccessful": self.failures.is_empty() });
+        if !self.failures.is_empty() {
+            invocation["toolExecutionNotifications"] = self.failures.into();
+        }
         let document = serde_json::json!({
             "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
             "version": "2.1.0",
             "runs": [{
-                "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
+                "tool": { "driver": driver },
+                "invocations": [invocation],
                 "columnKind": "unicodeCodePoints",
                 "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
                 "results": [],
@@ -525,6 +570,23 @@ impl Sarif {
         text.push('\n');
         text
     }
+}
+
+/// The project's repository (`repository` in Cargo.toml), the tool's
+/// `informationUri` in SARIF and the base of its rules' `helpUri`; empty
+/// where Cargo.toml names none, and then neither is written.
+const REPOSITORY: &str = env!("CARGO_PKG_REPOSITORY");
+
+/// A rule's section of docs/rules.md in the repository. The page is
+/// generated from every rule (tests/lint.rs, `the_rule_reference`), so
+/// every rule has its section.
+fn help_uri(repository: &str, info: &crate::diagnostic::RuleInfo) -> Option<String> {
+    if repository.is_empty() {
+        return None;
+    }
+    let base = repository.trim_end_matches('/');
+    let anchor = crate::lint::reference::anchor(info);
+    Some(format!("{base}/blob/HEAD/docs/rules.md#{anchor}"))
 }
 
 /// The base the relative paths of a SARIF log are read against: the
@@ -675,5 +737,21 @@ impl Statistics {
         let mut text = serde_json::to_string_pretty(&rules).unwrap_or_default();
         text.push('\n');
         text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rules_help_is_its_section_of_the_reference_in_the_repository() {
+        let info = crate::lint::rule("N001").expect("N001");
+        assert_eq!(
+            help_uri("https://example.org/shop/sinuprep/", info).as_deref(),
+            Some("https://example.org/shop/sinuprep/blob/HEAD/docs/rules.md#n001-undefined-label")
+        );
+        // No repository in Cargo.toml: no link to a page that is nowhere.
+        assert_eq!(help_uri("", info), None);
     }
 }
