@@ -1547,3 +1547,77 @@ fn an_unreadable_file_is_an_entry_of_the_json_and_sarif_reports() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Every format counts columns alike, in UTF-16 code units (LSP's and
+/// SARIF's default): `ü` is one, `𝜑` (beyond the Basic Multilingual Plane)
+/// two, a Latin-1 byte one. The human header counted bytes.
+#[test]
+fn every_format_counts_columns_alike() {
+    let dir = scratch("columns");
+    let path = dir.join("COL.MPF");
+    let program = [
+        &b"N10 MSG(\"\xc3\xbc\") X1 X1\n"[..],
+        b"N20 MSG(\"\xf0\x9d\x9c\x91\") X1 X1\n",
+        b"M30\n",
+    ]
+    .concat();
+    let latin1 = dir.join("LATIN1.MPF");
+    std::fs::write(&path, &program).expect("write");
+    std::fs::write(&latin1, b"N10 MSG(\"\xfc\") X1 X1\nM30\n").expect("write");
+    for (file, columns) in [(&path, &[17, 18][..]), (&latin1, &[17][..])] {
+        let file = file.to_str().expect("path");
+        let format = |format: &str| stdout(&run(&["check", "--format", format, file], b""));
+        let found = |text: &str, before: &str, after: char| -> Vec<usize> {
+            text.split(before)
+                .skip(1)
+                .map(|rest| rest.split(after).next().unwrap_or("").trim())
+                .map(|n| n.parse().unwrap_or_else(|_| panic!("{n}: {text}")))
+                .collect()
+        };
+        let short = format("short");
+        let short: Vec<usize> = short
+            .lines()
+            .map(|l| l[file.len() + 1..].split(':').nth(1).unwrap_or(""))
+            .map(|n| n.parse().expect("column"))
+            .collect();
+        assert_eq!(short, columns, "short");
+        assert_eq!(found(&format("github"), ",col=", ','), columns, "github");
+        let human: Vec<usize> = format("human")
+            .split(&format!("[{file}:"))
+            .skip(1)
+            .map(|rest| rest.split(']').next().unwrap_or(""))
+            .map(|at| at.split(':').nth(1).unwrap_or("").parse().expect("column"))
+            .collect();
+        assert_eq!(human, columns, "human");
+        let json: serde_json::Value = serde_json::from_str(&format("json")).expect("JSON");
+        let json: Vec<u64> = json["files"][0]["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .map(|d| d["location"]["column"].as_u64().expect("column"))
+            .collect();
+        assert_eq!(
+            json,
+            columns.iter().map(|&c| c as u64).collect::<Vec<_>>(),
+            "json"
+        );
+        let sarif: serde_json::Value = serde_json::from_str(&format("sarif")).expect("SARIF");
+        assert_eq!(sarif["runs"][0]["columnKind"], "utf16CodeUnits");
+        let sarif: Vec<u64> = sarif["runs"][0]["results"]
+            .as_array()
+            .expect("results")
+            .iter()
+            .map(|r| {
+                r["locations"][0]["physicalLocation"]["region"]["startColumn"]
+                    .as_u64()
+                    .expect("column")
+            })
+            .collect();
+        assert_eq!(
+            sarif,
+            columns.iter().map(|&c| c as u64).collect::<Vec<_>>(),
+            "sarif"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -10,8 +10,19 @@ use miette::{
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, Severity};
 use crate::span::{
-    line_end, line_start, next_line_start, previous_line_end, LineIndex, Position, Span,
+    line_end, line_start, next_line_start, previous_line_end, ColumnUnit, LineIndex, Position, Span,
 };
+
+/// What every format's columns count: UTF-16 code units, as the Language
+/// Server Protocol does by default, as SARIF does by default
+/// (`columnKind` `utf16CodeUnits`) and as VS Code and GitHub's annotations
+/// (JavaScript strings) count; for every character of the Basic
+/// Multilingual Plane (`ü`, `°`, `Ø`) that is one column, the character
+/// count people expect, and a character beyond it (an emoji, `𝜑`) is two.
+/// A file that is not UTF-8 counts a byte as a character (its code page has
+/// one byte a character). The human header, the short and GitHub lines, the
+/// JSON and SARIF positions all count the same way.
+pub const COLUMNS: ColumnUnit = ColumnUnit::Utf16;
 
 /// One file's diagnostics, ready to render.
 pub struct FileReport<'a> {
@@ -46,7 +57,7 @@ pub fn short(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
     let name = printable(report.name);
     for diagnostic in report.diagnostics {
-        let Position { row, column } = index.position(diagnostic.span.start);
+        let Position { row, column } = index.position_in(diagnostic.span.start, COLUMNS);
         out.push_str(&format!(
             "{name}:{row}:{column}: {}[{}] {}\n",
             diagnostic.severity.as_str(),
@@ -97,6 +108,9 @@ struct Window {
     first_row: usize,
     /// Columns of the line before the window (an excerpt starts inside it).
     first_column: usize,
+    /// The diagnostic's own column (0-based, in [`COLUMNS`]), for miette's
+    /// header, which would count the bytes of the window's text.
+    span_column: usize,
     latin1: bool,
     bytes: Vec<u8>,
 }
@@ -123,7 +137,7 @@ impl Window {
                 span_start.saturating_sub(EXCERPT_BEFORE).max(own_line),
             );
             end = char_boundary(source, (span_start + EXCERPT_AFTER).min(own_end));
-            first_column = index.position(start).column - 1;
+            first_column = index.position_in(start, COLUMNS).column - 1;
         }
         let bytes = &source[start..end];
         let (text, latin1) = match std::str::from_utf8(bytes) {
@@ -138,6 +152,7 @@ impl Window {
             start,
             first_row: index.position(start).row - 1,
             first_column,
+            span_column: index.position_in(span_start, COLUMNS).column - 1,
             latin1,
             bytes: bytes.to_vec(),
         }
@@ -162,12 +177,18 @@ impl SourceCode for Window {
         after: usize,
     ) -> Result<Box<dyn SpanContents<'a> + 'a>, MietteError> {
         let inner = self.text.read_span(span, before, after)?;
+        // Without context lines miette reads the label's span for the
+        // header's `line:column`.
+        let column = match (before, after) {
+            (0, 0) => self.span_column,
+            _ => inner.column() + self.first_column,
+        };
         Ok(Box::new(MietteSpanContents::new_named(
             self.name.clone(),
             inner.data(),
             *inner.span(),
             inner.line() + self.first_row,
-            inner.column() + self.first_column,
+            column,
             inner.line_count(),
         )))
     }
@@ -310,7 +331,10 @@ impl Located {
         let index = LineIndex::new(source);
         let positions = diagnostics
             .iter()
-            .map(|d| (index.position(d.span.start), index.position(d.span.end)))
+            .map(|d| {
+                let at = |offset| index.position_in(offset, COLUMNS);
+                (at(d.span.start), at(d.span.end))
+            })
             .collect();
         Self {
             name: name.to_owned(),
@@ -410,8 +434,8 @@ fn indented(json: &str, by: usize) -> String {
 pub fn github(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
     for d in report.diagnostics {
-        let start = index.position(d.span.start);
-        let end = index.position(d.span.end);
+        let start = index.position_in(d.span.start, COLUMNS);
+        let end = index.position_in(d.span.end, COLUMNS);
         let level = match d.severity {
             Severity::Error => "error",
             Severity::Warning => "warning",
@@ -552,7 +576,7 @@ impl Sarif {
             "runs": [{
                 "tool": { "driver": driver },
                 "invocations": [invocation],
-                "columnKind": "unicodeCodePoints",
+                "columnKind": "utf16CodeUnits",
                 "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
                 "results": [],
             }],
