@@ -1621,3 +1621,30 @@ fn every_format_counts_columns_alike() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A UTF-8 byte-order mark at the start of a file is named, and `--fix`
+/// removes it (its three bytes, nothing else), although it is a syntax
+/// error: a program with syntax errors gets only their own safe fixes.
+#[test]
+fn a_byte_order_mark_is_named_and_fix_removes_it() {
+    let dir = scratch("bom");
+    let path = dir.join("BOM.MPF");
+    let program = b"N10 G0 X1\r\nN20 R1=2^3\r\nM30\r\n";
+    std::fs::write(&path, [&b"\xef\xbb\xbf"[..], program].concat()).expect("write");
+    let name = path.to_str().expect("path");
+    let output = run(&["check", "--format", "short", name], b"");
+    assert_exit(&output, 1);
+    let text = stdout(&output);
+    assert!(
+        text.starts_with(&format!(
+            "{name}:1:1: error[S004] byte-order mark U+FEFF at the start of the file"
+        )),
+        "{text}"
+    );
+    let fixed = run(&["check", "--fix", "--format", "short", name], b"");
+    assert_exit(&fixed, 1);
+    assert_eq!(std::fs::read(&path).expect("read"), program);
+    // What is left is the other syntax error, which has no fix.
+    assert_eq!(stdout(&fixed).lines().count(), 1, "{}", stdout(&fixed));
+    let _ = std::fs::remove_dir_all(&dir);
+}

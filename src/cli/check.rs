@@ -527,7 +527,14 @@ fn fix(
         if own.is_empty() {
             continue;
         }
-        if diagnostics.iter().any(|d| d.code.starts_with('S')) {
+        // With syntax errors only their own safe fixes (a byte-order mark
+        // removed) are applied: the rest was found on trees that may not be
+        // what was meant.
+        let (own, count) = match diagnostics.iter().any(|d| d.code.starts_with('S')) {
+            true => lint::fix::applicable(&syntax_fixes(diagnostics), false),
+            false => (own, count),
+        };
+        if own.is_empty() {
             tellln!(
                 "{}: not fixed, because of its syntax errors",
                 printable(&program.name)
@@ -556,4 +563,18 @@ fn fix(
     let s = if answered == 1 { "" } else { "s" };
     tellln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
+}
+
+/// The syntax errors that carry a safe fix of their own.
+fn syntax_fixes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
+    diagnostics
+        .iter()
+        .filter(|d| d.code.starts_with('S'))
+        .filter(|d| {
+            d.fix
+                .as_deref()
+                .is_some_and(|fix| fix.applicability == Applicability::Safe)
+        })
+        .cloned()
+        .collect()
 }
