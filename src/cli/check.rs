@@ -355,7 +355,12 @@ fn check_file(
     let mut reports = Vec::new();
     for (program, outcome) in opened.programs(&file.bytes).into_iter().zip(outcomes) {
         checked.unchecked.add(Unchecked::of(&outcome, &settings));
-        reports.push((program.name, program.document.source, outcome.diagnostics));
+        reports.push((
+            program.name,
+            program.document.source,
+            outcome.diagnostics,
+            program.member,
+        ));
     }
     for member in unreadable {
         let source = opened.member_bytes(&file.bytes, member.member);
@@ -363,14 +368,24 @@ fn check_file(
             opened.member_name(member.member),
             source,
             member.diagnostics,
+            Some(member.member),
         ));
     }
-    for (name, source, diagnostics) in reports {
+    for (name, source, diagnostics, member) in reports {
         checked.files += 1;
         checked.counts.add(Counts::of(&diagnostics));
         checked.fails |= diagnostics.iter().any(|d| {
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
+        // GitHub and code scanning open the file named: the archive.
+        let (name, source, diagnostics) = match member {
+            Some(member) if matches!(args.format, Format::Github | Format::Sarif) => (
+                opened.name.clone(),
+                &file.bytes[..],
+                opened.in_archive(&file.bytes, member, diagnostics),
+            ),
+            _ => (name, source, diagnostics),
+        };
         checked.report.add(args, colour, &name, source, diagnostics);
     }
     Ok(checked)
