@@ -1648,3 +1648,34 @@ fn a_byte_order_mark_is_named_and_fix_removes_it() {
     assert_eq!(stdout(&fixed).lines().count(), 1, "{}", stdout(&fixed));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A file name that is no UTF-8 (`Kühl.MPF` saved in Latin-1) is named in
+/// SARIF by its own bytes, percent-encoded (it was `K%EF%BF%BDhl.MPF`, the
+/// replacement character, which names no file); people read it lossily.
+#[cfg(unix)]
+#[test]
+fn sarif_names_a_file_by_the_bytes_of_its_name() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = scratch("latin1-name");
+    let path = dir.join(std::ffi::OsStr::from_bytes(b"K\xfchl.MPF"));
+    std::fs::write(&path, b"N10 G1 X1\nM30\n").expect("write");
+    let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "sarif"])
+        .arg(&path)
+        .output()
+        .expect("binary runs");
+    let sarif: serde_json::Value = serde_json::from_slice(&output.stdout).expect("SARIF");
+    let uri = sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]
+        ["artifactLocation"]["uri"]
+        .as_str()
+        .expect("uri");
+    assert!(uri.starts_with("file:///"), "{uri}");
+    assert!(uri.ends_with("/K%FChl.MPF"), "{uri}");
+    let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short"])
+        .arg(&path)
+        .output()
+        .expect("binary runs");
+    assert!(stdout(&output).contains("K\u{fffd}hl.MPF:1:"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -254,7 +254,7 @@ fn report(
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
                         let mut report = Report::new(args);
-                        report.add(args, colour, &on.name, &on.source, diagnostics);
+                        report.add(args, colour, None, &on.name, &on.source, diagnostics);
                         print(report, args.format, out, &mut held)?;
                         files += 1;
                     }
@@ -378,15 +378,22 @@ fn check_file(
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
         // GitHub and code scanning open the file named: the archive.
+        let ci = matches!(args.format, Format::Github | Format::Sarif);
         let (name, source, diagnostics) = match member {
-            Some(member) if matches!(args.format, Format::Github | Format::Sarif) => (
+            Some(member) if ci => (
                 opened.name.clone(),
                 &file.bytes[..],
                 opened.in_archive(&file.bytes, member, diagnostics),
             ),
             _ => (name, source, diagnostics),
         };
-        checked.report.add(args, colour, &name, source, diagnostics);
+        // The file's own path, which SARIF names by its bytes.
+        let path = (member.is_none() || ci)
+            .then_some(named.as_path())
+            .filter(|path| *path != Path::new("-"));
+        checked
+            .report
+            .add(args, colour, path, &name, source, diagnostics);
     }
     Ok(checked)
 }
@@ -400,11 +407,13 @@ impl Report {
         }
     }
 
-    /// Adds the findings of the program `name`, whose bytes are `source`.
+    /// Adds the findings of the program `name`, whose bytes are `source`
+    /// (at `path` if it is a file's own).
     fn add(
         &mut self,
         args: &CheckArgs,
         colour: bool,
+        path: Option<&Path>,
         name: &str,
         source: &[u8],
         diagnostics: Vec<Diagnostic>,
@@ -426,7 +435,7 @@ impl Report {
                 }
                 _ => human(&file_report, colour, text),
             },
-            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics)),
+            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics).at(path)),
             Report::Statistics(statistics) => statistics.add(&diagnostics, args.unsafe_fixes),
         }
     }

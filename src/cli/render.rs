@@ -321,6 +321,8 @@ impl<'a> JsonFix<'a> {
 /// whole-run formats (JSON, SARIF) need of a file once its source is gone.
 pub struct Located {
     pub name: String,
+    /// The file's path, where it has one: SARIF names it by its bytes.
+    pub path: Option<std::path::PathBuf>,
     pub diagnostics: Vec<Diagnostic>,
     pub positions: Vec<(Position, Position)>,
 }
@@ -338,8 +340,17 @@ impl Located {
             .collect();
         Self {
             name: name.to_owned(),
+            path: None,
             diagnostics,
             positions,
+        }
+    }
+
+    /// The same, from the file at `path`, whose name may not be UTF-8.
+    pub fn at(self, path: Option<&std::path::Path>) -> Self {
+        Self {
+            path: path.map(std::path::Path::to_path_buf),
+            ..self
         }
     }
 
@@ -483,7 +494,8 @@ pub struct Sarif {
 impl Sarif {
     /// One file's results.
     pub fn add(&mut self, report: &Located) {
-        let location = artifact(&report.name);
+        let path = report.path.as_deref().map(crate::cli::platform::path_bytes);
+        let location = artifact(path.as_deref().unwrap_or(report.name.as_bytes()));
         for (d, start, end) in report.each() {
             self.codes.insert(d.code);
             let mut result = serde_json::json!({
@@ -526,7 +538,7 @@ impl Sarif {
         self.failures.push(serde_json::json!({
             "level": "error",
             "message": { "text": error },
-            "locations": [{ "physicalLocation": { "artifactLocation": artifact(name) } }],
+            "locations": [{ "physicalLocation": { "artifactLocation": artifact(name.as_bytes()) } }],
         }));
     }
 
@@ -617,35 +629,90 @@ fn help_uri(repository: &str, info: &crate::diagnostic::RuleInfo) -> Option<Stri
 /// directory `check` ran in.
 const SOURCE_ROOT: &str = "%SRCROOT%";
 
-/// A file as a SARIF artifact location: a relative path against
-/// [`SOURCE_ROOT`], an absolute one as a `file://` URI; percent-encoded.
-fn artifact(name: &str) -> serde_json::Value {
-    let path = name.replace('\\', "/");
-    if path.starts_with('/') {
-        serde_json::json!({ "uri": format!("file://{}", percent_encoded(&path)) })
-    } else {
-        let relative = path.strip_prefix("./").unwrap_or(&path);
-        serde_json::json!({ "uri": percent_encoded(relative), "uriBaseId": SOURCE_ROOT })
+/// A file as a SARIF artifact location: a relative path as a relative
+/// reference against [`SOURCE_ROOT`], an absolute one as a `file` URI.
+/// `path` is the name's bytes as the file system holds them (not the text
+/// printed for people, where a byte that is no UTF-8 became U+FFFD).
+fn artifact(path: &[u8]) -> serde_json::Value {
+    match uri(path, crate::cli::platform::WINDOWS_PATHS) {
+        Uri::Absolute(uri) => serde_json::json!({ "uri": uri }),
+        Uri::Relative(uri) => serde_json::json!({ "uri": uri, "uriBaseId": SOURCE_ROOT }),
     }
 }
 
-/// The working directory as a `file://` URI ending in `/`.
+#[derive(Debug, PartialEq)]
+enum Uri {
+    Absolute(String),
+    Relative(String),
+}
+
+/// A path as a URI (RFC 8089): `/a/b` as `file:///a/b`; with `windows`,
+/// `\` read as `/`, `C:\CAM\PART.MPF` as `file:///C:/CAM/PART.MPF`,
+/// `\\server\share\PART.MPF` as `file://server/share/PART.MPF`, and the
+/// verbatim forms (`\\?\C:\...`, `\\?\UNC\server\...`) as the paths
+/// they stand for. Anything else is a relative reference (`./` dropped).
+/// Every byte but the unreserved characters and `/` is percent-encoded,
+/// those of a name that is no UTF-8 as they are.
+fn uri(path: &[u8], windows: bool) -> Uri {
+    let mut path = path.to_vec();
+    if windows {
+        for byte in &mut path {
+            if *byte == b'\\' {
+                *byte = b'/';
+            }
+        }
+        let unc = [&b"//?/UNC/"[..], b"//./UNC/"]
+            .iter()
+            .find_map(|prefix| path.strip_prefix(*prefix));
+        let verbatim = [&b"//?/"[..], b"//./"]
+            .iter()
+            .find_map(|prefix| path.strip_prefix(*prefix));
+        path = match (unc, verbatim) {
+            (Some(server), _) => [&b"//"[..], server].concat(),
+            (None, Some(local)) => local.to_vec(),
+            (None, None) => path,
+        };
+        if let [drive, b':', rest @ ..] = &path[..] {
+            if drive.is_ascii_alphabetic() && (rest.is_empty() || rest[0] == b'/') {
+                return Uri::Absolute(format!(
+                    "file:///{}:{}",
+                    *drive as char,
+                    percent_encoded(rest)
+                ));
+            }
+        }
+        if let Some(server) = path.strip_prefix(b"//") {
+            return Uri::Absolute(format!("file://{}", percent_encoded(server)));
+        }
+    }
+    if path.starts_with(b"/") {
+        return Uri::Absolute(format!("file://{}", percent_encoded(&path)));
+    }
+    let relative = path.strip_prefix(b"./").unwrap_or(&path);
+    Uri::Relative(percent_encoded(relative))
+}
+
+/// The working directory as a `file` URI ending in `/`.
 fn working_directory() -> String {
     let dir = std::env::current_dir().unwrap_or_default();
-    let dir = dir.to_string_lossy().replace('\\', "/");
-    let dir = if dir.starts_with('/') {
-        dir
-    } else {
-        format!("/{dir}")
+    let uri = match uri(
+        &crate::cli::platform::path_bytes(&dir),
+        crate::cli::platform::WINDOWS_PATHS,
+    ) {
+        Uri::Absolute(uri) => uri,
+        // The working directory is absolute; should it not be, the root.
+        Uri::Relative(_) => "file:///".to_string(),
     };
-    let slash = if dir.ends_with('/') { "" } else { "/" };
-    format!("file://{}{slash}", percent_encoded(&dir))
+    match uri.ends_with('/') {
+        true => uri,
+        false => uri + "/",
+    }
 }
 
 /// RFC 3986: every byte but the unreserved characters and `/` as `%XX`.
-fn percent_encoded(path: &str) -> String {
+fn percent_encoded(path: &[u8]) -> String {
     let mut out = String::with_capacity(path.len());
-    for byte in path.bytes() {
+    for &byte in path {
         if byte.is_ascii_alphanumeric() || matches!(byte, b'-' | b'.' | b'_' | b'~' | b'/') {
             out.push(byte as char);
         } else {
@@ -777,5 +844,61 @@ mod tests {
         );
         // No repository in Cargo.toml: no link to a page that is nowhere.
         assert_eq!(help_uri("", info), None);
+    }
+
+    fn absolute(uri: &str) -> Uri {
+        Uri::Absolute(uri.to_string())
+    }
+
+    fn relative(uri: &str) -> Uri {
+        Uri::Relative(uri.to_string())
+    }
+
+    #[test]
+    fn unix_paths_are_file_uris_or_relative_references() {
+        assert_eq!(
+            uri(b"/home/cam/OUT/PART 1.MPF", false),
+            absolute("file:///home/cam/OUT/PART%201.MPF")
+        );
+        assert_eq!(uri(b"./OUT/PART.MPF", false), relative("OUT/PART.MPF"));
+        assert_eq!(uri(b"OUT/PART.MPF", false), relative("OUT/PART.MPF"));
+        // On Unix a backslash and a colon are a name's own characters.
+        assert_eq!(uri(b"C:\\PART.MPF", false), relative("C%3A%5CPART.MPF"));
+    }
+
+    #[test]
+    fn a_name_that_is_no_utf8_keeps_its_bytes() {
+        // `Kühl.MPF` saved in Latin-1: ü is the byte 0xFC, not U+FFFD.
+        assert_eq!(uri(b"K\xfchl.MPF", false), relative("K%FChl.MPF"));
+        assert_eq!(
+            uri("/cam/Kühl.MPF".as_bytes(), false),
+            absolute("file:///cam/K%C3%BChl.MPF")
+        );
+    }
+
+    #[test]
+    fn windows_paths_are_file_uris_with_their_drive_or_server() {
+        assert_eq!(
+            uri(b"C:\\CAM\\OUT\\PART.MPF", true),
+            absolute("file:///C:/CAM/OUT/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"d:/CAM/PART.MPF", true),
+            absolute("file:///d:/CAM/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\server\\share\\OUT\\PART.MPF", true),
+            absolute("file://server/share/OUT/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\?\\C:\\CAM\\PART.MPF", true),
+            absolute("file:///C:/CAM/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\?\\UNC\\server\\share\\PART.MPF", true),
+            absolute("file://server/share/PART.MPF")
+        );
+        assert_eq!(uri(b"OUT\\PART 2.MPF", true), relative("OUT/PART%202.MPF"));
+        assert_eq!(uri(b".\\PART.MPF", true), relative("PART.MPF"));
     }
 }
