@@ -1679,3 +1679,34 @@ fn sarif_names_a_file_by_the_bytes_of_its_name() {
     assert!(stdout(&output).contains("K\u{fffd}hl.MPF:1:"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The main page's list of commands refers to `sinuprep-check(1)` and the
+/// others: `manpage --dir` writes each of them, `manpage check` prints one.
+#[test]
+fn manpage_writes_every_page_the_main_page_refers_to() {
+    let dir = scratch("manpages");
+    let output = run(&["manpage", "--dir", dir.to_str().expect("path")], b"");
+    assert_exit(&output, 0);
+    let main = std::fs::read_to_string(dir.join("sinuprep.1")).expect("sinuprep.1");
+    assert_eq!(main, stdout(&run(&["manpage"], b"")));
+    let referred: Vec<&str> = main
+        .lines()
+        .filter_map(|line| line.strip_prefix("sinuprep\\-"))
+        .filter_map(|line| line.strip_suffix("(1)"))
+        .collect();
+    assert!(
+        referred.contains(&"check") && referred.len() >= 8,
+        "{referred:?}"
+    );
+    for command in referred {
+        let page = std::fs::read_to_string(dir.join(format!("sinuprep-{command}.1")))
+            .unwrap_or_else(|e| panic!("sinuprep-{command}.1: {e}"));
+        assert!(
+            page.contains(&format!(".TH sinuprep-{command} 1")),
+            "{page}"
+        );
+        assert_eq!(page, stdout(&run(&["manpage", command], b"")));
+    }
+    assert_exit(&run(&["manpage", "nope"], b""), 2);
+    let _ = std::fs::remove_dir_all(&dir);
+}

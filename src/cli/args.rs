@@ -56,8 +56,19 @@ pub enum Command {
     /// Print the completion script of a shell (`sinuprep completions bash >
     /// /usr/share/bash-completion/completions/sinuprep`).
     Completions(CompletionsArgs),
-    /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`).
-    Manpage,
+    /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`), a command's
+    /// (`sinuprep manpage check > sinuprep-check.1`), or write them all to a directory (`--dir`).
+    Manpage(ManpageArgs),
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ManpageArgs {
+    /// The command whose page to print (`check`: sinuprep-check(1)) [default: sinuprep(1)].
+    #[arg(value_name = "COMMAND")]
+    pub command: Option<String>,
+    /// Write every page to DIR instead: sinuprep.1 and one for each command (sinuprep-check.1, ...).
+    #[arg(long, value_name = "DIR", conflicts_with = "command")]
+    pub dir: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]

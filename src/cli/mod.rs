@@ -103,6 +103,6 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Convert(convert) => convert::run(convert),
         args::Command::Axes(axes) => axes::run(axes),
         args::Command::Completions(completions) => describe::completions(completions.shell),
-        args::Command::Manpage => describe::manpage(),
+        args::Command::Manpage(manpage) => describe::manpage(manpage),
     }
 }
