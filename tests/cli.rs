@@ -1710,3 +1710,24 @@ fn manpage_writes_every_page_the_main_page_refers_to() {
     assert_exit(&run(&["manpage", "nope"], b""), 2);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `check` and `rewrite` name their output-format option alike,
+/// `--output-format` (ruff's name); `--format` and `--message-format` stay
+/// as aliases.
+#[test]
+fn check_and_rewrite_name_the_output_format_alike() {
+    let broken = b"N10 X=(1+2\nM30\n";
+    for (command, alias) in [("check", "--format"), ("rewrite", "--message-format")] {
+        let named = run(&[command, "--output-format", "short", "-"], broken);
+        assert_exit(&named, 1);
+        let shown = if command == "check" {
+            stdout(&named)
+        } else {
+            String::from_utf8_lossy(&named.stderr).into_owned()
+        };
+        assert!(shown.starts_with("<stdin>:1:"), "{command}: {shown}");
+        let aliased = run(&[command, alias, "short", "-"], broken);
+        assert_eq!(aliased.stdout, named.stdout);
+        assert_eq!(aliased.stderr, named.stderr);
+    }
+}

@@ -125,13 +125,13 @@ pub struct AxesArgs {
 pub struct CheckArgs {
     /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
     pub paths: Vec<PathBuf>,
-    /// How to print the diagnostics.
-    #[arg(long, value_enum, default_value_t = Format::Human)]
+    /// How to print the diagnostics (`--output-format`, as ruff and `rewrite` name it).
+    #[arg(long = "output-format", visible_alias = "format", value_enum, default_value_t = Format::Human)]
     pub format: Format,
     /// Write the report to FILE (atomically: the whole report or, should the run fail, nothing) instead of stdout; the summary stays on stderr.
     #[arg(long, short, value_name = "FILE")]
     pub output_file: Option<PathBuf>,
-    /// Instead of the findings, how many each rule found: count, code, `[*]` where --fix answers some, name (JSON with --format json).
+    /// Instead of the findings, how many each rule found: count, code, `[*]` where --fix answers some, name (JSON with --output-format json).
     #[arg(long)]
     pub statistics: bool,
     /// Report only these rules (codes or prefixes, comma-separated: `N,C6,S`).
@@ -243,8 +243,8 @@ pub struct AnalysisArgs {
     /// (instead of local variables declared with DEF).
     #[arg(long, value_name = "N")]
     pub runtime_r: Option<u32>,
-    /// How diagnostics are printed on stderr.
-    #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
+    /// How diagnostics are printed on stderr (`--output-format`, as `check` names it).
+    #[arg(long = "output-format", visible_alias = "message-format", value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
 }
 
