@@ -58,11 +58,12 @@ pub struct Position {
 /// What a column counts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ColumnUnit {
-    /// Characters (Unicode scalar values): what people, miette, SARIF and
-    /// the JSON output count.
+    /// Characters (Unicode scalar values): what messages about settings
+    /// files count.
     CodePoints,
     /// UTF-16 code units: what the Language Server Protocol counts by
-    /// default (a character beyond the Basic Multilingual Plane is two).
+    /// default (a character beyond the Basic Multilingual Plane is two),
+    /// and every report format (`cli::render::COLUMNS`).
     Utf16,
     Bytes,
 }

@@ -447,3 +447,46 @@ fn what_an_archive_holds_unchecked_is_named() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// GitHub's annotations and SARIF's code scanning open the file a finding
+/// names: a member's finding names the archive, at the archive's own line,
+/// and the member in its message (`SHOP.ARC:PART_MPF` named no file).
+#[test]
+fn ci_formats_point_at_the_archive_and_name_the_member() {
+    let dir = scratch("arc-ci");
+    let binary = dir.join("SETUP.ARC");
+    std::fs::write(&binary, shop_binary()).expect("write");
+    for path in [shop(), binary] {
+        let bytes = std::fs::read(&path).expect("archive");
+        let line = bytes
+            .split(|&b| b == b'\n')
+            .position(|l| l.starts_with(b"G1 X10 X20"))
+            .expect("the finding's line")
+            + 1;
+        let name = path.display().to_string();
+        let output = run(&["check", "--format", "github", &name], b"");
+        assert_exit(&output, 1);
+        assert_eq!(
+            stdout(&output),
+            format!("::error file={},line={line},col=8,endLine={line},endColumn=11,title=N022 repeated-address::PART_MPF: address X is programmed twice in this block (`X10` and `X20`): the control takes it once\n", name.replace(':', "%3A").replace(',', "%2C"))
+        );
+        let output = run(&["check", "--format", "sarif", &name], b"");
+        let sarif: serde_json::Value = serde_json::from_slice(&output.stdout).expect("SARIF");
+        let result = &sarif["runs"][0]["results"][0];
+        let location = &result["locations"][0]["physicalLocation"];
+        let uri = location["artifactLocation"]["uri"].as_str().expect("uri");
+        assert!(
+            uri.starts_with("file:///")
+                && uri.ends_with(path.file_name().and_then(|n| n.to_str()).expect("name")),
+            "{uri}"
+        );
+        assert_eq!(location["region"]["startLine"], line);
+        let offset = location["region"]["byteOffset"].as_u64().expect("offset") as usize;
+        assert_eq!(&bytes[offset..offset + 3], b"X20");
+        assert!(result["message"]["text"]
+            .as_str()
+            .expect("message")
+            .starts_with("PART_MPF: address X"));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1433,3 +1433,301 @@ fn the_summary_counts_what_fix_would_answer() {
     );
     assert!(!String::from_utf8_lossy(&output.stderr).contains("fixable"));
 }
+
+/// `--output-file` writes the report that stdout would carry, whole, and
+/// leaves stdout empty; the summary stays on stderr. A file that cannot be
+/// written is a tool error.
+#[test]
+fn output_file_holds_the_report_stdout_would() {
+    let dir = scratch("output-file");
+    let trigger = "tests/fixtures/lint/N001_trigger.mpf";
+    for format in ["short", "json", "sarif", "github", "human"] {
+        let to_stdout = run(&["check", "--format", format, trigger], b"");
+        let path = dir.join(format!("report.{format}"));
+        std::fs::write(&path, "an older report, replaced whole\n").expect("write");
+        let path_text = path.to_str().expect("path");
+        let to_file = run(
+            &[
+                "check",
+                "--format",
+                format,
+                "--output-file",
+                path_text,
+                trigger,
+            ],
+            b"",
+        );
+        assert_exit(&to_file, 1);
+        assert!(to_file.stdout.is_empty(), "{}", stdout(&to_file));
+        assert_eq!(
+            std::fs::read(&path).expect("report"),
+            to_stdout.stdout,
+            "{format}"
+        );
+        assert_eq!(to_file.stderr, to_stdout.stderr);
+    }
+    let missing = dir.join("no/such/dir/report.txt");
+    let output = run(
+        &["check", "-o", missing.to_str().expect("path"), trigger],
+        b"",
+    );
+    assert_exit(&output, 2);
+    assert!(!missing.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--statistics` counts the findings of each rule instead of listing them,
+/// as ruff does: count, code, `[*]` where `--fix` answers some, name.
+#[test]
+fn statistics_count_the_findings_of_each_rule() {
+    let files = [
+        "tests/fixtures/lint/N001_trigger.mpf",
+        "tests/fixtures/lint/N099_trigger.mpf",
+    ];
+    let output = run(&[&["check", "--statistics"][..], &files].concat(), b"");
+    assert_exit(&output, 1);
+    assert_eq!(
+        stdout(&output),
+        "3\tN001\t[ ] undefined-label\n3\tN099\t[*] unused-suppression\n2\tN005\t[ ] undefined-variable\n"
+    );
+    let output = run(
+        &[&["check", "--statistics", "--format", "json"][..], &files].concat(),
+        b"",
+    );
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    assert_eq!(json[0]["code"], "N001");
+    assert_eq!(json[0]["count"], 3);
+    assert_eq!(json[1]["fixable"], true);
+}
+
+/// A file that cannot be checked is an entry of the JSON report (its path,
+/// the error, no diagnostics) and a notification of the SARIF log's
+/// invocation, which is then no success; not only a message on stderr.
+#[test]
+fn an_unreadable_file_is_an_entry_of_the_json_and_sarif_reports() {
+    let dir = scratch("unreadable-entry");
+    // An archive cut short cannot be read; a file that is not there neither.
+    let damaged = dir.join("CUT.ARC");
+    std::fs::write(&damaged, b"@@MMCIBN.002, and no header after it").expect("write");
+    let damaged = damaged.to_str().expect("path");
+    let files = ["NOT_THERE.MPF", "samples/PAPER_EXAMPLE3.MPF", damaged];
+    let output = run(&[&["check", "--format", "json"][..], &files].concat(), b"");
+    assert_exit(&output, 2);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    let entries = json["files"].as_array().expect("files");
+    assert_eq!(entries.len(), 3, "{json}");
+    assert_eq!(entries[0]["path"], "NOT_THERE.MPF");
+    let error = entries[0]["error"].as_str().expect("error");
+    assert!(error.starts_with("cannot read NOT_THERE.MPF: "), "{error}");
+    assert_eq!(entries[0]["diagnostics"], serde_json::json!([]));
+    assert!(entries[1].get("error").is_none());
+    assert_eq!(entries[2]["path"], damaged);
+    let output = run(&[&["check", "--format", "sarif"][..], &files].concat(), b"");
+    assert_exit(&output, 2);
+    let sarif: serde_json::Value = serde_json::from_slice(&output.stdout).expect("SARIF");
+    let invocation = &sarif["runs"][0]["invocations"][0];
+    assert_eq!(invocation["executionSuccessful"], false);
+    let notes = invocation["toolExecutionNotifications"]
+        .as_array()
+        .expect("notifications");
+    assert_eq!(notes.len(), 2);
+    assert_eq!(notes[0]["level"], "error");
+    assert_eq!(
+        notes[0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+        "NOT_THERE.MPF"
+    );
+    let fine = run(
+        &["check", "--format", "sarif", "samples/PAPER_EXAMPLE3.MPF"],
+        b"",
+    );
+    let sarif: serde_json::Value = serde_json::from_slice(&fine.stdout).expect("SARIF");
+    assert_eq!(
+        sarif["runs"][0]["invocations"][0]["executionSuccessful"],
+        true
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every format counts columns alike, in UTF-16 code units (LSP's and
+/// SARIF's default): `ü` is one, `𝜑` (beyond the Basic Multilingual Plane)
+/// two, a Latin-1 byte one. The human header counted bytes.
+#[test]
+fn every_format_counts_columns_alike() {
+    let dir = scratch("columns");
+    let path = dir.join("COL.MPF");
+    let program = [
+        &b"N10 MSG(\"\xc3\xbc\") X1 X1\n"[..],
+        b"N20 MSG(\"\xf0\x9d\x9c\x91\") X1 X1\n",
+        b"M30\n",
+    ]
+    .concat();
+    let latin1 = dir.join("LATIN1.MPF");
+    std::fs::write(&path, &program).expect("write");
+    std::fs::write(&latin1, b"N10 MSG(\"\xfc\") X1 X1\nM30\n").expect("write");
+    for (file, columns) in [(&path, &[17, 18][..]), (&latin1, &[17][..])] {
+        let file = file.to_str().expect("path");
+        let format = |format: &str| stdout(&run(&["check", "--format", format, file], b""));
+        let found = |text: &str, before: &str, after: char| -> Vec<usize> {
+            text.split(before)
+                .skip(1)
+                .map(|rest| rest.split(after).next().unwrap_or("").trim())
+                .map(|n| n.parse().unwrap_or_else(|_| panic!("{n}: {text}")))
+                .collect()
+        };
+        let short = format("short");
+        let short: Vec<usize> = short
+            .lines()
+            .map(|l| l[file.len() + 1..].split(':').nth(1).unwrap_or(""))
+            .map(|n| n.parse().expect("column"))
+            .collect();
+        assert_eq!(short, columns, "short");
+        assert_eq!(found(&format("github"), ",col=", ','), columns, "github");
+        let human: Vec<usize> = format("human")
+            .split(&format!("[{file}:"))
+            .skip(1)
+            .map(|rest| rest.split(']').next().unwrap_or(""))
+            .map(|at| at.split(':').nth(1).unwrap_or("").parse().expect("column"))
+            .collect();
+        assert_eq!(human, columns, "human");
+        let json: serde_json::Value = serde_json::from_str(&format("json")).expect("JSON");
+        let json: Vec<u64> = json["files"][0]["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .map(|d| d["location"]["column"].as_u64().expect("column"))
+            .collect();
+        assert_eq!(
+            json,
+            columns.iter().map(|&c| c as u64).collect::<Vec<_>>(),
+            "json"
+        );
+        let sarif: serde_json::Value = serde_json::from_str(&format("sarif")).expect("SARIF");
+        assert_eq!(sarif["runs"][0]["columnKind"], "utf16CodeUnits");
+        let sarif: Vec<u64> = sarif["runs"][0]["results"]
+            .as_array()
+            .expect("results")
+            .iter()
+            .map(|r| {
+                r["locations"][0]["physicalLocation"]["region"]["startColumn"]
+                    .as_u64()
+                    .expect("column")
+            })
+            .collect();
+        assert_eq!(
+            sarif,
+            columns.iter().map(|&c| c as u64).collect::<Vec<_>>(),
+            "sarif"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A UTF-8 byte-order mark at the start of a file is named, and `--fix`
+/// removes it (its three bytes, nothing else), although it is a syntax
+/// error: a program with syntax errors gets only their own safe fixes.
+#[test]
+fn a_byte_order_mark_is_named_and_fix_removes_it() {
+    let dir = scratch("bom");
+    let path = dir.join("BOM.MPF");
+    let program = b"N10 G0 X1\r\nN20 R1=2^3\r\nM30\r\n";
+    std::fs::write(&path, [&b"\xef\xbb\xbf"[..], program].concat()).expect("write");
+    let name = path.to_str().expect("path");
+    let output = run(&["check", "--format", "short", name], b"");
+    assert_exit(&output, 1);
+    let text = stdout(&output);
+    assert!(
+        text.starts_with(&format!(
+            "{name}:1:1: error[S004] byte-order mark U+FEFF at the start of the file"
+        )),
+        "{text}"
+    );
+    let fixed = run(&["check", "--fix", "--format", "short", name], b"");
+    assert_exit(&fixed, 1);
+    assert_eq!(std::fs::read(&path).expect("read"), program);
+    // What is left is the other syntax error, which has no fix.
+    assert_eq!(stdout(&fixed).lines().count(), 1, "{}", stdout(&fixed));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A file name that is no UTF-8 (`Kühl.MPF` saved in Latin-1) is named in
+/// SARIF by its own bytes, percent-encoded (it was `K%EF%BF%BDhl.MPF`, the
+/// replacement character, which names no file); people read it lossily.
+#[cfg(unix)]
+#[test]
+fn sarif_names_a_file_by_the_bytes_of_its_name() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = scratch("latin1-name");
+    let path = dir.join(std::ffi::OsStr::from_bytes(b"K\xfchl.MPF"));
+    std::fs::write(&path, b"N10 G1 X1\nM30\n").expect("write");
+    let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "sarif"])
+        .arg(&path)
+        .output()
+        .expect("binary runs");
+    let sarif: serde_json::Value = serde_json::from_slice(&output.stdout).expect("SARIF");
+    let uri = sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]
+        ["artifactLocation"]["uri"]
+        .as_str()
+        .expect("uri");
+    assert!(uri.starts_with("file:///"), "{uri}");
+    assert!(uri.ends_with("/K%FChl.MPF"), "{uri}");
+    let output = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short"])
+        .arg(&path)
+        .output()
+        .expect("binary runs");
+    assert!(stdout(&output).contains("K\u{fffd}hl.MPF:1:"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The main page's list of commands refers to `sinuprep-check(1)` and the
+/// others: `manpage --dir` writes each of them, `manpage check` prints one.
+#[test]
+fn manpage_writes_every_page_the_main_page_refers_to() {
+    let dir = scratch("manpages");
+    let output = run(&["manpage", "--dir", dir.to_str().expect("path")], b"");
+    assert_exit(&output, 0);
+    let main = std::fs::read_to_string(dir.join("sinuprep.1")).expect("sinuprep.1");
+    assert_eq!(main, stdout(&run(&["manpage"], b"")));
+    let referred: Vec<&str> = main
+        .lines()
+        .filter_map(|line| line.strip_prefix("sinuprep\\-"))
+        .filter_map(|line| line.strip_suffix("(1)"))
+        .collect();
+    assert!(
+        referred.contains(&"check") && referred.len() >= 8,
+        "{referred:?}"
+    );
+    for command in referred {
+        let page = std::fs::read_to_string(dir.join(format!("sinuprep-{command}.1")))
+            .unwrap_or_else(|e| panic!("sinuprep-{command}.1: {e}"));
+        assert!(
+            page.contains(&format!(".TH sinuprep-{command} 1")),
+            "{page}"
+        );
+        assert_eq!(page, stdout(&run(&["manpage", command], b"")));
+    }
+    assert_exit(&run(&["manpage", "nope"], b""), 2);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check` and `rewrite` name their output-format option alike,
+/// `--output-format` (ruff's name); `--format` and `--message-format` stay
+/// as aliases.
+#[test]
+fn check_and_rewrite_name_the_output_format_alike() {
+    let broken = b"N10 X=(1+2\nM30\n";
+    for (command, alias) in [("check", "--format"), ("rewrite", "--message-format")] {
+        let named = run(&[command, "--output-format", "short", "-"], broken);
+        assert_exit(&named, 1);
+        let shown = if command == "check" {
+            stdout(&named)
+        } else {
+            String::from_utf8_lossy(&named.stderr).into_owned()
+        };
+        assert!(shown.starts_with("<stdin>:1:"), "{command}: {shown}");
+        let aliased = run(&[command, alias, "short", "-"], broken);
+        assert_eq!(aliased.stdout, named.stdout);
+        assert_eq!(aliased.stderr, named.stderr);
+    }
+}

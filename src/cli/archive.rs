@@ -8,11 +8,12 @@ use std::sync::Arc;
 use crate::archive::{self, Archive, MemberKind};
 use crate::cli::error::CliError;
 use crate::cli::render::printable;
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Fix};
 use crate::document::Document;
 use crate::lint::Settings;
 use crate::semantic::environment::Environment;
 use crate::semantic::head_def::Heads;
+use crate::span::Span;
 use crate::syntax::{program_kind, ProgramKind};
 
 /// A file, read as an archive if it is one.
@@ -148,6 +149,40 @@ impl Opened {
             Some(archive) => &bytes[archive.members[index].data.clone()],
             None => bytes,
         }
+    }
+
+    /// Member `index`'s findings placed in the archive itself, for the
+    /// formats whose readers open the file named (GitHub's annotations,
+    /// SARIF's code scanning): `ARCH.arc:PART_MPF` is no file there. Each
+    /// span is moved to where the member lies in `bytes` (the archive's),
+    /// so that its line is the archive's; the message begins with the
+    /// member's name; a fix becomes the archive's edits (a binary
+    /// archive's header included), or is dropped where the new size does
+    /// not fit the header.
+    pub fn in_archive(
+        &self,
+        bytes: &[u8],
+        index: usize,
+        diagnostics: Vec<Diagnostic>,
+    ) -> Vec<Diagnostic> {
+        let Some(archive) = &self.archive else {
+            return diagnostics;
+        };
+        let member = &archive.members[index];
+        let at = member.data.start;
+        let name = printable(&member.name);
+        diagnostics
+            .into_iter()
+            .map(|mut d| {
+                d.span = Span::new(d.span.start + at, d.span.end + at);
+                d.message = format!("{name}: {}", d.message);
+                d.fix = d.fix.and_then(|fix| {
+                    let edits = archive.edits(bytes, index, &fix.edits)?;
+                    Some(Box::new(Fix { edits, ..*fix }))
+                });
+                d
+            })
+            .collect()
     }
 
     /// `ARCH.arc:PART_MPF`.

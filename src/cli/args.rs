@@ -56,12 +56,23 @@ pub enum Command {
     /// Print the completion script of a shell (`sinuprep completions bash >
     /// /usr/share/bash-completion/completions/sinuprep`).
     Completions(CompletionsArgs),
-    /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`).
-    Manpage,
+    /// Print the man page, as roff (`sinuprep manpage > sinuprep.1`), a command's
+    /// (`sinuprep manpage check > sinuprep-check.1`), or write them all to a directory (`--dir`).
+    Manpage(ManpageArgs),
     /// Serve an editor as a language server over stdin and stdout (LSP):
     /// findings as you type, hover on CYCLE600 calls and names, definitions,
     /// references, symbols, folding and fixes.
     Lsp,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct ManpageArgs {
+    /// The command whose page to print (`check`: sinuprep-check(1)) [default: sinuprep(1)].
+    #[arg(value_name = "COMMAND")]
+    pub command: Option<String>,
+    /// Write every page to DIR instead: sinuprep.1 and one for each command (sinuprep-check.1, ...).
+    #[arg(long, value_name = "DIR", conflicts_with = "command")]
+    pub dir: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]
@@ -118,9 +129,15 @@ pub struct AxesArgs {
 pub struct CheckArgs {
     /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
     pub paths: Vec<PathBuf>,
-    /// How to print the diagnostics.
-    #[arg(long, value_enum, default_value_t = Format::Human)]
+    /// How to print the diagnostics (`--output-format`, as ruff and `rewrite` name it).
+    #[arg(long = "output-format", visible_alias = "format", value_enum, default_value_t = Format::Human)]
     pub format: Format,
+    /// Write the report to FILE (atomically: the whole report or, should the run fail, nothing) instead of stdout; the summary stays on stderr.
+    #[arg(long, short, value_name = "FILE")]
+    pub output_file: Option<PathBuf>,
+    /// Instead of the findings, how many each rule found: count, code, `[*]` where --fix answers some, name (JSON with --output-format json).
+    #[arg(long)]
+    pub statistics: bool,
     /// Report only these rules (codes or prefixes, comma-separated: `N,C6,S`).
     #[arg(long, value_delimiter = ',', value_name = "CODES")]
     pub select: Vec<String>,
@@ -230,8 +247,8 @@ pub struct AnalysisArgs {
     /// (instead of local variables declared with DEF).
     #[arg(long, value_name = "N")]
     pub runtime_r: Option<u32>,
-    /// How diagnostics are printed on stderr.
-    #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
+    /// How diagnostics are printed on stderr (`--output-format`, as `check` names it).
+    #[arg(long = "output-format", visible_alias = "message-format", value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
 }
 

@@ -1,7 +1,7 @@
 //! `sinuprep check`: lint every program named, in parallel, and report in a
 //! stable order.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -10,13 +10,13 @@ use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
 use crate::cli::input::{again, expand, read, Bytes, Found};
-use crate::cli::output::{in_place_target, write_atomically};
+use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
-    github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, JSON_BETWEEN,
-    JSON_START,
+    github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
+    Statistics, JSON_BETWEEN, JSON_START,
 };
-use crate::cli::{write_stdout, ExitStatus};
+use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
 use crate::lint;
@@ -191,6 +191,8 @@ enum Report {
     Text(String),
     /// SARIF's results of its programs: the log is written at the end.
     Sarif(Sarif),
+    /// `--statistics`: its findings counted by rule, printed at the end.
+    Statistics(Statistics),
 }
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
@@ -206,10 +208,26 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, None) => vec![PathBuf::from(".")],
     };
     let paths = expand(&named, args.allow_empty, args.follow_links)?;
-    let colour = crate::cli::colour(std::io::stdout().is_terminal());
+    let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
+    report_to(args.output_file.as_deref(), |out| {
+        report(args, &paths, colour, &workspace, out)
+    })
+}
+
+/// Checks `paths`, writing the report to `out` as each file is done and
+/// the summary to stderr.
+fn report(
+    args: &CheckArgs,
+    paths: &[Result<Found, CliError>],
+    colour: bool,
+    workspace: &Workspace,
+    out: &mut dyn Write,
+) -> Result<ExitStatus, CliError> {
+    // A failure comes with the name of the file, for the JSON and SARIF reports.
     let work = |index: usize| match &paths[index] {
-        Ok(found) => check_file(found, args, colour, &workspace),
-        Err(error) => Err(again(error)),
+        Ok(found) => check_file(found, args, colour, workspace)
+            .map_err(|error| (shown_name(&found.path, args), error)),
+        Err(error) => Err((walked_name(error), again(error))),
     };
 
     // Files that could not be read or checked (an error each, on stderr).
@@ -218,10 +236,10 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
-    let mut sarif = Sarif::default();
+    let mut held = Held::default();
     let mut told = analysis::MachinesTold::default();
-    if args.format == Format::Json {
-        write_stdout(JSON_START.as_bytes())?;
+    if args.format == Format::Json && !args.statistics {
+        out.write_all(JSON_START.as_bytes())?;
     }
     // Each file's report printed as soon as it and those before it are done.
     parallel::each(paths.len(), work, |result| {
@@ -235,28 +253,30 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
                     if !diagnostics.is_empty() && told.first(&on) {
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
-                        let mut report = Report::new(args.format);
-                        report.add(args.format, colour, &on.name, &on.source, diagnostics);
-                        print(report, args.format, files == 0, &mut sarif)?;
+                        let mut report = Report::new(args);
+                        report.add(args, colour, None, &on.name, &on.source, diagnostics);
+                        print(report, args.format, out, &mut held)?;
                         files += 1;
                     }
                 }
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                print(checked.report, args.format, files == 0, &mut sarif)?;
+                print(checked.report, args.format, out, &mut held)?;
                 files += checked.files;
             }
-            Err(error) => {
+            Err((name, error)) => {
                 failed += 1;
+                held.failed(args, &name, &error, out)?;
                 tellln!("{:?}", miette::Report::new(error));
             }
         }
         Ok::<(), CliError>(())
     })?;
     match args.format {
-        Format::Json => write_stdout(json_end(files).as_bytes())?,
-        Format::Sarif => write_stdout(sarif.finish().as_bytes())?,
+        _ if args.statistics => out.write_all(held.statistics.render(args.format).as_bytes())?,
+        Format::Json => out.write_all(json_end(held.entries).as_bytes())?,
+        Format::Sarif => out.write_all(held.sarif.finish().as_bytes())?,
         Format::Short | Format::Github | Format::Human => {}
     }
     // For people: on stderr, so that what tools read stays the findings.
@@ -316,7 +336,7 @@ fn check_file(
         }
     }
     let mut checked = Checked {
-        report: Report::new(args.format),
+        report: Report::new(args),
         fails: false,
         counts: Counts::default(),
         unchecked: Unchecked::default(),
@@ -335,7 +355,12 @@ fn check_file(
     let mut reports = Vec::new();
     for (program, outcome) in opened.programs(&file.bytes).into_iter().zip(outcomes) {
         checked.unchecked.add(Unchecked::of(&outcome, &settings));
-        reports.push((program.name, program.document.source, outcome.diagnostics));
+        reports.push((
+            program.name,
+            program.document.source,
+            outcome.diagnostics,
+            program.member,
+        ));
     }
     for member in unreadable {
         let source = opened.member_bytes(&file.bytes, member.member);
@@ -343,34 +368,52 @@ fn check_file(
             opened.member_name(member.member),
             source,
             member.diagnostics,
+            Some(member.member),
         ));
     }
-    for (name, source, diagnostics) in reports {
+    for (name, source, diagnostics, member) in reports {
         checked.files += 1;
         checked.counts.add(Counts::of(&diagnostics));
         checked.fails |= diagnostics.iter().any(|d| {
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
+        // GitHub and code scanning open the file named: the archive.
+        let ci = matches!(args.format, Format::Github | Format::Sarif);
+        let (name, source, diagnostics) = match member {
+            Some(member) if ci => (
+                opened.name.clone(),
+                &file.bytes[..],
+                opened.in_archive(&file.bytes, member, diagnostics),
+            ),
+            _ => (name, source, diagnostics),
+        };
+        // The file's own path, which SARIF names by its bytes.
+        let path = (member.is_none() || ci)
+            .then_some(named.as_path())
+            .filter(|path| *path != Path::new("-"));
         checked
             .report
-            .add(args.format, colour, &name, source, diagnostics);
+            .add(args, colour, path, &name, source, diagnostics);
     }
     Ok(checked)
 }
 
 impl Report {
-    fn new(format: Format) -> Self {
-        match format {
+    fn new(args: &CheckArgs) -> Self {
+        match args.format {
+            _ if args.statistics => Report::Statistics(Statistics::default()),
             Format::Sarif => Report::Sarif(Sarif::default()),
             _ => Report::Text(String::new()),
         }
     }
 
-    /// Adds the findings of the program `name`, whose bytes are `source`.
+    /// Adds the findings of the program `name`, whose bytes are `source`
+    /// (at `path` if it is a file's own).
     fn add(
         &mut self,
-        format: Format,
+        args: &CheckArgs,
         colour: bool,
+        path: Option<&Path>,
         name: &str,
         source: &[u8],
         diagnostics: Vec<Diagnostic>,
@@ -381,7 +424,7 @@ impl Report {
             diagnostics: &diagnostics,
         };
         match self {
-            Report::Text(text) => match format {
+            Report::Text(text) => match args.format {
                 Format::Short => short(&file_report, text),
                 Format::Github => github(&file_report, text),
                 Format::Json => {
@@ -392,25 +435,92 @@ impl Report {
                 }
                 _ => human(&file_report, colour, text),
             },
-            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics)),
+            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics).at(path)),
+            Report::Statistics(statistics) => statistics.add(&diagnostics, args.unsafe_fixes),
         }
     }
 }
 
-/// Prints a file's report (`first`: no file's came before it), or keeps
-/// SARIF's results for the log written at the end.
-fn print(report: Report, format: Format, first: bool, sarif: &mut Sarif) -> Result<(), CliError> {
-    match report {
-        Report::Text(part) if format == Format::Json && !first => {
-            write_stdout(JSON_BETWEEN.as_bytes())?;
-            write_stdout(part.as_bytes())
+/// What is written at the end of a run, from every file's part, and how
+/// many entries of the JSON document's `files` were written.
+#[derive(Default)]
+struct Held {
+    sarif: Sarif,
+    statistics: Statistics,
+    entries: usize,
+}
+
+impl Held {
+    /// A file that could not be checked (`name`, as reports call it): an
+    /// entry of the JSON and SARIF reports as well as the error on stderr.
+    fn failed(
+        &mut self,
+        args: &CheckArgs,
+        name: &str,
+        error: &CliError,
+        out: &mut dyn Write,
+    ) -> Result<(), CliError> {
+        let mut text = error.to_string();
+        let mut cause = std::error::Error::source(error);
+        while let Some(inner) = cause {
+            text.push_str(&format!(": {inner}"));
+            cause = inner.source();
         }
-        Report::Text(part) => write_stdout(part.as_bytes()),
-        Report::Sarif(part) => {
-            sarif.extend(part);
-            Ok(())
+        match args.format {
+            _ if args.statistics => {}
+            Format::Json => print(
+                Report::Text(json_failed(name, &text)),
+                args.format,
+                out,
+                self,
+            )?,
+            Format::Sarif => self.sarif.failed(name, &text),
+            Format::Short | Format::Github | Format::Human => {}
         }
+        Ok(())
     }
+}
+
+/// The name a file that could not be checked goes by in the reports.
+fn shown_name(path: &Path, args: &CheckArgs) -> String {
+    match (&args.stdin_filename, path == Path::new("-")) {
+        (Some(name), true) => name.display().to_string(),
+        (None, true) => "<stdin>".to_string(),
+        _ => path.display().to_string(),
+    }
+}
+
+/// The entry a walk could not read (a folder), as reports call it.
+fn walked_name(error: &CliError) -> String {
+    match error {
+        CliError::Read { path, .. } | CliError::IsDirectory { path } => path.display().to_string(),
+        other => other.to_string(),
+    }
+}
+
+/// Writes a file's report to `out`, or keeps SARIF's results and the
+/// statistics for what is written at the end.
+fn print(
+    report: Report,
+    format: Format,
+    out: &mut dyn Write,
+    held: &mut Held,
+) -> Result<(), CliError> {
+    match report {
+        // An archive without programs has no entry.
+        Report::Text(part) if format == Format::Json && part.is_empty() => {}
+        Report::Text(part) if format == Format::Json => {
+            if held.entries > 0 {
+                out.write_all(JSON_BETWEEN.as_bytes())?;
+            }
+            out.write_all(part.as_bytes())?;
+            held.entries += 1;
+        }
+        Report::Text(part) => out.write_all(part.as_bytes())?,
+        Report::Sarif(part) => held.sarif.extend(part),
+        Report::Statistics(part) => held.statistics.extend(part),
+    }
+    Ok(())
 }
 
 /// What `check` reports of each program of `opened`, in their order.
@@ -441,7 +551,14 @@ fn fix(
         if own.is_empty() {
             continue;
         }
-        if diagnostics.iter().any(|d| d.code.starts_with('S')) {
+        // With syntax errors only their own safe fixes (a byte-order mark
+        // removed) are applied: the rest was found on trees that may not be
+        // what was meant.
+        let (own, count) = match diagnostics.iter().any(|d| d.code.starts_with('S')) {
+            true => lint::fix::applicable(&syntax_fixes(diagnostics), false),
+            false => (own, count),
+        };
+        if own.is_empty() {
             tellln!(
                 "{}: not fixed, because of its syntax errors",
                 printable(&program.name)
@@ -470,4 +587,18 @@ fn fix(
     let s = if answered == 1 { "" } else { "s" };
     tellln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
+}
+
+/// The syntax errors that carry a safe fix of their own.
+fn syntax_fixes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
+    diagnostics
+        .iter()
+        .filter(|d| d.code.starts_with('S'))
+        .filter(|d| {
+            d.fix
+                .as_deref()
+                .is_some_and(|fix| fix.applicability == Applicability::Safe)
+        })
+        .cloned()
+        .collect()
 }

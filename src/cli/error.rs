@@ -88,6 +88,10 @@ pub enum CliError {
         nearest: Option<&'static str>,
     },
 
+    #[error("sinuprep has no command `{command}`")]
+    #[diagnostic(code(sinuprep::usage), help("the commands: {commands}"))]
+    UnknownCommand { command: String, commands: String },
+
     #[error("no angles given, and stdin is a terminal")]
     #[diagnostic(code(sinuprep::angles), help("give three angles, as `sinuprep convert 30 45 60 --from e:XYZ --to i:ZXY`, or pipe one triple per line into stdin"))]
     NoAngles,

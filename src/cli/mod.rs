@@ -103,7 +103,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Convert(convert) => convert::run(convert),
         args::Command::Axes(axes) => axes::run(axes),
         args::Command::Completions(completions) => describe::completions(completions.shell),
-        args::Command::Manpage => describe::manpage(),
+        args::Command::Manpage(manpage) => describe::manpage(manpage),
         args::Command::Lsp => crate::lsp::run()
             .map(|()| ExitStatus::Success)
             .map_err(CliError::Server),

@@ -347,3 +347,61 @@ pub(crate) fn random() -> u64 {
     hasher.write_u32(std::process::id());
     hasher.finish()
 }
+
+/// Runs `report`, writing what it writes to `file` (atomically, as every
+/// output here: the whole report or nothing, should the run fail midway)
+/// or, without one, to standard output, where a reader that went away
+/// (`| head`) ends the output without ending the run.
+pub fn report_to<T>(
+    file: Option<&Path>,
+    report: impl FnOnce(&mut dyn Write) -> Result<T, CliError>,
+) -> Result<T, CliError> {
+    let Some(path) = file else {
+        return report(&mut Stdout);
+    };
+    let mut outcome = None;
+    let written = write_atomically(
+        path,
+        |out| match report(out) {
+            Ok(value) => {
+                outcome = Some(Ok(value));
+                Ok(())
+            }
+            // The run's own failure, kept to be returned; the file is
+            // left as it was.
+            Err(error) => {
+                outcome = Some(Err(error));
+                Err(std::io::Error::other("the run failed"))
+            }
+        },
+        None,
+    );
+    match (outcome, written) {
+        (Some(Err(error)), _) => Err(error),
+        (_, Err(error)) => Err(error),
+        (Some(Ok(value)), Ok(())) => Ok(value),
+        // `write_atomically` calls `write` unless it failed first.
+        (None, Ok(())) => Err(CliError::Write(std::io::Error::other(
+            "the report was not written",
+        ))),
+    }
+}
+
+/// Standard output, a reader that went away taken as one that read it all.
+struct Stdout;
+
+impl Write for Stdout {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        match std::io::stdout().lock().write(bytes) {
+            Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(bytes.len()),
+            result => result,
+        }
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        match std::io::stdout().lock().flush() {
+            Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+            result => result,
+        }
+    }
+}

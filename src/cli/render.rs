@@ -10,8 +10,19 @@ use miette::{
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, Severity};
 use crate::span::{
-    line_end, line_start, next_line_start, previous_line_end, LineIndex, Position, Span,
+    line_end, line_start, next_line_start, previous_line_end, ColumnUnit, LineIndex, Position, Span,
 };
+
+/// What every format's columns count: UTF-16 code units, as the Language
+/// Server Protocol does by default, as SARIF does by default
+/// (`columnKind` `utf16CodeUnits`) and as VS Code and GitHub's annotations
+/// (JavaScript strings) count; for every character of the Basic
+/// Multilingual Plane (`ü`, `°`, `Ø`) that is one column, the character
+/// count people expect, and a character beyond it (an emoji, `𝜑`) is two.
+/// A file that is not UTF-8 counts a byte as a character (its code page has
+/// one byte a character). The human header, the short and GitHub lines, the
+/// JSON and SARIF positions all count the same way.
+pub const COLUMNS: ColumnUnit = ColumnUnit::Utf16;
 
 /// One file's diagnostics, ready to render.
 pub struct FileReport<'a> {
@@ -46,7 +57,7 @@ pub fn short(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
     let name = printable(report.name);
     for diagnostic in report.diagnostics {
-        let Position { row, column } = index.position(diagnostic.span.start);
+        let Position { row, column } = index.position_in(diagnostic.span.start, COLUMNS);
         out.push_str(&format!(
             "{name}:{row}:{column}: {}[{}] {}\n",
             diagnostic.severity.as_str(),
@@ -97,6 +108,9 @@ struct Window {
     first_row: usize,
     /// Columns of the line before the window (an excerpt starts inside it).
     first_column: usize,
+    /// The diagnostic's own column (0-based, in [`COLUMNS`]), for miette's
+    /// header, which would count the bytes of the window's text.
+    span_column: usize,
     latin1: bool,
     bytes: Vec<u8>,
 }
@@ -123,7 +137,7 @@ impl Window {
                 span_start.saturating_sub(EXCERPT_BEFORE).max(own_line),
             );
             end = char_boundary(source, (span_start + EXCERPT_AFTER).min(own_end));
-            first_column = index.position(start).column - 1;
+            first_column = index.position_in(start, COLUMNS).column - 1;
         }
         let bytes = &source[start..end];
         let (text, latin1) = match std::str::from_utf8(bytes) {
@@ -138,6 +152,7 @@ impl Window {
             start,
             first_row: index.position(start).row - 1,
             first_column,
+            span_column: index.position_in(span_start, COLUMNS).column - 1,
             latin1,
             bytes: bytes.to_vec(),
         }
@@ -162,12 +177,18 @@ impl SourceCode for Window {
         after: usize,
     ) -> Result<Box<dyn SpanContents<'a> + 'a>, MietteError> {
         let inner = self.text.read_span(span, before, after)?;
+        // Without context lines miette reads the label's span for the
+        // header's `line:column`.
+        let column = match (before, after) {
+            (0, 0) => self.span_column,
+            _ => inner.column() + self.first_column,
+        };
         Ok(Box::new(MietteSpanContents::new_named(
             self.name.clone(),
             inner.data(),
             *inner.span(),
             inner.line() + self.first_row,
-            inner.column() + self.first_column,
+            column,
             inner.line_count(),
         )))
     }
@@ -300,6 +321,8 @@ impl<'a> JsonFix<'a> {
 /// whole-run formats (JSON, SARIF) need of a file once its source is gone.
 pub struct Located {
     pub name: String,
+    /// The file's path, where it has one: SARIF names it by its bytes.
+    pub path: Option<std::path::PathBuf>,
     pub diagnostics: Vec<Diagnostic>,
     pub positions: Vec<(Position, Position)>,
 }
@@ -310,12 +333,24 @@ impl Located {
         let index = LineIndex::new(source);
         let positions = diagnostics
             .iter()
-            .map(|d| (index.position(d.span.start), index.position(d.span.end)))
+            .map(|d| {
+                let at = |offset| index.position_in(offset, COLUMNS);
+                (at(d.span.start), at(d.span.end))
+            })
             .collect();
         Self {
             name: name.to_owned(),
+            path: None,
             diagnostics,
             positions,
+        }
+    }
+
+    /// The same, from the file at `path`, whose name may not be UTF-8.
+    pub fn at(self, path: Option<&std::path::Path>) -> Self {
+        Self {
+            path: path.map(std::path::Path::to_path_buf),
+            ..self
         }
     }
 
@@ -365,6 +400,25 @@ pub fn json_file(report: &Located) -> String {
     indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
 }
 
+/// The entry of the JSON document for a file that could not be checked
+/// (not found, unreadable, a directory, a damaged archive): its path, the
+/// error, and no diagnostics, so that a reader of `files` sees it without
+/// reading stderr.
+pub fn json_failed(name: &str, error: &str) -> String {
+    #[derive(serde::Serialize)]
+    struct Failed<'a> {
+        path: &'a str,
+        error: &'a str,
+        diagnostics: [(); 0],
+    }
+    let file = Failed {
+        path: name,
+        error,
+        diagnostics: [],
+    };
+    indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
+}
+
 /// The end of the JSON document, after `files` entries.
 pub fn json_end(files: usize) -> &'static str {
     match files {
@@ -391,8 +445,8 @@ fn indented(json: &str, by: usize) -> String {
 pub fn github(report: &FileReport, out: &mut String) {
     let index = LineIndex::new(report.source);
     for d in report.diagnostics {
-        let start = index.position(d.span.start);
-        let end = index.position(d.span.end);
+        let start = index.position_in(d.span.start, COLUMNS);
+        let end = index.position_in(d.span.end, COLUMNS);
         let level = match d.severity {
             Severity::Error => "error",
             Severity::Warning => "warning",
@@ -433,12 +487,15 @@ pub struct Sarif {
     /// separated by commas.
     results: String,
     codes: std::collections::BTreeSet<&'static str>,
+    /// The files that could not be checked, as SARIF notifications.
+    failures: Vec<serde_json::Value>,
 }
 
 impl Sarif {
     /// One file's results.
     pub fn add(&mut self, report: &Located) {
-        let location = artifact(&report.name);
+        let path = report.path.as_deref().map(crate::cli::platform::path_bytes);
+        let location = artifact(path.as_deref().unwrap_or(report.name.as_bytes()));
         for (d, start, end) in report.each() {
             self.codes.insert(d.code);
             let mut result = serde_json::json!({
@@ -475,6 +532,16 @@ impl Sarif {
         }
     }
 
+    /// A file that could not be checked: a notification of the tool's
+    /// execution with the file's location, and the run no success.
+    pub fn failed(&mut self, name: &str, error: &str) {
+        self.failures.push(serde_json::json!({
+            "level": "error",
+            "message": { "text": error },
+            "locations": [{ "physicalLocation": { "artifactLocation": artifact(name.as_bytes()) } }],
+        }));
+    }
+
     /// Another's results after these.
     pub fn extend(&mut self, other: Sarif) {
         if !self.results.is_empty() && !other.results.is_empty() {
@@ -482,6 +549,7 @@ impl Sarif {
         }
         self.results.push_str(&other.results);
         self.codes.extend(other.codes);
+        self.failures.extend(other.failures);
     }
 
     /// The log.
@@ -492,22 +560,35 @@ impl Sarif {
             .filter_map(|code| crate::lint::rule(code))
             .map(|info| {
                 let summary = info.docs.lines().nth(1).unwrap_or_default();
-                serde_json::json!({
+                let mut rule = serde_json::json!({
                     "id": info.code,
                     "name": info.name,
                     "shortDescription": { "text": summary },
                     "fullDescription": { "text": info.docs },
                     "help": { "text": info.docs, "markdown": info.docs },
                     "defaultConfiguration": { "level": level(info.severity) },
-                })
+                });
+                if let Some(uri) = help_uri(REPOSITORY, info) {
+                    rule["helpUri"] = uri.into();
+                }
+                rule
             })
             .collect();
+        let mut driver = serde_json::json!({ "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules });
+        if !REPOSITORY.is_empty() {
+            driver["informationUri"] = REPOSITORY.into();
+        }
+        let mut invocation = serde_json::json!({ "executionSuccessful": self.failures.is_empty() });
+        if !self.failures.is_empty() {
+            invocation["toolExecutionNotifications"] = self.failures.into();
+        }
         let document = serde_json::json!({
             "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
             "version": "2.1.0",
             "runs": [{
-                "tool": { "driver": { "name": "sinuprep", "version": env!("CARGO_PKG_VERSION"), "rules": rules } },
-                "columnKind": "unicodeCodePoints",
+                "tool": { "driver": driver },
+                "invocations": [invocation],
+                "columnKind": "utf16CodeUnits",
                 "originalUriBaseIds": { SOURCE_ROOT: { "uri": working_directory() } },
                 "results": [],
             }],
@@ -527,39 +608,111 @@ impl Sarif {
     }
 }
 
+/// The project's repository (`repository` in Cargo.toml), the tool's
+/// `informationUri` in SARIF and the base of its rules' `helpUri`; empty
+/// where Cargo.toml names none, and then neither is written.
+const REPOSITORY: &str = env!("CARGO_PKG_REPOSITORY");
+
+/// A rule's section of docs/rules.md in the repository. The page is
+/// generated from every rule (tests/lint.rs, `the_rule_reference`), so
+/// every rule has its section.
+fn help_uri(repository: &str, info: &crate::diagnostic::RuleInfo) -> Option<String> {
+    if repository.is_empty() {
+        return None;
+    }
+    let base = repository.trim_end_matches('/');
+    let anchor = crate::lint::reference::anchor(info);
+    Some(format!("{base}/blob/HEAD/docs/rules.md#{anchor}"))
+}
+
 /// The base the relative paths of a SARIF log are read against: the
 /// directory `check` ran in.
 const SOURCE_ROOT: &str = "%SRCROOT%";
 
-/// A file as a SARIF artifact location: a relative path against
-/// [`SOURCE_ROOT`], an absolute one as a `file://` URI; percent-encoded.
-fn artifact(name: &str) -> serde_json::Value {
-    let path = name.replace('\\', "/");
-    if path.starts_with('/') {
-        serde_json::json!({ "uri": format!("file://{}", percent_encoded(&path)) })
-    } else {
-        let relative = path.strip_prefix("./").unwrap_or(&path);
-        serde_json::json!({ "uri": percent_encoded(relative), "uriBaseId": SOURCE_ROOT })
+/// A file as a SARIF artifact location: a relative path as a relative
+/// reference against [`SOURCE_ROOT`], an absolute one as a `file` URI.
+/// `path` is the name's bytes as the file system holds them (not the text
+/// printed for people, where a byte that is no UTF-8 became U+FFFD).
+fn artifact(path: &[u8]) -> serde_json::Value {
+    match uri(path, crate::cli::platform::WINDOWS_PATHS) {
+        Uri::Absolute(uri) => serde_json::json!({ "uri": uri }),
+        Uri::Relative(uri) => serde_json::json!({ "uri": uri, "uriBaseId": SOURCE_ROOT }),
     }
 }
 
-/// The working directory as a `file://` URI ending in `/`.
+#[derive(Debug, PartialEq)]
+enum Uri {
+    Absolute(String),
+    Relative(String),
+}
+
+/// A path as a URI (RFC 8089): `/a/b` as `file:///a/b`; with `windows`,
+/// `\` read as `/`, `C:\CAM\PART.MPF` as `file:///C:/CAM/PART.MPF`,
+/// `\\server\share\PART.MPF` as `file://server/share/PART.MPF`, and the
+/// verbatim forms (`\\?\C:\...`, `\\?\UNC\server\...`) as the paths
+/// they stand for. Anything else is a relative reference (`./` dropped).
+/// Every byte but the unreserved characters and `/` is percent-encoded,
+/// those of a name that is no UTF-8 as they are.
+fn uri(path: &[u8], windows: bool) -> Uri {
+    let mut path = path.to_vec();
+    if windows {
+        for byte in &mut path {
+            if *byte == b'\\' {
+                *byte = b'/';
+            }
+        }
+        let unc = [&b"//?/UNC/"[..], b"//./UNC/"]
+            .iter()
+            .find_map(|prefix| path.strip_prefix(*prefix));
+        let verbatim = [&b"//?/"[..], b"//./"]
+            .iter()
+            .find_map(|prefix| path.strip_prefix(*prefix));
+        path = match (unc, verbatim) {
+            (Some(server), _) => [&b"//"[..], server].concat(),
+            (None, Some(local)) => local.to_vec(),
+            (None, None) => path,
+        };
+        if let [drive, b':', rest @ ..] = &path[..] {
+            if drive.is_ascii_alphabetic() && (rest.is_empty() || rest[0] == b'/') {
+                return Uri::Absolute(format!(
+                    "file:///{}:{}",
+                    *drive as char,
+                    percent_encoded(rest)
+                ));
+            }
+        }
+        if let Some(server) = path.strip_prefix(b"//") {
+            return Uri::Absolute(format!("file://{}", percent_encoded(server)));
+        }
+    }
+    if path.starts_with(b"/") {
+        return Uri::Absolute(format!("file://{}", percent_encoded(&path)));
+    }
+    let relative = path.strip_prefix(b"./").unwrap_or(&path);
+    Uri::Relative(percent_encoded(relative))
+}
+
+/// The working directory as a `file` URI ending in `/`.
 fn working_directory() -> String {
     let dir = std::env::current_dir().unwrap_or_default();
-    let dir = dir.to_string_lossy().replace('\\', "/");
-    let dir = if dir.starts_with('/') {
-        dir
-    } else {
-        format!("/{dir}")
+    let uri = match uri(
+        &crate::cli::platform::path_bytes(&dir),
+        crate::cli::platform::WINDOWS_PATHS,
+    ) {
+        Uri::Absolute(uri) => uri,
+        // The working directory is absolute; should it not be, the root.
+        Uri::Relative(_) => "file:///".to_string(),
     };
-    let slash = if dir.ends_with('/') { "" } else { "/" };
-    format!("file://{}{slash}", percent_encoded(&dir))
+    match uri.ends_with('/') {
+        true => uri,
+        false => uri + "/",
+    }
 }
 
 /// RFC 3986: every byte but the unreserved characters and `/` as `%XX`.
-fn percent_encoded(path: &str) -> String {
+fn percent_encoded(path: &[u8]) -> String {
     let mut out = String::with_capacity(path.len());
-    for byte in path.bytes() {
+    for &byte in path {
         if byte.is_ascii_alphanumeric() || matches!(byte, b'-' | b'.' | b'_' | b'~' | b'/') {
             out.push(byte as char);
         } else {
@@ -574,5 +727,178 @@ fn level(severity: Severity) -> &'static str {
         Severity::Error => "error",
         Severity::Warning => "warning",
         Severity::Info => "note",
+    }
+}
+
+/// Findings per rule (`check --statistics`), summed over a run.
+#[derive(Default)]
+pub struct Statistics {
+    rules: std::collections::BTreeMap<&'static str, Statistic>,
+}
+
+#[derive(Clone, Copy)]
+struct Statistic {
+    name: &'static str,
+    count: usize,
+    /// Whether `--fix` (with `--unsafe-fixes`, where given) answers any of them.
+    fixable: bool,
+}
+
+impl Statistics {
+    /// Counts `diagnostics`; `unsafe_fixes`: whether unsafe fixes count as fixable.
+    pub fn add(&mut self, diagnostics: &[Diagnostic], unsafe_fixes: bool) {
+        for d in diagnostics {
+            let fixable = d
+                .fix
+                .as_deref()
+                .is_some_and(|fix| fix.applicability == Applicability::Safe || unsafe_fixes);
+            let entry = self.rules.entry(d.code).or_insert(Statistic {
+                name: d.name,
+                count: 0,
+                fixable: false,
+            });
+            entry.count += 1;
+            entry.fixable |= fixable;
+        }
+    }
+
+    pub fn extend(&mut self, other: Statistics) {
+        for (code, theirs) in other.rules {
+            let ours = self.rules.entry(code).or_insert(Statistic {
+                count: 0,
+                fixable: false,
+                ..theirs
+            });
+            ours.count += theirs.count;
+            ours.fixable |= theirs.fixable;
+        }
+    }
+
+    /// The most frequent first, then by code.
+    fn sorted(&self) -> Vec<(&'static str, Statistic)> {
+        let mut rules: Vec<_> = self.rules.iter().map(|(&c, &s)| (c, s)).collect();
+        rules.sort_by(|a, b| b.1.count.cmp(&a.1.count).then(a.0.cmp(b.0)));
+        rules
+    }
+
+    /// One line a rule, as ruff prints them: the count, the code, `[*]`
+    /// where `--fix` answers some of its findings (`[ ]` where it answers
+    /// none; no column when no rule is fixable), the rule's name.
+    pub fn text(&self) -> String {
+        let rules = self.sorted();
+        let count_width = rules
+            .iter()
+            .map(|(_, s)| s.count.to_string().len())
+            .max()
+            .unwrap_or(0);
+        let code_width = rules.iter().map(|(c, _)| c.len()).max().unwrap_or(0);
+        let any_fixable = rules.iter().any(|(_, s)| s.fixable);
+        let mut out = String::new();
+        for (code, s) in rules {
+            let mark = match (any_fixable, s.fixable) {
+                (false, _) => "",
+                (true, true) => "[*] ",
+                (true, false) => "[ ] ",
+            };
+            out.push_str(&format!(
+                "{:>count_width$}\t{code:<code_width$}\t{mark}{}\n",
+                s.count, s.name
+            ));
+        }
+        out
+    }
+
+    /// The table in `format`: JSON for `json`, text for the others.
+    pub fn render(&self, format: crate::cli::args::Format) -> String {
+        match format {
+            crate::cli::args::Format::Json => self.json(),
+            _ => self.text(),
+        }
+    }
+
+    /// A JSON array of `{code, name, count, fixable}`, as ruff's.
+    pub fn json(&self) -> String {
+        let rules: Vec<_> = self
+            .sorted()
+            .into_iter()
+            .map(|(code, s)| {
+                serde_json::json!({ "code": code, "name": s.name, "count": s.count, "fixable": s.fixable })
+            })
+            .collect();
+        let mut text = serde_json::to_string_pretty(&rules).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rules_help_is_its_section_of_the_reference_in_the_repository() {
+        let info = crate::lint::rule("N001").expect("N001");
+        assert_eq!(
+            help_uri("https://example.org/shop/sinuprep/", info).as_deref(),
+            Some("https://example.org/shop/sinuprep/blob/HEAD/docs/rules.md#n001-undefined-label")
+        );
+        // No repository in Cargo.toml: no link to a page that is nowhere.
+        assert_eq!(help_uri("", info), None);
+    }
+
+    fn absolute(uri: &str) -> Uri {
+        Uri::Absolute(uri.to_string())
+    }
+
+    fn relative(uri: &str) -> Uri {
+        Uri::Relative(uri.to_string())
+    }
+
+    #[test]
+    fn unix_paths_are_file_uris_or_relative_references() {
+        assert_eq!(
+            uri(b"/home/cam/OUT/PART 1.MPF", false),
+            absolute("file:///home/cam/OUT/PART%201.MPF")
+        );
+        assert_eq!(uri(b"./OUT/PART.MPF", false), relative("OUT/PART.MPF"));
+        assert_eq!(uri(b"OUT/PART.MPF", false), relative("OUT/PART.MPF"));
+        // On Unix a backslash and a colon are a name's own characters.
+        assert_eq!(uri(b"C:\\PART.MPF", false), relative("C%3A%5CPART.MPF"));
+    }
+
+    #[test]
+    fn a_name_that_is_no_utf8_keeps_its_bytes() {
+        // `Kühl.MPF` saved in Latin-1: ü is the byte 0xFC, not U+FFFD.
+        assert_eq!(uri(b"K\xfchl.MPF", false), relative("K%FChl.MPF"));
+        assert_eq!(
+            uri("/cam/Kühl.MPF".as_bytes(), false),
+            absolute("file:///cam/K%C3%BChl.MPF")
+        );
+    }
+
+    #[test]
+    fn windows_paths_are_file_uris_with_their_drive_or_server() {
+        assert_eq!(
+            uri(b"C:\\CAM\\OUT\\PART.MPF", true),
+            absolute("file:///C:/CAM/OUT/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"d:/CAM/PART.MPF", true),
+            absolute("file:///d:/CAM/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\server\\share\\OUT\\PART.MPF", true),
+            absolute("file://server/share/OUT/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\?\\C:\\CAM\\PART.MPF", true),
+            absolute("file:///C:/CAM/PART.MPF")
+        );
+        assert_eq!(
+            uri(b"\\\\?\\UNC\\server\\share\\PART.MPF", true),
+            absolute("file://server/share/PART.MPF")
+        );
+        assert_eq!(uri(b"OUT\\PART 2.MPF", true), relative("OUT/PART%202.MPF"));
+        assert_eq!(uri(b".\\PART.MPF", true), relative("PART.MPF"));
     }
 }

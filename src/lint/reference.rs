@@ -29,6 +29,12 @@ pub fn page(info: &RuleInfo) -> String {
     )
 }
 
+/// The anchor of the rule's section in `docs/rules.md`, as GitHub makes it
+/// from the heading `## N001 undefined-label`: `n001-undefined-label`.
+pub fn anchor(info: &RuleInfo) -> String {
+    format!("{}-{}", info.code, info.name).to_ascii_lowercase()
+}
+
 /// Every rule in code order: a table of them, then each rule's page one
 /// heading level down. Written to `docs/rules.md`; a test holds the file to it.
 pub fn reference() -> String {
@@ -44,7 +50,7 @@ pub fn reference() -> String {
         out.push_str(&format!(
             "| [{code}](#{anchor}) | {name} | {severity} | {what} |\n",
             code = info.code,
-            anchor = format!("{}-{}", info.code, info.name).to_ascii_lowercase(),
+            anchor = anchor(info),
             name = info.name,
             severity = severity_text(info),
             what = first_sentence(info.docs).replace('|', "\\|"),

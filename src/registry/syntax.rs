@@ -68,7 +68,9 @@ pub static UNKNOWN_CHARACTER: RuleInfo = RuleInfo {
     name: "unknown-character",
     severity: Severity::Error,
     docs: r#"## What it does
-Reports a character with no meaning outside comments and strings.
+Reports a character with no meaning outside comments and strings. A UTF-8 byte-order mark (U+FEFF,
+the bytes EF BB BF) at the start of the file, which Windows editors write when saving as UTF-8, is
+named as such, with a safe fix that removes it.
 
 ## Why it matters
 The control refuses a block it cannot read. sinuprep keeps the line's bytes as they are and reads
@@ -80,7 +82,8 @@ N10 R1=2^3
 ```
 
 ## Fix
-Remove it (Sinumerik has no `^`: use POT), or put it in a comment."#,
+Remove it (Sinumerik has no `^`: use POT), or put it in a comment; `check --fix` removes a
+byte-order mark."#,
 };
 
 pub static UNEXPECTED_TOKEN: RuleInfo = RuleInfo {

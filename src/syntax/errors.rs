@@ -9,6 +9,9 @@ use crate::syntax::expr;
 use crate::syntax::lexer::{self, SyntaxError, SyntaxErrorKind};
 use crate::syntax::lines::RawLine;
 
+/// The UTF-8 byte-order mark, U+FEFF.
+const BYTE_ORDER_MARK: &[u8] = b"\xEF\xBB\xBF";
+
 /// Turns the parser's stop into a diagnostic at the offending bytes.
 pub(crate) fn to_diagnostic(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
     let diagnostic = describe(source, raw, error);
@@ -69,6 +72,21 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
         ))
         .label("not a number")
         .help(why.to_string()),
+        // Notepad and other Windows editors write it when saving as UTF-8;
+        // the control reads it as three characters of its code page.
+        SyntaxErrorKind::UnknownCharacter if at == 0 && source.starts_with(BYTE_ORDER_MARK) => {
+            let mark = Span::new(0, BYTE_ORDER_MARK.len());
+            registry::syntax::UNKNOWN_CHARACTER.at(mark)
+                .message("byte-order mark U+FEFF at the start of the file, which the control does not read as part of a program")
+                .label("byte-order mark")
+                .help("save the file as UTF-8 without BOM (Notepad++: Encoding > UTF-8), or let --fix remove it")
+                .fix(Fix::replace(
+                    "remove the byte-order mark",
+                    Applicability::Safe,
+                    mark,
+                    "",
+                ))
+        }
         SyntaxErrorKind::UnknownCharacter => {
             let help = match source.get(at) {
                 Some(b'^') => {
