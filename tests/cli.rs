@@ -559,6 +559,66 @@ fn a_folder_without_programs_is_an_error_unless_allowed() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Machine data name the axes of every channel whatever the file holding
+/// them is called: a file whose first block assigns machine data is read as
+/// machine data given as a definition file, as the machine, or as an
+/// archive's member (#31 section 2).
+#[test]
+fn machine_data_by_their_content_name_every_channels_axes() {
+    let dir = scratch("machine-data-content");
+    // The counter spindle's channel, saved from the control as text.
+    let data = "; channel 2: counter spindle\nCHANDATA(2)\nN20060 $MC_AXCONF_GEOAX_NAME_TAB[0]=\"XS\"\n\
+N20080 $MC_AXCONF_CHANAX_NAME_TAB[2]=\"ZS\"\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[7]=\"SP_GEGEN\"\nM17\n";
+    std::fs::write(dir.join("CH2_MD.TXT"), data).expect("write");
+    let part = "N10 G0 POS[ZS]=-200 FA[ZS]=5000\nN20 SPOS[SP_GEGEN]=0\nN30 WAITP(ZS)\nN40 M30\n";
+    let program = dir.join("TRANSFER.MPF");
+    std::fs::write(&program, part).expect("write");
+    let (program, data) = (
+        program.to_str().expect("utf-8"),
+        dir.join("CH2_MD.TXT").display().to_string(),
+    );
+    let check = |given: &[&str], path: &str| {
+        let mut args = vec!["check", "--format", "short", "--select", "N005"];
+        args.extend(given);
+        args.push(path);
+        run(&args, b"")
+    };
+    let alone = check(&[], program);
+    assert_eq!(
+        stdout(&alone).matches("N005").count(),
+        2,
+        "{}",
+        stdout(&alone)
+    );
+    for given in [
+        ["--definitions", data.as_str()],
+        ["--machine", data.as_str()],
+    ] {
+        let output = check(&given, program);
+        assert_exit(&output, 0);
+        assert!(
+            !stdout(&output).contains("N005"),
+            "{given:?}: {}",
+            stdout(&output)
+        );
+    }
+    let archive = dir.join("SETUP.ARC");
+    std::fs::write(
+        &archive,
+        format!(
+            "%_N_TRANSFER_MPF\n;$PATH=/_N_MPF_DIR\n{part}%_N_CH2_MD_TXT\n{data}",
+            data = std::fs::read_to_string(&data).expect("read")
+        ),
+    )
+    .expect("write");
+    let output = check(&[], archive.to_str().expect("utf-8"));
+    assert_exit(&output, 0);
+    assert!(!stdout(&output).contains("N005"), "{}", stdout(&output));
+    let notes = String::from_utf8_lossy(&output.stderr);
+    assert!(!notes.contains("not checked"), "{notes}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn globals_macros_and_axes_of_definition_files_are_defined() {
     let dir = scratch("definitions");

@@ -11,7 +11,7 @@ use crate::cli::render::printable;
 use crate::diagnostic::{Diagnostic, Fix};
 use crate::document::Document;
 use crate::lint::Settings;
-use crate::semantic::environment::Environment;
+use crate::semantic::environment::{holds_machine_data, Environment};
 use crate::semantic::head_def::Heads;
 use crate::span::Span;
 use crate::syntax::{program_kind, ProgramKind};
@@ -101,12 +101,12 @@ impl Opened {
             .collect()
     }
 
-    /// What of the archive is left unchecked, as notes for stderr naming
-    /// it: members that are no program, definitions or data (their NC path
-    /// names no `_MPF` or `_SPF`: a log, a screen form, a program saved
-    /// without its suffix), and bytes after the block of NULs that ends a
+    /// What of the archive (`bytes`) is left unchecked, as notes for stderr
+    /// naming it: members that are no program, definitions or data (their
+    /// NC path names no `_MPF` or `_SPF`, and they hold no machine data: a
+    /// log, a screen form, a program saved without its suffix), and bytes after the block of NULs that ends a
     /// binary archive. `None` for a plain file, or an archive read whole.
-    pub fn unchecked(&self) -> Option<String> {
+    pub fn unchecked(&self, bytes: &[u8]) -> Option<String> {
         let archive = self.archive.as_ref()?;
         let name = printable(&self.name);
         let mut notes = String::new();
@@ -118,6 +118,7 @@ impl Opened {
             .filter(|(index, member)| {
                 member.kind == MemberKind::Other
                     && !(*index == 0 && member.name.as_bytes().starts_with(archive::binary::MARK))
+                    && !holds_machine_data(&bytes[member.data.clone()])
             })
             .map(|(_, member)| printable(&member.name).into_owned())
             .collect();
@@ -209,9 +210,19 @@ impl Opened {
         for (index, member) in archive.members.iter().enumerate() {
             let data = &bytes[member.data.clone()];
             let read = match member.kind {
-                MemberKind::Definitions => environment.read_definitions(data),
                 MemberKind::Data => environment.read_machine_data(data),
+                // Machine data by their content, whatever the member's name.
+                MemberKind::Definitions | MemberKind::Other if holds_machine_data(data) => {
+                    environment.read_machine_data(data)
+                }
+                MemberKind::Definitions => environment.read_definitions(data),
                 MemberKind::Program(_) => {
+                    // A setup program that assigns machine data: its axis
+                    // names are the machine's (its errors are its own
+                    // findings, as a program's).
+                    if holds_machine_data(data) {
+                        environment.learn_axes(data);
+                    }
                     own.read_procedure(data);
                     if settings.heads.is_none() && member.name.eq_ignore_ascii_case("HEAD_DEF_SPF")
                     {

@@ -341,7 +341,7 @@ fn check_file(
         counts: Counts::default(),
         unchecked: Unchecked::default(),
         files: 0,
-        notes: opened.unchecked(),
+        notes: opened.unchecked(&file.bytes),
         machine: settings.machine.as_ref().map(|on| {
             let selection = &settings.selection;
             let kept = on

@@ -104,7 +104,7 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
         } else {
             Output::Text(String::new())
         },
-        diagnostics: opened.unchecked().unwrap_or_default(),
+        diagnostics: opened.unchecked(&file.bytes).unwrap_or_default(),
         failed: false,
         machine: machine.clone(),
     };

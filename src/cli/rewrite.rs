@@ -139,7 +139,7 @@ fn rewrite_file(
     let mut outcome = Outcome {
         status: ExitStatus::Success,
         stdout: Vec::new(),
-        stderr: opened.unchecked().unwrap_or_default(),
+        stderr: opened.unchecked(&file.bytes).unwrap_or_default(),
         machine: settings.machine.clone(),
     };
     // Every program's edits, as edits of the file (an archive's member's

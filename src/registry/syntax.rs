@@ -101,7 +101,18 @@ statements that cannot share a block:
   header's attributes (SAVE, SBLOF, DISPLOF, ...);
 - `IF cond` is followed by its jump (`IF R1==1 GOTOF LBL`) or by nothing, and a jump by another
   `IF … GOTO…` or by nothing;
-- REPEAT names at most two labels (REPEATB one), then `P=n`.
+- REPEAT names at most two labels (REPEATB one), then `P=n`;
+- CALL and ISOCALL name the program to run and take no arguments (`CALL _PNAME(10,20)`): the
+  manual writes them `CALL <program name>` and `ISOCALL <program name>`, the name a STRING, and
+  passes arguments with PCALL (`PCALL <path/program name>(<parameter 1>,...)`) or a call by name
+  (Siemens, Job Planning, "Indirect subprogram call (CALL)", "Indirect call of a program
+  programmed in an ISO language (ISOCALL)", "Subprogram call with path specification and
+  parameters (PCALL)"); a call of a string function (`CALL SPRINT("PART_%D",_NR)`) is the name;
+- a sign before a string (`_STR=-"String 1"`): a STRING converts to no number (Job Planning,
+  "Type conversion"; `NUMBER("12.5")` reads one);
+- a header `%_N_<name>_<type>` whose name holds other characters than letters, digits and `_`
+  (`%_N_CYCLE()_SPF`; Programming Manual NC programming, "Subprogram names": "Permissible
+  characters"). Other headers (`%Flange3_MPF`, a lone `%`) are not read.
 When the block's first word is one edit or two from a keyword that takes operands (`IFF R1==1`),
 the help offers the keyword. The grammar, with the manual section of each choice, is
 `grammar/sinumerik.ebnf`.

@@ -113,46 +113,146 @@ const AXIS_NAME_TABLES: [&str; 3] = [
     "$MC_AXCONF_CHANAX_NAME_TAB",
 ];
 
+/// Whether `source` holds machine data by its content, whatever its name
+/// (`INITIAL.INI`, a `.TEA`, machine data saved as `.TXT`): its first block
+/// assigns machine data, `$MN_` (NCK), `$MC_` (channel) or `$MA_` (axis),
+/// and every other block assigns values (more machine data, setting data,
+/// tool data, frames, R parameters, the values of GUD variables), selects
+/// the channel the data after it are for (`CHANDATA(n)`, also before the
+/// first) or ends the file
+/// (`M17`, `M30`, `M2`). Block numbers, comments, a `%_N_` header and
+/// `;$PATH=` lines are passed over. A setup program that writes machine
+/// data and then runs blocks of its own (`NEWCONF`, `G0 X0`) is a program.
+/// Read line by line up to the first block that says otherwise: a program
+/// costs its first block.
+pub fn holds_machine_data(source: &[u8]) -> bool {
+    let mut first = true;
+    for raw in crate::syntax::lines::raw_lines(source) {
+        let line = raw.content.of(source).trim_ascii_start();
+        if line.is_empty() || matches!(line[0], b';' | b'%') {
+            continue;
+        }
+        let digits = |text: &[u8]| text.iter().take_while(|b| b.is_ascii_digit()).count();
+        let line = match line.split_first() {
+            Some((b'N' | b'n', rest)) if digits(rest) > 0 => {
+                rest[digits(rest)..].trim_ascii_start()
+            }
+            _ => line,
+        };
+        let starts = |prefix: &[u8]| {
+            line.len() > prefix.len() && line[..prefix.len()].eq_ignore_ascii_case(prefix)
+        };
+        if starts(b"CHANDATA") {
+            continue;
+        }
+        let machine_data = starts(b"$MN_") || starts(b"$MC_") || starts(b"$MA_");
+        if first {
+            if !machine_data {
+                return false;
+            }
+            first = false;
+            continue;
+        }
+        if !(machine_data || is_end(line) || is_assignment(line)) {
+            return false;
+        }
+    }
+    !first
+}
+
+/// `M17`, `M30`, `M2` (or `M02`) alone in its block.
+fn is_end(line: &[u8]) -> bool {
+    let word = line
+        .iter()
+        .position(|b| b.is_ascii_whitespace() || *b == b';')
+        .map_or(line, |end| &line[..end]);
+    let rest = line[word.len()..].trim_ascii_start();
+    (rest.is_empty() || rest[0] == b';')
+        && ["M17", "M30", "M2", "M02"]
+            .iter()
+            .any(|end| word.eq_ignore_ascii_case(end.as_bytes()))
+}
+
+/// A block that begins by assigning a variable: a name (`$TC_DP1`, `R1`,
+/// `_ZSFI`), its indices in brackets if any, and `=`.
+fn is_assignment(line: &[u8]) -> bool {
+    let name = line
+        .iter()
+        .skip_while(|&&b| b == b'$')
+        .take_while(|&&b| b.is_ascii_alphanumeric() || b == b'_')
+        .count();
+    let dollars = line.iter().take_while(|&&b| b == b'$').count();
+    if name == 0 {
+        return false;
+    }
+    let mut rest = line[dollars + name..].trim_ascii_start();
+    if rest.first() == Some(&b'[') {
+        let Some(close) = memchr::memchr(b']', rest) else {
+            return false;
+        };
+        rest = rest[close + 1..].trim_ascii_start();
+    }
+    rest.first() == Some(&b'=') && rest.get(1) != Some(&b'=')
+}
+
 impl Environment {
     /// Learns the axis names of a machine data file (an `.INI` of the
-    /// control: `$MC_AXCONF_CHANAX_NAME_TAB[0]="X"`). Only the lines that
-    /// name `AXCONF_` are parsed, so the thousands of other machine data
-    /// of a setup file cost a byte search; a syntax error in one of them is
-    /// given back (nothing is learned from the file then).
+    /// control: `$MC_AXCONF_CHANAX_NAME_TAB[0]="X"`), of every channel it
+    /// holds data for. Only the lines that name `AXCONF_` are parsed, so
+    /// the thousands of other machine data of a setup file cost a byte
+    /// search; a syntax error in one of them is given back (nothing is
+    /// learned from the file then).
     pub fn read_machine_data(&mut self, source: &[u8]) -> Result<(), Vec<Diagnostic>> {
-        let mut names = Vec::new();
-        let mut errors = Vec::new();
-        for (line, error) in crate::syntax::lines_naming(source, "AXCONF_") {
-            errors.extend(error);
-            let LineKind::Block(block) = &line.kind else {
-                continue;
-            };
-            for statement in &block.statements {
-                let StatementKind::Assign(assign) = &statement.kind else {
-                    continue;
-                };
-                let table = assign.target.name.upper(source);
-                if !AXIS_NAME_TABLES.contains(&table.as_str()) {
-                    continue;
-                }
-                if let ExprKind::String = assign.value.kind {
-                    let quoted = assign.value.span.of(source);
-                    let name = quoted
-                        .strip_prefix(b"\"")
-                        .and_then(|q| q.strip_suffix(b"\""))
-                        .unwrap_or(quoted);
-                    if !name.is_empty() {
-                        names.push(crate::syntax::tree::upper(name));
-                    }
-                }
-            }
-        }
+        let (names, errors) = axis_names(source);
         if !errors.is_empty() {
             return Err(errors);
         }
         self.axes.extend(names);
         Ok(())
     }
+
+    /// Learns the axis names of the lines of `source` that read well: for a
+    /// file read for something else first (the machine's swivel data,
+    /// which reports its own errors).
+    pub fn learn_axes(&mut self, source: &[u8]) {
+        self.axes.extend(axis_names(source).0);
+    }
+}
+
+/// The axis names the lines of `source` that name `AXCONF_` give, and the
+/// syntax errors of those lines (a broken line gives none).
+fn axis_names(source: &[u8]) -> (Vec<String>, Vec<Diagnostic>) {
+    let mut names = Vec::new();
+    let mut errors = Vec::new();
+    for (line, error) in crate::syntax::lines_naming(source, "AXCONF_") {
+        if let Some(error) = error {
+            errors.push(error);
+            continue;
+        }
+        let LineKind::Block(block) = &line.kind else {
+            continue;
+        };
+        for statement in &block.statements {
+            let StatementKind::Assign(assign) = &statement.kind else {
+                continue;
+            };
+            let table = assign.target.name.upper(source);
+            if !AXIS_NAME_TABLES.contains(&table.as_str()) {
+                continue;
+            }
+            if let ExprKind::String = assign.value.kind {
+                let quoted = assign.value.span.of(source);
+                let name = quoted
+                    .strip_prefix(b"\"")
+                    .and_then(|q| q.strip_suffix(b"\""))
+                    .unwrap_or(quoted);
+                if !name.is_empty() {
+                    names.push(crate::syntax::tree::upper(name));
+                }
+            }
+        }
+    }
+    (names, errors)
 }
 
 /// Lines read for a subprogram's PROC before giving up: it is the first
@@ -218,6 +318,41 @@ $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n$MN_AXCONF_LOGIC_MACHAX_TAB[0]=\"NC1_AX1\"
         assert!(environment
             .read_machine_data(b"$MC_AXCONF_CHANAX_NAME_TAB[0]=(\n")
             .is_err());
+    }
+
+    #[test]
+    fn machine_data_are_known_by_their_blocks() {
+        for data in [
+            &b"%_N_NC_TEA\n; NCK\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n"[..],
+            b"CHANDATA(2)\n$mc_axconf_chanax_name_tab[0]=\"XS\"\nM17\n",
+            b"\n   N30130 $MA_CTRLOUT_TYPE[0,AX1]=1\n",
+            b"$MN_X=1\nCHANDATA(1)\n$TC_DP1[1,1]=120\nR[0]=1 R1=2\n_ZSFI [2] = 3\n$SN_JOG=0\nM17 ; end\n",
+        ] {
+            assert!(holds_machine_data(data), "{}", String::from_utf8_lossy(data));
+        }
+        for other in [
+            &b"N10 G0 X0\nN20 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n"[..],
+            b"N20070 $MC_AXCONF_MACHAX_USED[0]=1\nN20 NEWCONF\nN10 G0 X0\nN30 M30\n",
+            b"$MN_X=1\nIF R1==1 GOTOF A\n",
+            b"$TC_DP1[1,1]=120\n",
+            b"; $MN_ in a comment\n",
+            b"$MN_\n",
+            b"",
+        ] {
+            assert!(
+                !holds_machine_data(other),
+                "{}",
+                String::from_utf8_lossy(other)
+            );
+        }
+    }
+
+    #[test]
+    fn a_broken_line_keeps_the_machine_files_other_axis_names() {
+        let mut environment = Environment::default();
+        environment
+            .learn_axes(b"$MN_AXCONF_MACHAX_NAME_TAB[0]=(\n$MC_AXCONF_CHANAX_NAME_TAB[0]=\"XS\"\n");
+        assert!(environment.defines("XS"));
     }
 
     #[test]

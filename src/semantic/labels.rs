@@ -66,10 +66,6 @@ impl Labels {
         &self.names[entry.name_at..entry.name_at + entry.name_len as usize]
     }
 
-    fn span(&self, entry: &Entry) -> Span {
-        Span::new(entry.start, entry.start + entry.name_len as usize)
-    }
-
     /// The rows where `name` (upper case) stands, in order.
     pub fn rows<'s>(&'s self, name: &'s str) -> impl Iterator<Item = usize> + 's {
         let wanted = hash(name.as_bytes());
@@ -93,17 +89,6 @@ impl Labels {
             .map(|(e, _)| String::from_utf8_lossy(self.name(e)).into_owned())
     }
 
-    /// Every label that stands again after its first line: its span, its
-    /// name (upper case) and the first line (0-based).
-    pub fn repeated(&self) -> Vec<(Span, String, usize)> {
-        self.with_first()
-            .filter_map(|(e, first)| {
-                let name = String::from_utf8_lossy(self.name(e)).into_owned();
-                Some((self.span(e), name, first?.row))
-            })
-            .collect()
-    }
-
     /// Each entry with the first entry of the same name before it, if any
     /// (looked for among the entries of the same hash only).
     fn with_first(&self) -> impl Iterator<Item = (&Entry, Option<&Entry>)> + '_ {
@@ -123,7 +108,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn names_are_found_in_any_case_and_repeats_name_the_first_line() {
+    fn names_are_found_in_any_case_and_each_once() {
         let source = b"START: X1\nloop: X2\nLOOP: X3\nEND:\nStart:\n";
         let mut labels = Labels::default();
         for (row, (start, len)) in [(0, 5), (10, 4), (19, 4), (28, 3), (33, 5)]
@@ -139,14 +124,5 @@ mod tests {
         let mut names: Vec<String> = labels.names().collect();
         names.sort();
         assert_eq!(names, ["END", "LOOP", "START"]);
-        let mut repeated = labels.repeated();
-        repeated.sort_by_key(|(span, ..)| span.start);
-        assert_eq!(
-            repeated,
-            [
-                (Span::new(19, 23), "LOOP".to_string(), 1),
-                (Span::new(33, 38), "START".to_string(), 0)
-            ]
-        );
     }
 }

@@ -1375,8 +1375,8 @@ fn is_operator_after_number(input: Input) -> bool {
     input.fragment()[len..].starts_with(b"<<")
 }
 
-/// `indirect_call := 'CALL' (program block_range? | block_range) | ('PCALL' |
-/// 'MCALL' | 'ISOCALL') program | ('EXTCALL' | 'CALLPATH') expr`, with
+/// `indirect_call := 'CALL' (named block_range? | block_range) | 'ISOCALL' named
+/// | ('PCALL' | 'MCALL') program | ('EXTCALL' | 'CALLPATH') expr`, with
 /// `program := path arguments? | expr` and `block_range := 'BLOCK' expr 'TO' expr`
 /// (Siemens, Job Planning, "Indirect program call", "Program call with path
 /// specification and parameters", "Modal subprogram call", "Execute external
@@ -1406,13 +1406,14 @@ pub fn parse_indirect_call<'a>(
     let end = match word {
         b"CALL" if keyword("BLOCK")(at).is_ok() => block_range(at)?,
         b"CALL" => {
-            let end = program(at)?;
+            let end = named(at, "CALL")?;
             match keyword("BLOCK")(parse_blank(end)) {
                 Ok(_) => block_range(parse_blank(end))?,
                 Err(_) => end,
             }
         }
         b"EXTCALL" | b"CALLPATH" => parse_expr(at)?.0,
+        b"ISOCALL" => named(at, "ISOCALL")?,
         _ => program(at)?,
     };
     Ok((
@@ -1437,6 +1438,48 @@ fn program(input: Input) -> Result<Input, nom::Err<SyntaxError>> {
     let open = bracket_after_blank(rest);
     if peek(&open) == Some(b'(') {
         rest = parse_arguments(open, 0)?.0;
+    }
+    Ok(rest)
+}
+
+/// The functions whose value is a STRING: `CALL SPRINT("L%D", _NR)` names
+/// the program by its value (Siemens, Job Planning, "String operations").
+const STRING_FUNCTIONS: &[&str] = &["AXSTRING", "SPRINT", "SUBSTR", "TOLOWER", "TOUPPER"];
+
+/// `named := '/' name ('/' name)* | expr`: the program of CALL and ISOCALL,
+/// which name the program to run and pass it nothing: the manual writes them `CALL <program name>` and `ISOCALL
+/// <program name>`, the name a STRING, and passes arguments with PCALL
+/// (`PCALL <path/program name>(<parameter 1>,...)`) or a call by name
+/// (Siemens, Job Planning, "Indirect subprogram call (CALL)", "Indirect call
+/// of a program programmed in an ISO language (ISOCALL)", "Subprogram call
+/// with path specification and parameters (PCALL)"). An argument list after
+/// the name (`CALL _PNAME(10,20)`) is refused at its `(`; a string
+/// function's call is the name's value, not arguments.
+fn named<'a>(input: Input<'a>, keyword: &'static str) -> Result<Input<'a>, nom::Err<SyntaxError>> {
+    let refuse = |at: usize| SyntaxError::fail(at, SyntaxErrorKind::IndirectCallArguments(keyword));
+    if peek(&input) == Some(b'/') {
+        let mut rest = input;
+        while peek(&rest) == Some(b'/') {
+            rest = expect_name(rest.take_from(1), "a directory or program name after `/`")?.0;
+        }
+        let open = bracket_after_blank(rest);
+        if peek(&open) == Some(b'(') {
+            return refuse(offset(&open));
+        }
+        return Ok(rest);
+    }
+    let (rest, expr) = parse_expr(input)?;
+    if let ExprKind::Call(call) = &expr.kind {
+        let name = call
+            .name
+            .span
+            .start
+            .checked_sub(offset(&input))
+            .and_then(|from| input.fragment().get(from..from + call.name.span.len()))
+            .unwrap_or_default();
+        if !is_one_of(name, STRING_FUNCTIONS) {
+            return refuse(call.arguments.span.start);
+        }
     }
     Ok(rest)
 }

@@ -151,6 +151,26 @@ fn describe(source: &[u8], raw: RawLine, error: &SyntaxError) -> Diagnostic {
                 .label("after other statements")
                 .help("move the statements before it into a block of their own")
         }
+        SyntaxErrorKind::SignedString => registry::syntax::UNEXPECTED_TOKEN
+            .at(one)
+            .message(format!("`{}` before a string: a string has no sign", show(one)))
+            .label("a sign needs a number")
+            .help("remove the sign; NUMBER(\"...\") reads a number from a string"),
+        SyntaxErrorKind::IndirectCallArguments(keyword) => registry::syntax::UNEXPECTED_TOKEN
+            .at(Span::new(at, close_of(source, at, line_end)))
+            .message(format!(
+                "{keyword} names the program to run and takes no arguments"
+            ))
+            .label("arguments of an indirect call")
+            .help("call the program by its name with the arguments (`NAME(10,20)`), or with PCALL and its path (`PCALL /_N_SPF_DIR/NAME(10,20)`)"),
+        SyntaxErrorKind::NotInProgramName => registry::syntax::UNEXPECTED_TOKEN
+            .at(char_span(source, at, line_end))
+            .message(format!(
+                "character {} cannot stand in a program's name",
+                describe_char(source, at, line_end)
+            ))
+            .label("not a letter, digit or `_`")
+            .help("a program's name holds letters, digits and `_` only, in the header as `%_N_<name>_<type>` (`%_N_CYCLE_SPF`)"),
         SyntaxErrorKind::Expected(what) => {
             let found = if at >= line_end {
                 "the end of the line".to_string()
@@ -195,6 +215,27 @@ fn char_span(source: &[u8], at: usize, end: usize) -> Span {
         .find(|&n| std::str::from_utf8(&source[at..at + n]).is_ok())
         .unwrap_or(1);
     Span::new(at, (at + len).min(end))
+}
+
+/// Where the brackets opened at `at` close (past the `)`), strings skipped;
+/// the line's end when they do not.
+fn close_of(source: &[u8], at: usize, end: usize) -> usize {
+    let mut depth = 0usize;
+    let mut in_string = false;
+    for (i, &b) in source[at..end].iter().enumerate() {
+        match b {
+            b'"' => in_string = !in_string,
+            b'(' if !in_string => depth += 1,
+            b')' if !in_string => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 {
+                    return at + i + 1;
+                }
+            }
+            _ => {}
+        }
+    }
+    end
 }
 
 /// The name at `at` (`$` included), or its one character.

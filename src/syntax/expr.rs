@@ -231,6 +231,9 @@ fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
         return parse_primary(input, depth);
     };
     let (rest, operand) = parse_unary(parse_blank(input.take_from(len)), depth)?;
+    if matches!(op, UnaryOp::Neg | UnaryOp::Plus) && is_string_literal(&operand) {
+        return SyntaxError::fail(offset(&start), SyntaxErrorKind::SignedString);
+    }
     Ok((
         rest,
         Expr {
@@ -241,6 +244,18 @@ fn parse_unary(input: Input, depth: usize) -> PResult<Expr> {
             },
         },
     ))
+}
+
+/// A string literal, in parentheses or not: a sign before one is refused,
+/// since a STRING converts to no number (Siemens, Job Planning, "Type
+/// conversion": to BOOL and CHAR only; `NUMBER("12.5")` reads a number
+/// from a string).
+fn is_string_literal(expr: &Expr) -> bool {
+    match &expr.kind {
+        ExprKind::String => true,
+        ExprKind::Paren(inner) => is_string_literal(inner),
+        _ => false,
+    }
 }
 
 /// `primary := number | string | '(' expr ')' | variable | call`

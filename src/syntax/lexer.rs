@@ -52,6 +52,13 @@ pub enum SyntaxErrorKind {
     },
     /// A statement that stands alone in its block, after others: `X10 ENDIF`.
     NotAlone(&'static str),
+    /// A sign before a string: `-"String 1"`.
+    SignedString,
+    /// Arguments after the program an indirect call names: `CALL _PNAME(10,20)`;
+    /// the keyword (`CALL`, `ISOCALL`).
+    IndirectCallArguments(&'static str),
+    /// A character a program's name cannot hold, in a header `%_N_..._SPF`.
+    NotInProgramName,
 }
 
 impl SyntaxError {

@@ -217,7 +217,7 @@ pub(crate) fn parse_line_kind(
             LineKind::Header {
                 name: Span::new(start + 1, start + content.len()),
             },
-            None,
+            header_error(content, start),
         );
     }
     const PATH: &[u8] = b";$PATH=";
@@ -231,6 +231,29 @@ pub(crate) fn parse_line_kind(
     }
     let (block, error) = block::parse_block_with(Input::new(content, start), scratch);
     (LineKind::Block(block), error)
+}
+
+/// A character the control's name in a header `%_N_<name>_<type>` cannot
+/// hold: a program's name is letters, digits and `_` (Siemens, Programming
+/// Manual NC programming, "Subprogram names": "Permissible characters").
+/// Other headers (`%Flange3_MPF`, a lone `%` of a CAM post) are not read.
+fn header_error(content: &[u8], start: usize) -> Option<SyntaxError> {
+    const PREFIX: &[u8] = b"%_N_";
+    if content.len() < PREFIX.len() || !content[..PREFIX.len()].eq_ignore_ascii_case(PREFIX) {
+        return None;
+    }
+    let name = &content[PREFIX.len()..];
+    let end = name
+        .iter()
+        .position(|b| b.is_ascii_whitespace())
+        .unwrap_or(name.len());
+    let bad = name[..end]
+        .iter()
+        .position(|&b| !(b.is_ascii_alphanumeric() || b == b'_'))?;
+    Some(SyntaxError::new(
+        start + PREFIX.len() + bad,
+        SyntaxErrorKind::NotInProgramName,
+    ))
 }
 
 /// The name of the call whose `(` at `open` was left unclosed, if it is one.

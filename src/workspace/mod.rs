@@ -26,6 +26,7 @@ use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
 use crate::emit::cycle600::{Form, Options};
 use crate::lint::{self, Selection, Settings};
+use crate::semantic::environment::holds_machine_data;
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::swivels::{self, OnMachine};
 use crate::semantic::{Environment, Heads, Supplied};
@@ -164,6 +165,11 @@ impl Workspace {
         resolved.settings.environment = self.environment(config)?;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
         resolved.settings.machine = self.machine(config)?;
+        // The machine file is machine data too: the axes it names, of every
+        // channel, are names a program may write.
+        if let Some(machine) = &resolved.settings.machine {
+            resolved.settings.environment.learn_axes(&machine.source);
+        }
         resolved.settings.environment.given = !given.definitions.is_empty()
             || !given.cycles.is_empty()
             || config.definitions.iter().flatten().next().is_some()
@@ -454,8 +460,9 @@ fn own_directory(program: &Path) -> PathBuf {
 }
 
 /// What the definition files `files` define: GUD and macro files give
-/// variables and macros, machine data (`.INI`) axis names; an archive gives
-/// what its `_DEF` and data members do.
+/// variables and macros, machine data axis names (an `.INI`, or any file or
+/// archive member that holds machine data, [`holds_machine_data`]); an
+/// archive gives what its `_DEF` and data members do.
 fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
     for path in files {
@@ -480,6 +487,7 @@ fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
             let bytes = &bytes[range];
             let read = match kind {
                 MemberKind::Data => environment.read_machine_data(bytes),
+                _ if holds_machine_data(bytes) => environment.read_machine_data(bytes),
                 MemberKind::Definitions => environment.read_definitions(bytes),
                 _ => continue,
             };

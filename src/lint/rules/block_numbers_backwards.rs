@@ -2,6 +2,7 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::semantic::environment::holds_machine_data;
 use crate::syntax::plain::digits_value;
 use crate::syntax::tree::{Block, BlockNumber, StatementKind};
 
@@ -17,9 +18,12 @@ Block numbers are not executed in order, but a jump to a block number searches i
 and readers expect them to grow: a number going backwards often marks blocks pasted from
 elsewhere.
 
-Machine data are not checked: an `.INI` file (`INITIAL.INI`, `TO_INI.INI`), and elsewhere a
-block that assigns machine or setting data (`N10000 $MN_AXCONF_MACHAX_NAME_TAB[0]="X1"`), number
-their blocks by machine-data number, not in the order they are written.
+Machine data are not checked: an `.INI` file (`INITIAL.INI`, `TO_INI.INI`), a file of any name
+that holds machine data (its first block assigns `$MN_`, `$MC_` or `$MA_`, and its other blocks
+assign data, select a channel with `CHANDATA` or end it: a `.TEA`, machine data saved as `.TXT`,
+an archive's member), and elsewhere a block that assigns machine or setting data
+(`N10000 $MN_AXCONF_MACHAX_NAME_TAB[0]="X1"`) number their blocks by machine-data number, not in
+the order they are written.
 
 ## Example
 ```
@@ -34,6 +38,9 @@ Renumber the blocks."#,
 #[derive(Default)]
 pub struct Checker {
     previous: Option<u64>,
+    /// Whether the file is machine data, read once from its name and its
+    /// first block.
+    machine_data: Option<bool>,
 }
 
 impl Check for Checker {
@@ -56,7 +63,7 @@ impl Check for Checker {
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
-        if is_ini_file(file.name) {
+        if self.machine_data(file) {
             return;
         }
         for line in lines {
@@ -72,7 +79,7 @@ impl Checker {
         number: Option<BlockNumber>,
         out: &mut Vec<Diagnostic>,
     ) {
-        if is_ini_file(file.name) {
+        if self.machine_data(file) {
             return;
         }
         let Some(number) = number.filter(|n| !n.main) else {
@@ -88,11 +95,17 @@ impl Checker {
     }
 }
 
-/// An `.INI` file: machine data, numbered by machine-data number.
-fn is_ini_file(name: &str) -> bool {
-    std::path::Path::new(name)
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("ini"))
+impl Checker {
+    /// An `.INI` file, or a file of machine data whatever its name
+    /// ([`holds_machine_data`]): numbered by machine-data number.
+    fn machine_data(&mut self, file: &FileContext) -> bool {
+        *self.machine_data.get_or_insert_with(|| {
+            std::path::Path::new(file.name)
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("ini"))
+                || holds_machine_data(file.source)
+        })
+    }
 }
 
 /// A block assigning machine or setting data (`$MN_`, `$MC_`, `$MA_`,

@@ -1,50 +1,127 @@
-//! N003 `duplicate-label`: Finds a label defined twice in one program.
+//! N003 `duplicate-label`: Finds a GOTO or GOTOC whose label is written both after it and before it.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext};
+use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rules::support::*;
+use crate::span::Span;
+use crate::syntax::tree::GotoKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N003",
     name: "duplicate-label",
-    severity: Severity::Error,
+    severity: Severity::Warning,
     docs: r#"## What it does
-Finds a label defined twice in one program.
+Finds a GOTO or GOTOC whose label is written both after it and before it.
 
 ## Why it matters
-A jump goes to the first label found in its search direction, so which block runs depends on
-where the jump stands: rarely what was meant. Not reported: repeated block numbers, and `ENDLABEL`,
-the predefined label that ends a section `REPEAT` repeats, which the manual lets stand as often as
-there are sections (Siemens, Job Planning, "Program section repetition (REPEAT, REPEATB,
-ENDLABEL, P)").
+The control does not refuse a label written more than once. A jump searches its label from the
+block it stands in and takes the first one it finds: GOTOF toward the end of the program, GOTOB
+toward its start, GOTO and GOTOC toward the end first and then toward the start (Siemens,
+Programming Manual Job Planning, "Program jumps to jump markers (GOTOB, GOTOF, GOTO, GOTOC)"). A
+REPEAT searches the label it names toward the start of the program, so a section is repeated from
+the label just above the REPEAT; REPEATB, and the start label of `REPEAT START END`, are searched
+toward the start first as well, and `ENDLABEL` may end as many sections as there are ("Program
+section repetition (REPEAT, REPEATB, ENDLABEL, P)"). Machine builders' cycles rely on it: a label
+written again before each REPEAT naming it (`TEMP:` ... `REPEAT TEMP P=59`, a hundred times in one
+program) runs as written.
+
+Where a GOTO or GOTOC has its label after it and before it, it goes forward, although a reader
+who sees the label above (a loop written `WEITER:` ... `GOTO WEITER`) takes it for a jump back:
+which block runs depends on a label elsewhere in the program. That is reported, as a warning (the
+control runs it). Not reported: a label written twice that no such jump names, GOTOF, GOTOB and
+CASE jumps (one direction: the nearest label in it) and the REPEAT forms (the label above).
 
 ## Example
 ```
-N10 ENDE: M30
-N90 ENDE: M30
+N10 WEITER: R1=R1+1
+N20 IF R1<5 GOTO WEITER   ; goes on to N40, not back to N10
+N30 M0
+N40 WEITER: M30
 ```
 
 ## Fix
-Rename one of the labels and the jumps meant for it."#,
+Give each label its own name, or say the direction with GOTOB or GOTOF."#,
 };
 
-/// The labels are the file's ([`FileContext::labels`]), read once the line
-/// pass is over.
+/// A GOTO or GOTOC to a label: the labels are the file's
+/// ([`FileContext::labels`]), complete once the line pass is over.
 #[derive(Default)]
-pub struct Checker;
+pub struct Checker {
+    jumps: Vec<Jump>,
+}
+
+struct Jump {
+    /// The label, upper case.
+    name: String,
+    /// The label as the jump writes it.
+    span: Span,
+    row: usize,
+    keyword: &'static str,
+}
 
 impl Check for Checker {
-    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let repeated = file.labels().repeated();
-        for (span, name, first) in repeated.into_iter().filter(|(_, n, _)| n != "ENDLABEL") {
-            out.push(
-                RULE.at(span)
-                    .message(format!(
-                        "label `{name}` is already defined on line {}",
-                        first + 1
-                    ))
-                    .label("second definition")
-                    .help("rename one of the labels, and the jumps meant for it"),
-            );
+    fn line(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        line: &LineView,
+        _out: &mut Vec<Diagnostic>,
+    ) {
+        let Some(block) = line.block.filter(|_| !line.plain) else {
+            return;
+        };
+        for goto in gotos(block) {
+            let keyword = match goto.kind {
+                GotoKind::Both => "GOTO",
+                GotoKind::Conditional => "GOTOC",
+                _ => continue,
+            };
+            if let Some((Target::Label(name), span)) = target(file, goto) {
+                self.jumps.push(Jump {
+                    name,
+                    span,
+                    row,
+                    keyword,
+                });
+            }
         }
     }
+
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        for jump in &self.jumps {
+            let mut rows = file.labels().rows(&jump.name);
+            let Some(first) = rows.next() else {
+                continue;
+            };
+            // The search as the control makes it: forward to the first
+            // label after the jump's block; back to the nearest at or
+            // before it.
+            let (mut after, mut before) = (None, None);
+            for row in std::iter::once(first).chain(rows) {
+                if row > jump.row {
+                    after = after.or(Some(row));
+                } else {
+                    before = Some(row);
+                }
+            }
+            let (Some(after), Some(before)) = (after, before) else {
+                continue;
+            };
+            out.push(ambiguous(jump, after, before));
+        }
+    }
+}
+
+#[cold]
+fn ambiguous(jump: &Jump, after: usize, before: usize) -> Diagnostic {
+    let Jump { name, keyword, .. } = jump;
+    let (after, before) = (after + 1, before + 1);
+    RULE.at(jump.span)
+        .message(format!(
+            "`{keyword} {name}` goes forward to `{name}` on line {after}, though `{name}` is also written before it, on line {before}"
+        ))
+        .label("two labels of this name in the two directions")
+        .help(format!(
+            "give each label its own name, or jump with GOTOF (line {after}) or GOTOB (line {before}) to say which"
+        ))
 }

@@ -31,7 +31,9 @@ Declare the variable with DEF (or correct its spelling). Names of R parameters, 
 (`$...`), cycle data (`_...`), one-letter addresses, global R parameters (`RG1`), the
 orientation names of `PO[...]` (`PHI`, `PSI`, `THT`, `XH`, `YH`, `ZH`), the machine's axis names
 (`axes = ["XC", "AX1"]` in sinuprep.toml, or the `$MC_AXCONF_CHANAX_NAME_TAB`, `$MC_AXCONF_GEOAX_NAME_TAB`
-and `$MN_AXCONF_MACHAX_NAME_TAB` lines of a machine data `.INI` given as a definition file), the
+and `$MN_AXCONF_MACHAX_NAME_TAB` lines of machine data, every channel's: an `.INI`, or a file of
+any name whose blocks are machine data (the first assigns `$MN_`, `$MC_` or `$MA_`), given as a
+definition file, as the machine (`--machine`) or as an archive's member), the
 globals and macros of the definition files given (`--definitions MGUD.DEF`, `definitions =
 [...]` in sinuprep.toml), a bare name given to an AXIS variable
 (`DEF AXIS _AX` then `_AX=XC`), a machine axis by its number (`AX1` ... `AXn`, known on every
