@@ -92,7 +92,7 @@ fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -
         match line {
             // A plain line has no error to find.
             None => parser.pass_plain_line(),
-            Some(raw) => found.extend(parser.parse_line(source, raw).1),
+            Some(raw) => found.extend(parser.line_diagnostic(source, raw)),
         }
     }
     found
@@ -166,13 +166,36 @@ impl LineParser {
     }
 
     pub fn parse_line(&mut self, source: &[u8], raw: RawLine) -> (Line, Option<Diagnostic>) {
+        let (mut kind, diagnostic) = self.read_line(source, raw);
+        if let LineKind::Block(block) = &mut kind {
+            block.statements = block::take_gathered(&mut self.statements);
+        }
+        (Line { raw, kind }, diagnostic)
+    }
+
+    /// [`LineParser::parse_line`]'s diagnostic alone, for the syntax pass,
+    /// which keeps no tree: the block's statements are dropped where they
+    /// were gathered instead of being moved into a vector of their own.
+    fn line_diagnostic(&mut self, source: &[u8], raw: RawLine) -> Option<Diagnostic> {
+        let (_, diagnostic) = self.read_line(source, raw);
+        if self.statements.capacity() > block::MANY_STATEMENTS {
+            // Not held on to for the next line (a long block of words).
+            self.statements = Vec::new();
+        }
+        diagnostic
+    }
+
+    /// The line's kind, a block's statements left in `self.statements`, and
+    /// its diagnostic.
+    #[inline]
+    fn read_line(&mut self, source: &[u8], raw: RawLine) -> (LineKind, Option<Diagnostic>) {
         self.row += 1;
         let content = raw.content.of(source);
         let continued = self.open_call.take();
-        let (kind, error) = parse_line_kind(content, raw.content.start, &mut self.statements);
+        let (kind, error) = read_line_kind(content, raw.content.start, &mut self.statements);
         let diagnostic = error.map(|error| {
             if let (Some(open), LineKind::Block(block)) = (&continued, &kind) {
-                if block.statements.is_empty() {
+                if self.statements.is_empty() {
                     return continuation(open, block.unparsed.unwrap_or(raw.content));
                 }
             }
@@ -186,7 +209,7 @@ impl LineParser {
             }
             to_diagnostic(source, raw, &error)
         });
-        (Line { raw, kind }, diagnostic)
+        (kind, diagnostic)
     }
 }
 
@@ -204,6 +227,22 @@ pub(crate) fn parse_line_kind(
     start: usize,
     scratch: &mut Vec<tree::Statement>,
 ) -> (LineKind, Option<SyntaxError>) {
+    let (mut kind, error) = read_line_kind(content, start, scratch);
+    if let LineKind::Block(block) = &mut kind {
+        block.statements = block::take_gathered(scratch);
+    }
+    (kind, error)
+}
+
+/// The line's kind and tree, a block's statements left in `scratch`
+/// (cleared first; see [`block::parse_block_gathered`]).
+#[inline]
+fn read_line_kind(
+    content: &[u8],
+    start: usize,
+    scratch: &mut Vec<tree::Statement>,
+) -> (LineKind, Option<SyntaxError>) {
+    scratch.clear();
     if content.len() > MAX_PARSED_LINE {
         let block = Block {
             unparsed: Some(Span::new(start, start + content.len())),
@@ -229,7 +268,7 @@ pub(crate) fn parse_line_kind(
             None,
         );
     }
-    let (block, error) = block::parse_block_with(Input::new(content, start), scratch);
+    let (block, error) = block::parse_block_gathered(Input::new(content, start), scratch);
     (LineKind::Block(block), error)
 }
 
