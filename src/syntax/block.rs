@@ -41,17 +41,37 @@ pub fn parse_block(input: Input) -> (Block, Option<SyntaxError>) {
 }
 
 /// [`parse_block`], gathering the statements in `scratch` (left empty) and
-/// storing them in a vector of their number: a statement is large (about
-/// 150 bytes), and room for a CAM block's eight, reserved on every block,
-/// took the allocator's slow path, 500 instructions a block of code.
+/// storing them in a vector of their number (see [`take_gathered`]).
 #[inline]
 pub fn parse_block_with(
     input: Input,
     scratch: &mut Vec<Statement>,
 ) -> (Block, Option<SyntaxError>) {
+    let (mut block, error) = parse_block_gathered(input, scratch);
+    block.statements = take_gathered(scratch);
+    (block, error)
+}
+
+/// The block of `input` with its statements left in `scratch` (cleared
+/// first), not moved into the block: for a reader that wants only the
+/// error, moving them out would cost an allocation and a copy of every
+/// statement per block.
+#[inline]
+pub(crate) fn parse_block_gathered(
+    input: Input,
+    scratch: &mut Vec<Statement>,
+) -> (Block, Option<SyntaxError>) {
     scratch.clear();
-    let (mut block, error) = parse_statements(input, scratch);
-    block.statements = if scratch.len() <= MANY_STATEMENTS {
+    parse_statements(input, scratch)
+}
+
+/// The statements gathered in `scratch`, in a vector of their number (left
+/// empty): a statement is large (about 150 bytes), and room for a CAM
+/// block's eight, reserved on every block, took the allocator's slow path,
+/// 500 instructions a block of code.
+#[inline]
+pub(crate) fn take_gathered(scratch: &mut Vec<Statement>) -> Vec<Statement> {
+    if scratch.len() <= MANY_STATEMENTS {
         let mut statements = Vec::with_capacity(scratch.len());
         statements.append(scratch);
         statements
@@ -59,12 +79,11 @@ pub fn parse_block_with(
         // A long block of address words keeps the gathered vector itself,
         // so that it is neither copied nor held on to for the next line.
         std::mem::take(scratch)
-    };
-    (block, error)
+    }
 }
 
 /// More statements than a block of the control holds (512 characters).
-const MANY_STATEMENTS: usize = 256;
+pub(crate) const MANY_STATEMENTS: usize = 256;
 
 /// The block of `input` without its statements, which go to `statements`.
 fn parse_statements(input: Input, statements: &mut Vec<Statement>) -> (Block, Option<SyntaxError>) {

@@ -384,8 +384,13 @@ pub fn parse_indices(input: Input, depth: usize) -> PResult<Vec<crate::syntax::t
     if peek(&input) != Some(b'[') {
         return Ok((input, Vec::new()));
     }
-    // Read straight into the indices, not into a list of arguments first.
-    let mut indices = Vec::new();
+    // Read straight into the indices, not into a list of arguments first,
+    // with room for as many as there are commas before the first `]`
+    // (`$TC_DP1[1,1]`): growing from nothing took the allocator's slow
+    // path on every indexed variable.
+    let ahead = &input.fragment()[..input.input_len().min(64)];
+    let end = memchr::memchr(b']', ahead).unwrap_or(ahead.len());
+    let mut indices = Vec::with_capacity(1 + ahead[..end].iter().filter(|&&b| b == b',').count());
     let mut first_empty = None;
     let (rest, _) = parse_items(input, b'[', b']', depth, |span, value| match value {
         Some(value) => indices.push(value),

@@ -259,7 +259,9 @@ fn parse_decimal(input: Input) -> PResult<Number> {
     }
     let mantissa_len = len;
     let mut exponent = None;
-    if bytes.len() > len + 1 && bytes[len..len + 2].eq_ignore_ascii_case(b"EX") {
+    // Most numbers end at a blank, a comma or a bracket: one byte tells.
+    let e_follows = matches!(bytes.get(len), Some(b'E' | b'e'));
+    if e_follows && matches!(bytes.get(len + 1), Some(b'X' | b'x')) {
         let mut at = len + 2;
         if matches!(bytes.get(at), Some(b'+' | b'-')) {
             at += 1;

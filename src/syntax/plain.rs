@@ -331,6 +331,18 @@ impl Words {
 /// Reads address words up to a `;`, a line end or the end of `bytes`; `None`
 /// at anything else.
 fn scan_words(bytes: &[u8]) -> Option<Words> {
+    // A line that starts with anything but a letter, a blank, a comment or
+    // its end is not plain, whatever follows: `$TC_DP1[1,1]=0`, `_X=1`,
+    // `/N10`. Said at once, before the 64 bytes are classified: setup files
+    // are made of such lines.
+    if bytes.first().is_some_and(|&b| {
+        matches!(
+            CLASS[usize::from(b)],
+            Class::Digit | Class::Point | Class::Sign | Class::Other
+        )
+    }) {
+        return None;
+    }
     #[cfg(target_arch = "x86_64")]
     if let Some(words) = bytes.first_chunk().and_then(wide::scan_words) {
         return words;

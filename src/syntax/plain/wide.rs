@@ -31,18 +31,24 @@ struct Classes {
 /// `None` when they do not stop within the window (the caller then reads
 /// byte by byte).
 pub(super) fn scan_words(window: &[u8; 64]) -> Option<Option<Words>> {
-    if !(std::arch::is_x86_feature_detected!("avx2")
-        && std::arch::is_x86_feature_detected!("bmi1")
-        && std::arch::is_x86_feature_detected!("popcnt"))
-    {
+    if !*HAS_FEATURES {
         return None;
     }
-    // SAFETY: the CPU has AVX2 (checked above; the answer is cached).
+    // SAFETY: the CPU has AVX2 (HAS_FEATURES, checked above).
     #[allow(unsafe_code)]
     unsafe {
         scan_words_avx2(window)
     }
 }
+
+/// The CPU has AVX2, BMI1 and POPCNT: asked once, as three questions to
+/// the standard library's cache on every line cost about ten instructions a
+/// line, a twentieth of a CAM block's scan.
+static HAS_FEATURES: std::sync::LazyLock<bool> = std::sync::LazyLock::new(|| {
+    std::arch::is_x86_feature_detected!("avx2")
+        && std::arch::is_x86_feature_detected!("bmi1")
+        && std::arch::is_x86_feature_detected!("popcnt")
+});
 
 /// [`scan_words`] compiled for AVX2, so that [`classify`] is inlined.
 ///
