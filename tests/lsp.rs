@@ -340,3 +340,30 @@ vim.cmd("qa!")
         "{shown}"
     );
 }
+
+#[test]
+fn a_client_that_pulls_diagnostics_gets_them_once() {
+    let capabilities =
+        json!({ "textDocument": { "diagnostic": { "dynamicRegistration": false } } });
+    let (mut client, initialized) = Client::start(capabilities);
+    assert_eq!(
+        initialized["capabilities"]["diagnosticProvider"]["interFileDependencies"],
+        true
+    );
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": URI, "languageId": "sinumerik", "version": 1,
+                                  "text": "START:\nG1 X1 F100\nGOTOB STRAT\nM30\n" } }),
+    );
+    client.send(
+        json!({ "jsonrpc": "2.0", "id": 99, "method": "textDocument/diagnostic",
+                        "params": { "textDocument": { "uri": URI } } }),
+    );
+    // The answer is the next message: nothing was pushed before it.
+    let answer = client.receive();
+    assert_eq!(answer["id"], 99, "{answer}");
+    assert_eq!(answer["result"]["kind"], "full", "{answer}");
+    let items = answer["result"]["items"].as_array().expect("items");
+    assert_eq!(codes(items), ["N001"]);
+    client.stop();
+}

@@ -42,6 +42,13 @@ fn serve(connection: &Connection) -> Result<(), String> {
     let params: lsp::InitializeParams =
         serde_json::from_value(params).map_err(|e| format!("initialize: {e}"))?;
     let (encoding, unit) = convert::encoding(&params.capabilities);
+    // A client that asks for diagnostics is answered, not also pushed to:
+    // it would show each finding twice.
+    let pull = params
+        .capabilities
+        .text_document
+        .as_ref()
+        .is_some_and(|text| text.diagnostic.is_some());
     let capabilities = lsp::ServerCapabilities {
         position_encoding: Some(encoding),
         text_document_sync: Some(lsp::TextDocumentSyncCapability::Options(
@@ -63,6 +70,15 @@ fn serve(connection: &Connection) -> Result<(), String> {
             work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
         })),
         inlay_hint_provider: Some(lsp::OneOf::Left(true)),
+        diagnostic_provider: pull.then(|| {
+            lsp::DiagnosticServerCapabilities::Options(lsp::DiagnosticOptions {
+                identifier: Some("sinuprep".to_string()),
+                // HEAD_DEF, definition files and settings are other files.
+                inter_file_dependencies: true,
+                workspace_diagnostics: false,
+                work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
+            })
+        }),
         ..lsp::ServerCapabilities::default()
     };
     let initialized = serde_json::json!({
@@ -77,6 +93,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         documents: HashMap::new(),
         workspace: Workspace::default(),
         unit,
+        pull,
     };
     // After `shutdown` the protocol allows only `exit`; a client that
     // closes the connection instead has still ended the session in order.
@@ -128,6 +145,8 @@ struct Server<'c> {
     /// when the client saves or changes a file.
     workspace: Workspace,
     unit: ColumnUnit,
+    /// The client pulls diagnostics (`textDocument/diagnostic`).
+    pull: bool,
 }
 
 impl Server<'_> {
@@ -155,7 +174,9 @@ impl Server<'_> {
                 if let Some(params) = extract::<lsp::DidCloseTextDocumentParams>(notification) {
                     let uri = params.text_document.uri;
                     self.documents.remove(&uri);
-                    self.publish(uri, Vec::new());
+                    if !self.pull {
+                        self.send_diagnostics(uri, Vec::new());
+                    }
                 }
             }
             // A saved or changed file may be a settings file, a HEAD_DEF or
@@ -190,10 +211,8 @@ impl Server<'_> {
             name,
             settings,
         };
-        let diagnostics =
-            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
         self.documents.insert(uri.clone(), open);
-        self.publish(uri, diagnostics);
+        self.publish(uri);
     }
 
     /// The settings `check` would use for the file at `path`; the defaults,
@@ -226,13 +245,24 @@ impl Server<'_> {
                 None => open.text = Text::new(change.text.into_bytes()),
             }
         }
-        let open = &self.documents[&uri];
-        let diagnostics =
-            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
-        self.publish(uri, diagnostics);
+        self.publish(uri);
     }
 
-    fn publish(&self, uri: lsp::Uri, diagnostics: Vec<lsp::Diagnostic>) {
+    /// Pushes the findings of an open document to a client that does not
+    /// pull them.
+    fn publish(&self, uri: lsp::Uri) {
+        if self.pull {
+            return;
+        }
+        let Some(open) = self.documents.get(&uri) else {
+            return;
+        };
+        let diagnostics =
+            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
+        self.send_diagnostics(uri, diagnostics);
+    }
+
+    fn send_diagnostics(&self, uri: lsp::Uri, diagnostics: Vec<lsp::Diagnostic>) {
         let params = lsp::PublishDiagnosticsParams::new(uri, diagnostics, None);
         let method = lsp::notification::PublishDiagnostics::METHOD.to_string();
         self.send(Message::Notification(Notification::new(method, params)));
@@ -275,6 +305,22 @@ impl Server<'_> {
                 let at = p.text_document_position;
                 s.rename(&at.text_document.uri, at.position, &p.new_name)
             }),
+            r::DocumentDiagnosticRequest::METHOD => {
+                self.answer(request, |s, _: lsp::DocumentDiagnosticParams| {
+                    let report = lsp::FullDocumentDiagnosticReport {
+                        result_id: None,
+                        items: s.diagnostics(),
+                    };
+                    Ok(lsp::DocumentDiagnosticReportResult::Report(
+                        lsp::DocumentDiagnosticReport::Full(
+                            lsp::RelatedFullDocumentDiagnosticReport {
+                                related_documents: None,
+                                full_document_diagnostic_report: report,
+                            },
+                        ),
+                    ))
+                })
+            }
             r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
                 Ok(s.inlay_hints(p.range))
             }),
@@ -342,6 +388,7 @@ has_document! {
     lsp::TextDocumentPositionParams => |p| &p.text_document.uri;
     lsp::RenameParams => |p| &p.text_document_position.text_document.uri;
     lsp::InlayHintParams => |p| &p.text_document.uri;
+    lsp::DocumentDiagnosticParams => |p| &p.text_document.uri;
 }
 
 /// A notification's parameters; one that does not parse is said on stderr
