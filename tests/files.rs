@@ -643,3 +643,58 @@ fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
     assert!(shown.contains("SECRETHEAD"), "{shown}");
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// Names are found in any case, as the control and Windows find them:
+/// `head_def.spf` beside a program is its HEAD_DEF and `SINUPREP.TOML` its
+/// settings, on every platform; where the file system holds two names that
+/// differ only in case, a program that would use them is an error naming
+/// both (a copy to the control or to Windows keeps either one).
+#[test]
+fn names_are_found_in_any_case_and_two_spellings_are_an_error() {
+    let dir = scratch("files-case");
+    let parts = dir.join("parts");
+    fs::create_dir_all(&parts).expect("dir");
+    let repo = support::repo();
+    fs::copy(
+        repo.join("samples/PAPER_EXAMPLE3.MPF"),
+        parts.join("PART.MPF"),
+    )
+    .expect("program");
+    fs::copy(
+        repo.join("samples/HEAD_DEF.SPF"),
+        parts.join("head_def.spf"),
+    )
+    .expect("heads");
+    fs::write(dir.join("SINUPREP.TOML"), "precision = 2\n").expect("settings");
+    let output = run_in(&parts, &["rewrite", "PART.MPF"]);
+    assert_exit(&output, 0);
+    let rewritten = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        rewritten.contains("37.79") && !rewritten.contains("37.792346"),
+        "HEAD_DEF and the settings' precision: {rewritten}"
+    );
+
+    fs::write(parts.join("HEAD_DEF.SPF"), "PROC HEAD_DEF\nM17\n").expect("second");
+    if names(&parts).len() < 3 {
+        eprintln!("NOTE: this file system ignores case; the case of two spellings was skipped");
+        let _ = fs::remove_dir_all(&dir);
+        return;
+    }
+    let output = run_in(&parts, &["rewrite", "PART.MPF"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("HEAD_DEF: ./HEAD_DEF.SPF and ./head_def.spf differ only in case"),
+        "{stderr}"
+    );
+    fs::remove_file(parts.join("HEAD_DEF.SPF")).expect("remove");
+    fs::write(dir.join("sinuprep.toml"), "precision = 3\n").expect("second");
+    let output = run_in(&parts, &["check", "PART.MPF"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("SINUPREP.TOML and") && stderr.contains("differ only in case"),
+        "{stderr}"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}
