@@ -698,3 +698,78 @@ fn names_are_found_in_any_case_and_two_spellings_are_an_error() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// Paths as people on Windows give them: a drive letter and backslashes
+/// (`C:\CAM\OUT\PART.MPF`), forward slashes, the verbatim form (`\\?\C:\`),
+/// from another directory; HEAD_DEF is found beside the program, the
+/// backup written beside it, and a read-only file refused. UNC paths (`\\server\share\...`) need a share,
+/// which Wine does not offer: they are not tried here.
+#[test]
+#[cfg(windows)]
+fn windows_paths_with_a_drive_letter_and_backslashes() {
+    let dir = scratch("files-windows-paths");
+    let repo = support::repo();
+    let original = fs::read(repo.join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    fs::write(dir.join("PART.MPF"), &original).expect("program");
+    fs::copy(repo.join("samples/HEAD_DEF.SPF"), dir.join("head_def.spf")).expect("heads");
+    fs::copy(
+        repo.join("tests/fixtures/lint/N022_trigger.mpf"),
+        dir.join("N022.MPF"),
+    )
+    .expect("fixture");
+    let expected = run_in(&dir, &["rewrite", "PART.MPF"]);
+    assert_exit(&expected, 0);
+    let program = dir.join("PART.MPF");
+    let program = program.to_str().expect("utf-8");
+    assert!(
+        program.as_bytes().get(1) == Some(&b':') && program.contains('\\'),
+        "{program}"
+    );
+    for path in [
+        program.to_string(),
+        program.replace('\\', "/"),
+        format!(r"\\?\{program}"),
+    ] {
+        let output = run_in(&repo, &["rewrite", &path]);
+        assert_exit(&output, 0);
+        assert_eq!(output.stdout, expected.stdout, "{path}");
+    }
+    let output = run_in(&repo, &["rewrite", "--in-place", program]);
+    assert_exit(&output, 0);
+    assert_eq!(
+        fs::read(dir.join("PART.MPF")).expect("read"),
+        expected.stdout
+    );
+    assert_eq!(fs::read(dir.join("PART.MPF.bak")).expect("bak"), original);
+    assert_eq!(
+        names(&dir),
+        ["N022.MPF", "PART.MPF", "PART.MPF.bak", "head_def.spf"]
+    );
+    // The read-only attribute is honoured: refused, the file untouched.
+    let rewritten = dir.join("PART.MPF");
+    fs::write(&rewritten, &original).expect("the original again");
+    let mut permissions = fs::metadata(&rewritten).expect("metadata").permissions();
+    permissions.set_readonly(true);
+    // (Wine keeps the attribute as Unix mode bits, which do not stop root:
+    // the tool must refuse by the attribute, whoever runs it.)
+    fs::set_permissions(&rewritten, permissions.clone()).expect("read-only");
+    let output = run_in(&repo, &["rewrite", "--in-place", "--no-backup", program]);
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("read-only"));
+    assert_eq!(fs::read(&rewritten).expect("read"), original);
+    // Windows: the attribute cleared (no mode bits made world-writable).
+    #[allow(clippy::permissions_set_readonly_false)]
+    permissions.set_readonly(false);
+    fs::set_permissions(&rewritten, permissions).expect("writable");
+    // A finding names the file as it was given.
+    let checked = dir.join("N022.MPF");
+    let checked = checked.to_str().expect("utf-8");
+    let output = run_in(&repo, &["check", "--format", "short", checked]);
+    assert_exit(&output, 1);
+    let report = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        report.starts_with(&format!("{checked}:2:12: error[N022]")),
+        "{report}"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}
