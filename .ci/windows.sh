@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The Windows binary, built with MinGW-w64 and run under Wine: the README's
-# main command, standard input, and a rewrite in place with its backup.
+# main command, standard input, a rewrite in place with its backup, a path
+# with a drive letter, and the command-line tests (tests/cli.rs,
+# tests/files.rs) with the binary they run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,4 +44,15 @@ status=$?
 set -e
 [[ $status -eq 1 ]] || { echo "check exited $status, not 1"; exit 1; }
 grep -q "N022_trigger.mpf:2:12: error\[N022\]" "$scratch/check.txt"
-echo "Windows binary under Wine: rewrite (file, stdin, in place) and check as on Linux"
+
+# The command-line tests, built in the release profile so that they reuse
+# the build above (a debug build of every dependency would take minutes
+# more), run by Wine (cargo's runner for the target). Each test executable
+# and the binary it runs need the stub DLL beside them. What Wine cannot run
+# (symbolic links, FIFOs, modes and owners) is left out in the tests, by
+# `cfg`, each with its reason.
+cargo test --release --locked --target "$target" --test cli --test files --no-run
+cp "$out/bcryptprimitives.dll" "$out/deps/"
+CARGO_TARGET_X86_64_PC_WINDOWS_GNU_RUNNER=wine \
+  cargo test --release --locked --target "$target" --test cli --test files
+echo "Windows binary under Wine: rewrite (file, stdin, in place), check, and the command-line tests as on Linux"

@@ -4,10 +4,16 @@
 //! link, temporary files are unguessable and cleaned up, `-o` onto the input
 //! is an in-place rewrite, and directory walks take every file once.
 //! Cases that need root say so on stderr and are skipped elsewhere.
+//!
+//! On Windows (run under Wine by `.ci/windows.sh`) the cases of symbolic
+//! links, FIFOs, devices, modes and owners are left out, each where it is
+//! (`cfg(unix)`): Windows has no FIFOs in the file system, no `/dev`, no
+//! owner or mode bits, and makes symbolic links only with a privilege.
 
 mod support;
 
 use std::fs;
+#[cfg(unix)]
 use std::os::unix::fs::{symlink, MetadataExt, PermissionsExt};
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
@@ -62,6 +68,16 @@ fn rewrite_in_place(dir: &Path, path: &Path) -> Output {
     )
 }
 
+/// `text` with Windows' path separators as `/`: a walk there joins the
+/// names it finds with `\\`, as people there read paths.
+fn slashes(text: &str) -> String {
+    if cfg!(windows) {
+        text.replace('\\', "/")
+    } else {
+        text.to_string()
+    }
+}
+
 fn names(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = fs::read_dir(dir)
         .expect("dir")
@@ -71,6 +87,7 @@ fn names(dir: &Path) -> Vec<String> {
     names
 }
 
+#[cfg(unix)]
 fn is_root() -> bool {
     fs::metadata("/proc/self").is_ok_and(|m| m.uid() == 0)
 }
@@ -80,7 +97,12 @@ fn in_place_refuses_what_is_not_a_regular_file() {
     let dir = scratch("files-streams");
     let heads = heads();
     // `-` (the default path) and /dev/stdin: nothing to replace.
-    for path in ["-", "/dev/stdin"] {
+    let paths: &[&str] = if cfg!(unix) {
+        &["-", "/dev/stdin"]
+    } else {
+        &["-"]
+    };
+    for &path in paths {
         let output = run_in(&dir, &["rewrite", "--in-place", "--heads", &heads, path]);
         assert_exit(&output, 2);
         assert!(
@@ -94,19 +116,17 @@ fn in_place_refuses_what_is_not_a_regular_file() {
     assert!(names(&dir).is_empty(), "written: {:?}", names(&dir));
     // A FIFO is refused before it is read (reading it would wait for a writer).
     let fifo = dir.join("PIPE.MPF");
-    let made = Command::new("mkfifo").arg(&fifo).status();
-    if made.is_ok_and(|s| s.success()) {
+    if self::fifo(&fifo) {
         let output = rewrite_in_place(&dir, &fifo);
         assert_exit(&output, 2);
         assert!(String::from_utf8_lossy(&output.stderr).contains("a FIFO"));
         assert_eq!(names(&dir), ["PIPE.MPF"]);
-    } else {
-        eprintln!("NOTE: mkfifo is not available here; the FIFO case was skipped");
     }
     let _ = fs::remove_dir_all(&dir);
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn in_place_writes_through_a_symlink_and_keeps_the_link() {
     let dir = scratch("files-symlink");
     let real = dir.join("real");
@@ -136,6 +156,7 @@ fn in_place_writes_through_a_symlink_and_keeps_the_link() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn in_place_keeps_the_mode_and_the_owner() {
     let dir = scratch("files-mode");
     let path = dir.join("PRIVATE.MPF");
@@ -199,6 +220,7 @@ fn in_place_keeps_the_mode_and_the_owner() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn the_backup_is_never_written_through_a_planted_link() {
     let dir = scratch("files-backup-link");
     let path = dir.join("PART.MPF");
@@ -264,6 +286,7 @@ fn output_onto_the_input_is_an_in_place_rewrite() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn directory_walks_take_every_file_once_through_looping_links() {
     let dir = scratch("files-loops");
     let programs = dir.join("programs");
@@ -346,7 +369,7 @@ fn a_folder_is_rewritten_file_by_file() {
 
     let output = run_in(&dir, &["rewrite", "--check", "--heads", &heads, "in"]);
     assert_exit(&output, 1);
-    let stderr = String::from_utf8_lossy(&output.stderr);
+    let stderr = slashes(&String::from_utf8_lossy(&output.stderr));
     for name in ["in/A.MPF: would rewrite 1", "in/sub/B.MPF: would rewrite 1"] {
         assert!(stderr.contains(name), "{stderr}");
     }
@@ -355,11 +378,11 @@ fn a_folder_is_rewritten_file_by_file() {
     // eval over the folder: one JSON array, a document per program in order.
     let output = run_in(&dir, &["eval", "--json", "--heads", &heads, "in"]);
     let documents: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
-    let paths: Vec<&str> = documents
+    let paths: Vec<String> = documents
         .as_array()
         .expect("an array for a folder")
         .iter()
-        .filter_map(|d| d["path"].as_str())
+        .filter_map(|d| d["path"].as_str().map(slashes))
         .collect();
     assert_eq!(
         paths,
@@ -381,15 +404,21 @@ fn a_folder_is_rewritten_file_by_file() {
         b"G1 X1 F100\nM17\n"
     );
 
-    fs::write(dir.join("in/sub/GONE.MPF"), b"").expect("GONE");
-    fs::set_permissions(
-        dir.join("in/sub/GONE.MPF"),
-        fs::Permissions::from_mode(0o000),
-    )
-    .expect("mode");
-    let root = fs::read(dir.join("in/sub/GONE.MPF")).is_ok(); // root reads anything
+    // A file nobody may read (a mode Windows has no counterpart of).
+    #[cfg(unix)]
+    let unreadable = {
+        fs::write(dir.join("in/sub/GONE.MPF"), b"").expect("GONE");
+        fs::set_permissions(
+            dir.join("in/sub/GONE.MPF"),
+            fs::Permissions::from_mode(0o000),
+        )
+        .expect("mode");
+        fs::read(dir.join("in/sub/GONE.MPF")).is_err() // root reads anything
+    };
+    #[cfg(not(unix))]
+    let unreadable = false;
     let output = run_in(&dir, &["rewrite", "--in-place", "--heads", &heads, "in"]);
-    assert_exit(&output, if root { 1 } else { 2 });
+    assert_exit(&output, if unreadable { 2 } else { 1 });
     assert_eq!(fs::read(dir.join("in/A.MPF")).expect("A"), rewritten);
     assert_eq!(fs::read(dir.join("in/sub/B.MPF")).expect("B"), rewritten);
     assert_eq!(fs::read(dir.join("in/sub/BAD.MPF")).expect("BAD"), REFUSED);
@@ -410,6 +439,7 @@ fn a_folder_is_rewritten_file_by_file() {
 }
 
 #[test]
+#[cfg(unix)] // a FIFO: see the module's comment
 fn check_prints_each_file_as_soon_as_the_files_before_it_are_done() {
     let dir = scratch("files-stream");
     fs::write(dir.join("A.MPF"), b"GOTOF NOWHERE\nM30\n").expect("write");
@@ -454,8 +484,13 @@ fn check_prints_each_file_as_soon_as_the_files_before_it_are_done() {
     let _ = fs::remove_dir_all(&dir);
 }
 
-/// A FIFO at `path`, or `false` (and a note) where mkfifo is missing.
+/// A FIFO at `path`, or `false` (and a note) where mkfifo is missing (as
+/// on Windows, which has no FIFOs in the file system).
 fn fifo(path: &Path) -> bool {
+    if cfg!(not(unix)) {
+        eprintln!("NOTE: Windows has no FIFOs in the file system; the FIFO cases were skipped");
+        return false;
+    }
     let made = Command::new("mkfifo")
         .arg(path)
         .status()
@@ -467,6 +502,7 @@ fn fifo(path: &Path) -> bool {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn directory_walks_skip_links_and_whatever_is_no_regular_file_and_say_so() {
     let dir = scratch("files-walk-links");
     let programs = dir.join("programs");
@@ -553,6 +589,7 @@ fn files_the_settings_name_must_be_regular_files_of_a_sane_size() {
 }
 
 #[test]
+#[cfg(unix)] // made with a Unix shell's `cd -P`; Windows' limit is another (MAX_PATH)
 fn a_program_deeper_than_the_path_limit_is_an_error_that_names_it() {
     let dir = scratch("files-deep");
     fs::write(dir.join("TOP.MPF"), b"N10 X1\nM30\n").expect("write");
@@ -578,6 +615,7 @@ fn a_program_deeper_than_the_path_limit_is_an_error_that_names_it() {
 }
 
 #[test]
+#[cfg(unix)] // symbolic links, modes, owners: see the module's comment
 fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
     let dir = scratch("files-heads-link");
     let programs = dir.join("programs");
@@ -603,5 +641,135 @@ fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
     );
     let shown = String::from_utf8_lossy(&output.stdout);
     assert!(shown.contains("SECRETHEAD"), "{shown}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Names are found in any case, as the control and Windows find them:
+/// `head_def.spf` beside a program is its HEAD_DEF and `SINUPREP.TOML` its
+/// settings, on every platform; where the file system holds two names that
+/// differ only in case, a program that would use them is an error naming
+/// both (a copy to the control or to Windows keeps either one).
+#[test]
+fn names_are_found_in_any_case_and_two_spellings_are_an_error() {
+    let dir = scratch("files-case");
+    let parts = dir.join("parts");
+    fs::create_dir_all(&parts).expect("dir");
+    let repo = support::repo();
+    fs::copy(
+        repo.join("samples/PAPER_EXAMPLE3.MPF"),
+        parts.join("PART.MPF"),
+    )
+    .expect("program");
+    fs::copy(
+        repo.join("samples/HEAD_DEF.SPF"),
+        parts.join("head_def.spf"),
+    )
+    .expect("heads");
+    fs::write(dir.join("SINUPREP.TOML"), "precision = 2\n").expect("settings");
+    let output = run_in(&parts, &["rewrite", "PART.MPF"]);
+    assert_exit(&output, 0);
+    let rewritten = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        rewritten.contains("37.79") && !rewritten.contains("37.792346"),
+        "HEAD_DEF and the settings' precision: {rewritten}"
+    );
+
+    fs::write(parts.join("HEAD_DEF.SPF"), "PROC HEAD_DEF\nM17\n").expect("second");
+    if names(&parts).len() < 3 {
+        eprintln!("NOTE: this file system ignores case; the case of two spellings was skipped");
+        let _ = fs::remove_dir_all(&dir);
+        return;
+    }
+    let output = run_in(&parts, &["rewrite", "PART.MPF"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("HEAD_DEF: ./HEAD_DEF.SPF and ./head_def.spf differ only in case"),
+        "{stderr}"
+    );
+    fs::remove_file(parts.join("HEAD_DEF.SPF")).expect("remove");
+    fs::write(dir.join("sinuprep.toml"), "precision = 3\n").expect("second");
+    let output = run_in(&parts, &["check", "PART.MPF"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("SINUPREP.TOML and") && stderr.contains("differ only in case"),
+        "{stderr}"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Paths as people on Windows give them: a drive letter and backslashes
+/// (`C:\CAM\OUT\PART.MPF`), forward slashes, the verbatim form (`\\?\C:\`),
+/// from another directory; HEAD_DEF is found beside the program, the
+/// backup written beside it, and a read-only file refused. UNC paths (`\\server\share\...`) need a share,
+/// which Wine does not offer: they are not tried here.
+#[test]
+#[cfg(windows)]
+fn windows_paths_with_a_drive_letter_and_backslashes() {
+    let dir = scratch("files-windows-paths");
+    let repo = support::repo();
+    let original = fs::read(repo.join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    fs::write(dir.join("PART.MPF"), &original).expect("program");
+    fs::copy(repo.join("samples/HEAD_DEF.SPF"), dir.join("head_def.spf")).expect("heads");
+    fs::copy(
+        repo.join("tests/fixtures/lint/N022_trigger.mpf"),
+        dir.join("N022.MPF"),
+    )
+    .expect("fixture");
+    let expected = run_in(&dir, &["rewrite", "PART.MPF"]);
+    assert_exit(&expected, 0);
+    let program = dir.join("PART.MPF");
+    let program = program.to_str().expect("utf-8");
+    assert!(
+        program.as_bytes().get(1) == Some(&b':') && program.contains('\\'),
+        "{program}"
+    );
+    for path in [
+        program.to_string(),
+        program.replace('\\', "/"),
+        format!(r"\\?\{program}"),
+    ] {
+        let output = run_in(&repo, &["rewrite", &path]);
+        assert_exit(&output, 0);
+        assert_eq!(output.stdout, expected.stdout, "{path}");
+    }
+    let output = run_in(&repo, &["rewrite", "--in-place", program]);
+    assert_exit(&output, 0);
+    assert_eq!(
+        fs::read(dir.join("PART.MPF")).expect("read"),
+        expected.stdout
+    );
+    assert_eq!(fs::read(dir.join("PART.MPF.bak")).expect("bak"), original);
+    assert_eq!(
+        names(&dir),
+        ["N022.MPF", "PART.MPF", "PART.MPF.bak", "head_def.spf"]
+    );
+    // The read-only attribute is honoured: refused, the file untouched.
+    let rewritten = dir.join("PART.MPF");
+    fs::write(&rewritten, &original).expect("the original again");
+    let mut permissions = fs::metadata(&rewritten).expect("metadata").permissions();
+    permissions.set_readonly(true);
+    // (Wine keeps the attribute as Unix mode bits, which do not stop root:
+    // the tool must refuse by the attribute, whoever runs it.)
+    fs::set_permissions(&rewritten, permissions.clone()).expect("read-only");
+    let output = run_in(&repo, &["rewrite", "--in-place", "--no-backup", program]);
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr).contains("read-only"));
+    assert_eq!(fs::read(&rewritten).expect("read"), original);
+    // Windows: the attribute cleared (no mode bits made world-writable).
+    #[allow(clippy::permissions_set_readonly_false)]
+    permissions.set_readonly(false);
+    fs::set_permissions(&rewritten, permissions).expect("writable");
+    // A finding names the file as it was given.
+    let checked = dir.join("N022.MPF");
+    let checked = checked.to_str().expect("utf-8");
+    let output = run_in(&repo, &["check", "--format", "short", checked]);
+    assert_exit(&output, 1);
+    let report = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        report.starts_with(&format!("{checked}:2:12: error[N022]")),
+        "{report}"
+    );
     let _ = fs::remove_dir_all(&dir);
 }

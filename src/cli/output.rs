@@ -18,7 +18,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::cli::error::CliError;
-use crate::cli::platform::{identity, keep_owner_and_mode, kind};
+use crate::cli::platform::{identity, keep_owner_and_mode, kind, rename_over};
+use crate::workspace::file::canonical;
 
 /// The regular file an in-place rewrite of `path` replaces: the file a
 /// symlink points to (the link stays). Standard input, FIFOs, devices and
@@ -31,7 +32,7 @@ pub fn in_place_target(path: &Path) -> Result<PathBuf, CliError> {
     if path == Path::new("-") {
         return Err(refuse("standard input has no file to rewrite"));
     }
-    let target = fs::canonicalize(path).map_err(|source| CliError::Read {
+    let target = canonical(path).map_err(|source| CliError::Read {
         path: path.to_path_buf(),
         source,
     })?;
@@ -69,7 +70,7 @@ pub fn write_atomically(
         source,
     };
     // A symlink is written through: the file it points to is replaced.
-    let target = fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let target = canonical(path).unwrap_or_else(|_| path.to_path_buf());
     let existing = fs::metadata(&target).ok();
     if let Some(metadata) = existing.as_ref().filter(|m| !m.is_file()) {
         if metadata.is_dir() {
@@ -125,7 +126,7 @@ fn replace(
             keep_owner_and_mode(&file, like)?;
         }
         let path = temporary.named(&file, &dir, &name)?;
-        fs::rename(path, target)?;
+        rename_over(&path, target)?;
         // The rename is durable once the directory is synced.
         if let Ok(dir) = File::open(&dir) {
             let _ = dir.sync_all();

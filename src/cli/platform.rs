@@ -1,6 +1,7 @@
 //! What differs between the platforms the command line runs on, in one
 //! place: a file's identity, the modes and owners a replaced file keeps, a
-//! temporary file nobody else reads, and the file behind standard input.
+//! temporary file nobody else reads, the rename that replaces a file, and
+//! the file behind standard input.
 //! Unix (Linux, macOS) keeps all of it; Windows has no owner, group or mode
 //! bits to keep (the read-only attribute is kept), and its identity of a
 //! file is not in the standard library's stable API, so a file met twice
@@ -95,6 +96,33 @@ pub fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> 
 #[cfg(not(unix))]
 pub fn keep_owner_and_mode(file: &File, like: &Metadata) -> std::io::Result<()> {
     file.set_permissions(like.permissions())
+}
+
+/// Renames `from` over `to`, replacing it. On Windows a file that another
+/// process holds open (a reader, another run, an editor, a virus scanner)
+/// cannot be replaced until it is closed (access denied; Wine as well): the
+/// rename is tried again for about two seconds, then fails, `to` untouched.
+pub fn rename_over(from: &Path, to: &Path) -> std::io::Result<()> {
+    #[cfg(windows)]
+    {
+        let mut wait = std::time::Duration::from_millis(5);
+        let mut waited = std::time::Duration::ZERO;
+        loop {
+            match std::fs::rename(from, to) {
+                Err(error)
+                    if error.kind() == std::io::ErrorKind::PermissionDenied
+                        && waited < std::time::Duration::from_secs(2) =>
+                {
+                    std::thread::sleep(wait);
+                    waited += wait;
+                    wait = (wait * 2).min(std::time::Duration::from_millis(100));
+                }
+                result => return result,
+            }
+        }
+    }
+    #[cfg(not(windows))]
+    std::fs::rename(from, to)
 }
 
 /// What a file that is not a regular one is, for messages.

@@ -69,11 +69,12 @@ impl From<SeverityName> for Severity {
 }
 
 impl Config {
-    /// `--config FILE`, or the nearest `sinuprep.toml` from `start` upward.
+    /// `--config FILE`, or the nearest `sinuprep.toml` (any case) from
+    /// `start` upward.
     pub fn find(explicit: Option<&Path>, start: &Path) -> Result<Config, SettingsError> {
         let path = match explicit {
             Some(path) => Some(path.to_path_buf()),
-            None => nearest(start),
+            None => nearest(start, super::folder::settings_in)?,
         };
         match path {
             Some(path) => Config::read(&path),
@@ -152,23 +153,31 @@ fn with_did_you_mean(message: &str) -> String {
     }
 }
 
-/// The nearest `sinuprep.toml` from `start` upward.
-pub(crate) fn nearest(start: &Path) -> Option<PathBuf> {
+/// The nearest `sinuprep.toml` from `start` upward, as `settings_in` finds
+/// it in each directory (any case: the name is looked for in the
+/// directory's listing, not asked of the file system).
+pub(crate) fn nearest(
+    start: &Path,
+    mut settings_in: impl FnMut(&Path) -> Result<Option<PathBuf>, SettingsError>,
+) -> Result<Option<PathBuf>, SettingsError> {
     let start = if start.is_dir() {
         start.to_path_buf()
     } else {
         start.parent().map(Path::to_path_buf).unwrap_or_default()
     };
-    let absolute = std::fs::canonicalize(if start.as_os_str().is_empty() {
+    let Ok(absolute) = super::file::canonical(if start.as_os_str().is_empty() {
         Path::new(".")
     } else {
         &start
-    })
-    .ok()?;
-    absolute
-        .ancestors()
-        .map(|dir| dir.join(FILE_NAME))
-        .find(|candidate| candidate.is_file())
+    }) else {
+        return Ok(None);
+    };
+    for dir in absolute.ancestors() {
+        if let Some(found) = settings_in(dir)? {
+            return Ok(Some(found));
+        }
+    }
+    Ok(None)
 }
 
 #[cfg(test)]

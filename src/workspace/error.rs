@@ -1,6 +1,7 @@
 //! What can be wrong with a program's settings: a file they name that cannot
-//! be read, `sinuprep.toml` itself, a rule code, a measured value. Each
-//! names the file, line and key it comes from.
+//! be read, two files whose names differ only in case, `sinuprep.toml`
+//! itself, a rule code, a measured value. Each names the file, line and key
+//! it comes from.
 
 use std::path::PathBuf;
 
@@ -27,6 +28,18 @@ pub enum SettingsError {
         key: &'static str,
         config: String,
         source: std::io::Error,
+    },
+
+    #[error("{what}: {} and {} differ only in case", first.display(), second.display())]
+    #[diagnostic(
+        code(sinuprep::case),
+        help("the control and Windows hold one file under a name whatever its case, so which of the two a copy there keeps is chance: remove or rename one{hint}")
+    )]
+    CaseClash {
+        what: String,
+        first: PathBuf,
+        second: PathBuf,
+        hint: &'static str,
     },
 
     #[error("{path}:{line}:{column}: {why}")]

@@ -3,10 +3,11 @@
 //! subprograms): each must be a regular file of at most [`LIMIT`] bytes.
 //! A FIFO would hang the run and a device never ends (`--definitions
 //! /dev/zero` once took 4 GB); no control holds a settings file near the
-//! limit. Programs are not read here: they are mapped, at any size.
+//! limit. Programs are not read here: they are mapped, at any size. Also
+//! the canonical path of a file, as people are shown it.
 
 use std::io::Read;
-use std::path::Path;
+use std::path::{Component, Path, PathBuf, Prefix};
 
 /// The most a settings file may hold: 64 MiB.
 pub const LIMIT: u64 = 64 << 20;
@@ -56,6 +57,64 @@ fn too_large() -> std::io::Error {
     )
 }
 
+/// `path` made absolute with every link resolved, as
+/// [`std::fs::canonicalize`] makes it, but on Windows without the verbatim
+/// prefix where the path means the same without it (`C:\CAM\PART.MPF`, not
+/// `\\?\C:\CAM\PART.MPF`; `\\server\share\...`, not `\\?\UNC\server\share\...`):
+/// it is shown to people, and the standard library adds the prefix again
+/// where a long path needs it. Elsewhere the same as `canonicalize`.
+pub fn canonical(path: &Path) -> std::io::Result<PathBuf> {
+    let canonical = std::fs::canonicalize(path)?;
+    Ok(without_verbatim(&canonical).unwrap_or(canonical))
+}
+
+/// `path` without its verbatim prefix (`\\?\`), or `None` where there is
+/// none or where a name would mean something else without it: one that
+/// ends in a dot or a blank (which Windows otherwise drops), or a device's
+/// name (`NUL`, `COM1`, ...). Written with `Path::components`, so it
+/// compiles alike everywhere (only Windows paths have a prefix).
+fn without_verbatim(path: &Path) -> Option<PathBuf> {
+    let mut components = path.components();
+    let Some(Component::Prefix(prefix)) = components.next() else {
+        return None;
+    };
+    let mut plain = match prefix.kind() {
+        Prefix::VerbatimDisk(letter) => PathBuf::from(format!("{}:\\", char::from(letter))),
+        Prefix::VerbatimUNC(server, share) => {
+            let mut unc = std::ffi::OsString::from("\\\\");
+            unc.push(server);
+            unc.push("\\");
+            unc.push(share);
+            unc.push("\\");
+            PathBuf::from(unc)
+        }
+        _ => return None,
+    };
+    for component in components {
+        match component {
+            Component::RootDir => {}
+            Component::Normal(name) => {
+                let text = name.to_str()?;
+                let stem = text.split('.').next().unwrap_or(text).trim_end();
+                let device = ["CON", "PRN", "AUX", "NUL"]
+                    .iter()
+                    .any(|d| stem.eq_ignore_ascii_case(d))
+                    || (stem.len() == 4
+                        && ["COM", "LPT"]
+                            .iter()
+                            .any(|d| stem.as_bytes()[..3].eq_ignore_ascii_case(d.as_bytes()))
+                        && stem.as_bytes()[3].is_ascii_digit());
+                if device || text.ends_with('.') || text.ends_with(' ') {
+                    return None;
+                }
+                plain.push(name);
+            }
+            _ => return None,
+        }
+    }
+    Some(plain)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -80,5 +139,25 @@ mod tests {
         let error = read(&big).expect_err("too large");
         assert_eq!(error.kind(), std::io::ErrorKind::FileTooLarge);
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_verbatim_prefix_is_dropped_where_the_path_means_the_same_without() {
+        if cfg!(windows) {
+            let plain = |text: &str| without_verbatim(Path::new(text));
+            assert_eq!(
+                plain(r"\\?\C:\CAM\OUT\PART.MPF"),
+                Some(PathBuf::from(r"C:\CAM\OUT\PART.MPF"))
+            );
+            assert_eq!(
+                plain(r"\\?\UNC\server\share\PART.MPF"),
+                Some(PathBuf::from(r"\\server\share\PART.MPF"))
+            );
+            assert_eq!(plain(r"\\?\C:\CAM\NUL.MPF"), None);
+            assert_eq!(plain(r"\\?\C:\CAM\PART."), None);
+            assert_eq!(plain(r"C:\CAM\PART.MPF"), None);
+        } else {
+            assert_eq!(without_verbatim(Path::new("/tmp/PART.MPF")), None);
+        }
     }
 }

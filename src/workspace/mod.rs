@@ -13,6 +13,7 @@
 mod config;
 mod error;
 pub mod file;
+mod folder;
 mod values;
 
 use std::collections::HashMap;
@@ -21,6 +22,8 @@ use std::sync::{Arc, Mutex};
 
 pub use config::{Config, SeverityName, FILE_NAME};
 pub use error::SettingsError;
+
+use folder::Listing;
 
 use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
@@ -80,13 +83,14 @@ pub struct Resolved {
 /// for the programs so far, shared by the threads that check them: the
 /// definition files (by the list that names them), the directories (each
 /// listed once, however many programs lie in it: looking beside each program
-/// anew made a folder of n programs cost n listings of n names), the
-/// settings files and the HEAD_DEF files.
+/// anew made a folder of n programs cost n listings of n names), their
+/// subprograms, the settings files and the HEAD_DEF files.
 #[derive(Default)]
 pub struct Workspace {
     given: Given,
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
-    folders: Mutex<HashMap<PathBuf, Arc<Folder>>>,
+    listings: Mutex<HashMap<PathBuf, Arc<Listing>>>,
+    subprograms: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
     machines: Mutex<HashMap<PathBuf, Arc<OnMachine>>>,
     /// The nearest `sinuprep.toml` of a program's directory.
     nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
@@ -97,14 +101,6 @@ pub struct Workspace {
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
 /// the parameter count of its PROC.
 type Procedures = HashMap<String, usize>;
-
-/// What the programs of one directory look up in it, from one listing.
-#[derive(Default)]
-struct Folder {
-    procedures: Arc<Procedures>,
-    /// Its `HEAD_DEF.SPF`, any case.
-    head_def: Option<PathBuf>,
-}
 
 /// `cache[key]`, made by `make` the first time it is asked for. Two threads
 /// asking at once may both make it; one is kept.
@@ -203,8 +199,9 @@ impl Workspace {
         })
     }
 
-    /// `--config FILE`, or the nearest `sinuprep.toml` from `start` upward;
-    /// each directory is looked up and each file read once a run.
+    /// `--config FILE`, or the nearest `sinuprep.toml` (any case) from
+    /// `start` upward; each directory is looked up and each file read once a
+    /// run.
     fn config(&self, start: &Path) -> Result<Config, SettingsError> {
         let path = match &self.given.config {
             Some(path) => Some(path.clone()),
@@ -215,7 +212,12 @@ impl Workspace {
                     start.parent().unwrap_or(Path::new(""))
                 };
                 let key = dir.to_path_buf();
-                cached(&self.nearest, &key, || Ok(config::nearest(start)))?
+                cached(&self.nearest, &key, || {
+                    config::nearest(start, |dir| match self.listing(dir) {
+                        Ok(listing) => listing.settings(),
+                        Err(_) => folder::settings_in(dir),
+                    })
+                })?
             }
         };
         match path {
@@ -245,9 +247,11 @@ impl Workspace {
         for text in &given.set {
             values::read_set(text, &mut supplied)?;
         }
-        let heads = match setting(&given.heads, &config.heads, "heads")
-            .or_else(|| self.heads_beside(program).map(|path| (path, None)))
-        {
+        let heads = match setting(&given.heads, &config.heads, "heads") {
+            Some(given) => Some(given),
+            None => self.heads_beside(program)?.map(|path| (path, None)),
+        };
+        let heads = match heads {
             Some((path, key)) => Some(cached(&self.heads, &path, || {
                 Ok(Heads::read(path.display().to_string(), &read(&path, key)?))
             })?),
@@ -366,8 +370,8 @@ impl Workspace {
         for (index, (dir, from_config)) in searched.iter().enumerate() {
             // The program's own directory may be unreadable (stdin in a
             // directory one cannot list): nothing is found there.
-            let found = match self.folder(dir) {
-                Ok(found) => found.procedures.clone(),
+            let found = match self.listing(dir) {
+                Ok(listing) => self.subprograms_in(dir, &listing)?,
                 Err(_) if index == 0 => continue,
                 Err(source) => {
                     return Err(match from_config {
@@ -397,56 +401,54 @@ impl Workspace {
         Ok(out.unwrap_or_default())
     }
 
-    /// What the programs of `dir` look up there: its subprograms (its
-    /// `.SPF` files, any case) and its HEAD_DEF. Each directory is listed
-    /// once a run.
-    fn folder(&self, dir: &Path) -> std::io::Result<Arc<Folder>> {
-        if let Some(known) = self.folders.lock().ok().and_then(|f| f.get(dir).cloned()) {
+    /// The names in `dir` that matter to a program beside them (any case).
+    /// Each directory is listed once a run.
+    fn listing(&self, dir: &Path) -> std::io::Result<Arc<Listing>> {
+        let known = self.listings.lock().ok().and_then(|l| l.get(dir).cloned());
+        if let Some(known) = known {
             return Ok(known);
         }
-        let mut procedures = Procedures::new();
-        let mut head_def = None;
-        for entry in std::fs::read_dir(dir)?.flatten() {
-            // A link in the folder names what may lie outside the tree.
-            let link = entry.file_type().is_ok_and(|kind| kind.is_symlink());
-            if link && !self.given.follow_links {
-                continue;
-            }
-            let path = entry.path();
-            let stem = match (path.file_stem(), path.extension()) {
-                (Some(stem), Some(extension)) if extension.eq_ignore_ascii_case("spf") => stem,
-                _ => continue,
-            };
-            if head_def.is_none() && stem.eq_ignore_ascii_case("HEAD_DEF") {
-                // Read when a program needs it: one that is no regular file
-                // is then an error naming it.
-                head_def = Some(path.clone());
-            }
-            // A subprogram that vanished, cannot be read, or is no regular
-            // file of a sane size is not found (its calls are unchecked).
-            let Ok(source) = file::read(&path) else {
-                continue;
-            };
-            let mut environment = Environment::default();
-            environment.read_procedure(&source);
-            if let Some(&count) = environment.procedures.values().next() {
-                procedures.insert(stem.to_string_lossy().to_ascii_uppercase(), count);
-            }
+        let listing = Arc::new(Listing::read(dir)?);
+        if let Ok(mut listings) = self.listings.lock() {
+            listings.insert(dir.to_path_buf(), listing.clone());
         }
-        let found = Arc::new(Folder {
-            procedures: Arc::new(procedures),
-            head_def,
-        });
-        if let Ok(mut folders) = self.folders.lock() {
-            folders.insert(dir.to_path_buf(), found.clone());
-        }
-        Ok(found)
+        Ok(listing)
+    }
+
+    /// The subprograms of `dir` (its `.SPF` files, any case, and the
+    /// parameter count of each one's PROC), each read once a run.
+    fn subprograms_in(
+        &self,
+        dir: &Path,
+        listing: &Listing,
+    ) -> Result<Arc<Procedures>, SettingsError> {
+        cached(&self.subprograms, &dir.to_path_buf(), || {
+            let mut procedures = Procedures::new();
+            for (name, path) in listing.subprograms(self.given.follow_links)? {
+                // A subprogram that vanished, cannot be read, or is no
+                // regular file of a sane size is not found (its calls are
+                // unchecked).
+                let Ok(source) = file::read(&path) else {
+                    continue;
+                };
+                let mut environment = Environment::default();
+                environment.read_procedure(&source);
+                if let Some(&count) = environment.procedures.values().next() {
+                    procedures.insert(name, count);
+                }
+            }
+            Ok(Arc::new(procedures))
+        })
     }
 
     /// A HEAD_DEF.SPF (any case) beside the program (in the current
-    /// directory for stdin).
-    fn heads_beside(&self, program: &Path) -> Option<PathBuf> {
-        self.folder(&own_directory(program)).ok()?.head_def.clone()
+    /// directory for stdin), read when a program needs it: one that is no
+    /// regular file is then an error naming it.
+    fn heads_beside(&self, program: &Path) -> Result<Option<PathBuf>, SettingsError> {
+        match self.listing(&own_directory(program)) {
+            Ok(listing) => listing.head_def(self.given.follow_links),
+            Err(_) => Ok(None),
+        }
     }
 }
 
