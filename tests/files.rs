@@ -605,3 +605,47 @@ fn a_head_def_beside_the_program_is_not_read_through_a_link_unless_asked() {
     assert!(shown.contains("SECRETHEAD"), "{shown}");
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_binary_file_is_skipped_by_a_walk_and_not_linted_when_named() {
+    let dir = scratch("files-binary");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // An executable saved under a program's name: text that would give
+    // findings, after a NUL.
+    let mut elf = b"\x7fELF\x02\x01\x01\0\0\0\0\0\0\0\0\0".to_vec();
+    elf.extend_from_slice(b"GOTOF NOWHERE\nX=Y=Z\n");
+    fs::write(programs.join("B.MPF"), &elf).expect("write");
+    fs::write(programs.join("C.MPF"), b"N10 X2\nM30\n").expect("write");
+    let output = run_in(&dir, &["check", "--format", "json", "programs"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("note: skipped programs/B.MPF: a binary file"),
+        "{stderr}"
+    );
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let files: Vec<&str> = report["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .map(|f| f["path"].as_str().expect("path"))
+        .collect();
+    assert_eq!(files, ["programs/A.MPF", "programs/C.MPF"]);
+
+    // Named, it is not linted either, and the note says so.
+    let output = run_in(&dir, &["check", "--format", "short", "programs/B.MPF"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        output.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&output.stdout)
+    );
+    assert!(
+        stderr.contains("note: programs/B.MPF: not checked: a binary file"),
+        "{stderr}"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}

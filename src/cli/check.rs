@@ -9,7 +9,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, read, Bytes, Found};
+use crate::cli::input::{again, binary, expand, read, Bytes, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
@@ -38,6 +38,30 @@ struct Checked {
     /// The machine the file was checked on, with its findings the
     /// selection keeps: reported once a run, before the first file.
     machine: Option<(Arc<OnMachine>, Vec<Diagnostic>)>,
+}
+
+impl Checked {
+    /// A binary file: not linted, and not counted as a program checked. A
+    /// walk skips it, as it skips a link; one named is not checked either
+    /// (ripgrep searches a binary file named and says so; a linter's
+    /// findings in one would be noise), and the note says why.
+    fn binary(found: &Found, name: &str) -> Self {
+        let name = printable(name);
+        let notes = if found.was_walked() {
+            format!("note: skipped {name}: a binary file (NUL bytes), not a program\n")
+        } else {
+            format!("note: {name}: not checked: a binary file (NUL bytes), not a program\n")
+        };
+        Self {
+            report: Report::Text(String::new()),
+            fails: false,
+            counts: Counts::default(),
+            unchecked: Unchecked::default(),
+            files: 0,
+            notes: Some(notes),
+            machine: None,
+        }
+    }
 }
 
 /// What a program checked without its machine's environment (no
@@ -301,6 +325,9 @@ fn check_file(
         }
         _ => path.to_path_buf(),
     };
+    if binary(&file.bytes) {
+        return Ok(Checked::binary(found, &file.name));
+    }
     let resolved = workspace.for_check(&named)?;
     let deny_warnings = resolved.deny_warnings;
     let mut settings = resolved.settings;
@@ -401,6 +428,8 @@ impl Report {
 /// SARIF's results for the log written at the end.
 fn print(report: Report, format: Format, first: bool, sarif: &mut Sarif) -> Result<(), CliError> {
     match report {
+        // A file that gave no program (a binary file skipped).
+        Report::Text(part) if part.is_empty() => Ok(()),
         Report::Text(part) if format == Format::Json && !first => {
             write_stdout(JSON_BETWEEN.as_bytes())?;
             write_stdout(part.as_bytes())
