@@ -9,13 +9,14 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{again, binary, expand, read, Bytes, Found};
+use crate::cli::input::{again, binary, read, Bytes, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
     github, human, json_end, json_file, printable, short, FileReport, Located, Sarif, JSON_BETWEEN,
     JSON_START,
 };
+use crate::cli::walk::{expand, Walk};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
@@ -220,6 +221,7 @@ enum Report {
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(Given {
         follow_links: args.follow_links,
+        walk: args.walk.given(),
         ..analysis::given_to_check(args)
     })?;
     // No path: the current directory, as ruff and ripgrep do; stdin only
@@ -229,7 +231,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, Some(_)) => vec![PathBuf::from("-")],
         (true, None) => vec![PathBuf::from(".")],
     };
-    let paths = expand(&named, args.allow_empty, args.follow_links)?;
+    let paths = expand(
+        &named,
+        &Walk {
+            allow_empty: args.allow_empty,
+            follow_links: args.follow_links,
+            hidden: args.walk.hidden,
+            workspace: &workspace,
+        },
+    )?;
     let colour = crate::cli::colour(std::io::stdout().is_terminal());
     let work = |index: usize| match &paths[index] {
         Ok(found) => check_file(found, args, colour, &workspace),

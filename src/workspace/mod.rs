@@ -13,6 +13,7 @@
 mod config;
 mod error;
 pub mod file;
+mod patterns;
 mod values;
 
 use std::collections::HashMap;
@@ -21,6 +22,7 @@ use std::sync::{Arc, Mutex};
 
 pub use config::{Config, SeverityName, FILE_NAME};
 pub use error::SettingsError;
+pub use patterns::{Patterns, WalkGiven, DEFAULT_INCLUDE};
 
 use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
@@ -55,6 +57,8 @@ pub struct Given {
     /// the program, in a cycle directory) is followed, as the walk's
     /// `--follow-links`; by default it is not found there.
     pub follow_links: bool,
+    /// Which files a directory walk takes.
+    pub walk: WalkGiven,
     /// The machine's swivel data records, for `check`'s swivel rules.
     pub machine: Option<PathBuf>,
     /// Whether the records' fine offsets apply (SD42974).
@@ -90,6 +94,8 @@ pub struct Workspace {
     /// The nearest `sinuprep.toml` of a program's directory.
     nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
     configs: Mutex<HashMap<PathBuf, Config>>,
+    /// The patterns of each settings file (`None`: no file).
+    patterns: Mutex<HashMap<Option<PathBuf>, Arc<Patterns>>>,
     heads: Mutex<HashMap<PathBuf, Heads>>,
 }
 
@@ -216,6 +222,18 @@ impl Workspace {
             Some(path) => cached(&self.configs, &path, || Config::read(&path)),
             None => Ok(Config::default()),
         }
+    }
+
+    /// The patterns that say which files a walk takes in `dir`: those of
+    /// its settings file (the nearest, or `--config`) and the command line.
+    pub fn patterns(&self, dir: &Path) -> Result<Arc<Patterns>, SettingsError> {
+        self.patterns_of(&self.config(dir)?)
+    }
+
+    fn patterns_of(&self, config: &Config) -> Result<Arc<Patterns>, SettingsError> {
+        cached(&self.patterns, &config.path, || {
+            Ok(Arc::new(Patterns::new(config, &self.given.walk)?))
+        })
     }
 
     /// Measured values and HEAD_DEF: given first, then `sinuprep.toml`.
