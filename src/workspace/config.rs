@@ -58,6 +58,9 @@ pub struct Config {
     /// Whether a walk leaves out what `.gitignore`, `.ignore` and git's
     /// exclude files ignore [default: true].
     pub respect_gitignore: Option<bool>,
+    /// Rule codes or prefixes not reported in the files a pattern matches
+    /// (`"probe/*" = ["N005"]`), over `select` and `ignore`.
+    pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -133,7 +136,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 20] = [
+const KEYS: [&str; 21] = [
     "select",
     "ignore",
     "severity-min",
@@ -154,6 +157,7 @@ const KEYS: [&str; 20] = [
     "exclude",
     "extend-exclude",
     "respect-gitignore",
+    "per-file-ignores",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

@@ -167,6 +167,10 @@ impl Workspace {
                 .or(config.severity_min.map(Severity::from))
                 .unwrap_or(Severity::Info),
         };
+        if program != Path::new("-") {
+            let ignored = self.patterns_of(config)?.ignored_in(program);
+            resolved.settings.selection.ignore.extend(ignored);
+        }
         resolved.settings.environment = self.environment(config)?;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
         resolved.settings.machine = self.machine(config)?;

@@ -1,5 +1,6 @@
 //! The glob patterns of the settings, compiled once per settings file:
-//! which files a directory walk takes (`include`, `exclude`, as ruff's). A pattern is read as a
+//! which files a directory walk takes (`include`, `exclude`, as ruff's) and
+//! which rules a file ignores (`per-file-ignores`). A pattern is read as a
 //! line of a `.gitignore` is: `OLD` or `*.nc` matches that name at any
 //! depth, `parts/old` or `/OLD` only there, below the settings file's
 //! directory (the current directory's for the command line's), `**` any
@@ -12,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 use ignore::gitignore::{Gitignore, GitignoreBuilder};
 
-use crate::workspace::{Config, SettingsError};
+use crate::workspace::{codes, Config, SettingsError};
 
 /// What a walk takes when nothing says otherwise: programs (main and
 /// subprograms) and archives, any case.
@@ -42,11 +43,13 @@ pub struct Patterns {
     /// The include patterns, for messages.
     pub included: Vec<String>,
     pub respect_gitignore: bool,
+    /// Rule codes or prefixes by the files they are ignored in.
+    per_file_ignores: Vec<(Gitignore, Vec<String>)>,
 }
 
 impl Patterns {
     /// `config`'s patterns with `given`'s; a pattern that does not compile
-    /// is an error naming where it comes from.
+    /// or a code that names no rule is an error naming where it comes from.
     pub fn new(config: &Config, given: &WalkGiven) -> Result<Self, SettingsError> {
         let here = canonical(Path::new("."));
         let root = config
@@ -77,6 +80,12 @@ impl Patterns {
             matcher(&root, &from_file, &origin("exclude"))?,
             matcher(&here, &from_line, "--exclude")?,
         ];
+        let mut per_file_ignores = Vec::new();
+        for (pattern, listed) in config.per_file_ignores.iter().flatten() {
+            let origin = origin(&format!("per-file-ignores, `{pattern}`"));
+            let glob = matcher(&root, std::slice::from_ref(pattern), &origin)?;
+            per_file_ignores.push((glob, codes(listed, &origin)?));
+        }
         Ok(Self {
             include,
             exclude,
@@ -85,6 +94,7 @@ impl Patterns {
                 .respect_gitignore
                 .or(config.respect_gitignore)
                 .unwrap_or(true),
+            per_file_ignores,
         })
     }
 
@@ -101,6 +111,20 @@ impl Patterns {
         self.exclude
             .iter()
             .any(|m| m.matched(path, is_dir).is_ignore())
+    }
+
+    /// The rule codes and prefixes `per-file-ignores` ignores in the program
+    /// at `path`.
+    pub fn ignored_in(&self, path: &Path) -> Vec<String> {
+        if self.per_file_ignores.is_empty() {
+            return Vec::new();
+        }
+        let path = canonical(path);
+        self.per_file_ignores
+            .iter()
+            .filter(|(glob, _)| glob.matched(&path, false).is_ignore())
+            .flat_map(|(_, codes)| codes.iter().cloned())
+            .collect()
     }
 }
 
@@ -148,7 +172,7 @@ mod tests {
     fn patterns_are_gitignore_lines_below_the_settings_file_in_any_case() {
         let dir = canonical(&std::env::temp_dir());
         let config = config(
-            "extend-include = [\"*.nc\"]\nexclude = [\"old\", \"/parts/draft\"]\n",
+            "extend-include = [\"*.nc\"]\nexclude = [\"old\", \"/parts/draft\"]\n[per-file-ignores]\n\"probe/*\" = [\"N005\"]\n",
             &dir,
         );
         let patterns = Patterns::new(&config, &WalkGiven::default()).expect("patterns");
@@ -158,6 +182,8 @@ mod tests {
         assert!(patterns.excludes(&dir.join("x/OLD"), true));
         assert!(patterns.excludes(&dir.join("parts/draft"), true));
         assert!(!patterns.excludes(&dir.join("x/parts/draft"), true));
+        assert_eq!(patterns.ignored_in(&dir.join("probe/P.MPF")), ["N005"]);
+        assert!(patterns.ignored_in(&dir.join("P.MPF")).is_empty());
 
         // The command line's --exclude replaces the file's `exclude`.
         let given = WalkGiven {
@@ -168,6 +194,8 @@ mod tests {
         assert!(!patterns.excludes(&dir.join("x/old"), true));
         assert!(patterns.excludes(&dir.join("x/new"), true));
 
+        let bad = config_error("[per-file-ignores]\n\"*\" = [\"N05\"]\n", &dir);
+        assert!(bad.contains("no rule has the code `N05`"), "{bad}");
         let bad = config_error("exclude = [\"{old,draft\"]\n", &dir);
         assert!(bad.contains("`{old,draft`"), "{bad}");
     }
