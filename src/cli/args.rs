@@ -112,7 +112,7 @@ pub struct AxesArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
+    /// Files or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
     pub paths: Vec<PathBuf>,
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]
@@ -282,7 +282,7 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
+    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     /// Several programs need --in-place, -o DIR, --check or --diff.
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
@@ -328,7 +328,7 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct EvalArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
+    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
