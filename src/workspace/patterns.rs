@@ -38,6 +38,10 @@ pub struct Patterns {
     /// Files taken: the file's `include` (or [`DEFAULT_INCLUDE`]) and
     /// `extend-include`, then the command line's.
     include: [Gitignore; 2],
+    /// [`DEFAULT_INCLUDE`] is taken, told by the extension: a matcher of
+    /// patterns in any case is a regular expression, which costs about
+    /// 1 MiB of memory to compile.
+    by_default: bool,
     /// Files and folders left out: the file's, then the command line's.
     exclude: [Gitignore; 2],
     /// The include patterns, for messages.
@@ -58,16 +62,17 @@ impl Patterns {
             .and_then(|p| p.parent())
             .map_or_else(|| here.clone(), canonical);
         let origin = |key: &str| format!("{} ({key})", config.describe());
-        let mut included: Vec<String> = match &config.include {
-            Some(include) => include.clone(),
-            None => DEFAULT_INCLUDE.map(String::from).to_vec(),
-        };
+        let by_default = config.include.is_none();
+        let mut included: Vec<String> = config.include.clone().unwrap_or_default();
         included.extend(config.extend_include.iter().flatten().cloned());
         let include = [
             matcher(&root, &included, &origin("include"))?,
             matcher(&here, &given.extend_include, "--extend-include")?,
         ];
         included.extend(given.extend_include.iter().cloned());
+        if by_default {
+            included.splice(0..0, DEFAULT_INCLUDE.map(String::from));
+        }
         let mut from_file = if given.exclude.is_empty() {
             config.exclude.clone().unwrap_or_default()
         } else {
@@ -88,6 +93,7 @@ impl Patterns {
         }
         Ok(Self {
             include,
+            by_default,
             exclude,
             included,
             respect_gitignore: given
@@ -101,9 +107,17 @@ impl Patterns {
     /// Whether a walk takes the file at `path` (absolute, as the walk
     /// reached it, below a canonical directory).
     pub fn includes(&self, path: &Path) -> bool {
-        self.include
-            .iter()
-            .any(|m| m.matched(path, false).is_ignore())
+        let extension = path.extension().and_then(|e| e.to_str());
+        let by_default = self.by_default
+            && extension.is_some_and(|extension| {
+                let mut defaults = DEFAULT_INCLUDE.iter().filter_map(|p| p.strip_prefix("*."));
+                defaults.any(|default| default.eq_ignore_ascii_case(extension))
+            });
+        by_default
+            || self
+                .include
+                .iter()
+                .any(|m| m.matched(path, false).is_ignore())
     }
 
     /// Whether a walk leaves out the file or folder at `path`.
