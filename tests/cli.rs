@@ -1792,3 +1792,33 @@ fn check_and_rewrite_name_the_output_format_alike() {
         assert_eq!(aliased.stderr, named.stderr);
     }
 }
+
+#[test]
+fn per_file_ignores_leave_out_rules_in_the_files_they_match() {
+    let dir = scratch("per-file-ignores");
+    std::fs::create_dir_all(dir.join("probe")).expect("dir");
+    for path in ["probe/P.MPF", "Q.MPF"] {
+        std::fs::write(dir.join(path), "GOTOF NOWHERE\nM30\n").expect("write");
+    }
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "[per-file-ignores]\n\"probe/*\" = [\"N001\"]\n",
+    )
+    .expect("config");
+    let name = dir.to_str().expect("utf-8");
+    let output = run(&["check", "--format", "short", name], b"");
+    assert_exit(&output, 1);
+    let out = stdout(&output);
+    assert!(out.contains("Q.MPF"), "{out}");
+    assert!(!out.contains("P.MPF"), "{out}");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "[per-file-ignores]\n\"probe/*\" = [\"N0001\"]\n",
+    )
+    .expect("config");
+    let output = run(&["check", name], b"");
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("per-file-ignores"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -773,3 +773,202 @@ fn windows_paths_with_a_drive_letter_and_backslashes() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_binary_file_is_skipped_by_a_walk_and_not_linted_when_named() {
+    let dir = scratch("files-binary");
+    let programs = dir.join("programs");
+    fs::create_dir_all(&programs).expect("dir");
+    fs::write(programs.join("A.MPF"), b"N10 X1\nM30\n").expect("write");
+    // An executable saved under a program's name: text that would give
+    // findings, after a NUL.
+    let mut elf = b"\x7fELF\x02\x01\x01\0\0\0\0\0\0\0\0\0".to_vec();
+    elf.extend_from_slice(b"GOTOF NOWHERE\nX=Y=Z\n");
+    fs::write(programs.join("B.MPF"), &elf).expect("write");
+    fs::write(programs.join("C.MPF"), b"N10 X2\nM30\n").expect("write");
+    let output = run_in(&dir, &["check", "--format", "json", "programs"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("note: skipped programs/B.MPF: a binary file"),
+        "{stderr}"
+    );
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let files: Vec<&str> = report["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .map(|f| f["path"].as_str().expect("path"))
+        .collect();
+    assert_eq!(files, ["programs/A.MPF", "programs/C.MPF"]);
+
+    // Named, it is not linted either, and the note says so.
+    let output = run_in(&dir, &["check", "--format", "short", "programs/B.MPF"]);
+    assert_exit(&output, 0);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        output.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&output.stdout)
+    );
+    assert!(
+        stderr.contains("note: programs/B.MPF: not checked: a binary file"),
+        "{stderr}"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// The paths of the files a JSON report names.
+fn reported(output: &Output) -> Vec<String> {
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&output.stderr)));
+    report["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .map(|f| f["path"].as_str().expect("path").to_string())
+        .collect()
+}
+
+#[test]
+fn a_walk_leaves_out_what_git_ignores_and_hidden_files_unless_asked() {
+    let dir = scratch("files-gitignore");
+    let p = dir.join("p");
+    for folder in ["build", "sub", ".hidden"] {
+        fs::create_dir_all(p.join(folder)).expect("dir");
+    }
+    for file in [
+        "A.MPF",
+        "build/B.MPF",
+        "OLD.MPF",
+        "KEEP.MPF",
+        "sub/C.MPF",
+        "sub/D.MPF",
+        ".hidden/E.MPF",
+        ".F.MPF",
+    ] {
+        fs::write(p.join(file), b"N10 X1\nM30\n").expect("write");
+    }
+    fs::write(p.join(".gitignore"), "build/\n*OLD.MPF\nKEEP.MPF\n").expect("write");
+    // A deeper file takes back what one above ignored; .ignore applies
+    // outside a repository too.
+    fs::write(p.join("sub/.gitignore"), "!/C.MPF\n").expect("write");
+    fs::write(p.join("sub/.ignore"), "D.MPF\n").expect("write");
+    fs::write(p.join(".ignore"), "!KEEP.MPF\n").expect("write");
+    let json = ["check", "--format", "json"];
+
+    // Outside a git repository, .gitignore says nothing (as for git and
+    // ripgrep).
+    let output = run_in(&dir, &[&json[..], &["p"]].concat());
+    assert_exit(&output, 0);
+    assert_eq!(
+        reported(&output),
+        [
+            "p/A.MPF",
+            "p/KEEP.MPF",
+            "p/OLD.MPF",
+            "p/build/B.MPF",
+            "p/sub/C.MPF"
+        ]
+    );
+
+    fs::create_dir(dir.join(".git")).expect("a repository");
+    let output = run_in(&dir, &[&json[..], &["p"]].concat());
+    assert_exit(&output, 0);
+    assert_eq!(reported(&output), ["p/A.MPF", "p/KEEP.MPF", "p/sub/C.MPF"]);
+
+    // Named, an ignored file is read.
+    let output = run_in(&dir, &[&json[..], &["p/OLD.MPF"]].concat());
+    assert_eq!(reported(&output), ["p/OLD.MPF"]);
+
+    let output = run_in(
+        &dir,
+        &[&json[..], &["--no-respect-gitignore", "--hidden", "p"]].concat(),
+    );
+    assert_exit(&output, 0);
+    assert_eq!(
+        reported(&output),
+        [
+            "p/.F.MPF",
+            "p/.hidden/E.MPF",
+            "p/A.MPF",
+            "p/KEEP.MPF",
+            "p/OLD.MPF",
+            "p/build/B.MPF",
+            "p/sub/C.MPF",
+            "p/sub/D.MPF"
+        ]
+    );
+    // A folder named is walked even if ignored, and the settings file can
+    // turn the ignore files off.
+    let output = run_in(&dir, &[&json[..], &["p/build"]].concat());
+    assert_eq!(reported(&output), ["p/build/B.MPF"]);
+    fs::write(dir.join("sinuprep.toml"), "respect-gitignore = false\n").expect("write");
+    let output = run_in(&dir, &[&json[..], &["p"]].concat());
+    assert_eq!(reported(&output).len(), 6, "{:?}", reported(&output));
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn include_and_exclude_say_what_a_walk_takes_relative_to_their_settings_file() {
+    let dir = scratch("files-include");
+    let p = dir.join("p");
+    for folder in ["old", "draft", "x/draft", "control"] {
+        fs::create_dir_all(p.join(folder)).expect("dir");
+    }
+    for file in [
+        "A.MPF",
+        "old/B.MPF",
+        "draft/C.MPF",
+        "x/draft/D.MPF",
+        "control/_N_PART_MPF",
+        "E.nc",
+        "notes.txt",
+    ] {
+        fs::write(p.join(file), b"N10 X1\nM30\n").expect("write");
+    }
+    let json = ["check", "--format", "json"];
+    // Only the NC extensions by default; a folder of other files says what
+    // it left out and how to take it.
+    let output = run_in(&dir, &["check", "p/control"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("_N_PART_MPF"), "{stderr}");
+    assert!(stderr.contains("extend-include"), "{stderr}");
+
+    fs::write(
+        dir.join("sinuprep.toml"),
+        "extend-include = [\"*.NC\", \"_N_*_MPF\"]\nexclude = [\"old\", \"/p/draft\"]\n",
+    )
+    .expect("write");
+    let output = run_in(&p, &[&json[..], &["."]].concat());
+    assert_exit(&output, 0);
+    assert_eq!(
+        reported(&output),
+        [
+            "./A.MPF",
+            "./E.nc",
+            "./control/_N_PART_MPF",
+            "./x/draft/D.MPF"
+        ]
+    );
+    // --exclude replaces the file's `exclude`, relative to the current
+    // directory; --extend-exclude adds to it.
+    let output = run_in(&dir, &[&json[..], &["--exclude", "x", "p"]].concat());
+    assert_eq!(
+        reported(&output),
+        [
+            "p/A.MPF",
+            "p/E.nc",
+            "p/control/_N_PART_MPF",
+            "p/draft/C.MPF",
+            "p/old/B.MPF"
+        ]
+    );
+    let output = run_in(
+        &dir,
+        &[&json[..], &["--extend-exclude", "*.nc,control", "p"]].concat(),
+    );
+    assert_eq!(reported(&output), ["p/A.MPF", "p/x/draft/D.MPF"]);
+    let _ = fs::remove_dir_all(&dir);
+}

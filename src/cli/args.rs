@@ -127,7 +127,7 @@ pub struct AxesArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// Files or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
+    /// Files or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin. None: the current directory (stdin with --stdin-filename).
     pub paths: Vec<PathBuf>,
     /// How to print the diagnostics (`--output-format`, as ruff and `rewrite` name it).
     #[arg(long = "output-format", visible_alias = "format", value_enum, default_value_t = Format::Human)]
@@ -177,6 +177,8 @@ pub struct CheckArgs {
     /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
     #[arg(long)]
     pub follow_links: bool,
+    #[command(flatten)]
+    pub walk: WalkArgs,
     /// No summary line (`3 errors, 2 warnings in 5 files`) after the human and short reports.
     #[arg(long, short)]
     pub quiet: bool,
@@ -202,6 +204,45 @@ pub struct InputArgs {
     /// The settings file (default: the nearest sinuprep.toml from the program's directory upward).
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+}
+
+/// Which files a directory walk takes (a file named is always taken).
+#[derive(Debug, clap::Args)]
+pub struct WalkArgs {
+    /// Leave out the files and folders these patterns match (`.gitignore` lines, relative to the current directory, any case; comma-separated, repeatable), in place of `exclude` in sinuprep.toml.
+    #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
+    pub exclude: Vec<String>,
+    /// Leave out these too, besides `exclude` and `extend-exclude` in sinuprep.toml.
+    #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
+    pub extend_exclude: Vec<String>,
+    /// Take the files these patterns match too (`*.nc`, `_N_*_MPF`), besides `.mpf`, `.spf` and `.arc` (`include`, `extend-include` in sinuprep.toml).
+    #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
+    pub extend_include: Vec<String>,
+    /// Take what .gitignore, .ignore and git's exclude files ignore (by default it is left out; also `respect-gitignore = false` in sinuprep.toml).
+    #[arg(long, overrides_with = "respect_gitignore")]
+    pub no_respect_gitignore: bool,
+    /// Leave out what .gitignore, .ignore and git's exclude files ignore, over `respect-gitignore = false` in sinuprep.toml.
+    #[arg(long, overrides_with = "no_respect_gitignore", hide = true)]
+    pub respect_gitignore: bool,
+    /// Walk into hidden folders and take hidden files (names beginning with `.`).
+    #[arg(long)]
+    pub hidden: bool,
+}
+
+impl WalkArgs {
+    /// What the walk's options set over sinuprep.toml.
+    pub fn given(&self) -> crate::workspace::WalkGiven {
+        crate::workspace::WalkGiven {
+            exclude: self.exclude.clone(),
+            extend_exclude: self.extend_exclude.clone(),
+            extend_include: self.extend_include.clone(),
+            respect_gitignore: match (self.respect_gitignore, self.no_respect_gitignore) {
+                (true, _) => Some(true),
+                (_, true) => Some(false),
+                _ => None,
+            },
+        }
+    }
 }
 
 #[derive(Debug, clap::Args)]
@@ -262,7 +303,7 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
+    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     /// Several programs need --in-place, -o DIR, --check or --diff.
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
@@ -271,6 +312,8 @@ pub struct RewriteArgs {
     /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
     #[arg(long)]
     pub follow_links: bool,
+    #[command(flatten)]
+    pub walk: WalkArgs,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// Do not keep the original call as a `; sinuprep:` comment above the new code.
@@ -306,7 +349,7 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct EvalArgs {
-    /// Programs or directories (searched recursively for .mpf/.spf/.arc); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
+    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     pub paths: Vec<PathBuf>,
     /// A directory without programs is no error (by default it is: exit 2).
     #[arg(long)]
@@ -314,6 +357,8 @@ pub struct EvalArgs {
     /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
     #[arg(long)]
     pub follow_links: bool,
+    #[command(flatten)]
+    pub walk: WalkArgs,
     #[command(flatten)]
     pub analysis: AnalysisArgs,
     /// The machine's swivel data records: each swivelling call shows the rotary axis

@@ -9,13 +9,14 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, read, Bytes, Found};
+use crate::cli::input::{again, binary, read, Bytes, Found};
 use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
     github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
     Statistics, JSON_BETWEEN, JSON_START,
 };
+use crate::cli::walk::{expand, Walk};
 use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
@@ -38,6 +39,30 @@ struct Checked {
     /// The machine the file was checked on, with its findings the
     /// selection keeps: reported once a run, before the first file.
     machine: Option<(Arc<OnMachine>, Vec<Diagnostic>)>,
+}
+
+impl Checked {
+    /// A binary file: not linted, and not counted as a program checked. A
+    /// walk skips it, as it skips a link; one named is not checked either
+    /// (ripgrep searches a binary file named and says so; a linter's
+    /// findings in one would be noise), and the note says why.
+    fn binary(found: &Found, name: &str) -> Self {
+        let name = printable(name);
+        let notes = if found.was_walked() {
+            format!("note: skipped {name}: a binary file (NUL bytes), not a program\n")
+        } else {
+            format!("note: {name}: not checked: a binary file (NUL bytes), not a program\n")
+        };
+        Self {
+            report: Report::Text(String::new()),
+            fails: false,
+            counts: Counts::default(),
+            unchecked: Unchecked::default(),
+            files: 0,
+            notes: Some(notes),
+            machine: None,
+        }
+    }
 }
 
 /// What a program checked without its machine's environment (no
@@ -198,6 +223,7 @@ enum Report {
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(Given {
         follow_links: args.follow_links,
+        walk: args.walk.given(),
         ..analysis::given_to_check(args)
     })?;
     // No path: the current directory, as ruff and ripgrep do; stdin only
@@ -207,7 +233,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, Some(_)) => vec![PathBuf::from("-")],
         (true, None) => vec![PathBuf::from(".")],
     };
-    let paths = expand(&named, args.allow_empty, args.follow_links)?;
+    let paths = expand(
+        &named,
+        &Walk {
+            allow_empty: args.allow_empty,
+            follow_links: args.follow_links,
+            hidden: args.walk.hidden,
+            workspace: &workspace,
+        },
+    )?;
     let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
     report_to(args.output_file.as_deref(), |out| {
         report(args, &paths, colour, &workspace, out)
@@ -321,6 +355,9 @@ fn check_file(
         }
         _ => path.to_path_buf(),
     };
+    if binary(&file.bytes) {
+        return Ok(Checked::binary(found, &file.name));
+    }
     let resolved = workspace.for_check(&named)?;
     let deny_warnings = resolved.deny_warnings;
     let mut settings = resolved.settings;
@@ -507,8 +544,8 @@ fn print(
     held: &mut Held,
 ) -> Result<(), CliError> {
     match report {
-        // An archive without programs has no entry.
-        Report::Text(part) if format == Format::Json && part.is_empty() => {}
+        // An archive without programs, a binary file skipped: no entry.
+        Report::Text(part) if part.is_empty() => {}
         Report::Text(part) if format == Format::Json => {
             if held.entries > 0 {
                 out.write_all(JSON_BETWEEN.as_bytes())?;

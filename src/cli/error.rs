@@ -23,15 +23,14 @@ pub enum CliError {
         source: std::io::Error,
     },
 
-    #[error(
-        "{} holds no program (.mpf, .spf or .arc archive, any case)",
-        shown(path)
-    )]
-    #[diagnostic(
-        code(sinuprep::no_programs),
-        help("check the path; with --allow-empty a folder without programs is no error")
-    )]
-    NoPrograms { path: PathBuf },
+    #[error("{} holds no program{why}", shown(path))]
+    #[diagnostic(code(sinuprep::no_programs), help("{help}"))]
+    NoPrograms {
+        path: PathBuf,
+        /// What the walk left out, from `; left out: `.
+        why: String,
+        help: String,
+    },
 
     #[error("the language server stopped: {0}")]
     #[diagnostic(

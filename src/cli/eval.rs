@@ -6,9 +6,10 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, named_or_stdin, read, Found};
+use crate::cli::input::{again, named_or_stdin, read, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
+use crate::cli::walk::{expand, Walk};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -23,13 +24,22 @@ use std::sync::Arc;
 
 pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "eval")?;
-    let paths = expand(&named, args.allow_empty, args.follow_links)?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
         follow_links: args.follow_links,
         fine_offsets: args.fine_offsets,
+        walk: args.walk.given(),
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
+    let paths = expand(
+        &named,
+        &Walk {
+            allow_empty: args.allow_empty,
+            follow_links: args.follow_links,
+            hidden: args.walk.hidden,
+            workspace: &workspace,
+        },
+    )?;
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     let mut told = analysis::MachinesTold::default();

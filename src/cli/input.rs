@@ -1,4 +1,5 @@
-//! Finding and reading the programs named on the command line.
+//! Reading the programs named on the command line or found by a walk
+//! (`walk` finds them).
 
 use std::io::{Read, Seek, Write};
 use std::ops::Deref;
@@ -7,7 +8,6 @@ use std::path::{Path, PathBuf};
 use crate::cli::error::CliError;
 use crate::cli::mapped::{Mapped, MAPPED_FROM};
 use crate::cli::platform::{self, identity};
-use std::collections::HashSet;
 
 /// A program's name for reports, and its bytes.
 pub struct SourceFile {
@@ -42,56 +42,43 @@ pub struct Found {
     walked: Option<Links>,
 }
 
-/// Whether a walk follows symbolic links (`--follow-links`).
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Links {
-    Skip,
-    Follow,
-}
+impl Found {
+    /// A path named on the command line.
+    pub fn named(path: PathBuf) -> Self {
+        Self { path, walked: None }
+    }
 
-/// Expands the command-line paths: a directory yields its `.mpf`/`.spf` files
-/// and `.arc` archives
-/// (any case, recursively, sorted); a file is taken whatever its extension.
-/// Every file and directory is taken once, by its device and inode, so
-/// links that loop (`a -> .`, `up -> ..`) or name a file twice do not
-/// repeat it.
-///
-/// As ripgrep and ruff walk: a link met in a directory is not followed
-/// unless `follow_links`, and nothing but a regular file is taken (a FIFO
-/// named `*.MPF` would hang the run, a device never ends); what is skipped
-/// is named in a note on stderr. A directory that cannot be read, an entry
-/// whose kind cannot be told (a path past the system's length limit), is an
-/// error naming it. A path named on the command line is taken through a link.
-///
-/// A directory that holds no program is an error unless `allow_empty`: a
-/// CI run over a mistyped or emptied folder must not pass in silence.
-pub fn expand(
-    paths: &[PathBuf],
-    allow_empty: bool,
-    follow_links: bool,
-) -> Result<Vec<Result<Found, CliError>>, CliError> {
-    let links = if follow_links {
-        Links::Follow
-    } else {
-        Links::Skip
-    };
-    let mut out = Vec::new();
-    let mut seen = HashSet::new();
-    for path in paths {
-        if path.is_dir() {
-            let before = out.len();
-            walk(path, links, &mut seen, &mut out);
-            if out.len() == before && !allow_empty {
-                return Err(CliError::NoPrograms { path: path.clone() });
-            }
-        } else if first_time(path, &mut seen) {
-            out.push(Ok(Found {
-                path: path.clone(),
-                walked: None,
-            }));
+    /// A file a walk found, which it reached following links or not.
+    pub fn walked(path: PathBuf, links: Links) -> Self {
+        Self {
+            path,
+            walked: Some(links),
         }
     }
-    Ok(out)
+
+    /// Whether a walk found it (it was not named).
+    pub fn was_walked(&self) -> bool {
+        self.walked.is_some()
+    }
+}
+
+/// How much of a file [`binary`] looks at: as git's `buffer_is_binary`.
+const BINARY_HEAD: usize = 8 << 10;
+
+/// Whether `bytes` are a binary file (an executable, an image, a document)
+/// rather than a program: a NUL byte in the first 8 KiB, as ripgrep and git
+/// decide. No NC program holds one; linted as text, an executable gave
+/// 18,845 findings. A binary archive (its own mark) is read as one.
+pub fn binary(bytes: &[u8]) -> bool {
+    let head = &bytes[..bytes.len().min(BINARY_HEAD)];
+    memchr::memchr(0, head).is_some() && !crate::archive::binary::is_binary(bytes)
+}
+
+/// Whether a walk follows symbolic links (`--follow-links`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Links {
+    Skip,
+    Follow,
 }
 
 /// The walk's error about one entry (a directory it could not read), made
@@ -121,15 +108,6 @@ pub fn named_or_stdin(paths: &[PathBuf], command: &'static str) -> Result<Vec<Pa
         return Err(CliError::NoProgram { command });
     }
     Ok(vec![PathBuf::from("-")])
-}
-
-/// Whether `path` has not been met before (a path that cannot be read is
-/// taken, to be reported when it is read).
-fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
-    match std::fs::metadata(path) {
-        Ok(metadata) => identity(&metadata).is_none_or(|id| seen.insert(id)),
-        Err(_) => true,
-    }
 }
 
 /// Standard input, or a FIFO or device named: read whole while it is
@@ -178,87 +156,6 @@ fn unnamed_file() -> std::io::Result<std::fs::File> {
         std::io::ErrorKind::AlreadyExists,
         "no file could be made in the temporary directory for standard input",
     ))
-}
-
-fn walk(
-    dir: &Path,
-    links: Links,
-    seen: &mut HashSet<(u64, u64)>,
-    out: &mut Vec<Result<Found, CliError>>,
-) {
-    if !first_time(dir, seen) {
-        return;
-    }
-    let fail = |path: &Path, source| {
-        Err(CliError::Read {
-            path: path.to_path_buf(),
-            source,
-        })
-    };
-    let entries = match std::fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(source) => return out.push(fail(dir, source)),
-    };
-    // The kind of each entry as the directory gives it (the link itself,
-    // not what it names), without opening anything.
-    let mut entries: Vec<(PathBuf, std::io::Result<std::fs::FileType>)> = entries
-        .filter_map(|e| e.ok().map(|e| (e.path(), e.file_type())))
-        .collect();
-    entries.sort_by(|a, b| a.0.cmp(&b.0));
-    for (path, kind) in entries {
-        let kind = match kind {
-            Ok(kind) => kind,
-            Err(source) => {
-                out.push(fail(&path, source));
-                continue;
-            }
-        };
-        let kind = if kind.is_symlink() {
-            // What the link names, looked up without opening it.
-            let Ok(target) = std::fs::metadata(&path) else {
-                if is_program(&path) {
-                    skipped(&path, "a link that names nothing");
-                }
-                continue;
-            };
-            let target = target.file_type();
-            if links == Links::Skip {
-                if target.is_dir() || is_program(&path) {
-                    skipped(&path, "a symbolic link (--follow-links follows links)");
-                }
-                continue;
-            }
-            target
-        } else {
-            kind
-        };
-        if kind.is_dir() {
-            walk(&path, links, seen, out);
-        } else if is_program(&path) {
-            if !kind.is_file() {
-                skipped(&path, "not a regular file (a FIFO, a socket or a device)");
-            } else if first_time(&path, seen) {
-                out.push(Ok(Found {
-                    path,
-                    walked: Some(links),
-                }));
-            }
-        }
-    }
-}
-
-/// A note on stderr naming what a walk left out.
-fn skipped(path: &Path, why: &str) {
-    let name = crate::cli::render::printable(&path.display().to_string()).into_owned();
-    tellln!("note: skipped {name}: {why}");
-}
-
-fn is_program(path: &Path) -> bool {
-    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-        ["mpf", "spf", "arc"]
-            .iter()
-            .any(|x| e.eq_ignore_ascii_case(x))
-    })
 }
 
 /// Reads a program: stdin for `-`; a file of [`MAPPED_FROM`] bytes or

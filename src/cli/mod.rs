@@ -35,6 +35,7 @@ mod platform;
 pub mod render;
 mod rewrite;
 mod rule;
+mod walk;
 
 pub use args::Args;
 pub use error::CliError;

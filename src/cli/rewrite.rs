@@ -13,10 +13,11 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, expand, named_or_stdin, read, Found};
+use crate::cli::input::{again, named_or_stdin, read, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
+use crate::cli::walk::{expand, Walk};
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
 use crate::semantic::swivels::OnMachine;
@@ -44,18 +45,27 @@ struct Outcome {
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "rewrite")?;
-    let paths = expand(&named, args.allow_empty, args.follow_links)?;
+    let workspace = Workspace::new(Given {
+        machine: args.machine.clone(),
+        follow_links: args.follow_links,
+        fine_offsets: args.fine_offsets,
+        walk: args.walk.given(),
+        ..analysis::given_to_rewrite(&args.analysis)
+    })?;
+    let paths = expand(
+        &named,
+        &Walk {
+            allow_empty: args.allow_empty,
+            follow_links: args.follow_links,
+            hidden: args.walk.hidden,
+            workspace: &workspace,
+        },
+    )?;
     let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
     if several && !writes_files {
         return Err(CliError::SeveralToStdout { count: paths.len() });
     }
-    let workspace = Workspace::new(Given {
-        machine: args.machine.clone(),
-        follow_links: args.follow_links,
-        fine_offsets: args.fine_offsets,
-        ..analysis::given_to_rewrite(&args.analysis)
-    })?;
     let mut worst = ExitStatus::Success;
     let work = |index: usize| {
         let found = match &paths[index] {

@@ -45,6 +45,22 @@ pub struct Config {
     /// The orientation error (degrees) a Hirth grid's rounding may make
     /// before `check` reports it (K004).
     pub hirth_tolerance: Option<f64>,
+    /// The files a directory walk takes, as patterns (`.gitignore` lines,
+    /// relative to this file, any case) [default: `*.mpf`, `*.spf`, `*.arc`].
+    pub include: Option<Vec<String>>,
+    /// Patterns added to `include` (`["*.nc", "_N_*_MPF"]`).
+    pub extend_include: Option<Vec<String>>,
+    /// Files and folders a walk leaves out (`["old", "/parts/draft"]`);
+    /// `--exclude` replaces it.
+    pub exclude: Option<Vec<String>>,
+    /// Added to `exclude`, also when `--exclude` is given.
+    pub extend_exclude: Option<Vec<String>>,
+    /// Whether a walk leaves out what `.gitignore`, `.ignore` and git's
+    /// exclude files ignore [default: true].
+    pub respect_gitignore: Option<bool>,
+    /// Rule codes or prefixes not reported in the files a pattern matches
+    /// (`"probe/*" = ["N005"]`), over `select` and `ignore`.
+    pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -121,7 +137,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 15] = [
+const KEYS: [&str; 21] = [
     "select",
     "ignore",
     "severity-min",
@@ -137,6 +153,12 @@ const KEYS: [&str; 15] = [
     "cycles",
     "machine",
     "hirth-tolerance",
+    "include",
+    "extend-include",
+    "exclude",
+    "extend-exclude",
+    "respect-gitignore",
+    "per-file-ignores",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

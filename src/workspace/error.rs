@@ -87,6 +87,17 @@ pub enum SettingsError {
         did_you_mean: Option<&'static str>,
     },
 
+    #[error("{origin}: the pattern `{pattern}` cannot be read: {why}")]
+    #[diagnostic(
+        code(sinuprep::pattern),
+        help("a pattern is written as a line of a .gitignore: `*.nc`, `old`, `/parts/draft`, `**/probe/*`")
+    )]
+    Pattern {
+        origin: String,
+        pattern: String,
+        why: String,
+    },
+
     #[error("`--set {text}`: {why}")]
     #[diagnostic(code(sinuprep::set), help("write one NC assignment with a constant value, as `--set R10=0.215` or `--set _OVR[16]=-0.113`"))]
     Set { text: String, why: String },

@@ -14,6 +14,7 @@ mod config;
 mod error;
 pub mod file;
 mod folder;
+mod patterns;
 mod values;
 
 use std::collections::HashMap;
@@ -22,6 +23,7 @@ use std::sync::{Arc, Mutex};
 
 pub use config::{Config, SeverityName, FILE_NAME};
 pub use error::SettingsError;
+pub use patterns::{Patterns, WalkGiven, DEFAULT_INCLUDE};
 
 use folder::Listing;
 
@@ -59,6 +61,8 @@ pub struct Given {
     /// the program, in a cycle directory) is followed, as the walk's
     /// `--follow-links`; by default it is not found there.
     pub follow_links: bool,
+    /// Which files a directory walk takes.
+    pub walk: WalkGiven,
     /// The machine's swivel data records, for `check`'s swivel rules.
     pub machine: Option<PathBuf>,
     /// Whether the records' fine offsets apply (SD42974).
@@ -95,6 +99,8 @@ pub struct Workspace {
     /// The nearest `sinuprep.toml` of a program's directory.
     nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
     configs: Mutex<HashMap<PathBuf, Config>>,
+    /// The patterns of each settings file (`None`: no file).
+    patterns: Mutex<HashMap<Option<PathBuf>, Arc<Patterns>>>,
     heads: Mutex<HashMap<PathBuf, Heads>>,
 }
 
@@ -158,6 +164,10 @@ impl Workspace {
                 .or(config.severity_min.map(Severity::from))
                 .unwrap_or(Severity::Info),
         };
+        if program != Path::new("-") {
+            let ignored = self.patterns_of(config)?.ignored_in(program);
+            resolved.settings.selection.ignore.extend(ignored);
+        }
         resolved.settings.environment = self.environment(config)?;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
         resolved.settings.machine = self.machine(config)?;
@@ -224,6 +234,18 @@ impl Workspace {
             Some(path) => cached(&self.configs, &path, || Config::read(&path)),
             None => Ok(Config::default()),
         }
+    }
+
+    /// The patterns that say which files a walk takes in `dir`: those of
+    /// its settings file (the nearest, or `--config`) and the command line.
+    pub fn patterns(&self, dir: &Path) -> Result<Arc<Patterns>, SettingsError> {
+        self.patterns_of(&self.config(dir)?)
+    }
+
+    fn patterns_of(&self, config: &Config) -> Result<Arc<Patterns>, SettingsError> {
+        cached(&self.patterns, &config.path, || {
+            Ok(Arc::new(Patterns::new(config, &self.given.walk)?))
+        })
     }
 
     /// Measured values and HEAD_DEF: given first, then `sinuprep.toml`.
