@@ -201,3 +201,26 @@ N10 R1=((((((...))))))
 ## Fix
 Split it into several assignments."#,
 };
+
+pub static RECURSIVE_MACRO: RuleInfo = RuleInfo {
+    code: "S010",
+    name: "recursive-macro",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a macro written in a block whose text names the macro itself, directly or through other
+macros (`DEFINE A AS B + 1` with `DEFINE B AS A * 2`).
+
+## Why it matters
+The control replaces a macro's name by its text before it reads the block (Siemens, Programming
+Manual Job Planning, "Macro technique (DEFINE ... AS)"); a macro that names itself never ends
+being replaced, and the block cannot run. sinuprep leaves the name as it is written there.
+
+## Example
+```
+DEFINE FEED AS FEED*2
+N10 G1 X10 F=FEED
+```
+
+## Fix
+Define the macro without its own name."#,
+};

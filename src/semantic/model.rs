@@ -10,6 +10,7 @@
 
 use std::cell::OnceCell;
 use std::collections::HashSet;
+use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
@@ -18,6 +19,7 @@ use crate::semantic::line_order;
 use crate::semantic::structure::Structure;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
+use crate::syntax::macros::{Macros, Use};
 use crate::syntax::plain::{scanned_lines, PlainFacts, Scanned};
 use crate::syntax::tree::{
     upper, Block, DataType, Line, LineKind, Statement, StatementKind, Variable, Word, WordValue,
@@ -71,6 +73,9 @@ pub struct Model<'src> {
     pub first_executable: Option<(usize, usize)>,
     /// Where the line of the last declaration before it ends.
     pub declarations_end: Option<usize>,
+    /// The macros written in the program's lines and what each stood for,
+    /// in source order (its trees are read from the expansions).
+    pub macro_uses: Vec<Use>,
     structure: OnceCell<Structure>,
 }
 
@@ -82,11 +87,17 @@ impl<'src> Model<'src> {
 
     /// The model of `source`, in a pass of its own.
     pub fn build(source: &'src [u8], kind: ProgramKind) -> Self {
-        let mut builder = ModelBuilder::new(source, true);
+        Self::build_with(source, kind, Arc::default())
+    }
+
+    /// [`Self::build`], the program's lines read with the macros of the
+    /// machine's definition files (its own are learned on the way).
+    pub fn build_with(source: &'src [u8], kind: ProgramKind, macros: Arc<Macros>) -> Self {
+        let mut builder = ModelBuilder::new(source, true).with_macros(macros);
         let mut plain = Vec::with_capacity(PLAIN_RUN);
         for (row, line) in scanned_lines(source).enumerate() {
             match line {
-                Scanned::Plain(line) => {
+                Scanned::Plain(line) if !builder.expands(line.raw) => {
                     plain.push(PlainLine {
                         row,
                         raw: line.raw,
@@ -99,7 +110,8 @@ impl<'src> Model<'src> {
                         plain.clear();
                     }
                 }
-                Scanned::Other(raw) => {
+                other => {
+                    let raw = other.raw();
                     builder.plain_lines(&plain);
                     plain.clear();
                     let tree = builder.parse(raw);
@@ -171,6 +183,19 @@ pub fn is_declaration(statement: &Statement) -> bool {
             | StatementKind::Extern { .. }
             | StatementKind::Define { .. }
     )
+}
+
+/// A macro whose text names it (directly or through others): the control
+/// cannot expand it.
+fn recursive_macro(source: &[u8], used: Span) -> Diagnostic {
+    let name = String::from_utf8_lossy(used.of(source));
+    crate::registry::syntax::RECURSIVE_MACRO
+        .at(used)
+        .message(format!(
+            "macro `{name}` names itself in its text, directly or through other macros"
+        ))
+        .label("expands to itself")
+        .help("define the macro without its own name (a macro's text may name other macros)")
 }
 
 /// One line as the rules and the model see it, with what each statement
@@ -290,6 +315,10 @@ pub struct ModelBuilder<'src> {
     stopre: Vec<usize>,
     first_executable: Option<(usize, usize)>,
     declarations_end: Option<usize>,
+    /// The macros the next line is read with: the machine's, and those the
+    /// program has defined so far.
+    macros: Arc<Macros>,
+    macro_uses: Vec<Use>,
 }
 
 impl<'src> ModelBuilder<'src> {
@@ -310,7 +339,22 @@ impl<'src> ModelBuilder<'src> {
             stopre: Vec::new(),
             first_executable: None,
             declarations_end: None,
+            macros: Arc::default(),
+            macro_uses: Vec::new(),
         }
+    }
+
+    /// The lines read with `macros` expanded (the machine's definition
+    /// files'); the program's own DEFINEs add to them from their line on.
+    pub fn with_macros(mut self, macros: Arc<Macros>) -> Self {
+        self.macros = macros;
+        self
+    }
+
+    /// Whether the plain line `raw` names a macro (one named as an address
+    /// word, `M6`): it is then parsed as the control reads it, not scanned.
+    pub fn expands(&self, raw: RawLine) -> bool {
+        self.macros.reach_plain_lines() && self.macros.named_in(raw.content.of(self.source))
     }
 
     /// The next lines, plain ones: only their words matter. Taken a run at
@@ -331,9 +375,22 @@ impl<'src> ModelBuilder<'src> {
     /// The next line, one that is not plain: its tree, its syntax error kept.
     pub fn parse(&mut self, raw: RawLine) -> Line {
         self.table.record_other(raw.content.start);
-        let (tree, error) = self.parser.parse_line(self.source, raw);
-        self.syntax.extend(error);
         self.row += 1;
+        if self.macros.is_empty() {
+            let (tree, error) = self.parser.parse_line(self.source, raw);
+            self.syntax.extend(error);
+            return tree;
+        }
+        let (tree, error, expansion) =
+            self.parser
+                .parse_line_expanding(self.source, raw, &self.macros);
+        self.syntax.extend(error);
+        if let Some(expansion) = expansion {
+            for used in expansion.uses.iter().filter(|u| u.recursive) {
+                self.syntax.push(recursive_macro(self.source, used.span));
+            }
+            self.macro_uses.extend(expansion.uses);
+        }
         tree
     }
 
@@ -385,6 +442,9 @@ impl<'src> ModelBuilder<'src> {
                         .iter()
                         .map(|p| symbol(&p.declarator, &p.data_type, false, true)),
                 ),
+                StatementKind::Define { name, body } => {
+                    Arc::make_mut(&mut self.macros).define(name.text(source), body.of(source));
+                }
                 _ if is_stopre(source, statement) => self.stopre.push(row),
                 _ => {}
             }
@@ -409,10 +469,14 @@ impl<'src> ModelBuilder<'src> {
     }
 
     pub fn finish(self, kind: ProgramKind) -> Model<'src> {
+        let mut lines = self.table.finish(self.source);
+        if !self.macros.is_empty() {
+            lines.read_with(self.macros);
+        }
         Model {
             source: self.source,
             kind,
-            lines: self.table.finish(self.source),
+            lines,
             syntax: self.syntax,
             labels: self.labels.sorted(),
             symbols: self.symbols,
@@ -420,6 +484,7 @@ impl<'src> ModelBuilder<'src> {
             stopre: self.stopre,
             first_executable: self.first_executable,
             declarations_end: self.declarations_end,
+            macro_uses: self.macro_uses,
             structure: OnceCell::new(),
         }
     }

@@ -4,9 +4,11 @@
 
 use std::borrow::Cow;
 use std::cell::Cell;
+use std::sync::Arc;
 
 use crate::syntax::lines::RawLine;
 use crate::syntax::tree::{Block, Line, LineKind};
+use crate::syntax::macros::Macros;
 use crate::syntax::{lines, parse_line_kind, plain};
 
 /// A program's lines: memory holds where every `STRIDE`th line starts, a
@@ -28,6 +30,8 @@ pub struct Lines<'src> {
     last: Cell<(usize, usize)>,
     /// (line, tree) of the lines not plain, in line order.
     trees: Vec<(usize, Line)>,
+    /// The macros a line parsed again is read with (see [`crate::syntax::macros`]).
+    macros: Option<Arc<Macros>>,
 }
 
 /// One line in this many has its start kept.
@@ -84,12 +88,28 @@ impl<'src> Lines<'src> {
             }
         }
         let raw = self.raw(index);
+        let expansion = self
+            .macros
+            .as_ref()
+            .and_then(|m| m.expand(raw.content.of(self.source), raw.content.start));
+        if let Some(expansion) = expansion {
+            let (kind, _) = parse_line_kind(&expansion.text, 0, &mut Vec::new());
+            let mut line = Line { raw, kind };
+            expansion.map_line(&mut line);
+            return Cow::Owned(line);
+        }
         let (kind, _) = parse_line_kind(
             raw.content.of(self.source),
             raw.content.start,
             &mut Vec::new(),
         );
         Cow::Owned(Line { raw, kind })
+    }
+
+    /// Lines parsed again are read with `macros` expanded: those the
+    /// program was read with (its own as defined at its end).
+    pub fn read_with(&mut self, macros: Arc<Macros>) {
+        self.macros = Some(macros);
     }
 
     /// The block of line `index`, if the line is one (not a `%` header or
@@ -202,6 +222,7 @@ impl LinesRecorder {
             plain: self.plain,
             last: Cell::new((0, 0)),
             trees: self.trees,
+            macros: None,
         }
     }
 }
