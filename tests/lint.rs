@@ -473,3 +473,41 @@ fn the_rule_reference_is_the_rules_documentation() {
         "docs/rules.md is stale: run SINUPREP_WRITE_DOCS=1 cargo test --test lint the_rule_reference"
     );
 }
+
+/// A machine's macro definition file given (`tests/fixtures/macros`): its
+/// macros expand where the program writes them, so the IF with an operator
+/// macro, the call through `M6` and the program end `ENDE` read as the
+/// control reads them. Without it, they are syntax errors, and the note
+/// says that a name where an operator belongs may be a macro.
+#[test]
+fn a_macro_definition_file_reads_the_program_as_the_control_does() {
+    let program = "tests/fixtures/macros/TOOL_CHANGE.MPF";
+    let output = run(&["check", "--format", "short", program], b"");
+    assert_exit(&output, 1);
+    let report = stdout(&output);
+    for expected in [
+        ":4:9: error[S002]",
+        ":6:5: error[N004]",
+        ":9:7: error[S005]",
+    ] {
+        assert!(report.contains(expected), "{expected} in {report}");
+    }
+    let note = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        note.contains("2 lines with a syntax error have a name where an operator belongs"),
+        "{note}"
+    );
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--definitions",
+            "tests/fixtures/macros/MMAC.DEF",
+            program,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert_eq!(stdout(&output), "");
+}

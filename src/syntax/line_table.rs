@@ -7,8 +7,8 @@ use std::cell::Cell;
 use std::sync::Arc;
 
 use crate::syntax::lines::RawLine;
-use crate::syntax::tree::{Block, Line, LineKind};
 use crate::syntax::macros::Macros;
+use crate::syntax::tree::{Block, Line, LineKind};
 use crate::syntax::{lines, parse_line_kind, plain};
 
 /// A program's lines: memory holds where every `STRIDE`th line starts, a

@@ -768,10 +768,16 @@ mod tests {
 
     #[test]
     fn a_name_after_an_operand_in_parentheses_may_be_a_macro() {
-        assert!(name_in_operator_position(b"IF (($TC_CARR37[_TC1] _DEC2)==1)"));
-        assert!(!name_in_operator_position(b"IF (($TC_CARR37[_TC1] MOD 100)==1)"));
+        assert!(name_in_operator_position(
+            b"IF (($TC_CARR37[_TC1] _DEC2)==1)"
+        ));
+        assert!(!name_in_operator_position(
+            b"IF (($TC_CARR37[_TC1] MOD 100)==1)"
+        ));
         assert!(!name_in_operator_position(b"G1 X10 Y20 F=R1 ; (A B)"));
-        assert!(!name_in_operator_position(b"IF (R1 == 1) AND NOT (R2 > 0) GOTOF END"));
+        assert!(!name_in_operator_position(
+            b"IF (R1 == 1) AND NOT (R2 > 0) GOTOF END"
+        ));
         assert!(!name_in_operator_position(b"MSG(\"A B\" << R1)"));
     }
 
@@ -787,7 +793,10 @@ mod tests {
         assert_eq!(expansion.source_span(Span::new(16, 19)), Span::new(19, 22));
         assert_eq!(expansion.source_span(Span::new(4, 19)), Span::new(14, 22));
         assert_eq!(expansion.source_span(Span::new(19, 19)), Span::new(22, 22));
-        assert_eq!(expansion.use_at(Span::new(14, 18)).map(|u| u.span), Some(used));
+        assert_eq!(
+            expansion.use_at(Span::new(14, 18)).map(|u| u.span),
+            Some(used)
+        );
         assert!(expansion.use_at(Span::new(19, 22)).is_none());
     }
 
