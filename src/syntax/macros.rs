@@ -781,6 +781,21 @@ mod tests {
         assert!(!name_in_operator_position(b"MSG(\"A B\" << R1)"));
     }
 
+    /// Macros that multiply their text at every level stop growing once
+    /// the line is too long to read (S009): the expansion takes time and
+    /// memory of the order of that limit, not of the 8^15 bytes asked for.
+    #[test]
+    fn an_expansion_stops_growing_past_the_longest_line_read() {
+        let mut m = macros(&[("_M0", "R1")]);
+        for level in 1..15 {
+            let inner = format!("_M{} ", level - 1).repeat(8);
+            m.define(format!("_M{level}").as_bytes(), inner.as_bytes());
+        }
+        let expansion = m.expand(b"R2=_M14", 0).expect("names a macro");
+        assert!(expansion.text.len() > MAX_PARSED_LINE);
+        assert!(expansion.text.len() < 2 * MAX_PARSED_LINE);
+    }
+
     #[test]
     fn spans_in_an_expansion_map_to_the_use_and_others_to_themselves() {
         let m = macros(&[("LINE", "G1 G94 F300")]);
