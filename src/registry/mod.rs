@@ -65,4 +65,5 @@ pub static ALL: &[&RuleInfo] = &[
     &syntax::NESTING_TOO_DEEP,
     &syntax::TOO_LONG_TO_READ,
     &syntax::RECURSIVE_MACRO,
+    &syntax::MACRO_REDEFINES_KEYWORD,
 ];

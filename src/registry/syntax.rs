@@ -224,3 +224,25 @@ N10 G1 X10 F=FEED
 ## Fix
 Define the macro without its own name."#,
 };
+
+pub static MACRO_REDEFINES_KEYWORD: RuleInfo = RuleInfo {
+    code: "S011",
+    name: "macro-redefines-keyword",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a `DEFINE` whose name is a keyword or reserved word of the language (`IF`, `ENDIF`, `DEF`,
+`MOD`, `TRANS`, ...).
+
+## Why it matters
+Keywords and reserved names may not be redefined with macros (Siemens, Programming Manual Job
+Planning, "Macro technique (DEFINE ... AS)"); G, M and H functions and subprogram names may. The
+control refuses the definition; sinuprep does not expand it.
+
+## Example
+```
+DEFINE ENDIF AS M17
+```
+
+## Fix
+Give the macro a name of its own."#,
+};

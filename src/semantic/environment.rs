@@ -97,6 +97,10 @@ impl Environment {
             };
             for statement in &block.statements {
                 if let StatementKind::Define { name, body } = &statement.kind {
+                    // The control refuses it, and so does the file's own check.
+                    if crate::semantic::model::is_reserved(name.text(source)) {
+                        continue;
+                    }
                     self.macros.insert(
                         crate::syntax::tree::upper(name.text(source)),
                         Macro::of(body.of(source)),

@@ -198,6 +198,21 @@ fn recursive_macro(source: &[u8], used: Span) -> Diagnostic {
         .help("define the macro without its own name (a macro's text may name other macros)")
 }
 
+/// Whether `name` is a keyword or reserved word, which a macro may not
+/// redefine (Siemens, Job Planning, "Macro technique (DEFINE ... AS)").
+pub fn is_reserved(name: &[u8]) -> bool {
+    crate::syntax::lexer::is_one_of(name, crate::syntax::lexer::RESERVED)
+}
+
+fn macro_redefines_keyword(source: &[u8], name: Span) -> Diagnostic {
+    let text = crate::syntax::tree::upper(name.of(source));
+    crate::registry::syntax::MACRO_REDEFINES_KEYWORD
+        .at(name)
+        .message(format!("`{text}` is a keyword: a macro may not redefine it"))
+        .label("a keyword")
+        .help("give the macro a name of its own; G, M and H functions and subprogram names may be macros")
+}
+
 /// One line as the rules and the model see it, with what each statement
 /// reads collected once: five rules need it, and walking every statement's
 /// expressions once per rule cost a tenth of `check`'s time.
@@ -443,7 +458,11 @@ impl<'src> ModelBuilder<'src> {
                         .map(|p| symbol(&p.declarator, &p.data_type, false, true)),
                 ),
                 StatementKind::Define { name, body } => {
-                    Arc::make_mut(&mut self.macros).define(name.text(source), body.of(source));
+                    if is_reserved(name.text(source)) {
+                        self.syntax.push(macro_redefines_keyword(source, name.span));
+                    } else {
+                        Arc::make_mut(&mut self.macros).define(name.text(source), body.of(source));
+                    }
                 }
                 _ if is_stopre(source, statement) => self.stopre.push(row),
                 _ => {}
