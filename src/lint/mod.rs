@@ -192,9 +192,12 @@ fn lint(
     let mut suppressions = Suppressions::default();
     let walk = crate::semantic::mentions_cycle600(source);
     let mut model = ModelBuilder::new(source, walk).with_macros(environment.expansions.clone());
+    // Asked again only after a line that is not plain (a DEFINE is none):
+    // a CAM program's millions of plain lines pay a test of a local.
+    let mut macros_reach_plain_lines = model.macros_reach_plain_lines();
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
-            Scanned::Plain(plain) if !model.expands(plain.raw) => {
+            Scanned::Plain(plain) if !(macros_reach_plain_lines && model.expands(plain.raw)) => {
                 // No syntax error, and only a few rules care: no tree to build.
                 let facts = plain.facts();
                 if let Some(comment) = plain.comment {
@@ -221,6 +224,7 @@ fn lint(
         }
         let view = LineView::new(&tree);
         model.learn(&view);
+        macros_reach_plain_lines = model.macros_reach_plain_lines();
         for checker in &mut checkers {
             checker.line(&file, row, &view, &mut found);
         }

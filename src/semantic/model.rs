@@ -372,6 +372,11 @@ impl<'src> ModelBuilder<'src> {
         self.macros.reach_plain_lines() && self.macros.named_in(raw.content.of(self.source))
     }
 
+    /// Whether a plain line may name a macro now (see [`Macros::reach_plain_lines`]).
+    pub fn macros_reach_plain_lines(&self) -> bool {
+        self.macros.reach_plain_lines()
+    }
+
     /// The next lines, plain ones: only their words matter. Taken a run at
     /// a time, since a CAM program is millions of them.
     pub fn plain_lines(&mut self, lines: &[PlainLine]) {
