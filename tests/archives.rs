@@ -490,3 +490,16 @@ fn ci_formats_point_at_the_archive_and_name_the_member() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An archive's macro file (`%_N_MMAC_DEF`) is the environment of its
+/// programs: their macros expand as on the control, and nothing is found.
+#[test]
+fn an_archive_s_macro_member_expands_in_its_programs() {
+    let name = support::repo()
+        .join("tests/fixtures/archive/MACROS.ARC")
+        .display()
+        .to_string();
+    let output = run(&["check", "--format", "short", &name], b"");
+    assert_exit(&output, 0);
+    assert_eq!(stdout(&output), "");
+}

@@ -370,6 +370,40 @@ proptest::proptest! {
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
 
+    /// Random programs defining macros of every shape (words, keywords,
+    /// operators, calls, labels, jumps, block numbers, broken text, macros
+    /// naming macros or themselves) and using them anywhere: every rule
+    /// reads the trees of their expansions without a panic, every finding
+    /// points inside the program, and skipping plain lines (where `M6` may
+    /// be a macro) changes nothing.
+    #[test]
+    fn macros_of_any_shape_are_read_without_harm(
+        lines in proptest::collection::vec(proptest::prop_oneof![
+            "DEFINE (_A|_B|M6|ENDE|L1) AS (G1 X10 F100|M30|ENDIF|IF R1==1|MOD 3|\\(1\\+|_A|_B \\+ 1|CYCLE800\\(1,\\\"T\\\",0,57\\)|GOTOF LBL|LBL:|N10 G0|X=|R1=_B|\\$AA_IM\\[X\\]|T1 M6|CR=5|\\)|;x|\\\"S\\\")",
+            "(N[0-9] )?(_A|_B|M6|ENDE|L1|T1 M6|R2=_A|IF \\(R1 _A\\)==1|X=_B Y1|G1 X_A|M6\\(1,2\\)|_A:|GOTOF _A)( ; _A)?",
+            "(IF R1==1|ENDIF|LBL:|G1 X1 F100|STOPRE|M30|DEF REAL R)",
+        ], 0..16),
+    ) {
+        let source = lines.join("\n");
+        let settings = lint::Settings {
+            selection: Selection {
+                select: ["C", "K", "N", "S", "N015", "C619"].map(String::from).to_vec(),
+                ..Selection::default()
+            },
+            heads: Some(sample_heads()),
+            ..lint::Settings::default()
+        };
+        let kind = program_kind(Some("RANDOM.MPF"), source.as_bytes());
+        let found = lint::check(source.as_bytes(), "RANDOM.MPF", kind, &settings);
+        for diagnostic in &found {
+            proptest::prop_assert!(diagnostic.span.end <= source.len(), "{diagnostic:?}");
+            proptest::prop_assert!(diagnostic.span.start <= diagnostic.span.end, "{diagnostic:?}");
+        }
+        let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
+        let reference = lint::check_with(every_line, source.as_bytes(), "RANDOM.MPF", kind, &settings);
+        proptest::prop_assert_eq!(found, reference);
+    }
+
     /// Every fix, safe and unsafe, applied to random programs: the fixed
     /// program has no more syntax errors than the original, and after the
     /// safe fixes a second run finds nothing more to fix safely (safe fixes
@@ -472,4 +506,42 @@ fn the_rule_reference_is_the_rules_documentation() {
         written == made,
         "docs/rules.md is stale: run SINUPREP_WRITE_DOCS=1 cargo test --test lint the_rule_reference"
     );
+}
+
+/// A machine's macro definition file given (`tests/fixtures/macros`): its
+/// macros expand where the program writes them, so the IF with an operator
+/// macro, the call through `M6` and the program end `ENDE` read as the
+/// control reads them. Without it, they are syntax errors, and the note
+/// says that a name where an operator belongs may be a macro.
+#[test]
+fn a_macro_definition_file_reads_the_program_as_the_control_does() {
+    let program = "tests/fixtures/macros/TOOL_CHANGE.MPF";
+    let output = run(&["check", "--format", "short", program], b"");
+    assert_exit(&output, 1);
+    let report = stdout(&output);
+    for expected in [
+        ":4:9: error[S002]",
+        ":6:5: error[N004]",
+        ":9:7: error[S005]",
+    ] {
+        assert!(report.contains(expected), "{expected} in {report}");
+    }
+    let note = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        note.contains("2 lines with a syntax error have a name where an operator belongs"),
+        "{note}"
+    );
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--definitions",
+            "tests/fixtures/macros/MMAC.DEF",
+            program,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert_eq!(stdout(&output), "");
 }

@@ -74,6 +74,9 @@ struct Unchecked {
     /// N005 findings with no defined name near them (a typo offers one),
     /// which may be globals, macros or axes of the machine.
     undefined_names: usize,
+    /// Lines with syntax errors that write a name where an operator belongs,
+    /// which may be a macro of the machine.
+    names_as_operators: usize,
 }
 
 impl Unchecked {
@@ -89,12 +92,14 @@ impl Unchecked {
                 .iter()
                 .filter(|d| d.code == undefined && d.fix.is_none())
                 .count(),
+            names_as_operators: outcome.names_as_operators,
         }
     }
 
     fn add(&mut self, other: Unchecked) {
         self.calls.extend(other.calls);
         self.undefined_names += other.undefined_names;
+        self.names_as_operators += other.names_as_operators;
     }
 
     /// Said once a run, after the summary: what the environment would
@@ -122,6 +127,15 @@ impl Unchecked {
             };
             lines.push(format!(
                 "  - {count} may name GUD variables, macros or axes of the machine; give its definition files and machine data (`definitions`, --definitions FILE) or axes (`axes`)"
+            ));
+        }
+        if self.names_as_operators > 0 {
+            let count = match self.names_as_operators {
+                1 => "1 line with a syntax error has".to_string(),
+                n => format!("{n} lines with a syntax error have"),
+            };
+            lines.push(format!(
+                "  - {count} a name where an operator belongs (`(R1 _DEC2)`), which may be a macro of the machine (`DEFINE _DEC2 AS MOD 100 DIV 10`); give its macro definition files (`definitions`, --definitions MMAC.DEF)"
             ));
         }
         (!lines.is_empty()).then(|| {

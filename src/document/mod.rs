@@ -74,16 +74,25 @@ impl<'src> Document<'src> {
     pub fn rewrite(&self, settings: &Settings) -> Rewritten<'src> {
         // A program that never names CYCLE600 has nothing to rewrite: it
         // needs only the streaming syntax pass, not its trees in memory.
+        let macros = &settings.environment.expansions;
         if !crate::semantic::mentions_cycle600(self.source) {
+            // Macros (the machine's, or the program's own DEFINEs) change
+            // what a line reads as: such a program is read with them.
+            let diagnostics = if macros.is_empty() && !defines_macros(self.source) {
+                crate::syntax::diagnostics(self.source)
+            } else {
+                let model = Model::build_with(self.source, self.kind, macros.clone());
+                annotated(model.syntax, &model.macro_uses, self.source)
+            };
             return Rewritten {
                 model: None,
                 analysis: Analysis::default(),
                 rewrite: Rewrite::default(),
-                diagnostics: crate::syntax::diagnostics(self.source),
+                diagnostics,
             };
         }
         // One parse for the syntax diagnostics, the walk and the rewrite.
-        let mut model = Model::build(self.source, self.kind);
+        let mut model = Model::build_with(self.source, self.kind, macros.clone());
         let heads = settings.heads.as_ref();
         let analysis = analyze(&model, &settings.supplied, heads);
         let mut rewrite = rewrite(&model, &analysis, &settings.emit);
@@ -97,6 +106,7 @@ impl<'src> Document<'src> {
         }
         diagnostics.extend(rewrite.diagnostics.iter().cloned());
         diagnostics.sort_by_key(|d| (d.span.start, d.code));
+        let diagnostics = annotated(diagnostics, &model.macro_uses, self.source);
         Rewritten {
             model: Some(model),
             analysis,
@@ -104,6 +114,24 @@ impl<'src> Document<'src> {
             diagnostics,
         }
     }
+}
+
+/// Whether `source` may define a macro of its own (`DEFINE`, in capitals
+/// or in lower case): a byte search.
+fn defines_macros(source: &[u8]) -> bool {
+    crate::syntax::WordFinder::new("DEFINE").in_line(source)
+}
+
+/// `diagnostics`, those at a macro's use saying what it expanded to.
+fn annotated(
+    mut diagnostics: Vec<Diagnostic>,
+    uses: &[crate::syntax::macros::Use],
+    source: &[u8],
+) -> Vec<Diagnostic> {
+    for diagnostic in &mut diagnostics {
+        crate::syntax::macros::annotate(diagnostic, uses, source);
+    }
+    diagnostics
 }
 
 #[cfg(test)]

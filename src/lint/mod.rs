@@ -139,6 +139,10 @@ pub struct Outcome {
     /// Subprograms called that neither the program nor the environment
     /// declares (upper case, each once, sorted): their calls are unchecked.
     pub unresolved_calls: Vec<String>,
+    /// Syntax errors on lines that write a name where an operator belongs
+    /// (`(R1 _DEC2)`): read without the machine's macros, that name may be
+    /// one.
+    pub names_as_operators: usize,
 }
 
 /// One analysis of a program, everything it built kept: the model (lines,
@@ -154,6 +158,8 @@ pub struct Analyzed<'src> {
     pub findings: Vec<Diagnostic>,
     /// As [`Outcome::unresolved_calls`].
     pub unresolved_calls: Vec<String>,
+    /// As [`Outcome::names_as_operators`].
+    pub names_as_operators: usize,
 }
 
 impl From<Analyzed<'_>> for Outcome {
@@ -161,6 +167,7 @@ impl From<Analyzed<'_>> for Outcome {
         Self {
             diagnostics: analyzed.findings,
             unresolved_calls: analyzed.unresolved_calls,
+            names_as_operators: analyzed.names_as_operators,
         }
     }
 }
@@ -221,10 +228,13 @@ fn analyze_with<'src>(
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
     let walk = crate::semantic::mentions_cycle600(source);
-    let mut model = ModelBuilder::new(source, walk);
+    let mut model = ModelBuilder::new(source, walk).with_macros(environment.expansions.clone());
+    // Asked again only after a line that is not plain (a DEFINE is none):
+    // a CAM program's millions of plain lines pay a test of a local.
+    let mut macros_reach_plain_lines = model.macros_reach_plain_lines();
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
-            Scanned::Plain(plain) => {
+            Scanned::Plain(plain) if !(macros_reach_plain_lines && model.expands(plain.raw)) => {
                 // No syntax error, and only a few rules care: no tree to build.
                 let facts = plain.facts();
                 if let Some(comment) = plain.comment {
@@ -240,7 +250,7 @@ fn analyze_with<'src>(
                 }
                 continue;
             }
-            Scanned::Other(raw) => raw,
+            other => other.raw(),
         };
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
@@ -251,6 +261,7 @@ fn analyze_with<'src>(
         }
         let view = LineView::new(&tree);
         model.learn(&view);
+        macros_reach_plain_lines = model.macros_reach_plain_lines();
         for checker in &mut checkers {
             checker.line(&file, row, &view, &mut found);
         }
@@ -291,13 +302,40 @@ fn analyze_with<'src>(
     }
     kept.sort_by_key(|d| (d.span.start, d.code));
     one_finding_per_cause(&mut kept, &model.labels);
+    if !model.macro_uses.is_empty() {
+        for diagnostic in &mut kept {
+            crate::syntax::macros::annotate(diagnostic, &model.macro_uses, source);
+        }
+    }
+    let names_as_operators = syntax_error_lines(&kept, source)
+        .filter(|line| crate::syntax::macros::name_in_operator_position(line))
+        .count();
     let unresolved_calls = file.take_unresolved().into_iter().collect();
     Analyzed {
         model: file.into_model(),
         walk: analysis,
         findings: kept,
         unresolved_calls,
+        names_as_operators,
     }
+}
+
+/// The lines with syntax errors among `found` (sorted), each once.
+fn syntax_error_lines<'s>(
+    found: &'s [Diagnostic],
+    source: &'s [u8],
+) -> impl Iterator<Item = &'s [u8]> + 's {
+    let mut last = None;
+    found
+        .iter()
+        .filter(|d| d.code.starts_with('S'))
+        .filter_map(move |d| {
+            let start = crate::span::line_start(source, d.span.start.min(source.len()));
+            (last.replace(start) != Some(start)).then(|| {
+                let end = crate::span::line_end(source, start);
+                &source[start..end]
+            })
+        })
 }
 
 /// The swivels of the program solved on the machine: its CYCLE800 calls

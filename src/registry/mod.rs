@@ -64,4 +64,6 @@ pub static ALL: &[&RuleInfo] = &[
     &syntax::CONTINUED_BLOCK,
     &syntax::NESTING_TOO_DEEP,
     &syntax::TOO_LONG_TO_READ,
+    &syntax::RECURSIVE_MACRO,
+    &syntax::MACRO_REDEFINES_KEYWORD,
 ];

@@ -215,3 +215,48 @@ N10 R1=((((((...))))))
 ## Fix
 Split it into several assignments."#,
 };
+
+pub static RECURSIVE_MACRO: RuleInfo = RuleInfo {
+    code: "S010",
+    name: "recursive-macro",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a macro written in a block whose text names the macro itself, directly or through other
+macros (`DEFINE A AS B + 1` with `DEFINE B AS A * 2`).
+
+## Why it matters
+The control replaces a macro's name by its text before it reads the block (Siemens, Programming
+Manual Job Planning, "Macro technique (DEFINE ... AS)"); a macro that names itself never ends
+being replaced, and the block cannot run. sinuprep leaves the name as it is written there.
+
+## Example
+```
+DEFINE FEED AS FEED*2
+N10 G1 X10 F=FEED
+```
+
+## Fix
+Define the macro without its own name."#,
+};
+
+pub static MACRO_REDEFINES_KEYWORD: RuleInfo = RuleInfo {
+    code: "S011",
+    name: "macro-redefines-keyword",
+    severity: Severity::Error,
+    docs: r#"## What it does
+Reports a `DEFINE` whose name is a keyword or reserved word of the language (`IF`, `ENDIF`, `DEF`,
+`MOD`, `TRANS`, ...).
+
+## Why it matters
+Keywords and reserved names may not be redefined with macros (Siemens, Programming Manual Job
+Planning, "Macro technique (DEFINE ... AS)"); G, M and H functions and subprogram names may. The
+control refuses the definition; sinuprep does not expand it.
+
+## Example
+```
+DEFINE ENDIF AS M17
+```
+
+## Fix
+Give the macro a name of its own."#,
+};

@@ -63,12 +63,15 @@ fn digits(text: &[u8]) -> Option<u32> {
 
 /// The block's address words in order: its words, and its assignments to the
 /// named addresses. Words inside a synchronized action are the action's and
-/// not among them.
+/// not among them, and so are the words of a macro's text (`LINE` with
+/// `DEFINE LINE AS G1 F300`): their spans are the macro's name, whose
+/// spelling is not theirs.
 pub fn of_block(source: &[u8], block: &Block) -> Vec<Address> {
     block
         .statements
         .iter()
         .filter_map(|statement| match &statement.kind {
+            StatementKind::Word(word) if word.address.span == statement.span => None,
             StatementKind::Word(word) => Some(Address {
                 span: statement.span,
                 name: word.address.span,
@@ -80,6 +83,7 @@ pub fn of_block(source: &[u8], block: &Block) -> Vec<Address> {
             }),
             StatementKind::Assign(assign)
                 if assign.target.indices.is_empty()
+                    && assign.target.name.span != statement.span
                     && NAMED.iter().any(|name| assign.target.name.is(source, name)) =>
             {
                 Some(Address {

@@ -10,6 +10,7 @@ use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::Model;
+use crate::syntax::macros::Macros;
 use crate::syntax::tree::{ExprKind, LineKind, StatementKind};
 
 /// Names defined outside the program.
@@ -24,6 +25,9 @@ pub struct Environment {
     /// Macros of definition files (`DEFINE M_ON AS M3`) by name, upper
     /// case, with what they stand for.
     pub macros: HashMap<String, Macro>,
+    /// The same macros' texts, as the parser expands them where a program
+    /// writes their names. Shared: every program of a run reads them.
+    pub expansions: Arc<Macros>,
     /// Subprograms of the cycle directories: name (upper case) and how
     /// many parameters their PROC declares. Shared: every program of a
     /// directory reaches the same ones.
@@ -93,10 +97,15 @@ impl Environment {
             };
             for statement in &block.statements {
                 if let StatementKind::Define { name, body } = &statement.kind {
+                    // The control refuses it, and so does the file's own check.
+                    if crate::semantic::model::is_reserved(name.text(source)) {
+                        continue;
+                    }
                     self.macros.insert(
                         crate::syntax::tree::upper(name.text(source)),
                         Macro::of(body.of(source)),
                     );
+                    Arc::make_mut(&mut self.expansions).define(name.text(source), body.of(source));
                 }
             }
         }

@@ -10,7 +10,7 @@
 
 use std::cell::OnceCell;
 use std::collections::HashSet;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
@@ -19,6 +19,7 @@ use crate::semantic::line_order;
 use crate::semantic::structure::Structure;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
+use crate::syntax::macros::{Macros, Use};
 use crate::syntax::plain::{scanned_lines, PlainFacts, Scanned};
 use crate::syntax::tree::{
     upper, Block, DataType, Line, LineKind, Statement, StatementKind, Variable, Word, WordValue,
@@ -72,6 +73,9 @@ pub struct Model<'src> {
     pub first_executable: Option<(usize, usize)>,
     /// Where the line of the last declaration before it ends.
     pub declarations_end: Option<usize>,
+    /// The macros written in the program's lines and what each stood for,
+    /// in source order (its trees are read from the expansions).
+    pub macro_uses: Vec<Use>,
     /// Built when first asked for, by whichever thread asks.
     structure: OnceLock<Structure>,
 }
@@ -84,11 +88,17 @@ impl<'src> Model<'src> {
 
     /// The model of `source`, in a pass of its own.
     pub fn build(source: &'src [u8], kind: ProgramKind) -> Self {
-        let mut builder = ModelBuilder::new(source, true);
+        Self::build_with(source, kind, Arc::default())
+    }
+
+    /// [`Self::build`], the program's lines read with the macros of the
+    /// machine's definition files (its own are learned on the way).
+    pub fn build_with(source: &'src [u8], kind: ProgramKind, macros: Arc<Macros>) -> Self {
+        let mut builder = ModelBuilder::new(source, true).with_macros(macros);
         let mut plain = Vec::with_capacity(PLAIN_RUN);
         for (row, line) in scanned_lines(source).enumerate() {
             match line {
-                Scanned::Plain(line) => {
+                Scanned::Plain(line) if !builder.expands(line.raw) => {
                     plain.push(PlainLine {
                         row,
                         raw: line.raw,
@@ -101,7 +111,8 @@ impl<'src> Model<'src> {
                         plain.clear();
                     }
                 }
-                Scanned::Other(raw) => {
+                other => {
+                    let raw = other.raw();
                     builder.plain_lines(&plain);
                     plain.clear();
                     let tree = builder.parse(raw);
@@ -182,6 +193,34 @@ pub fn is_declaration(statement: &Statement) -> bool {
             | StatementKind::Extern { .. }
             | StatementKind::Define { .. }
     )
+}
+
+/// A macro whose text names it (directly or through others): the control
+/// cannot expand it.
+fn recursive_macro(source: &[u8], used: Span) -> Diagnostic {
+    let name = String::from_utf8_lossy(used.of(source));
+    crate::registry::syntax::RECURSIVE_MACRO
+        .at(used)
+        .message(format!(
+            "macro `{name}` names itself in its text, directly or through other macros"
+        ))
+        .label("expands to itself")
+        .help("define the macro without its own name (a macro's text may name other macros)")
+}
+
+/// Whether `name` is a keyword or reserved word, which a macro may not
+/// redefine (Siemens, Job Planning, "Macro technique (DEFINE ... AS)").
+pub fn is_reserved(name: &[u8]) -> bool {
+    crate::syntax::lexer::is_one_of(name, crate::syntax::lexer::RESERVED)
+}
+
+fn macro_redefines_keyword(source: &[u8], name: Span) -> Diagnostic {
+    let text = crate::syntax::tree::upper(name.of(source));
+    crate::registry::syntax::MACRO_REDEFINES_KEYWORD
+        .at(name)
+        .message(format!("`{text}` is a keyword: a macro may not redefine it"))
+        .label("a keyword")
+        .help("give the macro a name of its own; G, M and H functions and subprogram names may be macros")
 }
 
 /// One line as the rules and the model see it, with what each statement
@@ -301,6 +340,10 @@ pub struct ModelBuilder<'src> {
     stopre: Vec<usize>,
     first_executable: Option<(usize, usize)>,
     declarations_end: Option<usize>,
+    /// The macros the next line is read with: the machine's, and those the
+    /// program has defined so far.
+    macros: Arc<Macros>,
+    macro_uses: Vec<Use>,
 }
 
 impl<'src> ModelBuilder<'src> {
@@ -321,7 +364,27 @@ impl<'src> ModelBuilder<'src> {
             stopre: Vec::new(),
             first_executable: None,
             declarations_end: None,
+            macros: Arc::default(),
+            macro_uses: Vec::new(),
         }
+    }
+
+    /// The lines read with `macros` expanded (the machine's definition
+    /// files'); the program's own DEFINEs add to them from their line on.
+    pub fn with_macros(mut self, macros: Arc<Macros>) -> Self {
+        self.macros = macros;
+        self
+    }
+
+    /// Whether the plain line `raw` names a macro (one named as an address
+    /// word, `M6`): it is then parsed as the control reads it, not scanned.
+    pub fn expands(&self, raw: RawLine) -> bool {
+        self.macros.reach_plain_lines() && self.macros.named_in(raw.content.of(self.source))
+    }
+
+    /// Whether a plain line may name a macro now (see [`Macros::reach_plain_lines`]).
+    pub fn macros_reach_plain_lines(&self) -> bool {
+        self.macros.reach_plain_lines()
     }
 
     /// The next lines, plain ones: only their words matter. Taken a run at
@@ -342,9 +405,22 @@ impl<'src> ModelBuilder<'src> {
     /// The next line, one that is not plain: its tree, its syntax error kept.
     pub fn parse(&mut self, raw: RawLine) -> Line {
         self.table.record_other(raw.content.start);
-        let (tree, error) = self.parser.parse_line(self.source, raw);
-        self.syntax.extend(error);
         self.row += 1;
+        if self.macros.is_empty() {
+            let (tree, error) = self.parser.parse_line(self.source, raw);
+            self.syntax.extend(error);
+            return tree;
+        }
+        let (tree, error, expansion) =
+            self.parser
+                .parse_line_expanding(self.source, raw, &self.macros);
+        self.syntax.extend(error);
+        if let Some(expansion) = expansion {
+            for used in expansion.uses.iter().filter(|u| u.recursive) {
+                self.syntax.push(recursive_macro(self.source, used.span));
+            }
+            self.macro_uses.extend(expansion.uses);
+        }
         tree
     }
 
@@ -396,6 +472,13 @@ impl<'src> ModelBuilder<'src> {
                         .iter()
                         .map(|p| symbol(&p.declarator, &p.data_type, false, true)),
                 ),
+                StatementKind::Define { name, body } => {
+                    if is_reserved(name.text(source)) {
+                        self.syntax.push(macro_redefines_keyword(source, name.span));
+                    } else {
+                        Arc::make_mut(&mut self.macros).define(name.text(source), body.of(source));
+                    }
+                }
                 _ if is_stopre(source, statement) => self.stopre.push(row),
                 _ => {}
             }
@@ -420,10 +503,14 @@ impl<'src> ModelBuilder<'src> {
     }
 
     pub fn finish(self, kind: ProgramKind) -> Model<'src> {
+        let mut lines = self.table.finish(self.source);
+        if !self.macros.is_empty() {
+            lines.read_with(self.macros);
+        }
         Model {
             source: self.source,
             kind,
-            lines: self.table.finish(self.source),
+            lines,
             syntax: self.syntax,
             labels: self.labels.sorted(),
             symbols: self.symbols,
@@ -431,6 +518,7 @@ impl<'src> ModelBuilder<'src> {
             stopre: self.stopre,
             first_executable: self.first_executable,
             declarations_end: self.declarations_end,
+            macro_uses: self.macro_uses,
             structure: OnceLock::new(),
         }
     }

@@ -4,8 +4,10 @@
 
 use std::borrow::Cow;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
 use crate::syntax::lines::RawLine;
+use crate::syntax::macros::Macros;
 use crate::syntax::tree::{Block, Line, LineKind};
 use crate::syntax::{lines, parse_line_kind, plain};
 
@@ -31,6 +33,8 @@ pub struct Lines<'src> {
     last: AtomicU64,
     /// (line, tree) of the lines not plain, in line order.
     trees: Vec<(usize, Line)>,
+    /// The macros a line parsed again is read with (see [`crate::syntax::macros`]).
+    macros: Option<Arc<Macros>>,
 }
 
 /// One line in this many has its start kept.
@@ -117,12 +121,28 @@ impl<'src> Lines<'src> {
             }
         }
         let raw = self.raw(index);
+        let expansion = self
+            .macros
+            .as_ref()
+            .and_then(|m| m.expand(raw.content.of(self.source), raw.content.start));
+        if let Some(expansion) = expansion {
+            let (kind, _) = parse_line_kind(&expansion.text, 0, &mut Vec::new());
+            let mut line = Line { raw, kind };
+            expansion.map_line(&mut line);
+            return Cow::Owned(line);
+        }
         let (kind, _) = parse_line_kind(
             raw.content.of(self.source),
             raw.content.start,
             &mut Vec::new(),
         );
         Cow::Owned(Line { raw, kind })
+    }
+
+    /// Lines parsed again are read with `macros` expanded: those the
+    /// program was read with (its own as defined at its end).
+    pub fn read_with(&mut self, macros: Arc<Macros>) {
+        self.macros = Some(macros);
     }
 
     /// The block of line `index`, if the line is one (not a `%` header or
@@ -235,6 +255,7 @@ impl LinesRecorder {
             plain: self.plain,
             last: AtomicU64::new(Cursor::NONE),
             trees: self.trees,
+            macros: None,
         }
     }
 }

@@ -14,6 +14,7 @@ pub mod kind;
 pub mod lexer;
 pub(crate) mod line_table;
 pub mod lines;
+pub mod macros;
 pub mod plain;
 pub mod tree;
 pub(crate) mod visit;
@@ -213,6 +214,37 @@ impl LineParser {
             to_diagnostic(source, raw, &error)
         });
         (kind, diagnostic)
+    }
+}
+
+impl LineParser {
+    /// [`Self::parse_line`], the line read as the control reads it when it
+    /// names one of `macros` (see [`macros`]): the tree of its expansion,
+    /// every span mapped back to the source, and the expansion.
+    pub fn parse_line_expanding(
+        &mut self,
+        source: &[u8],
+        raw: RawLine,
+        macros: &macros::Macros,
+    ) -> (Line, Option<Diagnostic>, Option<macros::Expansion>) {
+        let Some(expansion) = macros.expand(raw.content.of(source), raw.content.start) else {
+            let (line, diagnostic) = self.parse_line(source, raw);
+            return (line, diagnostic, None);
+        };
+        self.row += 1;
+        self.open_call = None;
+        let text = &expansion.text;
+        let (kind, error) = parse_line_kind(text, 0, &mut self.statements);
+        let mut line = Line { raw, kind };
+        expansion.map_line(&mut line);
+        let diagnostic = error.map(|error| {
+            let read = RawLine {
+                content: Span::new(0, text.len()),
+                ending: raw.ending,
+            };
+            expansion.diagnostic_in_source(to_diagnostic(text, read, &error))
+        });
+        (line, diagnostic, Some(expansion))
     }
 }
 

@@ -80,14 +80,18 @@ pub fn is_definition_file(name: &str) -> bool {
 /// Where the program ends in this block: its M2, M17, M30 or RET, or a
 /// macro of the definition files given whose text ends it (`ENDE` with
 /// `DEFINE ENDE AS M30`), which the control expands where it is written.
+/// The statements read from an expansion span the macro's name, so the
+/// name is what is looked up.
 pub fn program_end(file: &FileContext, block: &Block, addresses: &[Address]) -> Option<Span> {
     crate::semantic::addresses::program_end(file.source, block, addresses).or_else(|| {
+        if file.environment.macros.is_empty() {
+            return None;
+        }
         block.statements.iter().find_map(|statement| {
-            let name = command_name(statement)?;
             let expanded = file
                 .environment
                 .macros
-                .get(&upper(file.source, name.span))?;
+                .get(&upper(file.source, statement.span))?;
             expanded.ends_program.then_some(statement.span)
         })
     })
