@@ -815,6 +815,26 @@ fn a_binary_file_is_skipped_by_a_walk_and_not_linted_when_named() {
         stderr.contains("note: programs/B.MPF: not checked: a binary file"),
         "{stderr}"
     );
+
+    // rewrite and eval skip it in a walk; named, it is no program to
+    // rewrite or evaluate: an error, and the file untouched.
+    for command in [&["rewrite", "--check"][..], &["eval"]] {
+        let output = run_in(&dir, &[command, &["programs"]].concat());
+        assert_exit(&output, 0);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("note: skipped programs/B.MPF: a binary file"),
+            "{stderr}"
+        );
+    }
+    let output = run_in(&dir, &["rewrite", "--in-place", "programs/B.MPF"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("a binary file (NUL bytes), not a program"),
+        "{stderr}"
+    );
+    assert_eq!(fs::read(programs.join("B.MPF")).expect("read"), elf);
     let _ = fs::remove_dir_all(&dir);
 }
 

@@ -32,6 +32,13 @@ pub enum CliError {
         help: String,
     },
 
+    #[error("{}: a binary file (NUL bytes), not a program", shown(path))]
+    #[diagnostic(
+        code(sinuprep::binary),
+        help("name a program (.mpf, .spf, an archive); a walk skips binary files with a note")
+    )]
+    Binary { path: PathBuf },
+
     #[error("the language server stopped: {0}")]
     #[diagnostic(
         code(sinuprep::lsp),

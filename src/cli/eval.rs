@@ -6,7 +6,7 @@ use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, named_or_stdin, read, Found};
+use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::walk::{expand, Walk};
@@ -102,6 +102,18 @@ struct Evaluated {
 fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Evaluated, CliError> {
     let path = found.path.as_path();
     let file = read(found)?;
+    if binary(&file.bytes) {
+        return Ok(Evaluated {
+            output: if args.json {
+                Output::Json(Vec::new())
+            } else {
+                Output::Text(String::new())
+            },
+            diagnostics: skip_binary(found, &file.name)?,
+            failed: false,
+            machine: None,
+        });
+    }
     let resolved = workspace.for_rewrite(path)?;
     let machine = workspace.machine(&resolved.config)?;
     let mut settings = resolved.settings;

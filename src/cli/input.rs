@@ -74,6 +74,22 @@ pub fn binary(bytes: &[u8]) -> bool {
     memchr::memchr(0, head).is_some() && !crate::archive::binary::is_binary(bytes)
 }
 
+/// A binary file met by `rewrite` or `eval`: a walk skips it, with the note
+/// `check` gives (`Ok`); one named on the command line is an error, since
+/// the program asked for is none.
+pub fn skip_binary(found: &Found, name: &str) -> Result<String, CliError> {
+    if found.was_walked() {
+        let name = crate::cli::render::printable(name);
+        Ok(format!(
+            "note: skipped {name}: a binary file (NUL bytes), not a program\n"
+        ))
+    } else {
+        Err(CliError::Binary {
+            path: found.path.clone(),
+        })
+    }
+}
+
 /// Whether a walk follows symbolic links (`--follow-links`).
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub enum Links {

@@ -13,7 +13,7 @@ use crate::cli::analysis;
 use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, named_or_stdin, read, Found};
+use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
@@ -139,6 +139,14 @@ fn rewrite_file(
     let path = found.path.as_path();
     let target = target(path, args, several)?;
     let file = read(found)?;
+    if binary(&file.bytes) {
+        return Ok(Outcome {
+            status: ExitStatus::Success,
+            stdout: Vec::new(),
+            stderr: skip_binary(found, &file.name)?,
+            machine: None,
+        });
+    }
     let resolved = workspace.for_rewrite(path)?;
     let mut settings = resolved.settings;
     settings.machine = workspace.machine(&resolved.config)?;
