@@ -69,6 +69,17 @@ impl<'src> Document<'src> {
         lint::analyze_program(self.source, self.name, self.kind, settings)
     }
 
+    /// The model and the CYCLE600 walk's results (`None` for a program that
+    /// never names CYCLE600), without the rules: what the questions about
+    /// names and calls read (an editor's hover, definition, symbols).
+    pub fn model_and_walk(&self, settings: &Settings) -> (Model<'src>, Option<Analysis>) {
+        let macros = settings.environment.expansions.clone();
+        let model = Model::build_with(self.source, self.kind, macros);
+        let walk = crate::semantic::mentions_cycle600(self.source)
+            .then(|| analyze(&model, &settings.supplied, settings.heads.as_ref()));
+        (model, walk)
+    }
+
     /// The CYCLE600 calls rewritten as `settings.emit` asks, with the
     /// measured values and HEAD_DEF of `settings`.
     pub fn rewrite(&self, settings: &Settings) -> Rewritten<'src> {
@@ -92,9 +103,9 @@ impl<'src> Document<'src> {
             };
         }
         // One parse for the syntax diagnostics, the walk and the rewrite.
-        let mut model = Model::build_with(self.source, self.kind, macros.clone());
+        let (mut model, analysis) = self.model_and_walk(settings);
+        let analysis = analysis.unwrap_or_default();
         let heads = settings.heads.as_ref();
-        let analysis = analyze(&model, &settings.supplied, heads);
         let mut rewrite = rewrite(&model, &analysis, &settings.emit);
         if let Some(on) = &settings.machine {
             let comments = crate::emit::axes::comments(self.source, &analysis, &rewrite.edits, on);

@@ -3,41 +3,83 @@
 
 use lsp_types as lsp;
 
+use std::cell::OnceCell;
+
+use crate::diagnostic::Diagnostic;
 use crate::document::text::Text;
-use crate::document::{Analyzed, Document};
+use crate::document::Document;
 use crate::lint::Settings;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
+use crate::semantic::{Analysis, Model};
 use crate::span::{ColumnUnit, Span};
 
 use super::convert;
+
+/// What a request reads of the analysis.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Needs {
+    /// The findings (diagnostics, their fixes): every rule runs.
+    Findings,
+    /// The model and the CYCLE600 walk only (hover, definition, symbols):
+    /// the rules, half of the work, are skipped.
+    Names,
+}
 
 /// One document analysed for the requests about it.
 pub struct Snapshot<'t> {
     text: &'t Text,
     name: &'t str,
-    analyzed: Analyzed<'t>,
-    uses: Uses,
+    model: Model<'t>,
+    walk: Option<Analysis>,
+    /// Empty unless asked for ([`Needs::Findings`]).
+    findings: Vec<Diagnostic>,
+    /// Built by the first request that reads names.
+    uses: OnceCell<Uses>,
     unit: ColumnUnit,
     settings: &'t Settings,
 }
 
 impl<'t> Snapshot<'t> {
-    pub fn new(text: &'t Text, name: &'t str, settings: &'t Settings, unit: ColumnUnit) -> Self {
-        let analyzed = Document::new(name, text.bytes()).analyze(settings);
-        let uses = Uses::of(&analyzed.model);
+    pub fn new(
+        text: &'t Text,
+        name: &'t str,
+        settings: &'t Settings,
+        unit: ColumnUnit,
+        needs: Needs,
+    ) -> Self {
+        let document = Document::new(name, text.bytes());
+        let (model, walk, findings) = match needs {
+            Needs::Findings => {
+                let analyzed = document.analyze(settings);
+                (analyzed.model, analyzed.walk, analyzed.findings)
+            }
+            Needs::Names => {
+                let (model, walk) = document.model_and_walk(settings);
+                (model, walk, Vec::new())
+            }
+        };
         Self {
             text,
             name,
-            analyzed,
-            uses,
+            model,
+            walk,
+            findings,
+            uses: OnceCell::new(),
             unit,
             settings,
         }
     }
 
+    fn uses(&self) -> &Uses {
+        self.uses.get_or_init(|| Uses::of(&self.model))
+    }
+
+    fn calls(&self) -> impl Iterator<Item = &crate::semantic::CallSite> {
+        self.walk.iter().flat_map(|walk| &walk.calls)
+    }
+
     pub fn diagnostics(&self) -> Vec<lsp::Diagnostic> {
-        self.analyzed
-            .findings
+        self.findings
             .iter()
             .map(|found| convert::diagnostic(self.text, found, self.unit))
             .collect()
@@ -52,7 +94,7 @@ impl<'t> Snapshot<'t> {
     }
 
     fn line_text(&self, row: usize) -> String {
-        let content = self.analyzed.model.lines.raw(row).content;
+        let content = self.model.lines.raw(row).content;
         String::from_utf8_lossy(content.of(self.text.bytes()))
             .trim()
             .to_string()
@@ -61,18 +103,17 @@ impl<'t> Snapshot<'t> {
     pub fn hover(&self, position: lsp::Position) -> Option<lsp::Hover> {
         let at = self.offset(position);
         let source = self.text.bytes();
-        let walk = self.analyzed.walk.iter().flat_map(|walk| &walk.calls);
-        if let Some(site) = walk.into_iter().find(|site| contains(site.statement, at)) {
+        if let Some(site) = self.calls().find(|site| contains(site.statement, at)) {
             let table = crate::cli::eval::call_table(site, self.name, source, &self.settings.emit);
             return Some(markdown(
                 format!("```\n{table}```"),
                 self.range(site.statement),
             ));
         }
-        let found = self.uses.at(at)?;
-        let text = match self.uses.definition(&self.analyzed.model, found) {
+        let found = self.uses().at(at)?;
+        let text = match self.uses().definition(&self.model, found) {
             Some(definition) if definition.span == found.span => {
-                let users = self.uses.references(found).count() - 1;
+                let users = self.uses().references(found).count() - 1;
                 format!("{}: used {users} times", self.describe(found))
             }
             Some(definition) => format!(
@@ -98,8 +139,8 @@ impl<'t> Snapshot<'t> {
     }
 
     pub fn definition(&self, uri: &lsp::Uri, position: lsp::Position) -> Option<lsp::Location> {
-        let found = self.uses.at(self.offset(position))?;
-        let definition = self.uses.definition(&self.analyzed.model, found)?;
+        let found = self.uses().at(self.offset(position))?;
+        let definition = self.uses().definition(&self.model, found)?;
         Some(lsp::Location::new(uri.clone(), self.range(definition.span)))
     }
 
@@ -109,10 +150,10 @@ impl<'t> Snapshot<'t> {
         position: lsp::Position,
         with_declaration: bool,
     ) -> Vec<lsp::Location> {
-        let Some(found) = self.uses.at(self.offset(position)) else {
+        let Some(found) = self.uses().at(self.offset(position)) else {
             return Vec::new();
         };
-        self.uses
+        self.uses()
             .references(found)
             .filter(|u| with_declaration || u.role != Role::Defines)
             .map(|u| lsp::Location::new(uri.clone(), self.range(u.span)))
@@ -122,7 +163,7 @@ impl<'t> Snapshot<'t> {
     /// PROCs, labels and DEF variables, and the CYCLE600 calls.
     #[allow(deprecated)] // `DocumentSymbol::deprecated` must still be written.
     pub fn symbols(&self) -> Vec<lsp::DocumentSymbol> {
-        let defined = self.uses.all().iter().filter(|u| u.role == Role::Defines);
+        let defined = self.uses().all().iter().filter(|u| u.role == Role::Defines);
         let mut symbols: Vec<lsp::DocumentSymbol> = defined
             .filter_map(|u| {
                 let kind = match u.namespace {
@@ -140,7 +181,7 @@ impl<'t> Snapshot<'t> {
                 ))
             })
             .collect();
-        for site in self.analyzed.walk.iter().flat_map(|walk| &walk.calls) {
+        for site in self.calls() {
             let range = self.range(site.statement);
             symbols.push(symbol(
                 "CYCLE600".to_string(),
@@ -156,7 +197,6 @@ impl<'t> Snapshot<'t> {
     /// IF ... ENDIF, WHILE, FOR, LOOP, REPEAT ... UNTIL.
     pub fn folding(&self) -> Vec<lsp::FoldingRange> {
         let mut ranges: Vec<lsp::FoldingRange> = self
-            .analyzed
             .model
             .block_ends()
             .map(|(open, end)| lsp::FoldingRange {
@@ -173,7 +213,7 @@ impl<'t> Snapshot<'t> {
     pub fn code_actions(&self, uri: &lsp::Uri, range: lsp::Range) -> Vec<lsp::CodeActionOrCommand> {
         let wanted = convert::span(self.text, range, self.unit);
         let mut actions = Vec::new();
-        for found in &self.analyzed.findings {
+        for found in &self.findings {
             let Some(fix) = &found.fix else { continue };
             if found.span.end < wanted.start || wanted.end < found.span.start {
                 continue;
@@ -207,7 +247,7 @@ impl Snapshot<'_> {
     /// The name under the cursor, if it can be renamed here.
     pub fn prepare_rename(&self, position: lsp::Position) -> Result<lsp::Range, String> {
         let found = self
-            .uses
+            .uses()
             .at(self.offset(position))
             .ok_or("no name of this program here")?;
         self.renamable(found)?;
@@ -226,7 +266,7 @@ impl Snapshot<'_> {
         new_name: &str,
     ) -> Result<lsp::WorkspaceEdit, String> {
         let found = self
-            .uses
+            .uses()
             .at(self.offset(position))
             .ok_or("no name of this program here")?;
         self.renamable(found)?;
@@ -239,7 +279,7 @@ impl Snapshot<'_> {
         let upper = new_name.to_ascii_uppercase();
         if upper != found.name
             && self
-                .uses
+                .uses()
                 .all()
                 .iter()
                 .any(|u| u.namespace == found.namespace && u.name == upper)
@@ -247,7 +287,7 @@ impl Snapshot<'_> {
             return Err(format!("`{new_name}` is already a name of this program"));
         }
         let edits = self
-            .uses
+            .uses()
             .references(found)
             .map(|u| lsp::TextEdit::new(self.range(u.span), new_name.to_string()))
             .collect();
@@ -261,7 +301,11 @@ impl Snapshot<'_> {
         if found.namespace == Namespace::Label && is_block_number(&found.name) {
             return Err("a block number is renumbered, not renamed".to_string());
         }
-        if !self.uses.references(found).any(|u| u.role == Role::Defines) {
+        if !self
+            .uses()
+            .references(found)
+            .any(|u| u.role == Role::Defines)
+        {
             return Err(format!(
                 "`{}` is not defined in this program: renaming it here would leave its other files",
                 found.name
@@ -275,8 +319,8 @@ impl Snapshot<'_> {
         let wanted = convert::span(self.text, range, self.unit);
         let precision = self.settings.emit.precision.min(4);
         let n = |v: f64| crate::emit::number::format(v, precision);
-        let walk = self.analyzed.walk.iter().flat_map(|walk| &walk.calls);
-        walk.filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)
+        self.calls()
+            .filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)
             .filter_map(|site| {
                 let evaluation = site.evaluation.as_ref()?;
                 let [a, b, c] = evaluation.output.angles;

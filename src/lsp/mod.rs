@@ -26,7 +26,7 @@ use crate::lint::Settings;
 use crate::span::ColumnUnit;
 use crate::workspace::Workspace;
 
-use answers::Snapshot;
+use answers::{Needs, Snapshot};
 
 /// Serves one client on stdin and stdout until it says `exit`.
 pub fn run() -> Result<(), String> {
@@ -257,8 +257,14 @@ impl Server<'_> {
         let Some(open) = self.documents.get(&uri) else {
             return;
         };
-        let diagnostics =
-            Snapshot::new(&open.text, &open.name, &open.settings, self.unit).diagnostics();
+        let diagnostics = Snapshot::new(
+            &open.text,
+            &open.name,
+            &open.settings,
+            self.unit,
+            Needs::Findings,
+        )
+        .diagnostics();
         self.send_diagnostics(uri, diagnostics);
     }
 
@@ -272,41 +278,55 @@ impl Server<'_> {
         use lsp::request as r;
         let id = request.id.clone();
         let answer = match request.method.as_str() {
-            r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
-                Ok(s.hover(p.text_document_position_params.position))
-            }),
-            r::GotoDefinition::METHOD => self.answer(request, |s, p: lsp::GotoDefinitionParams| {
-                let at = p.text_document_position_params;
-                Ok(s.definition(&at.text_document.uri, at.position))
-            }),
-            r::References::METHOD => self.answer(request, |s, p: lsp::ReferenceParams| {
-                let at = p.text_document_position;
-                let with_declaration = p.context.include_declaration;
-                Ok(s.references(&at.text_document.uri, at.position, with_declaration))
-            }),
+            r::HoverRequest::METHOD => {
+                self.answer(request, Needs::Names, |s, p: lsp::HoverParams| {
+                    Ok(s.hover(p.text_document_position_params.position))
+                })
+            }
+            r::GotoDefinition::METHOD => {
+                self.answer(request, Needs::Names, |s, p: lsp::GotoDefinitionParams| {
+                    let at = p.text_document_position_params;
+                    Ok(s.definition(&at.text_document.uri, at.position))
+                })
+            }
+            r::References::METHOD => {
+                self.answer(request, Needs::Names, |s, p: lsp::ReferenceParams| {
+                    let at = p.text_document_position;
+                    let with_declaration = p.context.include_declaration;
+                    Ok(s.references(&at.text_document.uri, at.position, with_declaration))
+                })
+            }
             r::DocumentSymbolRequest::METHOD => {
-                self.answer(request, |s, _: lsp::DocumentSymbolParams| {
+                self.answer(request, Needs::Names, |s, _: lsp::DocumentSymbolParams| {
                     Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
                 })
             }
             r::FoldingRangeRequest::METHOD => {
-                self.answer(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
-            }
-            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
-                Ok(s.code_actions(&p.text_document.uri, p.range))
-            }),
-            r::PrepareRenameRequest::METHOD => {
-                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
-                    s.prepare_rename(p.position)
-                        .map(lsp::PrepareRenameResponse::Range)
+                self.answer(request, Needs::Names, |s, _: lsp::FoldingRangeParams| {
+                    Ok(s.folding())
                 })
             }
-            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
+            r::CodeActionRequest::METHOD => {
+                self.answer(request, Needs::Findings, |s, p: lsp::CodeActionParams| {
+                    Ok(s.code_actions(&p.text_document.uri, p.range))
+                })
+            }
+            r::PrepareRenameRequest::METHOD => self.answer(
+                request,
+                Needs::Names,
+                |s, p: lsp::TextDocumentPositionParams| {
+                    s.prepare_rename(p.position)
+                        .map(lsp::PrepareRenameResponse::Range)
+                },
+            ),
+            r::Rename::METHOD => self.answer(request, Needs::Names, |s, p: lsp::RenameParams| {
                 let at = p.text_document_position;
                 s.rename(&at.text_document.uri, at.position, &p.new_name)
             }),
-            r::DocumentDiagnosticRequest::METHOD => {
-                self.answer(request, |s, _: lsp::DocumentDiagnosticParams| {
+            r::DocumentDiagnosticRequest::METHOD => self.answer(
+                request,
+                Needs::Findings,
+                |s, _: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,
                         items: s.diagnostics(),
@@ -319,11 +339,13 @@ impl Server<'_> {
                             },
                         ),
                     ))
+                },
+            ),
+            r::InlayHintRequest::METHOD => {
+                self.answer(request, Needs::Names, |s, p: lsp::InlayHintParams| {
+                    Ok(s.inlay_hints(p.range))
                 })
             }
-            r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
-                Ok(s.inlay_hints(p.range))
-            }),
             method => Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
@@ -341,6 +363,7 @@ impl Server<'_> {
     fn answer<P, R>(
         &self,
         request: Request,
+        needs: Needs,
         answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
     ) -> Result<serde_json::Value, (ErrorCode, String)>
     where
@@ -356,7 +379,7 @@ impl Server<'_> {
                 format!("{} is not open", uri.as_str()),
             ));
         };
-        let snapshot = Snapshot::new(&open.text, &open.name, &open.settings, self.unit);
+        let snapshot = Snapshot::new(&open.text, &open.name, &open.settings, self.unit, needs);
         let answer = answer(&snapshot, params).map_err(|why| (ErrorCode::RequestFailed, why))?;
         serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }
