@@ -367,3 +367,42 @@ fn a_client_that_pulls_diagnostics_gets_them_once() {
     assert_eq!(codes(items), ["N001"]);
     client.stop();
 }
+
+#[test]
+fn a_finding_can_be_ignored_and_a_cycle600_rewritten_from_the_editor() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "DEF REAL DEPTH=5\nG1 Z=DEPHT F100 ; feed\nN120 CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n";
+    client.open(URI, text);
+    let actions = |client: &mut Client, line: u32| {
+        client.request(
+            "textDocument/codeAction",
+            json!({ "textDocument": { "uri": URI },
+                    "range": { "start": { "line": line, "character": 5 }, "end": { "line": line, "character": 5 } },
+                    "context": { "diagnostics": [] } }),
+        )
+    };
+    let on_first = actions(&mut client, 1);
+    let ignore = on_first
+        .as_array()
+        .expect("actions")
+        .iter()
+        .find(|a| a["title"] == "Ignore N005 on this line")
+        .unwrap_or_else(|| panic!("{on_first}"));
+    // Into the comment the line has, at its end.
+    assert_eq!(
+        ignore["edit"]["changes"][URI],
+        json!([{ "range": { "start": { "line": 1, "character": 22 }, "end": { "line": 1, "character": 22 } },
+                 "newText": " sinuprep: ignore N005" }])
+    );
+    let on_call = actions(&mut client, 2);
+    let rewrite = on_call
+        .as_array()
+        .expect("actions")
+        .iter()
+        .find(|a| a["kind"] == "refactor.rewrite")
+        .unwrap_or_else(|| panic!("{on_call}"));
+    assert_eq!(rewrite["title"], "Rewrite this CYCLE600 as a CYCLE800 call");
+    let edits = rewrite["edit"]["changes"][URI].to_string();
+    assert!(edits.contains("_CYC600_2=37.792346"), "{edits}");
+    client.stop();
+}

@@ -32,6 +32,17 @@ pub enum Form {
     Traori,
 }
 
+impl Form {
+    /// What a call is rewritten as, in a sentence: "a CYCLE800 call".
+    pub fn native(self) -> &'static str {
+        match self {
+            Form::Cycle800 => "a CYCLE800 call",
+            Form::Frames => "programmable frames",
+            Form::Traori => "frames under TRAORI",
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct Options {
     pub form: Form,

@@ -433,11 +433,7 @@ fn cycle600_findings(model: &Model, analysis: &Analysis, settings: &Settings) ->
 
 /// C619 on a call the rewrite replaces with `edits`.
 fn rewritable(site: &CallSite, edits: Vec<Edit>, form: Form) -> Diagnostic {
-    let native = match form {
-        Form::Cycle800 => "a CYCLE800 call",
-        Form::Frames => "programmable frames",
-        Form::Traori => "frames under TRAORI",
-    };
+    let native = form.native();
     let title = format!("Rewrite as {native}");
     cycle600_rewritable::RULE
         .at(site.statement)

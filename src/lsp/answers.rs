@@ -209,37 +209,89 @@ impl<'t> Snapshot<'t> {
         ranges
     }
 
-    /// The fixes of the findings within `range`, each a code action.
+    /// Within `range`: each finding's fix, a suppression comment for each
+    /// finding, and the rewrite of each CYCLE600 that can be written as
+    /// native code (the edits `rewrite` makes).
     pub fn code_actions(&self, uri: &lsp::Uri, range: lsp::Range) -> Vec<lsp::CodeActionOrCommand> {
         let wanted = convert::span(self.text, range, self.unit);
+        let touches = |span: Span| span.start <= wanted.end && wanted.start <= span.end;
         let mut actions = Vec::new();
-        for found in &self.findings {
-            let Some(fix) = &found.fix else { continue };
-            if found.span.end < wanted.start || wanted.end < found.span.start {
-                continue;
+        for found in self.findings.iter().filter(|found| touches(found.span)) {
+            let diagnostic = convert::diagnostic(self.text, found, self.unit);
+            if let Some(fix) = &found.fix {
+                let safe = fix.applicability == crate::diagnostic::Applicability::Safe;
+                let mut action =
+                    self.action(uri, &fix.title, &fix.edits, lsp::CodeActionKind::QUICKFIX);
+                action.diagnostics = Some(vec![diagnostic.clone()]);
+                action.is_preferred = Some(safe);
+                actions.push(lsp::CodeActionOrCommand::CodeAction(action));
             }
-            let edits = fix
-                .edits
-                .iter()
-                .map(|edit| lsp::TextEdit {
-                    range: self.range(edit.span),
-                    new_text: String::from_utf8_lossy(&edit.text).into_owned(),
-                })
-                .collect();
-            let changes = std::iter::once((uri.clone(), edits)).collect();
-            actions.push(lsp::CodeActionOrCommand::CodeAction(lsp::CodeAction {
-                title: fix.title.clone(),
-                kind: Some(lsp::CodeActionKind::QUICKFIX),
-                diagnostics: Some(vec![convert::diagnostic(self.text, found, self.unit)]),
-                edit: Some(lsp::WorkspaceEdit {
-                    changes: Some(changes),
-                    ..lsp::WorkspaceEdit::default()
-                }),
-                is_preferred: Some(fix.applicability == crate::diagnostic::Applicability::Safe),
-                ..lsp::CodeAction::default()
-            }));
+            if let Some(edit) = self.suppression(found) {
+                let title = format!("Ignore {} on this line", found.code);
+                let mut action = self.action(uri, &title, &[edit], lsp::CodeActionKind::QUICKFIX);
+                action.diagnostics = Some(vec![diagnostic]);
+                actions.push(lsp::CodeActionOrCommand::CodeAction(action));
+            }
+        }
+        for site in self.calls().filter(|site| touches(site.statement)) {
+            let options = &self.settings.emit;
+            if let Some(edits) = crate::emit::cycle600::call_edits(&self.model, site, options) {
+                let title = format!("Rewrite this CYCLE600 as {}", options.form.native());
+                let kind = lsp::CodeActionKind::REFACTOR_REWRITE;
+                actions.push(lsp::CodeActionOrCommand::CodeAction(
+                    self.action(uri, &title, &edits, kind),
+                ));
+            }
         }
         actions
+    }
+
+    fn action(
+        &self,
+        uri: &lsp::Uri,
+        title: &str,
+        edits: &[crate::edit::Edit],
+        kind: lsp::CodeActionKind,
+    ) -> lsp::CodeAction {
+        let edits = edits
+            .iter()
+            .map(|edit| lsp::TextEdit {
+                range: self.range(edit.span),
+                new_text: String::from_utf8_lossy(&edit.text).into_owned(),
+            })
+            .collect();
+        lsp::CodeAction {
+            title: title.to_string(),
+            kind: Some(kind),
+            edit: Some(lsp::WorkspaceEdit {
+                changes: Some(std::iter::once((uri.clone(), edits)).collect()),
+                ..lsp::WorkspaceEdit::default()
+            }),
+            ..lsp::CodeAction::default()
+        }
+    }
+
+    /// `; sinuprep: ignore CODE` at the end of the finding's line, or in its
+    /// comment; none where the comment already holds a `sinuprep:` text
+    /// (the first one on a line is the one read).
+    fn suppression(&self, found: &Diagnostic) -> Option<crate::edit::Edit> {
+        let source = self.text.bytes();
+        let row = self.text.position(found.span.start, ColumnUnit::Bytes).row - 1;
+        let content = self.model.lines.raw(row).content;
+        let directive = format!("sinuprep: ignore {}", found.code);
+        let comment = self.model.lines.block(row).and_then(|block| block.comment);
+        let (at, text) = match comment {
+            Some(comment) => {
+                let text = String::from_utf8_lossy(comment.of(source)).to_ascii_lowercase();
+                if text.contains("sinuprep:") {
+                    return None;
+                }
+                (comment.end, format!(" {directive}"))
+            }
+            None if content.is_empty() => (content.end, format!("; {directive}")),
+            None => (content.end, format!(" ; {directive}")),
+        };
+        Some(crate::edit::Edit::replace(Span::new(at, at), text))
     }
 }
 
