@@ -171,12 +171,6 @@ pub struct CheckArgs {
     /// Add the records' fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
     #[arg(long)]
     pub fine_offsets: bool,
-    /// A directory without programs is no error (by default it is: exit 2).
-    #[arg(long)]
-    pub allow_empty: bool,
-    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
-    #[arg(long)]
-    pub follow_links: bool,
     #[command(flatten)]
     pub walk: WalkArgs,
     /// No summary line (`3 errors, 2 warnings in 5 files`) after the human and short reports.
@@ -209,6 +203,12 @@ pub struct InputArgs {
 /// Which files a directory walk takes (a file named is always taken).
 #[derive(Debug, clap::Args)]
 pub struct WalkArgs {
+    /// A directory without programs is no error (by default it is: exit 2).
+    #[arg(long)]
+    pub allow_empty: bool,
+    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
+    #[arg(long)]
+    pub follow_links: bool,
     /// Leave out the files and folders these patterns match (`.gitignore` lines, relative to the current directory, any case; comma-separated, repeatable), in place of `exclude` in sinuprep.toml.
     #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
     pub exclude: Vec<String>,
@@ -230,6 +230,19 @@ pub struct WalkArgs {
 }
 
 impl WalkArgs {
+    /// The walk these options ask for, over the settings of `workspace`.
+    pub fn walk<'w>(
+        &self,
+        workspace: &'w crate::workspace::Workspace,
+    ) -> crate::cli::walk::Walk<'w> {
+        crate::cli::walk::Walk {
+            allow_empty: self.allow_empty,
+            follow_links: self.follow_links,
+            hidden: self.hidden,
+            workspace,
+        }
+    }
+
     /// What the walk's options set over sinuprep.toml.
     pub fn given(&self) -> crate::workspace::WalkGiven {
         crate::workspace::WalkGiven {
@@ -306,12 +319,6 @@ pub struct RewriteArgs {
     /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     /// Several programs need --in-place, -o DIR, --check or --diff.
     pub paths: Vec<PathBuf>,
-    /// A directory without programs is no error (by default it is: exit 2).
-    #[arg(long)]
-    pub allow_empty: bool,
-    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
-    #[arg(long)]
-    pub follow_links: bool,
     #[command(flatten)]
     pub walk: WalkArgs,
     #[command(flatten)]
@@ -351,12 +358,6 @@ pub struct RewriteArgs {
 pub struct EvalArgs {
     /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
     pub paths: Vec<PathBuf>,
-    /// A directory without programs is no error (by default it is: exit 2).
-    #[arg(long)]
-    pub allow_empty: bool,
-    /// Follow symbolic links met while walking a directory (by default they are skipped, with a note; a link named on the command line is always followed).
-    #[arg(long)]
-    pub follow_links: bool,
     #[command(flatten)]
     pub walk: WalkArgs,
     #[command(flatten)]

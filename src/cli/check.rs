@@ -16,7 +16,7 @@ use crate::cli::render::{
     github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
     Statistics, JSON_BETWEEN, JSON_START,
 };
-use crate::cli::walk::{expand, Walk};
+use crate::cli::walk::expand;
 use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::edit::apply;
@@ -236,7 +236,7 @@ enum Report {
 
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(Given {
-        follow_links: args.follow_links,
+        follow_links: args.walk.follow_links,
         walk: args.walk.given(),
         ..analysis::given_to_check(args)
     })?;
@@ -247,15 +247,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, Some(_)) => vec![PathBuf::from("-")],
         (true, None) => vec![PathBuf::from(".")],
     };
-    let paths = expand(
-        &named,
-        &Walk {
-            allow_empty: args.allow_empty,
-            follow_links: args.follow_links,
-            hidden: args.walk.hidden,
-            workspace: &workspace,
-        },
-    )?;
+    let paths = expand(&named, &args.walk.walk(&workspace))?;
     let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
     report_to(args.output_file.as_deref(), |out| {
         report(args, &paths, colour, &workspace, out)

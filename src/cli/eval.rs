@@ -9,7 +9,7 @@ use crate::cli::error::CliError;
 use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
-use crate::cli::walk::{expand, Walk};
+use crate::cli::walk::expand;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
@@ -26,20 +26,12 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "eval")?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
-        follow_links: args.follow_links,
+        follow_links: args.walk.follow_links,
         fine_offsets: args.fine_offsets,
         walk: args.walk.given(),
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let paths = expand(
-        &named,
-        &Walk {
-            allow_empty: args.allow_empty,
-            follow_links: args.follow_links,
-            hidden: args.walk.hidden,
-            workspace: &workspace,
-        },
-    )?;
+    let paths = expand(&named, &args.walk.walk(&workspace))?;
     let mut worst = ExitStatus::Success;
     let mut documents = Vec::new();
     let mut told = analysis::MachinesTold::default();

@@ -17,7 +17,7 @@ use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found}
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
-use crate::cli::walk::{expand, Walk};
+use crate::cli::walk::expand;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::{diff, write_applied};
 use crate::semantic::swivels::OnMachine;
@@ -47,20 +47,12 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "rewrite")?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
-        follow_links: args.follow_links,
+        follow_links: args.walk.follow_links,
         fine_offsets: args.fine_offsets,
         walk: args.walk.given(),
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let paths = expand(
-        &named,
-        &Walk {
-            allow_empty: args.allow_empty,
-            follow_links: args.follow_links,
-            hidden: args.walk.hidden,
-            workspace: &workspace,
-        },
-    )?;
+    let paths = expand(&named, &args.walk.walk(&workspace))?;
     let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
     if several && !writes_files {
