@@ -144,17 +144,21 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                 let mut document = serde_json::json!({ "path": name, "calls": calls });
                 if let Some(machine) = &machine {
                     let index = LineIndex::new(source);
-                    let written: Vec<serde_json::Value> =
-                        cycle800_swivels(&program.document, analyzed.model.as_ref(), machine)
-                            .iter()
-                            .map(|(asked, solved)| {
-                                serde_json::json!({
-                                    "line": index.position(asked.span.start).row,
-                                    "call": String::from_utf8_lossy(asked.span.of(source)),
-                                    "axes": solved_json(solved),
-                                })
-                            })
-                            .collect();
+                    let written: Vec<serde_json::Value> = cycle800_swivels(
+                        &program.document,
+                        analyzed.model.as_ref(),
+                        &settings,
+                        machine,
+                    )
+                    .iter()
+                    .map(|(asked, solved)| {
+                        serde_json::json!({
+                            "line": index.position(asked.span.start).row,
+                            "call": String::from_utf8_lossy(asked.span.of(source)),
+                            "axes": solved_json(solved),
+                        })
+                    })
+                    .collect();
                     document["cycle800"] = serde_json::Value::Array(written);
                 }
                 documents.push(document);
@@ -177,9 +181,12 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                     text.push_str(&format!("{name}: no CYCLE600 call\n"));
                 }
                 if let Some(machine) = &machine {
-                    for (asked, solved) in
-                        cycle800_swivels(&program.document, analyzed.model.as_ref(), machine)
-                    {
+                    for (asked, solved) in cycle800_swivels(
+                        &program.document,
+                        analyzed.model.as_ref(),
+                        &settings,
+                        machine,
+                    ) {
                         let row = index.position(asked.span.start).row;
                         text.push_str(&format!(
                             "{name}:{row}: {}\n  axes     {}\n\n",
@@ -219,10 +226,11 @@ fn solve_asked(asked: &Asked, machine: &OnMachine) -> Solved {
 /// The CYCLE800 calls of a program whose arguments are constants, with the
 /// axis positions each takes: found only where a machine is given. The
 /// rewrite's model is read when it built one; a program without CYCLE600 is
-/// parsed here, once.
+/// parsed here, once, with the macros of `settings`.
 fn cycle800_swivels(
     document: &crate::document::Document,
     model: Option<&crate::semantic::Model>,
+    settings: &crate::lint::Settings,
     machine: &OnMachine,
 ) -> Vec<(Asked, Solved)> {
     if !crate::semantic::mentions_cycle(document.source, b"800") {
@@ -232,7 +240,8 @@ fn cycle800_swivels(
     let model = match model {
         Some(model) => model,
         None => {
-            built = crate::semantic::Model::build(document.source, document.kind);
+            let macros = settings.environment.expansions.clone();
+            built = crate::semantic::Model::build_with(document.source, document.kind, macros);
             &built
         }
     };
