@@ -2,6 +2,7 @@
 //! writes for it out. The command line and an editor's server call these,
 //! so both report the same findings from the same analysis.
 
+pub mod held;
 pub mod text;
 
 use crate::diagnostic::{Diagnostic, Severity};

@@ -3,11 +3,9 @@
 
 use lsp_types as lsp;
 
-use std::cell::OnceCell;
-
 use crate::diagnostic::Diagnostic;
+use crate::document::held;
 use crate::document::text::Text;
-use crate::document::Document;
 use crate::lint::Settings;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
 use crate::semantic::{Analysis, Model};
@@ -15,67 +13,44 @@ use crate::span::{ColumnUnit, Span};
 
 use super::convert;
 
-/// What a request reads of the analysis.
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub enum Needs {
-    /// The findings (diagnostics, their fixes): every rule runs.
-    Findings,
-    /// The model and the CYCLE600 walk only (hover, definition, symbols):
-    /// the rules, half of the work, are skipped.
-    Names,
-}
-
-/// One document analysed for the requests about it.
-pub struct Snapshot<'t> {
+/// One version of a document, analysed, for the requests about it.
+pub struct Snapshot<'a, 't> {
     text: &'t Text,
-    name: &'t str,
-    model: Model<'t>,
-    walk: Option<Analysis>,
-    /// Empty unless asked for ([`Needs::Findings`]).
-    findings: Vec<Diagnostic>,
-    /// Built by the first request that reads names.
-    uses: OnceCell<Uses>,
+    name: &'a str,
+    model: &'a Model<'t>,
+    walk: Option<&'a Analysis>,
+    findings: &'a [Diagnostic],
+    analysis: held::Analysis<'a, 't>,
     unit: ColumnUnit,
-    settings: &'t Settings,
+    settings: &'a Settings,
 }
 
-impl<'t> Snapshot<'t> {
+impl<'a, 't> Snapshot<'a, 't> {
     pub fn new(
-        text: &'t Text,
-        name: &'t str,
-        settings: &'t Settings,
+        analysis: held::Analysis<'a, 't>,
+        name: &'a str,
+        settings: &'a Settings,
         unit: ColumnUnit,
-        needs: Needs,
     ) -> Self {
-        let document = Document::new(name, text.bytes());
-        let (model, walk, findings) = match needs {
-            Needs::Findings => {
-                let analyzed = document.analyze(settings);
-                (analyzed.model, analyzed.walk, analyzed.findings)
-            }
-            Needs::Names => {
-                let (model, walk) = document.model_and_walk(settings);
-                (model, walk, Vec::new())
-            }
-        };
+        let analyzed = analysis.analyzed;
         Self {
-            text,
+            text: analysis.text,
             name,
-            model,
-            walk,
-            findings,
-            uses: OnceCell::new(),
+            model: &analyzed.model,
+            walk: analyzed.walk.as_ref(),
+            findings: &analyzed.findings,
+            analysis,
             unit,
             settings,
         }
     }
 
     fn uses(&self) -> &Uses {
-        self.uses.get_or_init(|| Uses::of(&self.model))
+        self.analysis.uses()
     }
 
     fn calls(&self) -> impl Iterator<Item = &crate::semantic::CallSite> {
-        self.walk.iter().flat_map(|walk| &walk.calls)
+        self.walk.into_iter().flat_map(|walk| &walk.calls)
     }
 
     pub fn diagnostics(&self) -> Vec<lsp::Diagnostic> {
@@ -111,7 +86,7 @@ impl<'t> Snapshot<'t> {
             ));
         }
         let found = self.uses().at(at)?;
-        let text = match self.uses().definition(&self.model, found) {
+        let text = match self.uses().definition(self.model, found) {
             Some(definition) if definition.span == found.span => {
                 let users = self.uses().references(found).count() - 1;
                 format!("{}: used {users} times", self.describe(found))
@@ -140,7 +115,7 @@ impl<'t> Snapshot<'t> {
 
     pub fn definition(&self, uri: &lsp::Uri, position: lsp::Position) -> Option<lsp::Location> {
         let found = self.uses().at(self.offset(position))?;
-        let definition = self.uses().definition(&self.model, found)?;
+        let definition = self.uses().definition(self.model, found)?;
         Some(lsp::Location::new(uri.clone(), self.range(definition.span)))
     }
 
@@ -235,7 +210,7 @@ impl<'t> Snapshot<'t> {
         }
         for site in self.calls().filter(|site| touches(site.statement)) {
             let options = &self.settings.emit;
-            if let Some(edits) = crate::emit::cycle600::call_edits(&self.model, site, options) {
+            if let Some(edits) = crate::emit::cycle600::call_edits(self.model, site, options) {
                 let title = format!("Rewrite this CYCLE600 as {}", options.form.native());
                 let kind = lsp::CodeActionKind::REFACTOR_REWRITE;
                 actions.push(lsp::CodeActionOrCommand::CodeAction(
@@ -295,7 +270,7 @@ impl<'t> Snapshot<'t> {
     }
 }
 
-impl Snapshot<'_> {
+impl Snapshot<'_, '_> {
     /// The name under the cursor, if it can be renamed here.
     pub fn prepare_rename(&self, position: lsp::Position) -> Result<lsp::Range, String> {
         let found = self

@@ -21,12 +21,13 @@ use lsp_types as lsp;
 use lsp_types::notification::Notification as _;
 use lsp_types::request::Request as _;
 
+use crate::document::held::Held;
 use crate::document::text::Text;
 use crate::lint::Settings;
 use crate::span::ColumnUnit;
 use crate::workspace::Workspace;
 
-use answers::{Needs, Snapshot};
+use answers::Snapshot;
 
 /// Serves one client on stdin and stdout until it says `exit`.
 pub fn run() -> Result<(), String> {
@@ -132,10 +133,21 @@ fn serve(connection: &Connection) -> Result<(), String> {
 
 /// A document the client has open.
 struct Open {
-    text: Text,
+    /// Its text, and the analysis every request about this version reads.
+    held: Held,
     /// The path or URI its settings are found by and its findings named by.
     name: String,
     settings: Settings,
+}
+
+impl Open {
+    /// Answers from this version's analysis, made by the first question.
+    fn with_snapshot<R>(&self, unit: ColumnUnit, answer: impl FnOnce(&Snapshot) -> R) -> R {
+        self.held
+            .with_analysis(&self.name, &self.settings, |analysis| {
+                answer(&Snapshot::new(analysis, &self.name, &self.settings, unit))
+            })
+    }
 }
 
 struct Server<'c> {
@@ -162,7 +174,7 @@ impl Server<'_> {
                 if let Some(params) = extract::<lsp::DidOpenTextDocumentParams>(notification) {
                     let document = params.text_document;
                     let text = Text::new(document.text.into_bytes());
-                    self.open(document.uri, text);
+                    self.open(document.uri, Held::open(text));
                 }
             }
             n::DidChangeTextDocument::METHOD => {
@@ -183,20 +195,20 @@ impl Server<'_> {
             // a definition file that every open document reads.
             n::DidSaveTextDocument::METHOD | n::DidChangeWatchedFiles::METHOD => {
                 self.workspace = Workspace::default();
-                let open: Vec<(lsp::Uri, Text)> = self
+                let open: Vec<(lsp::Uri, Held)> = self
                     .documents
                     .drain()
-                    .map(|(uri, open)| (uri, open.text))
+                    .map(|(uri, open)| (uri, open.held.forget()))
                     .collect();
-                for (uri, text) in open {
-                    self.open(uri, text);
+                for (uri, held) in open {
+                    self.open(uri, held);
                 }
             }
             _ => {}
         }
     }
 
-    fn open(&mut self, uri: lsp::Uri, text: Text) {
+    fn open(&mut self, uri: lsp::Uri, held: Held) {
         let path = convert::path(&uri);
         let settings = path
             .as_deref()
@@ -207,7 +219,7 @@ impl Server<'_> {
             |p| p.to_string_lossy().into_owned(),
         );
         let open = Open {
-            text,
+            held,
             name,
             settings,
         };
@@ -229,22 +241,26 @@ impl Server<'_> {
 
     fn change(&mut self, params: lsp::DidChangeTextDocumentParams) {
         let uri = params.text_document.uri;
-        let Some(open) = self.documents.get_mut(&uri) else {
+        let Some(mut open) = self.documents.remove(&uri) else {
             eprintln!(
                 "sinuprep lsp: a change to {} which is not open",
                 uri.as_str()
             );
             return;
         };
-        for change in params.content_changes {
-            match change.range {
-                Some(range) => {
-                    let span = convert::span(&open.text, range, self.unit);
-                    open.text.replace(span.range(), change.text.as_bytes());
+        let unit = self.unit;
+        open.held = open.held.edit(|text| {
+            for change in params.content_changes {
+                match change.range {
+                    Some(range) => {
+                        let span = convert::span(text, range, unit);
+                        text.replace(span.range(), change.text.as_bytes());
+                    }
+                    None => *text = Text::new(change.text.into_bytes()),
                 }
-                None => open.text = Text::new(change.text.into_bytes()),
             }
-        }
+        });
+        self.documents.insert(uri.clone(), open);
         self.publish(uri);
     }
 
@@ -257,14 +273,7 @@ impl Server<'_> {
         let Some(open) = self.documents.get(&uri) else {
             return;
         };
-        let diagnostics = Snapshot::new(
-            &open.text,
-            &open.name,
-            &open.settings,
-            self.unit,
-            Needs::Findings,
-        )
-        .diagnostics();
+        let diagnostics = open.with_snapshot(self.unit, |snapshot| snapshot.diagnostics());
         self.send_diagnostics(uri, diagnostics);
     }
 
@@ -278,55 +287,41 @@ impl Server<'_> {
         use lsp::request as r;
         let id = request.id.clone();
         let answer = match request.method.as_str() {
-            r::HoverRequest::METHOD => {
-                self.answer(request, Needs::Names, |s, p: lsp::HoverParams| {
-                    Ok(s.hover(p.text_document_position_params.position))
-                })
-            }
-            r::GotoDefinition::METHOD => {
-                self.answer(request, Needs::Names, |s, p: lsp::GotoDefinitionParams| {
-                    let at = p.text_document_position_params;
-                    Ok(s.definition(&at.text_document.uri, at.position))
-                })
-            }
-            r::References::METHOD => {
-                self.answer(request, Needs::Names, |s, p: lsp::ReferenceParams| {
-                    let at = p.text_document_position;
-                    let with_declaration = p.context.include_declaration;
-                    Ok(s.references(&at.text_document.uri, at.position, with_declaration))
-                })
-            }
+            r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
+                Ok(s.hover(p.text_document_position_params.position))
+            }),
+            r::GotoDefinition::METHOD => self.answer(request, |s, p: lsp::GotoDefinitionParams| {
+                let at = p.text_document_position_params;
+                Ok(s.definition(&at.text_document.uri, at.position))
+            }),
+            r::References::METHOD => self.answer(request, |s, p: lsp::ReferenceParams| {
+                let at = p.text_document_position;
+                let with_declaration = p.context.include_declaration;
+                Ok(s.references(&at.text_document.uri, at.position, with_declaration))
+            }),
             r::DocumentSymbolRequest::METHOD => {
-                self.answer(request, Needs::Names, |s, _: lsp::DocumentSymbolParams| {
+                self.answer(request, |s, _: lsp::DocumentSymbolParams| {
                     Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
                 })
             }
             r::FoldingRangeRequest::METHOD => {
-                self.answer(request, Needs::Names, |s, _: lsp::FoldingRangeParams| {
-                    Ok(s.folding())
-                })
+                self.answer(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
             }
-            r::CodeActionRequest::METHOD => {
-                self.answer(request, Needs::Findings, |s, p: lsp::CodeActionParams| {
-                    Ok(s.code_actions(&p.text_document.uri, p.range))
-                })
-            }
-            r::PrepareRenameRequest::METHOD => self.answer(
-                request,
-                Needs::Names,
-                |s, p: lsp::TextDocumentPositionParams| {
+            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
+                Ok(s.code_actions(&p.text_document.uri, p.range))
+            }),
+            r::PrepareRenameRequest::METHOD => {
+                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
                     s.prepare_rename(p.position)
                         .map(lsp::PrepareRenameResponse::Range)
-                },
-            ),
-            r::Rename::METHOD => self.answer(request, Needs::Names, |s, p: lsp::RenameParams| {
+                })
+            }
+            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
                 let at = p.text_document_position;
                 s.rename(&at.text_document.uri, at.position, &p.new_name)
             }),
-            r::DocumentDiagnosticRequest::METHOD => self.answer(
-                request,
-                Needs::Findings,
-                |s, _: lsp::DocumentDiagnosticParams| {
+            r::DocumentDiagnosticRequest::METHOD => {
+                self.answer(request, |s, _: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,
                         items: s.diagnostics(),
@@ -339,13 +334,11 @@ impl Server<'_> {
                             },
                         ),
                     ))
-                },
-            ),
-            r::InlayHintRequest::METHOD => {
-                self.answer(request, Needs::Names, |s, p: lsp::InlayHintParams| {
-                    Ok(s.inlay_hints(p.range))
                 })
             }
+            r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
+                Ok(s.inlay_hints(p.range))
+            }),
             method => Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
@@ -363,7 +356,6 @@ impl Server<'_> {
     fn answer<P, R>(
         &self,
         request: Request,
-        needs: Needs,
         answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
     ) -> Result<serde_json::Value, (ErrorCode, String)>
     where
@@ -379,8 +371,9 @@ impl Server<'_> {
                 format!("{} is not open", uri.as_str()),
             ));
         };
-        let snapshot = Snapshot::new(&open.text, &open.name, &open.settings, self.unit, needs);
-        let answer = answer(&snapshot, params).map_err(|why| (ErrorCode::RequestFailed, why))?;
+        let answer = open
+            .with_snapshot(self.unit, |snapshot| answer(snapshot, params))
+            .map_err(|why| (ErrorCode::RequestFailed, why))?;
         serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }
 }

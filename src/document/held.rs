@@ -1,0 +1,119 @@
+//! A document an editor holds open, with its analysis kept beside its text
+//! until the text or its settings change: every request about one version
+//! of the document reads one analysis, instead of parsing it again.
+
+use std::cell::OnceCell;
+
+use self_cell::self_cell;
+
+use super::text::Text;
+use super::Analyzed;
+use crate::lint::Settings;
+use crate::semantic::uses::Uses;
+
+/// The analysis of one version of the text, made when first asked for.
+#[derive(Default)]
+struct Lazy<'t> {
+    analyzed: OnceCell<Analyzed<'t>>,
+    uses: OnceCell<Uses>,
+}
+
+self_cell!(
+    /// An open document: its text, and the analysis that borrows it.
+    pub struct Held {
+        owner: Text,
+        #[not_covariant]
+        dependent: Lazy,
+    }
+);
+
+/// What the requests about one version of a document read.
+pub struct Analysis<'a, 't> {
+    pub text: &'t Text,
+    pub analyzed: &'a Analyzed<'t>,
+    uses: &'a OnceCell<Uses>,
+}
+
+impl Analysis<'_, '_> {
+    /// The table of uses, built by the first request that reads names.
+    pub fn uses(&self) -> &Uses {
+        self.uses.get_or_init(|| Uses::of(&self.analyzed.model))
+    }
+}
+
+impl Held {
+    pub fn open(text: Text) -> Self {
+        Self::new(text, |_| Lazy::default())
+    }
+
+    pub fn text(&self) -> &Text {
+        self.borrow_owner()
+    }
+
+    /// Edits the text; the analysis of the old text is dropped.
+    pub fn edit(self, edit: impl FnOnce(&mut Text)) -> Self {
+        let mut text = self.into_owner();
+        edit(&mut text);
+        Self::open(text)
+    }
+
+    /// Drops the analysis, as when the settings it was made with change.
+    pub fn forget(self) -> Self {
+        Self::open(self.into_owner())
+    }
+
+    /// Answers from the analysis of the text as it is now, made with
+    /// `settings` under the name `name` by the first question asked.
+    pub fn with_analysis<R>(
+        &self,
+        name: &str,
+        settings: &Settings,
+        answer: impl for<'a, 't> FnOnce(Analysis<'a, 't>) -> R,
+    ) -> R {
+        self.with_dependent(|text, lazy| {
+            let analyzed = lazy.analyzed.get_or_init(|| {
+                // As `Document::analyze`, the name borrowed for no longer
+                // than the analysis runs.
+                let source = text.bytes();
+                let kind = crate::syntax::program_kind(Some(name), source);
+                crate::lint::analyze_program(source, name, kind, settings)
+            });
+            answer(Analysis {
+                text,
+                analyzed,
+                uses: &lazy.uses,
+            })
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn findings(held: &Held, settings: &Settings) -> (usize, Vec<&'static str>) {
+        held.with_analysis("A.MPF", settings, |analysis| {
+            let at = analysis.analyzed as *const Analyzed as usize;
+            (
+                at,
+                analysis.analyzed.findings.iter().map(|f| f.code).collect(),
+            )
+        })
+    }
+
+    /// One analysis answers until the text changes; the next reads the
+    /// edited text.
+    #[test]
+    fn an_analysis_lasts_until_the_text_changes() {
+        let settings = Settings::default();
+        let held = Held::open(Text::new(b"G1 X1\nGOTOF END\nEND:\nM30\n".to_vec()));
+        let (first, clean) = findings(&held, &settings);
+        let (again, _) = findings(&held, &settings);
+        assert_eq!(first, again, "the second question reads the first analysis");
+        assert!(!clean.contains(&"N001"), "{clean:?}");
+        let held = held.edit(|text| text.replace(6..15, b"GOTOF NOWHERE"));
+        assert_eq!(held.text().bytes(), b"G1 X1\nGOTOF NOWHERE\nEND:\nM30\n");
+        let (_, edited) = findings(&held, &settings);
+        assert!(edited.contains(&"N001"), "{edited:?}");
+    }
+}
