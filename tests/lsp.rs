@@ -252,9 +252,9 @@ fn a_rename_changes_every_use_or_says_why_not() {
 }
 
 #[test]
-fn an_inlay_hint_gives_a_cycle600_its_angles() {
+fn inlay_hints_give_a_cycle600_its_angles_and_a_cycle800_its_mode() {
     let (mut client, _) = Client::start(json!({}));
-    let text = "N120 CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n";
+    let text = "N120 CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nCYCLE800(1,\"TC1\",0,39,0,0,0,10,20,30,0,0,0,-1)\nM30\n";
     client.open(URI, text);
     let hints = client.request(
         "textDocument/inlayHint",
@@ -265,6 +265,12 @@ fn an_inlay_hint_gives_a_cycle600_its_angles() {
     assert_eq!(
         hints[0]["position"],
         json!({ "line": 0, "character": text.find(')').expect("end") + 1 })
+    );
+    // A CYCLE800's `_MODE` 39, after the argument: Z, then X', then Y''.
+    assert_eq!(hints[1]["label"], "axis by axis: Z, then X', then Y''");
+    assert_eq!(
+        hints[1]["position"],
+        json!({ "line": 1, "character": "CYCLE800(1,\"TC1\",0,39".len() })
     );
     client.stop();
 }
@@ -405,4 +411,41 @@ fn a_finding_can_be_ignored_and_a_cycle600_rewritten_from_the_editor() {
     let edits = rewrite["edit"]["changes"][URI].to_string();
     assert!(edits.contains("_CYC600_2=37.792346"), "{edits}");
     client.stop();
+}
+
+/// A hover on a CYCLE800 reads its parameters as the control does, gives the
+/// new plane's tool axis, and with a machine in sinuprep.toml the positions
+/// of the record's rotary axes.
+#[test]
+fn a_cycle800_hover_says_what_the_call_asks_for() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-cycle800-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let samples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("samples");
+    std::fs::copy(samples.join("MACHINE.SPF"), dir.join("MACHINE.SPF")).expect("machine");
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"MACHINE.SPF\"\n").expect("toml");
+    let path = dir.join("SWIVEL.MPF");
+    let uri = format!("file://{}", path.display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(
+        &uri,
+        "CYCLE800(1,\"HEAD_CA\",0,57,0,0,0,0,-30,0,0,0,0,-1,100,1)\nM30\n",
+    );
+    let hover = client.request("textDocument/hover", at(&uri, 0, 3));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    for expected in [
+        "| `_FR` | 1 | retract machine Z |",
+        "| `_TC` | \"HEAD_CA\" | swivel data record `HEAD_CA` |",
+        "| `_MODE` | 57 | axis by axis: X, then Y', then Z'' |",
+        "| `_B` | -30 | second turn, about Y' (degrees) |",
+        "| `_DIR` | -1 | minus:",
+        // Y turned by -30°: Z goes to (-sin 30°, 0, cos 30°).
+        "in the frame before it: (-0.5, 0, 0.866025)",
+        "On `",
+    ] {
+        assert!(shown.contains(expected), "{expected}\n{shown}");
+    }
+    assert_eq!(hover["range"]["start"]["character"], 0);
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
 }

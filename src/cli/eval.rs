@@ -254,6 +254,12 @@ fn cycle800_swivels(
         .collect()
 }
 
+/// Where the rotary axes go for a swivel asked of `machine`, or why they
+/// cannot (an editor's hover on a CYCLE800 shows it).
+pub(crate) fn swivel_on(asked: &Asked, machine: &OnMachine) -> String {
+    solved_text(&solve_asked(asked, machine))
+}
+
 fn solved_text(solved: &Solved) -> String {
     match solved {
         Err(why) => why.clone(),

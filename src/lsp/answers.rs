@@ -7,9 +7,11 @@ use crate::diagnostic::Diagnostic;
 use crate::document::held;
 use crate::document::text::Text;
 use crate::lint::Settings;
+use crate::semantic::cycle800;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
 use crate::semantic::{Analysis, Model};
 use crate::span::{ColumnUnit, Span};
+use crate::syntax::tree::StatementKind;
 
 use super::convert;
 
@@ -85,6 +87,9 @@ impl<'a, 't> Snapshot<'a, 't> {
                 self.range(site.statement),
             ));
         }
+        if let Some(hover) = self.cycle800_hover(at) {
+            return Some(hover);
+        }
         let found = self.uses().at(at)?;
         let text = match self.uses().definition(self.model, found) {
             Some(definition) if definition.span == found.span => {
@@ -100,6 +105,50 @@ impl<'a, 't> Snapshot<'a, 't> {
             None => format!("{}: not defined in this program", self.describe(found)),
         };
         Some(markdown(text, self.range(found.span)))
+    }
+
+    /// On a CYCLE800 call: each parameter's meaning, the plane's tool
+    /// axis, and with a machine the rotary axes' positions.
+    fn cycle800_hover(&self, at: usize) -> Option<lsp::Hover> {
+        let source = self.text.bytes();
+        let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
+        let block = self.model.lines.block(row)?;
+        let (statement, call) =
+            block
+                .statements
+                .iter()
+                .find_map(|statement| match &statement.kind {
+                    StatementKind::Call(call)
+                        if call.name.is(source, "CYCLE800") && contains(statement.span, at) =>
+                    {
+                        Some((statement.span, call))
+                    }
+                    _ => None,
+                })?;
+        let mut text =
+            String::from("**CYCLE800**, swivel plane\n\n| | argument | meaning |\n|---|---|---|\n");
+        for parameter in cycle800::describe(source, call) {
+            let written = parameter.written.replace('|', "\\|");
+            text.push_str(&format!(
+                "| `{}` | {written} | {} |\n",
+                parameter.name, parameter.meaning
+            ));
+        }
+        if let Some(asked) = crate::semantic::swivels::of_cycle800(source, call) {
+            let z = asked.rotation * nalgebra::Vector3::z();
+            let n = |v: f64| crate::emit::number::format(v, 6);
+            text.push_str(&format!(
+                "\nTool axis of the new plane, in the frame before it: ({}, {}, {})\n",
+                n(z.x),
+                n(z.y),
+                n(z.z)
+            ));
+            if let Some(machine) = &self.settings.machine {
+                let positions = crate::cli::eval::swivel_on(&asked, machine);
+                text.push_str(&format!("\nOn `{}`: {positions}\n", machine.name));
+            }
+        }
+        Some(markdown(text, self.range(statement)))
     }
 
     fn describe(&self, found: &Use) -> String {
@@ -341,34 +390,70 @@ impl Snapshot<'_, '_> {
         Ok(())
     }
 
-    /// After each CYCLE600 evaluated offline, the angles it computes.
+    /// After each CYCLE600 evaluated offline, the angles it computes; after
+    /// each CYCLE800's constant `_MODE`, what it makes of the angles.
     pub fn inlay_hints(&self, range: lsp::Range) -> Vec<lsp::InlayHint> {
         let wanted = convert::span(self.text, range, self.unit);
         let precision = self.settings.emit.precision.min(4);
         let n = |v: f64| crate::emit::number::format(v, precision);
-        self.calls()
+        let mut hints: Vec<lsp::InlayHint> = self
+            .calls()
             .filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)
             .filter_map(|site| {
                 let evaluation = site.evaluation.as_ref()?;
                 let [a, b, c] = evaluation.output.angles;
                 let sequence = &evaluation.parameters.output;
-                Some(lsp::InlayHint {
-                    position: convert::position(self.text, site.statement.end, self.unit),
-                    label: lsp::InlayHintLabel::String(format!(
-                        "→ {sequence} {} {} {}",
-                        n(a),
-                        n(b),
-                        n(c)
-                    )),
-                    kind: None,
-                    text_edits: None,
-                    tooltip: None,
-                    padding_left: Some(true),
-                    padding_right: None,
-                    data: None,
-                })
+                let label = format!("→ {sequence} {} {} {}", n(a), n(b), n(c));
+                Some(self.hint(site.statement.end, label))
             })
-            .collect()
+            .collect();
+        hints.extend(self.cycle800_modes(wanted));
+        hints.sort_by_key(|hint| (hint.position.line, hint.position.character));
+        hints
+    }
+
+    fn cycle800_modes(&self, wanted: Span) -> Vec<lsp::InlayHint> {
+        if !crate::semantic::mentions_cycle(self.text.bytes(), b"800") {
+            return Vec::new();
+        }
+        let source = self.text.bytes();
+        let first = self.text.position(wanted.start, ColumnUnit::Bytes).row - 1;
+        let last = self.text.position(wanted.end, ColumnUnit::Bytes).row - 1;
+        let mut hints = Vec::new();
+        for row in first..=last.min(self.model.lines.len().saturating_sub(1)) {
+            let Some(block) = self.model.lines.block(row) else {
+                continue;
+            };
+            for statement in &block.statements {
+                let StatementKind::Call(call) = &statement.kind else {
+                    continue;
+                };
+                let Some(argument) = call.arguments.items.get(3) else {
+                    continue;
+                };
+                if !call.name.is(source, "CYCLE800") || argument.value.is_none() {
+                    continue;
+                }
+                let arguments = cycle800::Arguments::of(source, call);
+                if let Some(mode) = arguments.number(3).and_then(cycle800::Mode::of) {
+                    hints.push(self.hint(argument.span.end, mode.to_string()));
+                }
+            }
+        }
+        hints
+    }
+
+    fn hint(&self, at: usize, label: String) -> lsp::InlayHint {
+        lsp::InlayHint {
+            position: convert::position(self.text, at, self.unit),
+            label: lsp::InlayHintLabel::String(label),
+            kind: None,
+            text_edits: None,
+            tooltip: None,
+            padding_left: Some(true),
+            padding_right: None,
+            data: None,
+        }
     }
 }
 

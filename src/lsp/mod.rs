@@ -284,9 +284,28 @@ impl Server<'_> {
     }
 
     fn request(&mut self, request: Request) {
-        use lsp::request as r;
         let id = request.id.clone();
-        let answer = match request.method.as_str() {
+        // A request that fails inside sinuprep is answered with the error,
+        // and the editor keeps its server (and the other documents).
+        let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            self.answer_request(request)
+        }))
+        .unwrap_or_else(|_| {
+            Err((
+                ErrorCode::InternalError,
+                "sinuprep failed on this request (said on stderr); please report it".to_string(),
+            ))
+        });
+        let response = match answer {
+            Ok(result) => Response::new_ok(id, result),
+            Err((code, message)) => Response::new_err(id, code as i32, message),
+        };
+        self.send(Message::Response(response));
+    }
+
+    fn answer_request(&self, request: Request) -> Result<serde_json::Value, (ErrorCode, String)> {
+        use lsp::request as r;
+        match request.method.as_str() {
             r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
                 Ok(s.hover(p.text_document_position_params.position))
             }),
@@ -343,12 +362,7 @@ impl Server<'_> {
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
             )),
-        };
-        let response = match answer {
-            Ok(result) => Response::new_ok(id, result),
-            Err((code, message)) => Response::new_err(id, code as i32, message),
-        };
-        self.send(Message::Response(response));
+        }
     }
 
     /// The answer to a request about one open document, or why the

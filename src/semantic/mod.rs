@@ -10,6 +10,7 @@ pub(crate) mod addresses;
 pub(crate) mod blocks;
 pub(crate) mod calls;
 pub mod cycle600;
+pub mod cycle800;
 pub mod env;
 pub mod environment;
 pub mod eval;

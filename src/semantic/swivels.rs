@@ -11,9 +11,9 @@ use crate::registry::{
     hirth_rounding, swivel_direction_outside_limits, swivel_unreachable, undefined_swivel_record,
 };
 use crate::rotation::{matrix, Kind, Sequence};
-use crate::semantic::eval::{evaluate, Lookup};
+use crate::semantic::cycle800::Arguments;
 use crate::semantic::machine::Machine;
-use crate::semantic::value::{Unknown, Value};
+use crate::semantic::value::Value;
 use crate::semantic::walk::CallSite;
 use crate::span::Span;
 use crate::syntax::tree::{Call, LineKind, StatementKind};
@@ -72,24 +72,9 @@ pub fn of_cycle600(site: &CallSite) -> Option<Asked> {
 /// plane (`_ST` ending in 0) axis by axis (`_MODE` below 64) to one side
 /// (`_DIR` -1 or 1). Other calls are the control's to work out.
 pub fn of_cycle800(source: &[u8], call: &Call) -> Option<Asked> {
-    // _FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR;
-    // a parameter left out is 0 (an empty string for _TC).
-    let argument = |index: usize| -> Option<Value> {
-        match call
-            .arguments
-            .items
-            .get(index)
-            .and_then(|a| a.value.as_ref())
-        {
-            None => Some(Value::Number(0.0)),
-            Some(expr) => evaluate(source, expr, &Constants).ok(),
-        }
-    };
-    let number = |index: usize| match argument(index)? {
-        Value::Number(n) => Some(n),
-        Value::Text(_) => None,
-    };
-    let record = match argument(1)? {
+    let arguments = Arguments::of(source, call);
+    let number = |index: usize| arguments.number(index);
+    let record = match arguments.value(1)? {
         Value::Text(name) if !name.trim().is_empty() => name,
         _ => return None,
     };
@@ -111,15 +96,6 @@ pub fn of_cycle800(source: &[u8], call: &Call) -> Option<Asked> {
         rotation: matrix(sequence, angles),
         direction,
     })
-}
-
-/// Constants only: a variable's value is the walk's business.
-struct Constants;
-
-impl Lookup for Constants {
-    fn variable(&self, key: &str) -> Result<Value, Unknown> {
-        Err(Unknown::Invalid(format!("`{key}` is a variable")))
-    }
 }
 
 /// `value` with at most `places` decimals, no trailing zeros.

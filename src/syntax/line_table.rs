@@ -146,8 +146,11 @@ impl<'src> Lines<'src> {
     }
 
     /// The block of line `index`, if the line is one (not a `%` header or
-    /// `;$PATH=` line).
+    /// `;$PATH=` line); `None` past the last line.
     pub fn block(&self, index: usize) -> Option<Cow<'_, Block>> {
+        if index >= self.len {
+            return None;
+        }
         match self.line(index) {
             Cow::Borrowed(Line {
                 kind: LineKind::Block(block),
