@@ -449,3 +449,32 @@ fn a_cycle800_hover_says_what_the_call_asks_for() {
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A call of a subprogram the program does not define goes to the PROC of
+/// the file beside it, as the control finds it (any case).
+#[test]
+fn a_call_goes_to_the_subprogram_beside_the_program() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-subprogram-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    std::fs::write(
+        dir.join("pocket.spf"),
+        ";pocket\nPROC POCKET(REAL _DEPTH, INT _N)\nM17\n",
+    )
+    .expect("subprogram");
+    let uri = format!("file://{}", dir.join("MAIN.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, "G17\nPOCKET(5, 2)\nM30\n");
+    let definition = client.request("textDocument/definition", at(&uri, 1, 2));
+    let expected = format!("file://{}", dir.join("pocket.spf").display());
+    assert_eq!(definition["uri"], expected.as_str(), "{definition}");
+    assert_eq!(
+        definition["range"],
+        json!({ "start": { "line": 1, "character": 5 }, "end": { "line": 1, "character": 11 } })
+    );
+    let hover = client.request("textDocument/hover", at(&uri, 1, 2));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(shown.contains("pocket.spf`, 2 parameter(s)"), "{shown}");
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -223,7 +223,7 @@ impl Opened {
                     if holds_machine_data(data) {
                         environment.learn_axes(data);
                     }
-                    own.read_procedure(data);
+                    own.read_procedure(data, None);
                     if settings.heads.is_none() && member.name.eq_ignore_ascii_case("HEAD_DEF_SPF")
                     {
                         settings.heads = Some(Heads::read(self.member_name(index), data));

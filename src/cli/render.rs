@@ -692,6 +692,16 @@ fn uri(path: &[u8], windows: bool) -> Uri {
     Uri::Relative(percent_encoded(relative))
 }
 
+/// An absolute path as a `file` URI (an editor's server names other files
+/// by it); `None` for a relative one.
+pub(crate) fn file_uri(path: &std::path::Path) -> Option<String> {
+    let bytes = crate::cli::platform::path_bytes(path);
+    match uri(&bytes, crate::cli::platform::WINDOWS_PATHS) {
+        Uri::Absolute(uri) => Some(uri),
+        Uri::Relative(_) => None,
+    }
+}
+
 /// The working directory as a `file` URI ending in `/`.
 fn working_directory() -> String {
     let dir = std::env::current_dir().unwrap_or_default();

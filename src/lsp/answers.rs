@@ -102,7 +102,20 @@ impl<'a, 't> Snapshot<'a, 't> {
                 definition.row + 1,
                 self.line_text(definition.row)
             ),
-            None => format!("{}: not defined in this program", self.describe(found)),
+            None => match self.settings.environment.procedures.get(&found.name) {
+                Some(procedure) if found.namespace == Namespace::Subprogram => {
+                    let file = match &procedure.defined {
+                        Some((file, _)) => format!("`{}`", file.display()),
+                        None => "an archive".to_string(),
+                    };
+                    format!(
+                        "{}: a subprogram of {file}, {} parameter(s)",
+                        self.describe(found),
+                        procedure.parameters
+                    )
+                }
+                _ => format!("{}: not defined in this program", self.describe(found)),
+            },
         };
         Some(markdown(text, self.range(found.span)))
     }
@@ -162,10 +175,28 @@ impl<'a, 't> Snapshot<'a, 't> {
         format!("{what} `{}`", found.name)
     }
 
+    /// The definition in this program, or for a subprogram it does not
+    /// define, the PROC of the file the control would call.
     pub fn definition(&self, uri: &lsp::Uri, position: lsp::Position) -> Option<lsp::Location> {
         let found = self.uses().at(self.offset(position))?;
-        let definition = self.uses().definition(self.model, found)?;
-        Some(lsp::Location::new(uri.clone(), self.range(definition.span)))
+        match self.uses().definition(self.model, found) {
+            Some(definition) => Some(lsp::Location::new(uri.clone(), self.range(definition.span))),
+            None if found.namespace == Namespace::Subprogram => self.procedure_file(&found.name),
+            None => None,
+        }
+    }
+
+    /// Where the subprogram `name` of the program's folder or the cycle
+    /// directories has its PROC's name.
+    fn procedure_file(&self, name: &str) -> Option<lsp::Location> {
+        let procedures = &self.settings.environment.procedures;
+        let (file, span) = procedures.get(name)?.defined.as_ref()?;
+        let text = Text::new(std::fs::read(file).ok()?);
+        let uri = crate::cli::render::file_uri(file)?.parse().ok()?;
+        Some(lsp::Location::new(
+            uri,
+            convert::range(&text, *span, self.unit),
+        ))
     }
 
     pub fn references(

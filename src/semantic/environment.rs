@@ -6,10 +6,12 @@
 //! own text.
 
 use std::collections::{HashMap, HashSet};
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::Model;
+use crate::span::Span;
 use crate::syntax::macros::Macros;
 use crate::syntax::tree::{ExprKind, LineKind, StatementKind};
 
@@ -28,14 +30,24 @@ pub struct Environment {
     /// The same macros' texts, as the parser expands them where a program
     /// writes their names. Shared: every program of a run reads them.
     pub expansions: Arc<Macros>,
-    /// Subprograms of the cycle directories: name (upper case) and how
-    /// many parameters their PROC declares. Shared: every program of a
-    /// directory reaches the same ones.
-    pub procedures: Arc<HashMap<String, usize>>,
+    /// Subprograms of the program's folder and the cycle directories, by
+    /// name (upper case). Shared: every program of a directory reaches the
+    /// same ones.
+    pub procedures: Arc<HashMap<String, Procedure>>,
     /// Whether any of it was given (definition files, axis names, cycle
     /// directories): without it, what a program takes from its machine
     /// cannot be checked, and `check` says so once.
     pub given: bool,
+}
+
+/// A subprogram a program can call without defining it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Procedure {
+    /// How many parameters its PROC declares.
+    pub parameters: usize,
+    /// Its file and the span of the PROC's name in it; `None` for a member
+    /// of an archive.
+    pub defined: Option<(PathBuf, Span)>,
 }
 
 /// What a macro stands for where a program writes its name: its text read
@@ -269,10 +281,11 @@ fn axis_names(source: &[u8]) -> (Vec<String>, Vec<Diagnostic>) {
 const PROC_WITHIN: usize = 200;
 
 impl Environment {
-    /// Learns a subprogram of a cycle directory from its PROC header (its
-    /// name and parameter count); a file without one within its first
-    /// lines (a main program, a text) teaches nothing.
-    pub fn read_procedure(&mut self, source: &[u8]) {
+    /// Learns a subprogram from its PROC header (its name and parameter
+    /// count, and where the name stands in `file` when it has one); a file
+    /// without one within its first lines (a main program, a text) teaches
+    /// nothing.
+    pub fn read_procedure(&mut self, source: &[u8], file: Option<&Path>) {
         let mut parser = crate::syntax::LineParser::default();
         for raw in crate::syntax::lines::raw_lines(source).take(PROC_WITHIN) {
             let (line, _) = parser.parse_line(source, raw);
@@ -282,7 +295,11 @@ impl Environment {
             for statement in &block.statements {
                 if let StatementKind::Proc(proc) = &statement.kind {
                     let name = crate::syntax::tree::upper(proc.name.text(source));
-                    Arc::make_mut(&mut self.procedures).insert(name, proc.parameters.len());
+                    let procedure = Procedure {
+                        parameters: proc.parameters.len(),
+                        defined: file.map(|file| (file.to_path_buf(), proc.name.span)),
+                    };
+                    Arc::make_mut(&mut self.procedures).insert(name, procedure);
                     return;
                 }
             }
@@ -367,12 +384,19 @@ $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n$MN_AXCONF_LOGIC_MACHAX_TAB[0]=\"NC1_AX1\"
     #[test]
     fn a_cycle_directory_gives_procedures_with_their_parameter_counts() {
         let mut environment = Environment::default();
-        environment
-            .read_procedure(b";cycle\n\nPROC Align(REAL _A, VAR REAL _B[3], INT _N) SAVE\nM17\n");
-        environment.read_procedure(b"PROC NOARGS\nRET\n");
-        environment.read_procedure(b"N10 G0 X0\nM30\n");
-        assert_eq!(environment.procedures.get("ALIGN"), Some(&3));
-        assert_eq!(environment.procedures.get("NOARGS"), Some(&0));
+        environment.read_procedure(
+            b";cycle\n\nPROC Align(REAL _A, VAR REAL _B[3], INT _N) SAVE\nM17\n",
+            Some(Path::new("ALIGN.SPF")),
+        );
+        environment.read_procedure(b"PROC NOARGS\nRET\n", None);
+        environment.read_procedure(b"N10 G0 X0\nM30\n", None);
+        let align = &environment.procedures["ALIGN"];
+        assert_eq!(align.parameters, 3);
+        assert_eq!(
+            align.defined,
+            Some((PathBuf::from("ALIGN.SPF"), Span::new(13, 18)))
+        );
+        assert_eq!(environment.procedures["NOARGS"].parameters, 0);
         assert_eq!(environment.procedures.len(), 2);
     }
 }

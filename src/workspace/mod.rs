@@ -31,7 +31,7 @@ use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
 use crate::emit::cycle600::{Form, Options};
 use crate::lint::{self, Selection, Settings};
-use crate::semantic::environment::holds_machine_data;
+use crate::semantic::environment::{holds_machine_data, Procedure};
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::swivels::{self, OnMachine};
 use crate::semantic::{Environment, Heads, Supplied};
@@ -106,7 +106,7 @@ pub struct Workspace {
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
 /// the parameter count of its PROC.
-type Procedures = HashMap<String, usize>;
+type Procedures = HashMap<String, Procedure>;
 
 /// `cache[key]`, made by `make` the first time it is asked for. Two threads
 /// asking at once may both make it; one is kept.
@@ -414,8 +414,9 @@ impl Workspace {
                 // One directory (the common case): its table, shared.
                 None => out = Some(found),
                 Some(out) => {
-                    for (name, count) in found.iter() {
-                        Arc::make_mut(out).entry(name.clone()).or_insert(*count);
+                    for (name, procedure) in found.iter() {
+                        let out = Arc::make_mut(out);
+                        out.entry(name.clone()).or_insert_with(|| procedure.clone());
                     }
                 }
             }
@@ -454,9 +455,9 @@ impl Workspace {
                     continue;
                 };
                 let mut environment = Environment::default();
-                environment.read_procedure(&source);
-                if let Some(&count) = environment.procedures.values().next() {
-                    procedures.insert(name, count);
+                environment.read_procedure(&source, Some(&path));
+                if let Some(procedure) = environment.procedures.values().next() {
+                    procedures.insert(name, procedure.clone());
                 }
             }
             Ok(Arc::new(procedures))

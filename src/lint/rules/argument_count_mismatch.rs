@@ -76,7 +76,8 @@ impl Check for Checker {
         let procedures = &file.environment.procedures;
         for (name, count, span) in &self.calls {
             // The program's own declarations first, then the cycle directories'.
-            let Some(&parameters) = self.declared.get(name).or_else(|| procedures.get(name)) else {
+            let machine = || procedures.get(name).map(|procedure| procedure.parameters);
+            let Some(parameters) = self.declared.get(name).copied().or_else(machine) else {
                 // The control's commands and cycles are not looked for.
                 if call_kind(name) == CallKind::Subprogram {
                     file.unresolved_call(name);
