@@ -474,7 +474,41 @@ fn a_call_goes_to_the_subprogram_beside_the_program() {
     );
     let hover = client.request("textDocument/hover", at(&uri, 1, 2));
     let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(shown.contains("PROC in `"), "{shown}");
     assert!(shown.contains("pocket.spf`, 2 parameter(s)"), "{shown}");
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A GUD variable and a macro of the definition files sinuprep.toml names
+/// go to their DEF and DEFINE there.
+#[test]
+fn a_global_variable_goes_to_its_definition_file() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-gud-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    std::fs::write(
+        dir.join("GUD7.DEF"),
+        "; globals\nDEF NCK REAL _OFFSET_Z\nM30\n",
+    )
+    .expect("gud");
+    std::fs::write(dir.join("sinuprep.toml"), "definitions = [\"GUD7.DEF\"]\n").expect("toml");
+    let uri = format!("file://{}", dir.join("MAIN.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, "G1 Z=_OFFSET_Z F100\nM30\n");
+    let definition = client.request("textDocument/definition", at(&uri, 0, 7));
+    let expected = format!("file://{}", dir.join("GUD7.DEF").display());
+    assert_eq!(definition["uri"], expected.as_str(), "{definition}");
+    assert_eq!(
+        definition["range"],
+        json!({ "start": { "line": 1, "character": 13 }, "end": { "line": 1, "character": 22 } })
+    );
+    let hover = client.request("textDocument/hover", at(&uri, 0, 7));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("defined in `") && shown.contains("GUD7.DEF`"),
+        "{shown}"
+    );
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -215,7 +215,7 @@ impl Opened {
                 MemberKind::Definitions | MemberKind::Other if holds_machine_data(data) => {
                     environment.read_machine_data(data)
                 }
-                MemberKind::Definitions => environment.read_definitions(data),
+                MemberKind::Definitions => environment.read_definitions(data, None),
                 MemberKind::Program(_) => {
                     // A setup program that assigns machine data: its axis
                     // names are the machine's (its errors are its own

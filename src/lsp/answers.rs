@@ -102,20 +102,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 definition.row + 1,
                 self.line_text(definition.row)
             ),
-            None => match self.settings.environment.procedures.get(&found.name) {
-                Some(procedure) if found.namespace == Namespace::Subprogram => {
-                    let file = match &procedure.defined {
-                        Some((file, _)) => format!("`{}`", file.display()),
-                        None => "an archive".to_string(),
-                    };
-                    format!(
-                        "{}: a subprogram of {file}, {} parameter(s)",
-                        self.describe(found),
-                        procedure.parameters
-                    )
-                }
-                _ => format!("{}: not defined in this program", self.describe(found)),
-            },
+            None => self.elsewhere(found),
         };
         Some(markdown(text, self.range(found.span)))
     }
@@ -164,6 +151,29 @@ impl<'a, 't> Snapshot<'a, 't> {
         Some(markdown(text, self.range(statement)))
     }
 
+    /// A name the program does not define: where the control finds it.
+    fn elsewhere(&self, found: &Use) -> String {
+        let environment = &self.settings.environment;
+        let procedure = environment.procedures.get(&found.name);
+        match (found.namespace, procedure, self.defined_elsewhere(found)) {
+            (Namespace::Subprogram, Some(procedure), Some((file, _))) => format!(
+                "{}: PROC in `{}`, {} parameter(s)",
+                self.describe(found),
+                file.display(),
+                procedure.parameters
+            ),
+            (Namespace::Subprogram, Some(procedure), None) => format!(
+                "{}: a subprogram of an archive, {} parameter(s)",
+                self.describe(found),
+                procedure.parameters
+            ),
+            (_, _, Some((file, _))) => {
+                format!("{}: defined in `{}`", self.describe(found), file.display())
+            }
+            _ => format!("{}: not defined in this program", self.describe(found)),
+        }
+    }
+
     fn describe(&self, found: &Use) -> String {
         let what = match (found.namespace, found.role) {
             (Namespace::Label, Role::JumpsTo) => "jump to",
@@ -181,22 +191,28 @@ impl<'a, 't> Snapshot<'a, 't> {
         let found = self.uses().at(self.offset(position))?;
         match self.uses().definition(self.model, found) {
             Some(definition) => Some(lsp::Location::new(uri.clone(), self.range(definition.span))),
-            None if found.namespace == Namespace::Subprogram => self.procedure_file(&found.name),
-            None => None,
+            None => {
+                let (file, span) = self.defined_elsewhere(found)?;
+                let text = Text::new(std::fs::read(file).ok()?);
+                let uri = crate::cli::render::file_uri(file)?.parse().ok()?;
+                Some(lsp::Location::new(
+                    uri,
+                    convert::range(&text, *span, self.unit),
+                ))
+            }
         }
     }
 
-    /// Where the subprogram `name` of the program's folder or the cycle
-    /// directories has its PROC's name.
-    fn procedure_file(&self, name: &str) -> Option<lsp::Location> {
-        let procedures = &self.settings.environment.procedures;
-        let (file, span) = procedures.get(name)?.defined.as_ref()?;
-        let text = Text::new(std::fs::read(file).ok()?);
-        let uri = crate::cli::render::file_uri(file)?.parse().ok()?;
-        Some(lsp::Location::new(
-            uri,
-            convert::range(&text, *span, self.unit),
-        ))
+    /// Where a name the program does not define is defined, as the control
+    /// finds it: a subprogram's PROC in the program's folder or the cycle
+    /// directories, a GUD variable or a macro in the definition files.
+    fn defined_elsewhere(&self, found: &Use) -> Option<&(std::path::PathBuf, Span)> {
+        let environment = &self.settings.environment;
+        match found.namespace {
+            Namespace::Subprogram => environment.procedures.get(&found.name)?.defined.as_ref(),
+            Namespace::Variable => environment.defined_in.get(&found.name),
+            Namespace::Label => None,
+        }
     }
 
     pub fn references(

@@ -34,6 +34,9 @@ pub struct Environment {
     /// name (upper case). Shared: every program of a directory reaches the
     /// same ones.
     pub procedures: Arc<HashMap<String, Procedure>>,
+    /// Where each variable and macro of the definition files is defined:
+    /// the file (the archive, for a member of one) and the name's span in it.
+    pub defined_in: HashMap<String, (PathBuf, Span)>,
     /// Whether any of it was given (definition files, axis names, cycle
     /// directories): without it, what a program takes from its machine
     /// cannot be checked, and `check` says so once.
@@ -95,14 +98,22 @@ impl Environment {
 
     /// Learns the variables and macros of a definition file (GUD or macro
     /// `.DEF`), read with the project's own parser; its syntax errors, if
-    /// any, are given back (nothing is learned from a broken file).
-    pub fn read_definitions(&mut self, source: &[u8]) -> Result<(), Vec<Diagnostic>> {
+    /// any, are given back (nothing is learned from a broken file). `file`
+    /// is the file `source` is read from and where in it `source` starts.
+    pub fn read_definitions(
+        &mut self,
+        source: &[u8],
+        file: Option<(&Path, usize)>,
+    ) -> Result<(), Vec<Diagnostic>> {
         let model = Model::of(source);
         if !model.syntax.is_empty() {
             return Err(model.syntax);
         }
-        self.variables
-            .extend(model.symbols.iter().map(|symbol| symbol.name.clone()));
+        let mut defined = Vec::new();
+        for symbol in &model.symbols {
+            self.variables.insert(symbol.name.clone());
+            defined.push((symbol.name.clone(), symbol.span));
+        }
         for (_, line) in model.lines.other_lines() {
             let LineKind::Block(block) = &line.kind else {
                 continue;
@@ -113,12 +124,17 @@ impl Environment {
                     if crate::semantic::model::is_reserved(name.text(source)) {
                         continue;
                     }
-                    self.macros.insert(
-                        crate::syntax::tree::upper(name.text(source)),
-                        Macro::of(body.of(source)),
-                    );
+                    let upper = crate::syntax::tree::upper(name.text(source));
+                    defined.push((upper.clone(), name.span));
+                    self.macros.insert(upper, Macro::of(body.of(source)));
                     Arc::make_mut(&mut self.expansions).define(name.text(source), body.of(source));
                 }
+            }
+        }
+        if let Some((file, start)) = file {
+            for (name, span) in defined {
+                let span = Span::new(span.start + start, span.end + start);
+                self.defined_in.insert(name, (file.to_path_buf(), span));
             }
         }
         Ok(())
@@ -315,21 +331,37 @@ mod tests {
     fn definition_files_give_variables_and_macros() {
         let mut environment = Environment::with_axes(["xc"]);
         let gud = b"%_N_MGUD_DEF\n;$PATH=/_N_DEF_DIR\nDEF NCK REAL _ZERO_X, _ZERO_Y\nDEF CHAN INT PART_COUNT\nM30\n";
-        environment.read_definitions(gud).expect("valid");
+        environment.read_definitions(gud, None).expect("valid");
         environment
-            .read_definitions(b"DEFINE M_ON AS M3\n")
+            .read_definitions(b"DEFINE M_ON AS M3\n", None)
             .expect("valid");
         for name in ["XC", "_ZERO_Y", "PART_COUNT", "M_ON"] {
             assert!(environment.defines(name), "{name}");
         }
         environment
-            .read_definitions(b"DEFINE ENDE AS M30\nDEFINE BACK AS RET\nDEFINE FAST AS G0 X0\n")
+            .read_definitions(
+                b"DEFINE ENDE AS M30\nDEFINE BACK AS RET\nDEFINE FAST AS G0 X0\n",
+                None,
+            )
             .expect("valid");
         let ends = |name: &str| environment.macros[name].ends_program;
         assert!(ends("ENDE") && ends("BACK") && !ends("FAST") && !ends("M_ON"));
         assert_eq!(environment.macros["M_ON"].text, "M3");
         assert!(!environment.defines("ZERO_X"));
-        assert!(environment.read_definitions(b"DEF NCK REAL (\n").is_err());
+        assert!(environment
+            .read_definitions(b"DEF NCK REAL (\n", None)
+            .is_err());
+        // A member of an archive: spans count from the archive's start.
+        let member = b"DEF NCK REAL _A\nDEFINE M_OFF AS M5\n";
+        environment
+            .read_definitions(member, Some((Path::new("GUD.ARC"), 100)))
+            .expect("valid");
+        let place = |name: &str| environment.defined_in[name].clone();
+        assert_eq!(place("_A"), (PathBuf::from("GUD.ARC"), Span::new(113, 115)));
+        assert_eq!(
+            place("M_OFF"),
+            (PathBuf::from("GUD.ARC"), Span::new(123, 128))
+        );
     }
 
     #[test]

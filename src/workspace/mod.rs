@@ -508,12 +508,13 @@ fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
                 .map(|m| (PathBuf::from(format!("{name}:{}", m.name)), m.data, m.kind))
                 .collect(),
         };
-        for (path, range, kind) in members {
+        for (member, range, kind) in members {
+            let start = range.start;
             let bytes = &bytes[range];
             let read = match kind {
                 MemberKind::Data => environment.read_machine_data(bytes),
                 _ if holds_machine_data(bytes) => environment.read_machine_data(bytes),
-                MemberKind::Definitions => environment.read_definitions(bytes),
+                MemberKind::Definitions => environment.read_definitions(bytes, Some((path, start))),
                 _ => continue,
             };
             if let Err(errors) = read {
@@ -522,7 +523,7 @@ fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
                 };
                 let position = crate::span::LineIndex::new(bytes).position(first.span.start);
                 return Err(SettingsError::Definitions {
-                    path,
+                    path: member,
                     line: position.row,
                     column: position.column,
                     why: first.message.clone(),
