@@ -512,3 +512,85 @@ fn a_global_variable_goes_to_its_definition_file() {
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Semantic tokens colour a program in every editor, with no grammar of
+/// its own: each word's line, column and length in the agreed unit
+/// (UTF-16 here), and its type in the server's legend.
+#[test]
+fn semantic_tokens_give_each_word_its_class() {
+    let (mut client, initialized) = Client::start(json!({}));
+    let legend = &initialized["capabilities"]["semanticTokensProvider"]["legend"]["tokenTypes"];
+    let types: Vec<&str> = legend
+        .as_array()
+        .expect("legend")
+        .iter()
+        .map(|t| t.as_str().expect("type"))
+        .collect();
+    client.open(URI, "G1 X10 ; ü😀\nIF R1>0 GOTOF END\nEND: M30\n");
+    let tokens = client.request(
+        "textDocument/semanticTokens/full",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    let data: Vec<u64> = tokens["data"]
+        .as_array()
+        .expect("data")
+        .iter()
+        .map(|n| n.as_u64().expect("number"))
+        .collect();
+    let (mut line, mut start) = (0, 0);
+    let mut decoded = Vec::new();
+    for token in data.chunks(5) {
+        if token[0] > 0 {
+            start = 0;
+        }
+        line += token[0];
+        start += token[1];
+        decoded.push((line, start, token[2], types[token[3] as usize], token[4]));
+    }
+    assert_eq!(
+        decoded,
+        [
+            (0, 0, 2, "keyword", 0),
+            (0, 3, 1, "property", 0),
+            (0, 4, 2, "number", 0),
+            // `ü` is one UTF-16 unit, `😀` two.
+            (0, 7, 5, "comment", 0),
+            (1, 0, 2, "keyword", 0),
+            (1, 3, 2, "variable", 1),
+            (1, 6, 1, "number", 0),
+            (1, 8, 5, "keyword", 0),
+            (1, 14, 3, "label", 0),
+            (2, 0, 3, "label", 0),
+            (2, 5, 3, "keyword", 0),
+        ]
+    );
+    let range = client.request(
+        "textDocument/semanticTokens/range",
+        json!({ "textDocument": { "uri": URI },
+                "range": { "start": { "line": 2, "character": 0 }, "end": { "line": 2, "character": 3 } } }),
+    );
+    assert_eq!(range["data"], json!([2, 0, 3, 7, 0, 0, 5, 3, 3, 0]));
+    client.stop();
+}
+
+/// A run of comment lines folds as a comment; a lone one does not.
+#[test]
+fn a_run_of_comment_lines_folds() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open(
+        URI,
+        "; tool list\n;  T1 drill\n  ; T2 mill\nG0 X0\n; alone\nWHILE R1<3\nR1=R1+1\nENDWHILE\nM30\n",
+    );
+    let folding = client.request(
+        "textDocument/foldingRange",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    assert_eq!(
+        folding,
+        json!([
+            { "startLine": 0, "endLine": 2, "kind": "comment" },
+            { "startLine": 5, "endLine": 7 }
+        ])
+    );
+    client.stop();
+}

@@ -276,8 +276,40 @@ impl<'a, 't> Snapshot<'a, 't> {
                 ..lsp::FoldingRange::default()
             })
             .collect();
+        ranges.extend(self.comment_runs().map(|(first, last)| lsp::FoldingRange {
+            start_line: first as u32,
+            end_line: last as u32,
+            kind: Some(lsp::FoldingRangeKind::Comment),
+            ..lsp::FoldingRange::default()
+        }));
         ranges.sort_by_key(|r| (r.start_line, r.end_line));
         ranges
+    }
+
+    /// Runs of two or more lines that hold only a comment: their first and
+    /// last line.
+    fn comment_runs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let source = self.text.bytes();
+        let lines = &self.model.lines;
+        let is_comment = move |row: usize| {
+            let content = lines.raw(row).content.of(source);
+            let first = content.iter().position(|b| !b.is_ascii_whitespace());
+            first.is_some_and(|at| content[at] == b';')
+        };
+        let mut row = 0;
+        std::iter::from_fn(move || {
+            while row < lines.len() {
+                let first = row;
+                while row < lines.len() && is_comment(row) {
+                    row += 1;
+                }
+                if row - first >= 2 {
+                    return Some((first, row - 1));
+                }
+                row += 1;
+            }
+            None
+        })
     }
 
     /// Within `range`: each finding's fix, a suppression comment for each
@@ -435,6 +467,20 @@ impl Snapshot<'_, '_> {
             ));
         }
         Ok(())
+    }
+
+    /// The class of each word, for the client to colour: of the lines
+    /// `range` touches, or of the whole document.
+    pub fn semantic_tokens(&self, range: Option<lsp::Range>) -> lsp::SemanticTokens {
+        let rows = match range {
+            Some(range) => range.start.line as usize..range.end.line as usize + 1,
+            None => 0..self.model.lines.len(),
+        };
+        let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), rows);
+        lsp::SemanticTokens {
+            result_id: None,
+            data: convert::semantic_tokens(self.text, &tokens, self.unit),
+        }
     }
 
     /// After each CYCLE600 evaluated offline, the angles it computes; after

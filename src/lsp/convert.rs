@@ -1,5 +1,6 @@
 //! The protocol's types from the library's and back: positions in the unit
-//! the client and server agreed on, `file:` URIs and paths, diagnostics.
+//! the client and server agreed on, `file:` URIs and paths, diagnostics,
+//! semantic tokens.
 
 use std::path::PathBuf;
 
@@ -7,6 +8,7 @@ use lsp_types as lsp;
 
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::document::text::Text;
+use crate::semantic::highlight::{Class, Token};
 use crate::span::{ColumnUnit, Position, Span};
 
 /// How the client counts a line's characters: UTF-8 bytes when it offers
@@ -77,6 +79,73 @@ pub fn diagnostic(text: &Text, found: &Diagnostic, unit: ColumnUnit) -> lsp::Dia
         message,
         ..lsp::Diagnostic::default()
     }
+}
+
+/// The token types and modifiers the server colours with, in the order
+/// [`token_type`] numbers them.
+pub fn legend() -> lsp::SemanticTokensLegend {
+    use lsp::SemanticTokenType as T;
+    lsp::SemanticTokensLegend {
+        token_types: vec![
+            T::COMMENT,
+            T::STRING,
+            T::NUMBER,
+            T::KEYWORD,
+            T::PROPERTY,
+            T::VARIABLE,
+            T::FUNCTION,
+            // VS Code's own type for labels; other clients take it as a name.
+            T::new("label"),
+            T::MACRO,
+            T::NAMESPACE,
+        ],
+        token_modifiers: vec![lsp::SemanticTokenModifier::DEFAULT_LIBRARY],
+    }
+}
+
+/// A class's type in [`legend`], and its modifier bits.
+pub fn token_type(class: Class) -> (u32, u32) {
+    match class {
+        Class::Comment => (0, 0),
+        Class::String => (1, 0),
+        Class::Number => (2, 0),
+        Class::Keyword => (3, 0),
+        Class::Address => (4, 0),
+        Class::Variable => (5, 0),
+        // The control's own: `defaultLibrary`.
+        Class::SystemVariable => (5, 1),
+        Class::Function => (6, 0),
+        Class::Label => (7, 0),
+        Class::Macro => (8, 0),
+        Class::Header => (9, 0),
+    }
+}
+
+/// Tokens as the protocol sends them: each from the one before, in lines
+/// and in columns of `unit` (a token lies within one line).
+pub fn semantic_tokens(text: &Text, tokens: &[Token], unit: ColumnUnit) -> Vec<lsp::SemanticToken> {
+    let mut out = Vec::with_capacity(tokens.len());
+    let (mut line, mut character) = (0, 0);
+    for token in tokens {
+        let start = position(text, token.span.start, unit);
+        let end = position(text, token.span.end, unit);
+        if end.line != start.line || end.character <= start.character {
+            continue;
+        }
+        let (token_type, token_modifiers_bitset) = token_type(token.class);
+        out.push(lsp::SemanticToken {
+            delta_line: start.line - line,
+            delta_start: match start.line == line {
+                true => start.character - character,
+                false => start.character,
+            },
+            length: end.character - start.character,
+            token_type,
+            token_modifiers_bitset,
+        });
+        (line, character) = (start.line, start.character);
+    }
+    out
 }
 
 /// The file a `file:` URI names; `None` for another scheme (an unsaved

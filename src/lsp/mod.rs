@@ -71,6 +71,16 @@ fn serve(connection: &Connection) -> Result<(), String> {
             work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
         })),
         inlay_hint_provider: Some(lsp::OneOf::Left(true)),
+        semantic_tokens_provider: Some(
+            lsp::SemanticTokensServerCapabilities::SemanticTokensOptions(
+                lsp::SemanticTokensOptions {
+                    legend: convert::legend(),
+                    full: Some(lsp::SemanticTokensFullOptions::Bool(true)),
+                    range: Some(true),
+                    work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
+                },
+            ),
+        ),
         diagnostic_provider: pull.then(|| {
             lsp::DiagnosticServerCapabilities::Options(lsp::DiagnosticOptions {
                 identifier: Some("sinuprep".to_string()),
@@ -358,6 +368,14 @@ impl Server<'_> {
             r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
                 Ok(s.inlay_hints(p.range))
             }),
+            r::SemanticTokensFullRequest::METHOD => self
+                .answer(request, |s, _: lsp::SemanticTokensParams| {
+                    Ok(s.semantic_tokens(None))
+                }),
+            r::SemanticTokensRangeRequest::METHOD => self
+                .answer(request, |s, p: lsp::SemanticTokensRangeParams| {
+                    Ok(s.semantic_tokens(Some(p.range)))
+                }),
             method => Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
@@ -419,6 +437,8 @@ has_document! {
     lsp::RenameParams => |p| &p.text_document_position.text_document.uri;
     lsp::InlayHintParams => |p| &p.text_document.uri;
     lsp::DocumentDiagnosticParams => |p| &p.text_document.uri;
+    lsp::SemanticTokensParams => |p| &p.text_document.uri;
+    lsp::SemanticTokensRangeParams => |p| &p.text_document.uri;
 }
 
 /// A notification's parameters; one that does not parse is said on stderr

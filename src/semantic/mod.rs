@@ -16,6 +16,7 @@ pub mod environment;
 pub mod eval;
 pub(crate) mod frames;
 pub mod head_def;
+pub mod highlight;
 pub(crate) mod labels;
 pub(crate) mod line_order;
 pub mod machine;
