@@ -41,6 +41,8 @@ pub enum CircleError {
     /// The nominal direction is (nearly) along the chord: no axis normal to
     /// the chord is near it.
     AlongChord,
+    /// The nominal direction is zero.
+    NoDirection,
     /// The angle is 0 (or whole turns): two different positions are no turn.
     NoTurn,
 }
@@ -104,7 +106,10 @@ pub fn two(
     }
     let along = r / chord;
     let normal = nominal - along * along.dot(&nominal);
-    if !(normal.norm() > 1e-9 * nominal.norm()) {
+    if nominal.norm() == 0.0 {
+        return Err(CircleError::NoDirection);
+    }
+    if normal.norm() <= 1e-9 * nominal.norm() {
         return Err(CircleError::AlongChord);
     }
     let direction = normal.normalize();
