@@ -2136,7 +2136,8 @@ fn probe_centre_is_the_point_that_stays() {
 
 #[test]
 fn probe_refuses_points_that_give_no_face_naming_the_argument() {
-    let cases: [&[&str]; 7] = [
+    let cases: [&[&str]; 8] = [
+        &["--normal", "1e300,0,1"],
         &[
             "--along-x",
             "0,0,0",
@@ -2235,6 +2236,19 @@ fn axis_of_a_turn_gives_both_solutions() {
     assert_eq!(
         value["tc_carr"][0],
         "$TC_CARR10[3]=0 $TC_CARR11[3]=0 $TC_CARR12[3]=1"
+    );
+    // A half turn: one axis, e and -e.
+    let output = run(
+        &[
+            "axis", "--angle", "180", "--before", "100,0,50", "--after", "0,100,50",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let text = stdout(&output);
+    assert!(
+        text.contains("one, either way round") && text.contains("  1  0.57735 0.57735 0.57735 "),
+        "{text}"
     );
 }
 

@@ -495,6 +495,11 @@ fn point(text: &str) -> Result<[f64; 3], String> {
         .filter_map(|f| f.parse::<f64>().ok().filter(|v| v.is_finite()))
         .collect();
     match (fields.len(), &numbers[..]) {
+        // Past ±1e9 (1000 km in mm) a coordinate is a typo, and squares of
+        // differences could leave the range of f64.
+        (3, &[x, y, z]) if [x, y, z].iter().any(|v| v.abs() > 1e9) => Err(format!(
+            "`{text}` has a number beyond ±1e9, which no machine's coordinate is"
+        )),
         (3, &[x, y, z]) => Ok([x, y, z]),
         _ => Err(format!(
             "`{text}` is not three finite numbers X,Y,Z; give them separated by commas, as 10,-2.5,0.003"

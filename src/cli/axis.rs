@@ -152,9 +152,12 @@ fn turn_table(
         vector(&before, args.precision),
         vector(&after, args.precision)
     );
-    text.push_str(&match axes.len() {
-        1 => "axes        one: the point lies in the plane normal to the axis through the axis point\n".to_string(),
-        _ => "axes        two: the axis at an acute or an obtuse angle to the point (the seed's two roots)\n".to_string(),
+    text.push_str(match axes {
+        [_] => "axes        one: the point lies in the plane normal to the axis through the axis point\n",
+        [a, b] if a.direction.dot(&b.direction) < -0.999_999_999 => {
+            "axes        one, either way round: the point lies on it, or the turn is a half turn\n"
+        }
+        _ => "axes        two: the axis at an acute or an obtuse angle to the point (the seed's two roots)\n",
     });
     for (i, axis) in axes.iter().enumerate() {
         text.push_str(&format!(

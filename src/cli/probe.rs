@@ -87,9 +87,9 @@ fn probe(args: &ProbeArgs) -> Result<Probed, CliError> {
     };
     let face = face.map_err(|error| refused(error, form, tolerance, args.units))?;
     let measured = face::angles(&face.normal);
-    let in_frame = args
-        .in_frame
-        .map(|angles| matrix(args.in_frame_sequence, angles));
+    // A zero point alone is a frame too: a shift without a turn.
+    let in_frame = (args.in_frame.is_some() || args.in_frame_origin.is_some())
+        .then(|| matrix(args.in_frame_sequence, args.in_frame.unwrap_or_default()));
     let active = in_frame.unwrap_or_else(Rotation3::identity);
     let origin = Vector3::from(args.in_frame_origin.unwrap_or_default());
     let given = args.center.map(Point3::from);
@@ -235,7 +235,7 @@ fn json(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> St
         "units": unit(args.units),
         "in_frame": probed.in_frame.map(|_| serde_json::json!({
             "sequence": args.in_frame_sequence.to_string(),
-            "angles": args.in_frame,
+            "angles": args.in_frame.unwrap_or_default(),
             "origin": args.in_frame_origin.unwrap_or_default(),
         })),
         "output": {
@@ -283,7 +283,8 @@ fn table(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> S
             n(pb)
         ));
     }
-    if let (Some(angles), Some(_)) = (args.in_frame, probed.in_frame) {
+    if probed.in_frame.is_some() {
+        let angles = args.in_frame.unwrap_or_default();
         text.push_str(&format!(
             "in frame    {} {} {} {}, zero point {}: the points are in its coordinates, the angles above are in its axes\n",
             sequence(args.in_frame_sequence),
