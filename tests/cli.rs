@@ -1923,6 +1923,18 @@ fn probe_json_has_the_sequence_and_exact_angles_in_every_form() {
     // The same angles `convert` reads in intrinsic Z, Y', X'' (CYCLE800's 27).
     let out = numbers(&value["output"]["angles"]);
     assert_eq!(value["output"]["sequence"], "intrinsic:ZYX");
+    // Another output sequence, as the paper's Example 3 (Z, X', Y''); none
+    // CYCLE800 cannot take.
+    let zxy = probe_json(&["--normal", &normal, "--to", "i:ZXY"]);
+    assert_eq!(zxy["output"]["code"], 39);
+    assert!(zxy["cycle800"]
+        .as_str()
+        .expect("text")
+        .starts_with("CYCLE800(0,\"\",0,39,"));
+    let output = run(&["probe", "--normal", &normal, "--to", "i:ZXZ"], b"");
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr)
+        .contains("--to: intrinsic:ZXZ is a proper Euler sequence"));
     assert!((out[1] - angles[1]).abs() < 1e-12 && (out[2] - angles[0]).abs() < 1e-12);
 }
 

@@ -191,6 +191,35 @@ mod tests {
     }
 
     #[test]
+    fn any_positions_give_a_finite_axis_or_an_error() {
+        let mut state = 23u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for case in 0..20_000 {
+            let scale = 10f64.powi((case % 19) - 9).min(1e9);
+            let mut point = || Point3::new(next() * scale, next() * scale, next() * scale);
+            let (a, b, c) = (point(), point(), point());
+            let tolerance = 10f64.powi((case % 13) - 12);
+            let nominal = Vector3::new(next(), next(), next());
+            for found in [
+                three([a, b, c], tolerance),
+                two([a, b], 37.0 * f64::from(case % 11), nominal, tolerance),
+            ]
+            .into_iter()
+            .flatten()
+            {
+                assert!(found.direction.iter().all(|v| v.is_finite()), "{case}");
+                assert!(found.point.iter().all(|v| v.is_finite()), "{case}");
+                assert!(found.radius.is_finite() && found.turns.iter().all(|t| t.is_finite()));
+            }
+        }
+    }
+
+    #[test]
     fn bad_positions_are_refused() {
         let o = Point3::origin();
         let x = Point3::new(100.0, 0.0, 0.0);

@@ -357,6 +357,30 @@ mod tests {
     }
 
     #[test]
+    fn any_points_give_a_finite_face_or_an_error() {
+        // Coordinates up to the command line's ±1e9, spans down to nothing,
+        // tolerances from tiny to huge: never a NaN.
+        let mut noise = Noise(13);
+        for case in 0..20_000 {
+            let scale = 10f64.powi((case % 19) - 9);
+            let mut point = || Point3::from(noise.vector(scale.min(1e9)));
+            let (a, b, c, d) = (point(), point(), point(), point());
+            let tolerance = 10f64.powi((case % 13) - 12);
+            for face in [
+                along([a, b], [c, d], tolerance),
+                through([a, b, c], tolerance),
+            ]
+            .into_iter()
+            .flatten()
+            {
+                assert!(face.normal.iter().all(|v| v.is_finite()), "{case}");
+                assert!((face.normal.norm() - 1.0).abs() < 1e-12);
+                assert!(angles(&face.normal).iter().all(|v| v.is_finite()));
+            }
+        }
+    }
+
+    #[test]
     fn the_points_normal_points_to_the_tool_whatever_their_order() {
         let [p1, p2, p3, p4] = probed([10.0, -20.0], Point3::origin(), 50.0);
         for face in [

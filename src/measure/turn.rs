@@ -355,6 +355,30 @@ mod tests {
     }
 
     #[test]
+    fn any_measurements_give_finite_axes_or_a_reason() {
+        let mut noise = Noise(17);
+        for case in 0..20_000 {
+            let scale = 10f64.powi((case % 19) - 9);
+            let before = noise.vector(scale.min(1e9));
+            let after = if case % 3 == 0 {
+                // Same distance, so that the turn is often possible.
+                noise.vector(1.0).normalize() * before.norm()
+            } else {
+                noise.vector(scale.min(1e9))
+            };
+            let angle = noise.next() * 400.0;
+            let tolerance = 10f64.powi((case % 13) - 12);
+            if let Ok(found) = axes(before, after, angle, tolerance) {
+                for axis in found {
+                    assert!(axis.direction.iter().all(|v| v.is_finite()), "{case}");
+                    assert!((axis.direction.norm() - 1.0).abs() < 1e-9, "{case}");
+                    assert!(axis.residual.is_finite());
+                }
+            }
+        }
+    }
+
+    #[test]
     fn noisy_measurements_stay_near_the_true_axis() {
         let mut noise = Noise(9);
         for _ in 0..300 {
