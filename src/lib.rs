@@ -20,6 +20,8 @@
 //!   knows nothing of syntax.
 //! - [`kinematics`]: swivel data records and the rotary axis positions they give a frame
 //!   rotation (two solutions, limits, `_DIR`, Hirth); pure math beside `rotation`.
+//! - [`measure`]: from measurements to rotations: a probed face's angles, the axis of a known
+//!   turn (the Rodrigues inverse problem), an axis from measured positions; pure math.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
@@ -43,6 +45,7 @@ pub mod emit;
 pub mod kinematics;
 pub mod lint;
 pub mod lsp;
+pub mod measure;
 pub mod registry;
 pub mod rotation;
 pub mod semantic;

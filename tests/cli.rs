@@ -1822,3 +1822,518 @@ fn per_file_ignores_leave_out_rules_in_the_files_they_match() {
     assert!(stderr.contains("per-file-ignores"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `X,Y,Z` of a point, each number in full precision.
+fn xyz(p: nalgebra::Point3<f64>) -> String {
+    format!("{},{},{}", p.x, p.y, p.z)
+}
+
+fn numbers(value: &serde_json::Value) -> Vec<f64> {
+    value
+        .as_array()
+        .expect("an array")
+        .iter()
+        .map(|v| v.as_f64().expect("a number"))
+        .collect()
+}
+
+fn probe_json(args: &[&str]) -> serde_json::Value {
+    let mut all = vec!["probe", "--json"];
+    all.extend_from_slice(args);
+    let output = run(&all, b"");
+    assert_exit(&output, 0);
+    serde_json::from_slice(&output.stdout).expect("json")
+}
+
+/// Four probe points on the face through `centre` turned by `angles`
+/// (extrinsic X, Y), given in the frame `(origin, active)`.
+fn probe_points(
+    angles: [f64; 2],
+    centre: nalgebra::Point3<f64>,
+    active: nalgebra::Rotation3<f64>,
+    origin: nalgebra::Vector3<f64>,
+) -> [String; 4] {
+    use nalgebra::Vector3;
+    let r = sinuprep::measure::face::rotation(angles);
+    let local =
+        |p: nalgebra::Point3<f64>| nalgebra::Point3::from(active.inverse() * (p.coords - origin));
+    let (ex, ey) = (r * Vector3::x(), r * Vector3::y());
+    [
+        centre,
+        centre + ex * 100.0,
+        centre + ey * 20.0,
+        centre + ey * 90.0,
+    ]
+    .map(|p| xyz(local(p)))
+}
+
+#[test]
+fn probe_prints_the_face_angles_and_the_calls() {
+    // reference/kinematics.md section 6: Lx = 100, Δz +2, Ly = 80, Δz -1.5.
+    let output = run(
+        &[
+            "probe",
+            "--along-x",
+            "0,0,0",
+            "100,0,2",
+            "--along-y",
+            "0,0,0",
+            "0,80,-1.5",
+            "--head",
+            "UFK600",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn probe_json_has_the_sequence_and_exact_angles_in_every_form() {
+    let centre = nalgebra::Point3::new(250.0, -40.0, 12.5);
+    let angles = [12.0, -25.0];
+    let [p1, p2, p3, p4] = probe_points(
+        angles,
+        centre,
+        nalgebra::Rotation3::identity(),
+        nalgebra::Vector3::zeros(),
+    );
+    let normal = sinuprep::measure::face::rotation(angles) * nalgebra::Vector3::z();
+    let normal = format!("{},{},{}", normal.x, normal.y, normal.z * 2.0 / 2.0);
+    for args in [
+        vec!["--along-x", &p1, &p2, "--along-y", &p3, &p4],
+        vec!["--points", &p1, &p2, &p4],
+        vec!["--normal", &normal],
+    ] {
+        let value = probe_json(&args);
+        assert_eq!(value["sequence"], "extrinsic:XYZ", "{args:?}");
+        assert_eq!(value["code"], 57);
+        let got = numbers(&value["angles"]);
+        assert!(
+            (got[0] - angles[0]).abs() < 1e-12
+                && (got[1] - angles[1]).abs() < 1e-12
+                && got[2] == 0.0,
+            "{args:?}: {got:?}"
+        );
+    }
+    let value = probe_json(&["--along-x", &p1, &p2, "--along-y", &p3, &p4]);
+    // The centre is the first point, kept in full precision.
+    let got = numbers(&value["centre"]);
+    assert!((got[0] - 250.0).abs() < 1e-12 && (got[2] - 12.5).abs() < 1e-12);
+    // The same angles `convert` reads in intrinsic Z, Y', X'' (CYCLE800's 27).
+    let out = numbers(&value["output"]["angles"]);
+    assert_eq!(value["output"]["sequence"], "intrinsic:ZYX");
+    // Another output sequence, as the paper's Example 3 (Z, X', Y''); none
+    // CYCLE800 cannot take.
+    let zxy = probe_json(&["--normal", &normal, "--to", "i:ZXY"]);
+    assert_eq!(zxy["output"]["code"], 39);
+    assert!(zxy["cycle800"]
+        .as_str()
+        .expect("text")
+        .starts_with("CYCLE800(0,\"\",0,39,"));
+    let output = run(&["probe", "--normal", &normal, "--to", "i:ZXZ"], b"");
+    assert_exit(&output, 2);
+    assert!(String::from_utf8_lossy(&output.stderr)
+        .contains("--to: intrinsic:ZXZ is a proper Euler sequence"));
+    assert!((out[1] - angles[1]).abs() < 1e-12 && (out[2] - angles[0]).abs() < 1e-12);
+}
+
+#[test]
+fn probe_cycle800_is_what_rewrite_makes_of_its_cycle600() {
+    let value = probe_json(&[
+        "--points", "10,20,0", "110,25,3", "15,90,-2", "--head", "UFK600",
+    ]);
+    let call = format!("N10 {}\n", value["cycle600"].as_str().expect("text"));
+    let output = run(
+        &["rewrite", "--heads", "samples/HEAD_DEF.SPF", "-"],
+        call.as_bytes(),
+    );
+    assert_exit(&output, 0);
+    let rewritten = stdout(&output);
+    let cycle800 = value["cycle800"].as_str().expect("text");
+    assert!(
+        rewritten.contains(&format!("N10 {cycle800}")),
+        "{rewritten}\n{cycle800}"
+    );
+}
+
+#[test]
+fn probe_in_a_rotated_frame_composes_with_it() {
+    use nalgebra::{Point3, Rotation3, Vector3};
+    // The face's true angles in the machine, probed in a frame turned 30°
+    // about Z (a CYCLE800 in _MODE 27) with its zero point at 100,0,0.
+    let true_angles = [10.0, -20.0];
+    let centre = Point3::new(200.0, 50.0, -30.0);
+    let active = sinuprep::rotation::matrix("i:ZYX".parse().expect("valid"), [30.0, 0.0, 0.0]);
+    let origin = Vector3::new(100.0, 0.0, 0.0);
+    let [p1, p2, p3, p4] = probe_points(true_angles, centre, active, origin);
+    let in_frame = [
+        "--in-frame",
+        "30,0,0",
+        "--in-frame-sequence",
+        "i:ZYX",
+        "--in-frame-origin",
+        "100,0,0",
+    ];
+    let mut args = vec!["--along-x", &p1, &p2, "--along-y", &p3, &p4];
+    args.extend_from_slice(&in_frame);
+    let value = probe_json(&args);
+    let angles = numbers(&value["angles"]);
+    let rotation = sinuprep::rotation::matrix(
+        "e:XYZ".parse().expect("valid"),
+        [angles[0], angles[1], angles[2]],
+    );
+    // The composed rotation turns the tool onto the face's true normal, and
+    // keeps the active frame's turn about it: it is R_active · R_measured.
+    let normal = sinuprep::measure::face::rotation(true_angles) * Vector3::z();
+    assert!(
+        (rotation * Vector3::z() - normal).norm() < 1e-12,
+        "{angles:?}"
+    );
+    let measured = numbers(&value["measured"]);
+    let expected = active * sinuprep::measure::face::rotation([measured[0], measured[1]]);
+    assert!((rotation.matrix() - expected.matrix()).abs().max() < 1e-12);
+    assert!(
+        angles[2].abs() > 1.0,
+        "an active turn about Z stays: {angles:?}"
+    );
+    // The centre, the first point, in machine coordinates.
+    let got = Point3::from(Vector3::from_vec(numbers(&value["centre"])));
+    assert!((got - centre).norm() < 1e-12, "{got}");
+    // Read as machine coordinates, the same points give another face: the trap.
+    let naive = probe_json(&["--along-x", &p1, &p2, "--along-y", &p3, &p4]);
+    let naive = numbers(&naive["angles"]);
+    let naive = sinuprep::rotation::matrix(
+        "e:XYZ".parse().expect("valid"),
+        [naive[0], naive[1], naive[2]],
+    );
+    assert!((naive * Vector3::z() - normal).norm() > 0.1);
+    let _ = Rotation3::<f64>::identity();
+    // The table says what the angles are relative to.
+    let mut args = vec!["probe", "--along-x", &p1, &p2, "--along-y", &p3, &p4];
+    args.extend_from_slice(&in_frame);
+    let output = run(&args, b"");
+    assert_exit(&output, 0);
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn probe_in_inch_gives_the_same_angles_and_the_centre_in_inch() {
+    let mm = [
+        "12.7,25.4,0",
+        "266.7,25.4,5.08",
+        "12.7,25.4,0",
+        "12.7,279.4,-3.81",
+    ];
+    let inch = ["0.5,1,0", "10.5,1,0.2", "0.5,1,0", "0.5,11,-0.15"];
+    let metric = probe_json(&["--along-x", mm[0], mm[1], "--along-y", mm[2], mm[3]]);
+    let imperial = probe_json(&[
+        "--along-x",
+        inch[0],
+        inch[1],
+        "--along-y",
+        inch[2],
+        inch[3],
+        "--units",
+        "inch",
+    ]);
+    let (a, b) = (numbers(&metric["angles"]), numbers(&imperial["angles"]));
+    assert!(
+        a.iter().zip(&b).all(|(a, b)| (a - b).abs() < 1e-12),
+        "{a:?} {b:?}"
+    );
+    assert_eq!(metric["units"], "mm");
+    assert_eq!(imperial["units"], "inch");
+    let (a, b) = (numbers(&metric["centre"]), numbers(&imperial["centre"]));
+    assert!(
+        a.iter().zip(&b).all(|(a, b)| (a / 25.4 - b).abs() < 1e-12),
+        "{a:?} {b:?}"
+    );
+    // The default tolerance is a length in the unit: 0.01 mm, 0.0005 inch.
+    assert_eq!(metric["tolerance"], 0.01);
+    assert_eq!(imperial["tolerance"], 0.0005);
+    // 0.002 inch off the plane: within 0.01 read as mm, not as inch.
+    let off = ["0.5,1,0", "10.5,1,0.2", "0.5,1,0.002", "0.5,11,-0.148"];
+    let output = run(
+        &[
+            "probe",
+            "--along-x",
+            off[0],
+            off[1],
+            "--along-y",
+            off[2],
+            off[3],
+            "--units",
+            "inch",
+        ],
+        b"",
+    );
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("0.001999 inch off the face") && stderr.contains("0.0005 inch"),
+        "{stderr}"
+    );
+    let output = run(
+        &[
+            "probe",
+            "--along-x",
+            off[0],
+            off[1],
+            "--along-y",
+            off[2],
+            off[3],
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    // The table tells which G function the calls' lengths need.
+    let output = run(
+        &[
+            "probe",
+            "--along-x",
+            inch[0],
+            inch[1],
+            "--along-y",
+            inch[2],
+            inch[3],
+            "--units",
+            "inch",
+        ],
+        b"",
+    );
+    assert!(stdout(&output).contains("run them under G70 (inch)"));
+}
+
+#[test]
+fn probe_centre_is_the_point_that_stays() {
+    use nalgebra::{Point3, Vector3};
+    let points = ["40,10,5", "140,10,7", "40,90,3.5"];
+    // By default the first point: the new zero is where it was probed.
+    let value = probe_json(&["--points", points[0], points[1], points[2]]);
+    let call = value["cycle800"].as_str().expect("text").to_string();
+    assert!(call.contains(",40,10,5,"), "{call}");
+    // A point given: CYCLE800's _X0 _Y0 _Z0, and the new system's frame
+    // T = Trans(centre) · R keeps it, with the face in the new XY plane.
+    let value = probe_json(&[
+        "--points",
+        points[0],
+        points[1],
+        points[2],
+        "--center",
+        "90,50,5.25",
+    ]);
+    let call = value["cycle800"].as_str().expect("text").to_string();
+    assert!(call.contains(",90,50,5.25,"), "{call}");
+    assert!(value["height"].as_f64().expect("number").abs() < 1e-12);
+    let angles = numbers(&value["angles"]);
+    let rotation = sinuprep::rotation::matrix(
+        "e:XYZ".parse().expect("valid"),
+        [angles[0], angles[1], angles[2]],
+    );
+    let frame =
+        sinuprep::rotation::Frame::new(Vector3::new(90.0, 50.0, 5.25), rotation, Vector3::zeros());
+    let normal = Vector3::from_vec(numbers(&value["normal"]));
+    for local in [Point3::new(30.0, -20.0, 0.0), Point3::new(-5.0, 60.0, 0.0)] {
+        let machine = frame.apply(local);
+        assert!(normal.dot(&(machine - Point3::new(40.0, 10.0, 5.0))).abs() < 1e-12);
+    }
+    // A centre off the face: the face lies below the new zero.
+    let value = probe_json(&[
+        "--points", points[0], points[1], points[2], "--center", "40,10,15",
+    ]);
+    let height = value["height"].as_f64().expect("number");
+    assert!((height - 10.0 * normal.z).abs() < 1e-12, "{height}");
+}
+
+#[test]
+fn probe_refuses_points_that_give_no_face_naming_the_argument() {
+    let cases: [&[&str]; 8] = [
+        &["--normal", "1e300,0,1"],
+        &[
+            "--along-x",
+            "0,0,0",
+            "0,0,0.005",
+            "--along-y",
+            "0,0,0",
+            "0,80,1",
+        ],
+        &[
+            "--along-x",
+            "0,0,0",
+            "100,0,1",
+            "--along-y",
+            "0,10,0",
+            "50,10,0.5",
+        ],
+        &[
+            "--along-x",
+            "0,0,0",
+            "100,0,1",
+            "--along-y",
+            "0,0,0.5",
+            "0,80,1.5",
+        ],
+        &[
+            "--along-x",
+            "0,0,0",
+            "100,0,0",
+            "--along-y",
+            "0,0,0",
+            "0,0,50",
+        ],
+        &["--points", "0,0,0", "100,0,1", "200,0,2"],
+        &["--normal", "0,0,0"],
+        &[
+            "--along-x",
+            "0,0,0",
+            "1e,0,0",
+            "--along-y",
+            "0,0,0",
+            "0,80,1",
+        ],
+    ];
+    let mut all = String::new();
+    for args in cases {
+        let mut full = vec!["probe"];
+        full.extend_from_slice(args);
+        let output = run(&full, b"");
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty());
+        all.push_str(&format!(
+            "$ {}\n{}\n",
+            full.join(" "),
+            String::from_utf8_lossy(&output.stderr)
+        ));
+    }
+    insta::assert_snapshot!(all);
+}
+
+#[test]
+fn axis_of_a_turn_gives_both_solutions() {
+    let output = run(
+        &[
+            "axis", "--angle", "90", "--before", "100,0,50", "--after", "0,100,50",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    insta::assert_snapshot!(stdout(&output));
+    let output = run(
+        &[
+            "axis",
+            "--angle",
+            "-90",
+            "--before",
+            "100,0,50",
+            "--after",
+            "0,-100,50",
+            "--json",
+            "--rotary",
+            "2",
+            "--record",
+            "3",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let axes = value["axes"].as_array().expect("axes");
+    assert_eq!(axes.len(), 2);
+    let first = numbers(&axes[0]);
+    assert!(
+        (first[2] - 1.0).abs() < 1e-12 && first[0].abs() < 1e-12,
+        "{first:?}"
+    );
+    assert_eq!(
+        value["tc_carr"][0],
+        "$TC_CARR10[3]=0 $TC_CARR11[3]=0 $TC_CARR12[3]=1"
+    );
+    // A half turn: one axis, e and -e.
+    let output = run(
+        &[
+            "axis", "--angle", "180", "--before", "100,0,50", "--after", "0,100,50",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let text = stdout(&output);
+    assert!(
+        text.contains("one, either way round") && text.contains("  1  0.57735 0.57735 0.57735 "),
+        "{text}"
+    );
+}
+
+#[test]
+fn axis_says_why_no_axis_fits() {
+    let cases: [&[&str]; 6] = [
+        &["--angle", "10", "--before", "100,0,0", "--after", "0,100,0"],
+        &["--angle", "90", "--before", "100,0,0", "--after", "0,120,0"],
+        &["--angle", "0", "--before", "100,0,0", "--after", "0,100,0"],
+        &[
+            "--angle", "180", "--before", "100,0,0", "--after", "-100,0,0",
+        ],
+        &["--positions", "0,0,0", "100,0,0", "200,0,0.001"],
+        &[
+            "--angle",
+            "45",
+            "--positions",
+            "0,0,0",
+            "100,0,0",
+            "200,0,10",
+        ],
+    ];
+    let mut all = String::new();
+    for args in cases {
+        let mut full = vec!["axis"];
+        full.extend_from_slice(args);
+        let output = run(&full, b"");
+        assert_exit(&output, 2);
+        all.push_str(&format!(
+            "$ {}\n{}\n",
+            full.join(" "),
+            String::from_utf8_lossy(&output.stderr)
+        ));
+    }
+    insta::assert_snapshot!(all);
+}
+
+#[test]
+fn axis_from_measured_positions_gives_the_axis_and_a_point_on_it() {
+    use nalgebra::{Point3, Vector3};
+    // A C axis tilted 0.01 rad towards Y, through 5,-3,0; a sphere at
+    // 150,0,40 measured at 0°, 45° and 90°.
+    let axis = Vector3::new(0.0, 0.01, 1.0).normalize();
+    let through = Point3::new(5.0, -3.0, 0.0);
+    let sphere = Point3::new(150.0, 0.0, 40.0);
+    let at = |degrees: f64| {
+        through + sinuprep::rotation::frame::from_axis_angle(axis, degrees) * (sphere - through)
+    };
+    let [p1, p2, p3] = [0.0, 45.0, 90.0].map(|d| xyz(at(d)));
+    let output = run(&["axis", "--json", "--positions", &p1, &p2, &p3], b"");
+    assert_exit(&output, 0);
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let found = Vector3::from_vec(numbers(&value["axes"][0]));
+    assert!((found - axis).norm() < 1e-12, "{found}");
+    let point = Point3::from(Vector3::from_vec(numbers(&value["point"])));
+    let off = (point - through) - axis * axis.dot(&(point - through));
+    assert!(off.norm() < 1e-9, "{point}");
+    let turns = numbers(&value["turns"]);
+    assert!((turns[0] - 45.0).abs() < 1e-9 && (turns[1] - 45.0).abs() < 1e-9);
+    // Two positions, the angle and the nominal direction: the point on the axis.
+    let output = run(
+        &[
+            "axis",
+            "--angle",
+            "45",
+            "--direction",
+            "0,0,1",
+            "--positions",
+            &p1,
+            &p2,
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    insta::assert_snapshot!(stdout(&output));
+}

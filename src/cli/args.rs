@@ -53,6 +53,16 @@ pub enum Command {
     /// in the frame and the zero-point shift.
     #[command(allow_negative_numbers = true)]
     Axes(AxesArgs),
+    /// From points probed on an inclined face (two along X and two along Y,
+    /// three anywhere, or its normal) to its two angles as CYCLE600 takes
+    /// them (extrinsic X, Y), the CYCLE600 call and the CYCLE800 that turn
+    /// the tool normal to the face.
+    Probe(ProbeArgs),
+    /// The axis of a rotary joint: from a point measured before and after a
+    /// known turn (both solutions), or from two or three measured positions
+    /// (the axis and a point on it); also as the `$TC_CARR` axis vector.
+    #[command(allow_negative_numbers = true)]
+    Axis(AxisArgs),
     /// Print the completion script of a shell (`sinuprep completions bash >
     /// /usr/share/bash-completion/completions/sinuprep`).
     Completions(CompletionsArgs),
@@ -372,6 +382,137 @@ pub struct EvalArgs {
     /// Print one JSON document instead of the tables.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The unit of lengths a measurement is given in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Units {
+    Mm,
+    Inch,
+}
+
+#[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("face").required(true).args(["along_x", "points", "normal"])))]
+pub struct ProbeArgs {
+    /// Two points probed on the face along X, `X,Y,Z X,Y,Z`: machine
+    /// coordinates (or the active frame's, with --in-frame).
+    #[arg(long, num_args = 2, value_names = ["X,Y,Z", "X,Y,Z"], value_parser = point, allow_hyphen_values = true, requires = "along_y")]
+    pub along_x: Option<Vec<[f64; 3]>>,
+    /// Two points probed on the face along Y.
+    #[arg(long, num_args = 2, value_names = ["X,Y,Z", "X,Y,Z"], value_parser = point, allow_hyphen_values = true, requires = "along_x")]
+    pub along_y: Option<Vec<[f64; 3]>>,
+    /// Three points probed anywhere on the face, not on one line.
+    #[arg(long, num_args = 3, value_names = ["X,Y,Z", "X,Y,Z", "X,Y,Z"], value_parser = point, allow_hyphen_values = true)]
+    pub points: Option<Vec<[f64; 3]>>,
+    /// The face's normal, on the tool's side (any length).
+    #[arg(long, value_name = "NX,NY,NZ", value_parser = point, allow_hyphen_values = true)]
+    pub normal: Option<[f64; 3]>,
+    /// The rotation's centre, the new zero point (CYCLE800's `_X0 _Y0 _Z0`)
+    /// [default: the first point; with --normal, the origin].
+    #[arg(long, alias = "centre", value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true)]
+    pub center: Option<[f64; 3]>,
+    /// The rotation active while probing, three angles in --in-frame-sequence:
+    /// the points (and --center) are in its coordinates, the result composes with it.
+    #[arg(long, value_name = "A1,A2,A3", value_parser = point, allow_hyphen_values = true)]
+    pub in_frame: Option<[f64; 3]>,
+    /// The sequence of --in-frame's angles (`i:ZYX` for a CYCLE800's `_MODE` 27).
+    #[arg(long, default_value = "e:XYZ", value_name = "SEQUENCE")]
+    pub in_frame_sequence: Sequence,
+    /// The active frame's zero point, in machine coordinates (a CYCLE800's `_X0 _Y0 _Z0`).
+    #[arg(long, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true)]
+    pub in_frame_origin: Option<[f64; 3]>,
+    /// The unit of the points (and of the centre and tolerance); the angles do not depend on it.
+    #[arg(long, value_enum, default_value_t = Units::Mm)]
+    pub units: Units,
+    /// How far the points may lie from one plane, or be from coincident or
+    /// collinear [default: 0.01 mm, 0.0005 inch].
+    #[arg(long, value_parser = length)]
+    pub tolerance: Option<f64>,
+    /// The sequence CYCLE600 writes and CYCLE800 swivels in (`_BIN_OUT`, `_MODE`).
+    #[arg(long, default_value = "i:ZYX", value_name = "SEQUENCE")]
+    pub to: Sequence,
+    /// The head: CYCLE600's `_MIHEAD` and CYCLE800's `_TC`.
+    #[arg(long, default_value = "", value_name = "NAME")]
+    pub head: String,
+    /// Decimals of the numbers in the calls.
+    #[arg(long, default_value_t = 6)]
+    pub precision: usize,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("measured").required(true).args(["before", "positions"])))]
+pub struct AxisArgs {
+    /// The angle the axis turned, degrees (right-handed about the axis found).
+    #[arg(long, value_parser = finite_angle)]
+    pub angle: Option<f64>,
+    /// The point before the turn, relative to a point on the axis: X,Y,Z.
+    #[arg(long, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true, requires_all = ["after", "angle"])]
+    pub before: Option<[f64; 3]>,
+    /// The point after the turn, relative to the same point.
+    #[arg(long, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true, requires = "before")]
+    pub after: Option<[f64; 3]>,
+    /// Two or three positions of one point measured as the axis turned
+    /// (machine coordinates): three give the axis; two need --angle (the
+    /// turn from the first to the second) and --direction. It reads up to
+    /// three values, so give it after the other options.
+    #[arg(long, num_args = 2..=3, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true)]
+    pub positions: Option<Vec<[f64; 3]>>,
+    /// The axis's nominal direction, for two positions (the record's `$TC_CARR` vector).
+    #[arg(long, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true)]
+    pub direction: Option<[f64; 3]>,
+    /// The swivel data record `m` of `$TC_CARRn[m]` the axis vector is written for.
+    #[arg(long, default_value_t = 1, value_name = "M")]
+    pub record: u32,
+    /// Which of the record's rotary axes: 1 (`$TC_CARR7..9`) or 2 (`$TC_CARR10..12`).
+    #[arg(long, default_value_t = 1, value_name = "1|2", value_parser = clap::value_parser!(u8).range(1..=2))]
+    pub rotary: u8,
+    /// How far (a length, in the points' unit) the measurements may be from fitting.
+    #[arg(long, default_value_t = 0.01, value_parser = length)]
+    pub tolerance: f64,
+    /// Decimals of the numbers printed (JSON: full precision).
+    #[arg(long, default_value_t = 6)]
+    pub precision: usize,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Three finite numbers separated by commas: a point or a vector.
+fn point(text: &str) -> Result<[f64; 3], String> {
+    // An option that takes points starting with `-` reads the next option
+    // as a point when it has room for one more.
+    if text.starts_with("--") {
+        return Err(format!(
+            "`{text}` is not a point: an option taking several points reads until it has its most, so give it after the other options"
+        ));
+    }
+    let fields: Vec<&str> = text.split(',').map(str::trim).collect();
+    let numbers: Vec<f64> = fields
+        .iter()
+        .filter_map(|f| f.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect();
+    match (fields.len(), &numbers[..]) {
+        // Past ±1e9 (1000 km in mm) a coordinate is a typo, and squares of
+        // differences could leave the range of f64.
+        (3, &[x, y, z]) if [x, y, z].iter().any(|v| v.abs() > 1e9) => Err(format!(
+            "`{text}` has a number beyond ±1e9, which no machine's coordinate is"
+        )),
+        (3, &[x, y, z]) => Ok([x, y, z]),
+        _ => Err(format!(
+            "`{text}` is not three finite numbers X,Y,Z; give them separated by commas, as 10,-2.5,0.003"
+        )),
+    }
+}
+
+/// A length above zero.
+fn length(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(value) if value.is_finite() && value > 0.0 => Ok(value),
+        _ => Err(format!("`{text}` is not a length above 0")),
+    }
 }
 
 #[derive(Debug, clap::Args)]

@@ -87,6 +87,14 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::mode), help("give the sequence code of three rotations about the turned axes: 57 (X, Y', Z''), 45 (X, Z', Y''), 54 (Y, X', Z''), 30 (Y, Z', X''), 39 (Z, X', Y''), 27 (Z, Y', X''); the solid-angle, projection and direct modes are not computed"))]
     Mode(i64),
 
+    #[error("{argument}: {why}")]
+    #[diagnostic(code(sinuprep::measure), help("{help}"))]
+    Measure {
+        argument: &'static str,
+        why: String,
+        help: String,
+    },
+
     #[error("no rule has the code or name `{code}`")]
     #[diagnostic(code(sinuprep::rule), help("{}`sinuprep rule --all` lists every rule", nearest.map(|n| format!("did you mean `{n}`? ")).unwrap_or_default()))]
     UnknownRule {

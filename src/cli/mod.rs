@@ -22,6 +22,7 @@ mod analysis;
 mod archive;
 pub mod args;
 mod axes;
+mod axis;
 mod check;
 mod convert;
 mod describe;
@@ -32,6 +33,7 @@ mod mapped;
 mod output;
 mod parallel;
 mod platform;
+mod probe;
 pub mod render;
 mod rewrite;
 mod rule;
@@ -103,6 +105,8 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),
         args::Command::Axes(axes) => axes::run(axes),
+        args::Command::Probe(probe) => probe::run(probe),
+        args::Command::Axis(axis) => axis::run(axis),
         args::Command::Completions(completions) => describe::completions(completions.shell),
         args::Command::Manpage(manpage) => describe::manpage(manpage),
         args::Command::Lsp => crate::lsp::run()

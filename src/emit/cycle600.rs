@@ -11,7 +11,7 @@ use crate::emit::number::format;
 use crate::emit::{runtime, Edit};
 use crate::registry;
 use crate::rotation::Kind;
-use crate::semantic::cycle600::{no_cycle800_form, Evaluation};
+use crate::semantic::cycle600::{no_cycle800_form, Evaluation, Parameters};
 use crate::semantic::frames::FrameSeen;
 use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
@@ -250,20 +250,9 @@ pub fn code(
     let [x0, y0, z0] = [p.before.x, p.before.y, p.before.z].map(n);
     let [x1, y1, z1] = [p.after.x, p.after.y, p.after.z].map(n);
     match options.form {
-        Form::Cycle800 => {
-            if sequence.is_proper_euler() {
-                return Err(no_cycle800_form(p.output, span));
-            }
-            let st = u8::from(evaluation.additive_on_control);
-            let dir = if p.inverse { 1 } else { -1 };
-            let [a, b, c] = angles.map(n);
-            Ok(vec![format!(
-                "CYCLE800({},\"{}\",{st},{},{x0},{y0},{z0},{a},{b},{c},{x1},{y1},{z1},{dir})",
-                u8::from(p.retract),
-                p.head,
-                sequence.code()
-            )])
-        }
+        Form::Cycle800 => cycle800(evaluation, options.precision)
+            .map(|call| vec![call])
+            .ok_or_else(|| no_cycle800_form(p.output, span)),
         Form::Frames | Form::Traori => {
             if let Some(seen) = &site.user_frame {
                 return Err(over_programmable_frame(options.form, seen, span));
@@ -290,6 +279,50 @@ pub fn code(
             Ok(blocks)
         }
     }
+}
+
+/// The CYCLE800 call that swivels as `evaluation` does; `None` when its
+/// output is a proper Euler sequence, which CYCLE800 has no `_MODE` for.
+pub fn cycle800(evaluation: &Evaluation, precision: usize) -> Option<String> {
+    let p = &evaluation.parameters;
+    let (sequence, angles) = intrinsic(evaluation);
+    if sequence.is_proper_euler() {
+        return None;
+    }
+    let n = |v: f64| format(v, precision);
+    let [x0, y0, z0] = [p.before.x, p.before.y, p.before.z].map(n);
+    let [x1, y1, z1] = [p.after.x, p.after.y, p.after.z].map(n);
+    let st = u8::from(evaluation.additive_on_control);
+    let dir = if p.inverse { 1 } else { -1 };
+    let [a, b, c] = angles.map(n);
+    Some(format!(
+        "CYCLE800({},\"{}\",{st},{},{x0},{y0},{z0},{a},{b},{c},{x1},{y1},{z1},{dir})",
+        u8::from(p.retract),
+        p.head,
+        sequence.code()
+    ))
+}
+
+/// The CYCLE600 call of `parameters`, in the canonical form of 18 values
+/// (spec section 1).
+pub fn cycle600(p: &Parameters, precision: usize) -> String {
+    let n = |v: f64| format(v, precision);
+    let flag = |kind: Kind| u8::from(kind == Kind::Intrinsic);
+    let [x0, y0, z0] = [p.before.x, p.before.y, p.before.z].map(n);
+    let [a, b, c] = p.angles.map(n);
+    let [x1, y1, z1] = [p.after.x, p.after.y, p.after.z].map(n);
+    format!(
+        "CYCLE600({},\"{}\",{},{},{x0},{y0},{z0},{a},{b},{c},{x1},{y1},{z1},{},{},{},{},{})",
+        flag(p.input.kind),
+        p.head,
+        u8::from(p.recalculate_only),
+        p.input.code(),
+        flag(p.output.kind),
+        p.output.code(),
+        u8::from(p.additive),
+        u8::from(p.inverse),
+        u8::from(p.retract),
+    )
 }
 
 /// The blanks the call's line begins with, which the lines written for it
