@@ -594,3 +594,29 @@ fn a_run_of_comment_lines_folds() {
     );
     client.stop();
 }
+
+/// A definition file open in the editor counts as typed, before it is
+/// saved: the programs that read it are checked again with its text, and
+/// with the file's once it is closed unsaved.
+#[test]
+fn an_open_definition_file_applies_before_it_is_saved() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-buffers-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    std::fs::write(dir.join("GUD7.DEF"), "DEF NCK REAL ZERO_A\nM30\n").expect("gud");
+    std::fs::write(dir.join("sinuprep.toml"), "definitions = [\"GUD7.DEF\"]\n").expect("toml");
+    let program = format!("file://{}", dir.join("MAIN.MPF").display());
+    let gud = format!("file://{}", dir.join("GUD7.DEF").display());
+    let (mut client, _) = Client::start(json!({}));
+    let found = client.open(&program, "R1=ZERO_A+ZERO_B\nM30\n");
+    assert_eq!(codes(&found), ["N005"], "{found:?}");
+    client.open(&gud, "DEF NCK REAL ZERO_A, ZERO_B\nM30\n");
+    assert_eq!(codes(&client.diagnostics(&program)), Vec::<&str>::new());
+    client.notify(
+        "textDocument/didClose",
+        json!({ "textDocument": { "uri": gud } }),
+    );
+    assert_eq!(codes(&client.diagnostics(&program)), ["N005"]);
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}

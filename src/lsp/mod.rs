@@ -25,7 +25,7 @@ use crate::document::held::Held;
 use crate::document::text::Text;
 use crate::lint::Settings;
 use crate::span::ColumnUnit;
-use crate::workspace::Workspace;
+use crate::workspace::{Given, Workspace};
 
 use answers::Snapshot;
 
@@ -184,7 +184,11 @@ impl Server<'_> {
                 if let Some(params) = extract::<lsp::DidOpenTextDocumentParams>(notification) {
                     let document = params.text_document;
                     let text = Text::new(document.text.into_bytes());
+                    let reads_settings = self.is_read_by_settings(&document.uri);
                     self.open(document.uri, Held::open(text));
+                    if reads_settings {
+                        self.refresh_settings();
+                    }
                 }
             }
             n::DidChangeTextDocument::METHOD => {
@@ -197,24 +201,48 @@ impl Server<'_> {
                     let uri = params.text_document.uri;
                     self.documents.remove(&uri);
                     if !self.pull {
-                        self.send_diagnostics(uri, Vec::new());
+                        self.send_diagnostics(uri.clone(), Vec::new());
+                    }
+                    // Its unsaved text no longer counts: the file does.
+                    if self.is_read_by_settings(&uri) {
+                        self.refresh_settings();
                     }
                 }
             }
             // A saved or changed file may be a settings file, a HEAD_DEF or
             // a definition file that every open document reads.
             n::DidSaveTextDocument::METHOD | n::DidChangeWatchedFiles::METHOD => {
-                self.workspace = Workspace::default();
-                let open: Vec<(lsp::Uri, Held)> = self
-                    .documents
-                    .drain()
-                    .map(|(uri, open)| (uri, open.held.forget()))
-                    .collect();
-                for (uri, held) in open {
-                    self.open(uri, held);
-                }
+                self.refresh_settings();
             }
             _ => {}
+        }
+    }
+
+    /// Whether the document at `uri` is a file the settings were read from
+    /// (sinuprep.toml, HEAD_DEF, definitions, machine, values, a subprogram).
+    fn is_read_by_settings(&self, uri: &lsp::Uri) -> bool {
+        convert::path(uri).is_some_and(|path| self.workspace.has_read(&path))
+    }
+
+    /// Reads the settings of every open document again, the open
+    /// documents' unsaved text in place of their files, and reports anew.
+    fn refresh_settings(&mut self) {
+        let buffers = self
+            .documents
+            .iter()
+            .filter_map(|(uri, open)| {
+                let path = convert::path(uri)?;
+                Some((path, std::sync::Arc::from(open.held.text().bytes())))
+            })
+            .collect();
+        self.workspace = Workspace::with_buffers(Given::default(), buffers);
+        let open: Vec<(lsp::Uri, Held)> = self
+            .documents
+            .drain()
+            .map(|(uri, open)| (uri, open.held.forget()))
+            .collect();
+        for (uri, held) in open {
+            self.open(uri, held);
         }
     }
 
@@ -271,7 +299,12 @@ impl Server<'_> {
             }
         });
         self.documents.insert(uri.clone(), open);
-        self.publish(uri);
+        self.publish(uri.clone());
+        // An edit of a settings file applies to every open document as it
+        // is typed, before it is saved.
+        if self.is_read_by_settings(&uri) {
+            self.refresh_settings();
+        }
     }
 
     /// Pushes the findings of an open document to a client that does not

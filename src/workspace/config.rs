@@ -99,11 +99,23 @@ impl Config {
     }
 
     pub fn read(path: &Path) -> Result<Config, SettingsError> {
+        Self::read_with(path, super::file::read)
+    }
+
+    /// [`Self::read`], the bytes read by `read` (an editor's buffer of the
+    /// file, say).
+    pub fn read_with(
+        path: &Path,
+        read: impl FnOnce(&Path) -> std::io::Result<Vec<u8>>,
+    ) -> Result<Config, SettingsError> {
+        let bytes = read(path).map_err(|source| SettingsError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
         let read = |source| SettingsError::Read {
             path: path.to_path_buf(),
             source,
         };
-        let bytes = super::file::read(path).map_err(read)?;
         let text = String::from_utf8(bytes)
             .map_err(|e| read(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
         let mut config: Config = toml::from_str(&text).map_err(|error| {

@@ -102,6 +102,12 @@ pub struct Workspace {
     /// The patterns of each settings file (`None`: no file).
     patterns: Mutex<HashMap<Option<PathBuf>, Arc<Patterns>>>,
     heads: Mutex<HashMap<PathBuf, Heads>>,
+    /// Files an editor holds open, read from its buffers instead of the
+    /// disk: settings a user is typing apply before they are saved.
+    buffers: HashMap<PathBuf, Arc<[u8]>>,
+    /// Every file read so far (settings, definitions, machine, HEAD_DEF,
+    /// values, subprograms): a change to one of them changes the settings.
+    read: Mutex<std::collections::HashSet<PathBuf>>,
 }
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
@@ -138,6 +144,55 @@ impl Workspace {
             given,
             ..Self::default()
         })
+    }
+
+    /// The file at `path`, given as an option or (`key`) in sinuprep.toml: an
+    /// error names where it was given.
+    fn read_setting(
+        &self,
+        config: &Config,
+        path: &Path,
+        key: Option<&'static str>,
+    ) -> Result<Vec<u8>, SettingsError> {
+        self.read(path).map_err(|source| match key {
+            Some(key) => SettingsError::ReadSetting {
+                path: path.to_path_buf(),
+                key,
+                config: config.describe(),
+                source,
+            },
+            None => SettingsError::Read {
+                path: path.to_path_buf(),
+                source,
+            },
+        })
+    }
+
+    /// A workspace that reads the files in `buffers` from them: an
+    /// editor's open documents, unsaved.
+    pub fn with_buffers(given: Given, buffers: HashMap<PathBuf, Arc<[u8]>>) -> Self {
+        Self {
+            given,
+            buffers,
+            ..Self::default()
+        }
+    }
+
+    /// Whether the settings read so far read `path`.
+    pub fn has_read(&self, path: &Path) -> bool {
+        self.read.lock().is_ok_and(|read| read.contains(path))
+    }
+
+    /// The bytes of `path`, from an editor's buffer of it if there is one;
+    /// the path is remembered ([`Self::has_read`]).
+    fn read(&self, path: &Path) -> std::io::Result<Vec<u8>> {
+        if let Ok(mut read) = self.read.lock() {
+            read.insert(path.to_path_buf());
+        }
+        match self.buffers.get(path) {
+            Some(buffer) => Ok(buffer.to_vec()),
+            None => file::read(path),
+        }
     }
 
     /// What `check` needs for `program` (a path, `-` for stdin): the
@@ -231,7 +286,9 @@ impl Workspace {
             }
         };
         match path {
-            Some(path) => cached(&self.configs, &path, || Config::read(&path)),
+            Some(path) => cached(&self.configs, &path, || {
+                Config::read_with(&path, |path| self.read(path))
+            }),
             None => Ok(Config::default()),
         }
     }
@@ -261,7 +318,7 @@ impl Workspace {
                 Some(path) => Some((path.clone(), None)),
                 None => file.as_ref().map(|p| (config.resolve(p), Some(key))),
             };
-        let read = |path: &Path, key: Option<&'static str>| read_setting(config, path, key);
+        let read = |path: &Path, key: Option<&'static str>| self.read_setting(config, path, key);
         let mut supplied = Supplied::default();
         if let Some((path, key)) = &setting(&given.values, &config.values, "values") {
             values::read_file(path, &read(path, *key)?, &mut supplied)?;
@@ -318,7 +375,7 @@ impl Workspace {
         let mut environment = match known {
             Some(environment) => environment,
             None => {
-                let environment = definitions(&files)?;
+                let environment = definitions(&files, |path| self.read(path))?;
                 if let Ok(mut read) = self.definitions.lock() {
                     read.insert(files, environment.clone());
                 }
@@ -348,7 +405,7 @@ impl Workspace {
         {
             return Ok(Some(known));
         }
-        let source = read_setting(config, &path, key)?;
+        let source = self.read_setting(config, &path, key)?;
         let reading = Reading {
             fine_offsets: self.given.fine_offsets,
         };
@@ -451,7 +508,7 @@ impl Workspace {
                 // A subprogram that vanished, cannot be read, or is no
                 // regular file of a sane size is not found (its calls are
                 // unchecked).
-                let Ok(source) = file::read(&path) else {
+                let Ok(source) = self.read(&path) else {
                     continue;
                 };
                 let mut environment = Environment::default();
@@ -488,10 +545,13 @@ fn own_directory(program: &Path) -> PathBuf {
 /// variables and macros, machine data axis names (an `.INI`, or any file or
 /// archive member that holds machine data, [`holds_machine_data`]); an
 /// archive gives what its `_DEF` and data members do.
-fn definitions(files: &[PathBuf]) -> Result<Environment, SettingsError> {
+fn definitions(
+    files: &[PathBuf],
+    read: impl Fn(&Path) -> std::io::Result<Vec<u8>>,
+) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
     for path in files {
-        let bytes = file::read(path).map_err(|source| SettingsError::Read {
+        let bytes = read(path).map_err(|source| SettingsError::Read {
             path: path.clone(),
             source,
         })?;
@@ -545,27 +605,6 @@ fn definition_kind(path: &Path) -> MemberKind {
     } else {
         MemberKind::Definitions
     }
-}
-
-/// The file at `path`, given as an option or (`key`) in sinuprep.toml: an
-/// error names where it was given.
-fn read_setting(
-    config: &Config,
-    path: &Path,
-    key: Option<&'static str>,
-) -> Result<Vec<u8>, SettingsError> {
-    file::read(path).map_err(|source| match key {
-        Some(key) => SettingsError::ReadSetting {
-            path: path.to_path_buf(),
-            key,
-            config: config.describe(),
-            source,
-        },
-        None => SettingsError::Read {
-            path: path.to_path_buf(),
-            source,
-        },
-    })
 }
 
 /// `list` as rule codes: trimmed, upper case, each naming a rule or a family.
