@@ -13,6 +13,7 @@ pub mod cycle600;
 pub mod env;
 pub mod environment;
 pub mod eval;
+pub mod frame_statements;
 pub(crate) mod frames;
 pub mod head_def;
 pub(crate) mod labels;
