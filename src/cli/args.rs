@@ -4,8 +4,8 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
-use crate::emit::cycle600::Form;
 use crate::cli::notation::Notation;
+use crate::emit::cycle600::Form;
 use crate::workspace::SeverityName;
 
 #[derive(Debug, Parser)]

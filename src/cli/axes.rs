@@ -12,7 +12,9 @@ use crate::cli::args::{AxesArgs, Export, MessageFormat};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
-use crate::kinematics::{a3200, solve, split, Direction, Record, Request, Split, Swivel, TableAngle};
+use crate::kinematics::{
+    a3200, solve, split, Direction, Record, Request, Split, Swivel, TableAngle,
+};
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};

@@ -210,7 +210,9 @@ fn read_gpp(text: &str) -> Result<Pose, String> {
         let fail = |why: String| format!("line {}: {why}", index + 1);
         for statement in line.split(';').map(str::trim).filter(|s| !s.is_empty()) {
             let (name, value) = statement.split_once('=').ok_or_else(|| {
-                fail(format!("`{statement}` is no assignment such as `ROT_MAT1=1;`"))
+                fail(format!(
+                    "`{statement}` is no assignment such as `ROT_MAT1=1;`"
+                ))
             })?;
             let name = name.trim().to_ascii_uppercase();
             let value = match value.trim().parse::<f64>() {
@@ -420,8 +422,12 @@ mod tests {
     /// The example: `convert 30 0 0 --from e:XYZ --to gpp`.
     #[test]
     fn gpp_statements_in_the_posts_own_form() {
-        let pose = read(Notation::Angles("e:XYZ".parse().expect("seq")), &["30 0 0".into()], false)
-            .expect("a rotation");
+        let pose = read(
+            Notation::Angles("e:XYZ".parse().expect("seq")),
+            &["30 0 0".into()],
+            false,
+        )
+        .expect("a rotation");
         let written = write(Notation::Gpp, &pose, false).expect("written");
         let lines: Vec<&str> = written.text.lines().collect();
         assert_eq!(lines.len(), 12);

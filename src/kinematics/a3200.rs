@@ -57,7 +57,12 @@ pub enum A3200Error {
     #[error("mixed kinematics (M): axis 1 turns the tool, which A3200's ROTATION cannot describe; only a table (P) has a ROTATION setup")]
     Mixed,
     #[error("{axis} turns about ({x}, {y}, {z}): a ROTATION turns about one of the input axes, so the axis must lie along X, Y or Z")]
-    Oblique { axis: String, x: f64, y: f64, z: f64 },
+    Oblique {
+        axis: String,
+        x: f64,
+        y: f64,
+        z: f64,
+    },
     #[error("{axis} has the offset {offset}° ($TC_CARR24/25): how the ANGLE offset enters the A3200's angle is not documented, so it is not written")]
     Offset { axis: String, offset: f64 },
     #[error("line {line}: {why}")]
@@ -212,12 +217,17 @@ impl Setup {
                 .ok_or_else(|| fail("ROTATION is followed by its number".into()))?;
             let entry = found.entry(number).or_default();
             let Some(what) = words.next() else {
-                return Err(fail("ROTATION n is followed by InputAxes, ANGLE, Displacement, ON or OFF".into()));
+                return Err(fail(
+                    "ROTATION n is followed by InputAxes, ANGLE, Displacement, ON or OFF".into(),
+                ));
             };
             let rest: Vec<&str> = words.collect();
             match what.to_ascii_lowercase().as_str() {
                 "inputaxes" => {
-                    let (input, output) = match rest.iter().position(|w| w.eq_ignore_ascii_case("OutputAxes")) {
+                    let (input, output) = match rest
+                        .iter()
+                        .position(|w| w.eq_ignore_ascii_case("OutputAxes"))
+                    {
                         Some(at) => (&rest[..at], &rest[at + 1..]),
                         None => return Err(fail("InputAxes are followed by OutputAxes".into())),
                     };
@@ -250,19 +260,18 @@ impl Setup {
                     let (name, sign, offset) = match fields[..] {
                         [name, sign, offset] => (name, sign, offset),
                         [name, sign] => (name, sign, "0"),
-                        _ => return Err(fail("ANGLE takes the axis, 1 or -1, and an offset".into())),
+                        _ => {
+                            return Err(fail("ANGLE takes the axis, 1 or -1, and an offset".into()))
+                        }
                     };
                     let sign = match sign.parse::<f64>() {
                         Ok(s) if s == 1.0 || s == -1.0 => s,
                         _ => return Err(fail(format!("`{sign}` is no direction: give 1 or -1"))),
                     };
-                    match offset.parse::<f64>() {
-                        Ok(o) if o == 0.0 => {}
-                        _ => {
-                            return Err(fail(format!(
-                                "the ANGLE offset `{offset}`: how it enters the angle is not documented, so only 0 is read"
-                            )))
-                        }
+                    if offset.parse::<f64>() != Ok(0.0) {
+                        return Err(fail(format!(
+                            "the ANGLE offset `{offset}`: how it enters the angle is not documented, so only 0 is read"
+                        )));
                     }
                     entry.angle = Some((name.to_string(), sign));
                 }
@@ -394,10 +403,7 @@ mod tests {
         let setup = setup_of(&record).expect("a table");
         for (a, b) in [(30.0, 0.0), (0.0, 45.0), (-70.0, 20.0)] {
             let turn = |r: &Rotation, degrees: f64| {
-                crate::rotation::frame::from_axis_angle(
-                    Vector3::ith(r.input[2], r.sign),
-                    degrees,
-                )
+                crate::rotation::frame::from_axis_angle(Vector3::ith(r.input[2], r.sign), degrees)
             };
             let [first, second] = &setup.rotations[..] else {
                 panic!("two rotations")
@@ -441,18 +447,33 @@ mod tests {
         assert_eq!(setup_of(&head), Err(A3200Error::Head));
         let mut oblique = seed_machine();
         oblique.axes[0].vector = Vector3::new(0.0, 1.0, 1.0);
-        assert!(matches!(setup_of(&oblique), Err(A3200Error::Oblique { .. })));
+        assert!(matches!(
+            setup_of(&oblique),
+            Err(A3200Error::Oblique { .. })
+        ));
         let mut offset = seed_machine();
         offset.axes[0].offset = 5.0;
         assert!(matches!(setup_of(&offset), Err(A3200Error::Offset { .. })));
         for (text, words) in [
-            ("ROTATION 1 InputAxes x z y OutputAxes X Z Y", "right-handed"),
-            ("ROTATION 1 InputAxes x y z OutputAxes Y Z X", "order of the input"),
+            (
+                "ROTATION 1 InputAxes x z y OutputAxes X Z Y",
+                "right-handed",
+            ),
+            (
+                "ROTATION 1 InputAxes x y z OutputAxes Y Z X",
+                "order of the input",
+            ),
             ("ROTATION 1 ANGLE A 2, 0", "no direction"),
             ("ROTATION 1 ANGLE A 1, 5", "offset"),
             ("ROTATION 1 Displacement 1, 2", "three numbers"),
-            ("ROTATION 1 InputAxes x y z OutputAxes X Y Z", "without ANGLE"),
-            ("ROTATION 2 InputAxes x y z OutputAxes X Y Z\nROTATION 2 ANGLE A 1, 0", "missing"),
+            (
+                "ROTATION 1 InputAxes x y z OutputAxes X Y Z",
+                "without ANGLE",
+            ),
+            (
+                "ROTATION 2 InputAxes x y z OutputAxes X Y Z\nROTATION 2 ANGLE A 1, 0",
+                "missing",
+            ),
             ("G1 X1", "no ROTATION"),
         ] {
             let error = Setup::read(text)

@@ -271,16 +271,30 @@ mod tests {
         for a in [30.0, -72.5, 135.0] {
             let (s, c) = sin_cos_degrees(a);
             let rot = |sequence: &str| {
-                PostMatrix::of(&pose(Vector3::zeros(), matrix(seq(sequence), [a, 0.0, 0.0])))
-                    .rot_mat
+                PostMatrix::of(&pose(
+                    Vector3::zeros(),
+                    matrix(seq(sequence), [a, 0.0, 0.0]),
+                ))
+                .rot_mat
             };
             // ROT_MAT1..9 as the seed writes them for "rotation around Y / Z axis".
-            assert_eq!(rot("e:YXZ"), [c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c].map(|v| v + 0.0));
-            assert_eq!(rot("e:ZXY"), [c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0].map(|v| v + 0.0));
-            let x_of_minus_a =
-                PostMatrix::of(&pose(Vector3::zeros(), matrix(seq("e:XYZ"), [-a, 0.0, 0.0])))
-                    .rot_mat;
-            assert_eq!(x_of_minus_a, [1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c].map(|v| v + 0.0));
+            assert_eq!(
+                rot("e:YXZ"),
+                [c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c].map(|v| v + 0.0)
+            );
+            assert_eq!(
+                rot("e:ZXY"),
+                [c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0].map(|v| v + 0.0)
+            );
+            let x_of_minus_a = PostMatrix::of(&pose(
+                Vector3::zeros(),
+                matrix(seq("e:XYZ"), [-a, 0.0, 0.0]),
+            ))
+            .rot_mat;
+            assert_eq!(
+                x_of_minus_a,
+                [1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c].map(|v| v + 0.0)
+            );
         }
     }
 
@@ -301,7 +315,8 @@ mod tests {
     /// axis, rotated by the matrix"; with no rotation, `X_ORIGIN - FIRSTX`.
     #[test]
     fn post_translation_is_the_distance_rotated_by_the_matrix() {
-        let origin_change = PostMatrix::of(&pose(Vector3::new(-5.0, 2.0, 7.0), Rotation3::identity()));
+        let origin_change =
+            PostMatrix::of(&pose(Vector3::new(-5.0, 2.0, 7.0), Rotation3::identity()));
         assert_eq!(origin_change.trans_mat, [5.0, -2.0, -7.0]);
         let rotation = matrix(seq("e:XYZ"), [10.0, 20.0, 30.0]);
         let t = Vector3::new(1.0, -2.0, 3.0);
@@ -357,6 +372,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::approx_constant)] // the paper's matrix, printed to 4 decimals
     fn quaternions_of_any_length_and_matrices_near_rotations() {
         let q = quaternion(&frame::from_axis_angle(Vector3::y(), 60.0));
         let scaled = from_quaternion(q.map(|c| c * -3.0)).expect("a rotation");
@@ -378,9 +394,17 @@ mod tests {
         let rounded = exact.matrix().map(|v| (v * 1e7).round() / 1e7);
         let nearest = rotation_of_matrix(&rounded).expect("near a rotation");
         assert!(close(nearest.matrix(), exact.matrix(), 1e-7));
-        assert!((nearest.matrix().transpose() * nearest.matrix() - Matrix3::identity()).abs().max() < 1e-15);
+        assert!(
+            (nearest.matrix().transpose() * nearest.matrix() - Matrix3::identity())
+                .abs()
+                .max()
+                < 1e-15
+        );
         let mirror = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
-        assert!(matches!(rotation_of_matrix(&mirror), Err(FormError::Mirror(_))));
+        assert!(matches!(
+            rotation_of_matrix(&mirror),
+            Err(FormError::Mirror(_))
+        ));
     }
 
     /// Seed 004's orientation matrix (eq. 3) is R_Z(α) R_X(β) R_Y(γ); its
@@ -415,8 +439,14 @@ mod tests {
     /// T_SP = T_PO⁻¹ · T_SO: a point fixed to the tool, seen from the piece.
     #[test]
     fn tool_to_piece_sees_the_tool_from_the_piece() {
-        let tool = pose(Vector3::new(100.0, 0.0, 50.0), matrix(seq("i:ZYX"), [30.0, 10.0, 0.0]));
-        let piece = pose(Vector3::new(20.0, 30.0, 0.0), matrix(seq("i:ZYX"), [-15.0, 0.0, 5.0]));
+        let tool = pose(
+            Vector3::new(100.0, 0.0, 50.0),
+            matrix(seq("i:ZYX"), [30.0, 10.0, 0.0]),
+        );
+        let piece = pose(
+            Vector3::new(20.0, 30.0, 0.0),
+            matrix(seq("i:ZYX"), [-15.0, 0.0, 5.0]),
+        );
         let sp = tool_to_piece(&tool, &piece);
         let tip = nalgebra::Point3::new(0.0, 0.0, -10.0);
         let in_fixed = tool * tip;

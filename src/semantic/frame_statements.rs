@@ -302,7 +302,10 @@ mod tests {
             rotation("i:ZYX", [90.0, 0.0, 0.0]),
         );
         assert!(close(&f, &expected), "{f}");
-        assert!(close(&frame("TRANS X1\nAROT Z5\nTRANS\n"), &Pose::identity()));
+        assert!(close(
+            &frame("TRANS X1\nAROT Z5\nTRANS\n"),
+            &Pose::identity()
+        ));
         assert!(close(&frame("TRANS X1\nROT\n"), &Pose::identity()));
     }
 
