@@ -2259,3 +2259,44 @@ fn axes_refuses_an_a3200_export_it_cannot_write() {
     assert_exit(&output, 2);
     assert!(flat(&output.stderr).contains("right-handed"));
 }
+
+/// Numbers at the ends of the doubles, in every numeric form of `convert`
+/// and `frame`: an answer or a refusal, never a crash.
+#[test]
+fn convert_and_frame_take_extreme_numbers_without_a_crash() {
+    let forms = [
+        ("e:XYZ", 3, 6),
+        ("i:ZXZ", 3, 6),
+        ("matrix", 9, 16),
+        ("quaternion", 4, 7),
+        ("axis-angle", 4, 7),
+        ("gibbs", 3, 6),
+        ("chain", 3, 6),
+    ];
+    for (form, rotation, frame) in forms {
+        for value in ["1e308", "-1e308", "5e-324", "0", "1e200"] {
+            for (command, count) in [("convert", rotation), ("frame", frame)] {
+                for to in ["i:XYZ", "gibbs", "gpp", "sinumerik", "axis-angle"] {
+                    let mut args = vec![command, "--from", form, "--to", to, "--"];
+                    args.extend(std::iter::repeat_n(value, count));
+                    let output = run(&args, b"");
+                    let code = output.status.code();
+                    assert!(code == Some(0) || code == Some(2), "{args:?}: {code:?}");
+                }
+            }
+        }
+    }
+    for statements in [
+        "AROT X=1EX300",
+        "TRANS X=1E300*1E300",
+        "ROTS X90 Y90",
+        "AROT Z=1e300",
+    ] {
+        let output = run(
+            &["frame", "--from", "sinumerik", "--to", "gpp", statements],
+            b"",
+        );
+        let code = output.status.code();
+        assert!(code == Some(0) || code == Some(2), "{statements}: {code:?}");
+    }
+}

@@ -32,8 +32,8 @@ pub enum FormError {
     Mirror(f64),
     #[error("not a frame matrix: its last row is not 0 0 0 1")]
     LastRow,
-    #[error("a quaternion of length 0 is no rotation")]
-    ZeroQuaternion,
+    #[error("a quaternion of length {0} is no rotation")]
+    ZeroQuaternion(f64),
     #[error("the axis is the zero vector, which turns about nothing by {0}°")]
     ZeroAxis(f64),
     #[error("a half turn has no Gibbs vector: 2 tan(180°/2) is infinite")]
@@ -95,7 +95,7 @@ pub fn from_quaternion([w, x, y, z]: [f64; 4]) -> Result<Rotation3<f64>, FormErr
     let q = nalgebra::Quaternion::new(w, x, y, z);
     let norm = q.norm();
     if !(norm > 0.0 && norm.is_finite()) {
-        return Err(FormError::ZeroQuaternion);
+        return Err(FormError::ZeroQuaternion(norm));
     }
     Ok(UnitQuaternion::from_quaternion(q).to_rotation_matrix())
 }
@@ -159,7 +159,8 @@ pub fn rotate_by_gibbs(theta: &Vector3<f64>, rho: &Vector3<f64>) -> Vector3<f64>
 /// The rotation of a Gibbs vector: its columns are where the formula
 /// takes the unit vectors.
 pub fn from_gibbs(theta: &Vector3<f64>) -> Result<Rotation3<f64>, FormError> {
-    if !theta.iter().all(|c| c.is_finite()) {
+    // Past about 1e154 |θ|² overflows: a half turn, to the last bit.
+    if !theta.norm_squared().is_finite() {
         return Err(FormError::HalfTurn);
     }
     let columns = [Vector3::x(), Vector3::y(), Vector3::z()].map(|e| rotate_by_gibbs(theta, &e));
@@ -381,7 +382,10 @@ mod tests {
             frame::from_axis_angle(Vector3::y(), 60.0).matrix(),
             1e-15
         ));
-        assert_eq!(from_quaternion([0.0; 4]), Err(FormError::ZeroQuaternion));
+        assert_eq!(
+            from_quaternion([0.0; 4]),
+            Err(FormError::ZeroQuaternion(0.0))
+        );
         // The paper's matrix, printed to 4 decimals, is no rotation; to 7 it is.
         let printed = Matrix3::new(
             0.3536, -0.5732, 0.7392, 0.6124, 0.7392, 0.2803, -0.7071, 0.3536, 0.6124,
