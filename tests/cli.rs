@@ -2011,6 +2011,18 @@ fn frame_gives_the_tool_to_piece_chain_in_the_seeds_order() {
 
 #[test]
 fn convert_and_frame_refuse_what_is_no_rotation_with_exit_2() {
+    // A 4x4 matrix is a rotation when it has no translation.
+    let four = "0 -1 0 0 1 0 0 0 0 0 1 0 0 0 0 1";
+    let turned = run(&["convert", four, "--from", "matrix", "--to", "e:XYZ"], b"");
+    assert_exit(&turned, 0);
+    assert!(stdout(&turned).contains("    0.000000     0.000000    90.000000"));
+    let shifted = "0 -1 0 5 1 0 0 0 0 0 1 0 0 0 0 1";
+    let refused = run(
+        &["convert", shifted, "--from", "matrix", "--to", "e:XYZ"],
+        b"",
+    );
+    assert_exit(&refused, 2);
+    assert!(flat(&refused.stderr).contains("translation X5 Y0 Z0"));
     for (args, stdin, message) in [
         (
             vec![

@@ -397,10 +397,11 @@ pub struct EvalArgs {
 #[derive(Debug, clap::Args)]
 pub struct ConvertArgs {
     /// The rotation in the --from form, numbers separated by blanks or commas: three
-    /// angles for a sequence, nine (rows) for `matrix`, `w x y z` for `quaternion`,
-    /// `x y z angle` for `axis-angle`, three for `gibbs` and `chain`; statements for
-    /// `sinumerik` and `gpp` (an argument a block). Without them, stdin is read: one
-    /// rotation a line in numbers (printed one after the other), or the statements.
+    /// angles for a sequence, nine (rows; or the 16 of a 4x4 without translation) for
+    /// `matrix`, `w x y z` for `quaternion`, `x y z angle` for `axis-angle`, three for
+    /// `gibbs` and `chain`; statements for `sinumerik` and `gpp` (an argument a block).
+    /// Without them, stdin is read: one rotation a line in numbers (printed one after
+    /// the other), or the statements.
     #[arg(value_name = "VALUES")]
     pub values: Vec<String>,
     /// Input form: a sequence (`intrinsic:ZXY`, `extrinsic:XYZ`, `i:ZXY`, `e:57`),

@@ -93,7 +93,8 @@ impl Notation {
         match (self, frame) {
             (Notation::Angles(_) | Notation::Gibbs | Notation::Chain, false) => &[3],
             (Notation::Angles(_) | Notation::Gibbs | Notation::Chain, true) => &[6],
-            (Notation::Matrix, false) => &[9],
+            // A 4x4 matrix of a pure rotation too.
+            (Notation::Matrix, false) => &[9, 16],
             (Notation::Matrix, true) => &[16, 12],
             (Notation::Quaternion | Notation::AxisAngle, false) => &[4],
             (Notation::Quaternion | Notation::AxisAngle, true) => &[7],

@@ -9,7 +9,9 @@
 //! It reads blocks of frame statements and plane selections only, with
 //! constant values (`X=2*15` is read, `X=R1` is not), and refuses the rest:
 //! scaling and mirroring (no rigid motion), `CROTS` (it reads the frame
-//! held in the control's data), an Euler-mode control (MD10600 = 2).
+//! held in the control's data). A control set to Euler angles (MD10600 = 2,
+//! Z, X', Z'') reads `ROT X.. Y.. Z..` otherwise; RPY is taken here, as the
+//! rest of sinuprep takes it.
 
 use nalgebra::{Rotation3, Vector3};
 
