@@ -59,7 +59,7 @@ fn output(args: &ConvertArgs, pose: &Pose) -> Result<String, CliError> {
     }
     let written = notation::write(args.to, pose, false).map_err(CliError::Form)?;
     if let Some(warning) = &written.warning {
-        eprintln!("{warning}");
+        tellln!("{warning}");
     }
     Ok(if args.json {
         format!("{}\n", written.json)

@@ -24,7 +24,7 @@ pub fn run(args: &FrameArgs) -> Result<ExitStatus, CliError> {
     };
     let written = notation::write(args.to, &pose, true).map_err(CliError::Form)?;
     if let Some(warning) = &written.warning {
-        eprintln!("{warning}");
+        tellln!("{warning}");
     }
     let text = if args.json {
         format!("{}\n", written.json)
