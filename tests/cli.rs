@@ -2312,3 +2312,26 @@ fn convert_and_frame_take_extreme_numbers_without_a_crash() {
         assert!(code == Some(0) || code == Some(2), "{statements}: {code:?}");
     }
 }
+
+/// Without values, a numeric form is read from stdin one rotation a line
+/// (comments and empty lines skipped), each printed in turn.
+#[test]
+fn convert_reads_one_rotation_a_line_in_any_numeric_form() {
+    let input = b"1 0 0 0 # the identity\n\n0, 0, 0.7071067811865476, 0.7071067811865476\n";
+    let output = run(
+        &["convert", "--from", "quaternion", "--to", "axis-angle"],
+        input,
+    );
+    assert_exit(&output, 0);
+    let lines: Vec<Vec<f64>> = stdout(&output)
+        .lines()
+        .map(|l| l.split(' ').map(|n| n.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(lines.len(), 2);
+    assert_eq!(lines[0], [0.0, 0.0, 1.0, 0.0]);
+    // w = 0: a half turn about (0, 1, 1)/√2.
+    let [x, y, z, angle] = lines[1][..] else {
+        panic!("four numbers")
+    };
+    assert!(x.abs() < 1e-15 && (y - z).abs() < 1e-15 && (angle - 180.0).abs() < 1e-12);
+}
