@@ -2335,3 +2335,54 @@ fn convert_reads_one_rotation_a_line_in_any_numeric_form() {
     };
     assert!(x.abs() < 1e-15 && (y - z).abs() < 1e-15 && (angle - 180.0).abs() < 1e-12);
 }
+
+/// The frame statements a rewrite emits (`--emit frames`: TRANS, three AROT
+/// blocks, ATRANS) read back, composed as the control composes them, as the
+/// rotation of the CYCLE600 call they replace: the paper's extrinsic X, Y, Z
+/// 30, 45, 60, whether written as intrinsic or as extrinsic Z, X, Y.
+#[test]
+fn frame_statements_a_rewrite_emits_read_back_as_the_calls_rotation() {
+    let rewritten = run(
+        &[
+            "rewrite",
+            "--emit",
+            "frames",
+            "--precision",
+            "15",
+            "tests/fixtures/rewrite/paper_swivel_frames.mpf",
+        ],
+        b"",
+    );
+    assert_exit(&rewritten, 0);
+    let text = stdout(&rewritten);
+    let lines: Vec<&str> = text.lines().collect();
+    let mut calls = 0;
+    for (i, line) in lines.iter().enumerate() {
+        if !line.starts_with("; sinuprep: CYCLE600") {
+            continue;
+        }
+        calls += 1;
+        let blocks: Vec<&str> = lines[i + 1..i + 6].to_vec();
+        assert!(
+            blocks[0].contains("TRANS") && blocks[4].starts_with("ATRANS"),
+            "{blocks:?}"
+        );
+        let mut args = vec!["convert"];
+        args.extend(&blocks);
+        args.extend(["--from", "sinumerik", "--to", "e:XYZ", "--json"]);
+        let output = run(&args, b"");
+        assert_exit(&output, 0);
+        let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+        for (angle, expected) in value["angles"]
+            .as_array()
+            .expect("angles")
+            .iter()
+            .zip([30.0, 45.0, 60.0])
+        {
+            let angle = angle.as_f64().expect("number");
+            // 15 decimals move an angle by at most 5e-16 degrees.
+            assert!((angle - expected).abs() < 1e-12, "{blocks:?}: {angle}");
+        }
+    }
+    assert_eq!(calls, 2);
+}
