@@ -17,7 +17,7 @@ use crate::rotation::forms::{
     from_quaternion, gibbs, matrix_of_pose, pose, pose_of_matrix, quaternion, rotation_of_matrix,
     Pose, PostMatrix,
 };
-use crate::rotation::{decompose, matrix, Decomposition, Sequence, SequenceError};
+use crate::rotation::{decompose, matrix, Axis, Decomposition, Kind, Sequence, SequenceError};
 use crate::semantic::frame_statements::evaluate_frame_statements;
 
 /// A form a rotation or frame is written in.
@@ -349,13 +349,9 @@ pub fn write(notation: Notation, frame_pose: &Pose, frame: bool) -> Result<Writt
         }
         Notation::Sinumerik => {
             // One ROT block is RPY: Z, Y', X''.
-            let rpy: Sequence = Sequence {
-                axes: [
-                    crate::rotation::Axis::Z,
-                    crate::rotation::Axis::Y,
-                    crate::rotation::Axis::X,
-                ],
-                kind: crate::rotation::Kind::Intrinsic,
+            let rpy = Sequence {
+                axes: [Axis::Z, Axis::Y, Axis::X],
+                kind: Kind::Intrinsic,
             };
             let d = decompose(rpy, &rotation);
             let [z, y, x] = d.angles;
