@@ -16,10 +16,12 @@
 //! - [`registry`]: every rule's code, name, severity and docs below the linter; diagnostics are
 //!   built from them.
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
-//! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra;
-//!   knows nothing of syntax.
+//! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra, and
+//!   the other forms of a rotation (quaternion, axis-angle, Gibbs vector, a post-processor's
+//!   ROT_MAT, the tool-to-piece chain); knows nothing of syntax.
 //! - [`kinematics`]: swivel data records and the rotary axis positions they give a frame
-//!   rotation (two solutions, limits, `_DIR`, Hirth); pure math beside `rotation`.
+//!   rotation (two solutions, limits, `_DIR`, Hirth), and a table's A3200 setup; pure math
+//!   beside `rotation`.
 //! - [`measure`]: from measurements to rotations: a probed face's angles, the axis of a known
 //!   turn (the Rodrigues inverse problem), an axis from measured positions; pure math.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.

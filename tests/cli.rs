@@ -2337,3 +2337,567 @@ fn axis_from_measured_positions_gives_the_axis_and_a_point_on_it() {
     assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
 }
+
+// ---- every form, in and out; another control's words (issue 33) ----------
+
+/// The issue's example: the post-processor's nine ROT_MAT and three
+/// TRANS_MAT assignments in its own statement form (`ROT_MAT1=1;`), and read
+/// back to the same angles.
+#[test]
+fn convert_writes_and_reads_the_post_processors_rot_mat() {
+    let output = run(
+        &["convert", "30", "0", "0", "--from", "e:XYZ", "--to", "gpp"],
+        b"",
+    );
+    assert_exit(&output, 0);
+    insta::assert_snapshot!(stdout(&output));
+    let back = run(
+        &["convert", "--from", "gpp", "--to", "e:XYZ", "--json"],
+        &output.stdout,
+    );
+    assert_exit(&back, 0);
+    let value: serde_json::Value = serde_json::from_slice(&back.stdout).expect("JSON");
+    let angles: Vec<f64> = value["angles"]
+        .as_array()
+        .expect("angles")
+        .iter()
+        .map(|a| a.as_f64().expect("number"))
+        .collect();
+    assert!((angles[0] - 30.0).abs() < 1e-12 && angles[1].abs() < 1e-12 && angles[2].abs() < 1e-12);
+    // The seed's unit matrix is the identity.
+    let unit = b"ROT_MAT1=1;\nROT_MAT2=0;\nROT_MAT3=0;\nROT_MAT4=0;\nROT_MAT5=1;\nROT_MAT6=0;\nROT_MAT7=0;\nROT_MAT8=0;\nROT_MAT9=1;\nTRANS_MATX=0;\nTRANS_MATY=0;\nTRANS_MATZ=0;\n";
+    let identity = run(&["convert", "--from", "gpp", "--to", "quaternion"], unit);
+    assert_exit(&identity, 0);
+    assert_eq!(stdout(&identity), "1 0 0 0\n");
+}
+
+/// One rotation, the paper's example 2 (extrinsic X, Y, Z 30, 45, 60), in
+/// every form but the sequences, each read back to the paper's angles.
+#[test]
+#[allow(clippy::approx_constant)] // the paper's matrix, printed to 4 decimals
+fn convert_gives_the_papers_rotation_in_every_form_and_reads_each_back() {
+    let mut shown = String::new();
+    for form in [
+        "matrix",
+        "quaternion",
+        "axis-angle",
+        "gibbs",
+        "sinumerik",
+        "gpp",
+        "chain",
+    ] {
+        let output = run(
+            &["convert", "30", "45", "60", "--from", "e:XYZ", "--to", form],
+            b"",
+        );
+        assert_exit(&output, 0);
+        shown.push_str(&format!("--to {form}\n{}\n", stdout(&output)));
+        // Statements an argument a block, numbers an argument each.
+        let text = stdout(&output);
+        let values: Vec<String> = if matches!(form, "sinumerik" | "gpp") {
+            text.lines().map(str::to_string).collect()
+        } else {
+            text.split_whitespace().map(str::to_string).collect()
+        };
+        let mut args = vec!["convert"];
+        args.extend(values.iter().map(String::as_str));
+        args.extend(["--from", form, "--to", "e:XYZ", "--json"]);
+        let back = run(&args, b"");
+        assert_exit(&back, 0);
+        let value: serde_json::Value = serde_json::from_slice(&back.stdout).expect("JSON");
+        for (angle, expected) in value["angles"]
+            .as_array()
+            .expect("angles")
+            .iter()
+            .zip([30.0, 45.0, 60.0])
+        {
+            let angle = angle.as_f64().expect("number");
+            assert!(
+                (angle - expected).abs() < 1e-12,
+                "{form}: {angle} != {expected}"
+            );
+        }
+    }
+    insta::assert_snapshot!(shown);
+    // The matrix is the paper's (eq. 20), printed there to 4 decimals.
+    let matrix = run(
+        &[
+            "convert", "30", "45", "60", "--from", "e:XYZ", "--to", "matrix", "--json",
+        ],
+        b"",
+    );
+    let value: serde_json::Value = serde_json::from_slice(&matrix.stdout).expect("JSON");
+    let paper = [
+        [0.3536, -0.5732, 0.7392],
+        [0.6124, 0.7392, 0.2803],
+        [-0.7071, 0.3536, 0.6124],
+    ];
+    for (r, row) in paper.iter().enumerate() {
+        for (c, expected) in row.iter().enumerate() {
+            let found = value["matrix"][r][c].as_f64().expect("number");
+            assert!((found - expected).abs() < 5e-5, "({r}, {c}): {found}");
+        }
+    }
+}
+
+/// Frame statements evaluated as the control composes them: TRANS, then
+/// AROT blocks about the turned axes, as the frames form of a rewrite emits
+/// them; ROT in one block is RPY; the JSON gives the 4x4 matrix.
+#[test]
+fn frame_converts_sinumerik_statements_into_every_form() {
+    let statements = ["TRANS X10 Y20 Z30", "AROT X=30", "AROT Y=45", "AROT Z=60"];
+    let mut shown = String::new();
+    for form in ["i:XYZ", "matrix", "quaternion", "sinumerik", "gpp"] {
+        let mut args = vec!["frame"];
+        args.extend(statements);
+        args.extend(["--from", "sinumerik", "--to", form]);
+        let output = run(&args, b"");
+        assert_exit(&output, 0);
+        shown.push_str(&format!("--to {form}\n{}\n", stdout(&output)));
+    }
+    insta::assert_snapshot!(shown);
+    // AROT blocks about the turned axes = CYCLE800's axis-by-axis intrinsic X, Y', Z''.
+    let angles = run(
+        &[
+            "frame",
+            "10",
+            "20",
+            "30",
+            "30",
+            "45",
+            "60",
+            "--from",
+            "i:XYZ",
+            "--to",
+            "sinumerik",
+        ],
+        b"",
+    );
+    let back = run(
+        &["frame", "--from", "sinumerik", "--to", "i:XYZ"],
+        &angles.stdout,
+    );
+    assert_exit(&back, 0);
+    let numbers: Vec<f64> = stdout(&back)
+        .split_whitespace()
+        .map(|n| n.parse().expect("number"))
+        .collect();
+    for (found, expected) in numbers.iter().zip([10.0, 20.0, 30.0, 30.0, 45.0, 60.0]) {
+        assert!((found - expected).abs() < 1e-12, "{numbers:?}");
+    }
+}
+
+/// T_SP = T_PO^-1 · T_SO (seed 004): the tool 100 along X and 500 up, turned
+/// 30° about Z; the piece 20, 30 along X, Y, turned -15°: the tool is turned
+/// 45° from the piece, at the piece's coordinates of the tool's origin.
+#[test]
+fn frame_gives_the_tool_to_piece_chain_in_the_seeds_order() {
+    let output = run(
+        &[
+            "frame",
+            "--from",
+            "sinumerik",
+            "--tool",
+            "TRANS X100 Z500",
+            "--tool",
+            "AROT Z=30",
+            "--piece",
+            "TRANS X20 Y30",
+            "--piece",
+            "AROT Z=-15",
+            "--to",
+            "chain",
+            "--json",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    assert_eq!(value["sequence"], "intrinsic:ZXY");
+    assert!((value["alpha_z"].as_f64().expect("alpha") - 45.0).abs() < 1e-12);
+    let (s, c) = 15f64.to_radians().sin_cos();
+    let expected = [80.0 * c + 30.0 * s, 80.0 * s - 30.0 * c, 500.0];
+    for (i, e) in expected.iter().enumerate() {
+        let found = value["translation"][i].as_f64().expect("number");
+        assert!((found - e).abs() < 1e-12, "{found} != {e}");
+    }
+    insta::assert_snapshot!(stdout(&output));
+}
+
+#[test]
+fn convert_and_frame_refuse_what_is_no_rotation_with_exit_2() {
+    // A 4x4 matrix is a rotation when it has no translation.
+    let four = "0 -1 0 0 1 0 0 0 0 0 1 0 0 0 0 1";
+    let turned = run(&["convert", four, "--from", "matrix", "--to", "e:XYZ"], b"");
+    assert_exit(&turned, 0);
+    assert!(stdout(&turned).contains("    0.000000     0.000000    90.000000"));
+    let shifted = "0 -1 0 5 1 0 0 0 0 0 1 0 0 0 0 1";
+    let refused = run(
+        &["convert", shifted, "--from", "matrix", "--to", "e:XYZ"],
+        b"",
+    );
+    assert_exit(&refused, 2);
+    assert!(flat(&refused.stderr).contains("translation X5 Y0 Z0"));
+    for (args, stdin, message) in [
+        (
+            vec![
+                "convert", "1", "0", "0", "0", "1", "0", "0", "0", "2", "--from", "matrix", "--to",
+                "i:XYZ",
+            ],
+            "",
+            "not orthonormal",
+        ),
+        (
+            vec![
+                "convert", "1", "0", "0", "0", "1", "0", "0", "0", "-1", "--from", "matrix",
+                "--to", "i:XYZ",
+            ],
+            "",
+            "mirror",
+        ),
+        (
+            vec![
+                "convert",
+                "0",
+                "0",
+                "0",
+                "0",
+                "--from",
+                "quaternion",
+                "--to",
+                "i:XYZ",
+            ],
+            "",
+            "length 0",
+        ),
+        (
+            vec![
+                "convert",
+                "1",
+                "0",
+                "0",
+                "180",
+                "--from",
+                "axis-angle",
+                "--to",
+                "gibbs",
+            ],
+            "",
+            "half turn",
+        ),
+        (
+            vec![
+                "convert",
+                "TRANS X5",
+                "--from",
+                "sinumerik",
+                "--to",
+                "i:XYZ",
+            ],
+            "",
+            "sinuprep frame",
+        ),
+        (
+            vec![
+                "convert",
+                "SCALE X2",
+                "--from",
+                "sinumerik",
+                "--to",
+                "i:XYZ",
+            ],
+            "",
+            "scales",
+        ),
+        (
+            vec!["convert", "--from", "gpp", "--to", "i:XYZ"],
+            "ROT_MAT1=1;\n",
+            "ROT_MAT2 is not given",
+        ),
+        (
+            vec!["convert", "--from", "quaternion", "--to", "i:XYZ"],
+            "1 0 0 0\n1 2\n",
+            "stdin:2: 2 numbers where 4",
+        ),
+        (
+            vec!["convert", "1", "2", "--from", "e:XYZ", "--to", "matrix"],
+            "",
+            "2 numbers where three angles",
+        ),
+        (
+            vec![
+                "convert", "1", "2", "3", "--from", "euler", "--to", "matrix",
+            ],
+            "",
+            "is no form",
+        ),
+        (
+            vec!["frame", "1", "2", "3", "--from", "e:XYZ", "--to", "matrix"],
+            "",
+            "3 numbers where 6",
+        ),
+        (
+            vec![
+                "frame",
+                "--from",
+                "sinumerik",
+                "--tool",
+                "AROT X=R1",
+                "--piece",
+                "TRANS",
+                "--to",
+                "matrix",
+            ],
+            "",
+            "--tool number 1: line 1",
+        ),
+    ] {
+        let output = run(&args, stdin.as_bytes());
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty(), "{args:?}: partial output");
+        let stderr = flat(&output.stderr);
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+}
+
+/// The A3200 application note's machine as a swivel data record: the part
+/// on the A table (about z), 15 mm above its top and 10 mm off its centre in
+/// X; A on the B trunnion (about y), whose axis lies 12 mm above A's point.
+const A3200_MACHINE: &str =
+    "$TC_CARR23[1]=\"P\" $TC_CARR34[1]=\"A3200_SEED\" $TC_CARR35[1]=\"B\" $TC_CARR36[1]=\"A\"
+$TC_CARR7[1]=0 $TC_CARR8[1]=1 $TC_CARR9[1]=0
+$TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=1
+$TC_CARR4[1]=10 $TC_CARR5[1]=0 $TC_CARR6[1]=-3
+$TC_CARR15[1]=0 $TC_CARR16[1]=0 $TC_CARR17[1]=-12
+$TC_CARR18[1]=-10 $TC_CARR19[1]=0 $TC_CARR20[1]=15
+";
+
+/// The seed's example setup (`10, 0, -15` and `12, 0, 0`) comes out of the
+/// machine it describes; read back, it gives the same record.
+#[test]
+fn axes_exports_the_a3200_setup_of_the_seeds_machine_and_reads_it_back() {
+    let dir = scratch("a3200");
+    let machine = dir.join("A3200.SPF");
+    std::fs::write(&machine, A3200_MACHINE).expect("machine");
+    let machine = machine.to_str().expect("utf-8");
+    let output = run(
+        &[
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "A3200_SEED",
+            "--export",
+            "a3200",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert_eq!(
+        stdout(&output),
+        "ROTATION 1 InputAxes x y z OutputAxes X Y Z\n\
+         ROTATION 1 ANGLE A 1, 0\n\
+         ROTATION 1 Displacement 10, 0, -15\n\
+         ROTATION 2 InputAxes z x y OutputAxes Z X Y\n\
+         ROTATION 2 ANGLE B 1, 0\n\
+         ROTATION 2 Displacement 12, 0, 0\n"
+    );
+    let setup = dir.join("SETUP.PGM");
+    std::fs::write(&setup, &output.stdout).expect("setup");
+    let record = run(
+        &[
+            "axes",
+            "--from-a3200",
+            setup.to_str().expect("utf-8"),
+            "--record",
+            "A3200_SEED",
+        ],
+        b"",
+    );
+    assert_exit(&record, 0);
+    insta::assert_snapshot!(stdout(&record));
+    let back = dir.join("BACK.SPF");
+    std::fs::write(&back, &record.stdout).expect("record");
+    let again = run(
+        &[
+            "axes",
+            "--machine",
+            back.to_str().expect("utf-8"),
+            "--export",
+            "a3200",
+        ],
+        b"",
+    );
+    assert_exit(&again, 0);
+    assert_eq!(again.stdout, output.stdout);
+    // Both swivel the same way: the same axis positions and zero-point shift.
+    let swivel = |file: &str| {
+        let output = run(
+            &[
+                "axes",
+                "--machine",
+                file,
+                "--mode",
+                "57",
+                "20",
+                "-35",
+                "0",
+                "--json",
+            ],
+            b"",
+        );
+        assert_exit(&output, 0);
+        let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+        (value["solutions"].clone(), value["shift"].clone())
+    };
+    assert_eq!(swivel(machine), swivel(back.to_str().expect("utf-8")));
+}
+
+#[test]
+fn axes_refuses_an_a3200_export_it_cannot_write() {
+    let sample = support::repo().join("samples/MACHINE.SPF");
+    let sample = sample.to_str().expect("utf-8");
+    for (record, message) in [
+        ("HEAD_CA", "swivel head (T)"),
+        ("NUTATING_M", "mixed kinematics"),
+    ] {
+        let output = run(
+            &[
+                "axes",
+                "--machine",
+                sample,
+                "--record",
+                record,
+                "--export",
+                "a3200",
+            ],
+            b"",
+        );
+        assert_exit(&output, 2);
+        assert!(flat(&output.stderr).contains(message), "{record}");
+    }
+    let dir = scratch("a3200-bad");
+    let setup = dir.join("BAD.PGM");
+    std::fs::write(&setup, "ROTATION 1 InputAxes x z y OutputAxes X Z Y\n").expect("setup");
+    let output = run(
+        &["axes", "--from-a3200", setup.to_str().expect("utf-8")],
+        b"",
+    );
+    assert_exit(&output, 2);
+    assert!(flat(&output.stderr).contains("right-handed"));
+}
+
+/// Numbers at the ends of the doubles, in every numeric form of `convert`
+/// and `frame`: an answer or a refusal, never a crash.
+#[test]
+fn convert_and_frame_take_extreme_numbers_without_a_crash() {
+    let forms = [
+        ("e:XYZ", 3, 6),
+        ("i:ZXZ", 3, 6),
+        ("matrix", 9, 16),
+        ("quaternion", 4, 7),
+        ("axis-angle", 4, 7),
+        ("gibbs", 3, 6),
+        ("chain", 3, 6),
+    ];
+    for (form, rotation, frame) in forms {
+        for value in ["1e308", "-1e308", "5e-324", "0", "1e200"] {
+            for (command, count) in [("convert", rotation), ("frame", frame)] {
+                for to in ["i:XYZ", "gibbs", "gpp", "sinumerik", "axis-angle"] {
+                    let mut args = vec![command, "--from", form, "--to", to, "--"];
+                    args.extend(std::iter::repeat_n(value, count));
+                    let output = run(&args, b"");
+                    let code = output.status.code();
+                    assert!(code == Some(0) || code == Some(2), "{args:?}: {code:?}");
+                }
+            }
+        }
+    }
+    for statements in [
+        "AROT X=1EX300",
+        "TRANS X=1E300*1E300",
+        "ROTS X90 Y90",
+        "AROT Z=1e300",
+    ] {
+        let output = run(
+            &["frame", "--from", "sinumerik", "--to", "gpp", statements],
+            b"",
+        );
+        let code = output.status.code();
+        assert!(code == Some(0) || code == Some(2), "{statements}: {code:?}");
+    }
+}
+
+/// Without values, a numeric form is read from stdin one rotation a line
+/// (comments and empty lines skipped), each printed in turn.
+#[test]
+fn convert_reads_one_rotation_a_line_in_any_numeric_form() {
+    let input = b"1 0 0 0 # the identity\n\n0, 0, 0.7071067811865476, 0.7071067811865476\n";
+    let output = run(
+        &["convert", "--from", "quaternion", "--to", "axis-angle"],
+        input,
+    );
+    assert_exit(&output, 0);
+    let lines: Vec<Vec<f64>> = stdout(&output)
+        .lines()
+        .map(|l| l.split(' ').map(|n| n.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(lines.len(), 2);
+    assert_eq!(lines[0], [0.0, 0.0, 1.0, 0.0]);
+    // w = 0: a half turn about (0, 1, 1)/√2.
+    let [x, y, z, angle] = lines[1][..] else {
+        panic!("four numbers")
+    };
+    assert!(x.abs() < 1e-15 && (y - z).abs() < 1e-15 && (angle - 180.0).abs() < 1e-12);
+}
+
+/// The frame statements a rewrite emits (`--emit frames`: TRANS, three AROT
+/// blocks, ATRANS) read back, composed as the control composes them, as the
+/// rotation of the CYCLE600 call they replace: the paper's extrinsic X, Y, Z
+/// 30, 45, 60, whether written as intrinsic or as extrinsic Z, X, Y.
+#[test]
+fn frame_statements_a_rewrite_emits_read_back_as_the_calls_rotation() {
+    let rewritten = run(
+        &[
+            "rewrite",
+            "--emit",
+            "frames",
+            "--precision",
+            "15",
+            "tests/fixtures/rewrite/paper_swivel_frames.mpf",
+        ],
+        b"",
+    );
+    assert_exit(&rewritten, 0);
+    let text = stdout(&rewritten);
+    let lines: Vec<&str> = text.lines().collect();
+    let mut calls = 0;
+    for (i, line) in lines.iter().enumerate() {
+        if !line.starts_with("; sinuprep: CYCLE600") {
+            continue;
+        }
+        calls += 1;
+        let blocks: Vec<&str> = lines[i + 1..i + 6].to_vec();
+        assert!(
+            blocks[0].contains("TRANS") && blocks[4].starts_with("ATRANS"),
+            "{blocks:?}"
+        );
+        let mut args = vec!["convert"];
+        args.extend(&blocks);
+        args.extend(["--from", "sinumerik", "--to", "e:XYZ", "--json"]);
+        let output = run(&args, b"");
+        assert_exit(&output, 0);
+        let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+        for (angle, expected) in value["angles"]
+            .as_array()
+            .expect("angles")
+            .iter()
+            .zip([30.0, 45.0, 60.0])
+        {
+            let angle = angle.as_f64().expect("number");
+            // 15 decimals move an angle by at most 5e-16 degrees.
+            assert!((angle - expected).abs() < 1e-12, "{blocks:?}: {angle}");
+        }
+    }
+    assert_eq!(calls, 2);
+}

@@ -87,3 +87,87 @@ fn extrinsic_equals_intrinsic_reversed() {
         );
     }
 }
+
+// ---- every form, in and out (issue 33) -------------------------------------
+
+use sinuprep::cli::notation::{read, write, Notation};
+use sinuprep::rotation::forms::{pose, rotate_by_gibbs, Pose};
+
+/// Every form `convert` and `frame` write: the 24 sequences and the others.
+fn notations() -> Vec<Notation> {
+    let mut all: Vec<Notation> = sequences().into_iter().map(Notation::Angles).collect();
+    all.extend([
+        Notation::Matrix,
+        Notation::Quaternion,
+        Notation::AxisAngle,
+        Notation::Gibbs,
+        Notation::Sinumerik,
+        Notation::Gpp,
+        Notation::Chain,
+    ]);
+    all
+}
+
+/// The frame written in `notation` and read back from that text.
+fn through(notation: Notation, frame: &Pose, whole: bool) -> Result<Pose, String> {
+    let written = write(notation, frame, whole)?;
+    read(notation, &[written.text], whole)
+}
+
+/// The rotation's angle, degrees.
+fn turn(frame: &Pose) -> f64 {
+    frame.rotation.angle().to_degrees()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    /// Angles -> form (as text) -> the same rotation, to 1e-12 (1e-9 at gimbal
+    /// lock, as for the sequences), and the translation of a frame to 1e-12
+    /// of its size; the Gibbs vector of a half turn alone is refused.
+    #[test]
+    fn every_form_reads_back_what_it_writes(
+        from in 0usize..24, form in 0usize..31, a1 in angle(), a2 in angle(), a3 in angle(),
+        t in proptest::array::uniform3(-1e4..1e4f64), whole in proptest::bool::ANY,
+    ) {
+        let sequence = sequences()[from];
+        let notation = notations()[form];
+        let translation = if whole { nalgebra::Vector3::from(t) } else { nalgebra::Vector3::zeros() };
+        let frame = pose(translation, matrix(sequence, [a1, a2, a3]));
+        match through(notation, &frame, whole) {
+            Ok(back) => {
+                let gimbal = match notation {
+                    Notation::Angles(s) => decompose(s, &frame.rotation).gimbal_lock,
+                    Notation::Chain => decompose("i:ZXY".parse().expect("seq"), &frame.rotation).gimbal_lock,
+                    Notation::Sinumerik => decompose("i:ZYX".parse().expect("seq"), &frame.rotation).gimbal_lock,
+                    _ => false,
+                };
+                let tolerance = if gimbal { 1e-9 } else { 1e-12 };
+                let difference = max_difference(&back.rotation, &frame.rotation);
+                prop_assert!(difference < tolerance, "{notation} {sequence} {:?}: {difference:e}", [a1, a2, a3]);
+                let moved = (back.translation.vector - frame.translation.vector).abs().max();
+                prop_assert!(moved <= 1e-12 * (1.0 + translation.abs().max()), "{notation}: translation off by {moved:e}");
+            }
+            Err(why) => {
+                prop_assert!(notation == Notation::Gibbs && (turn(&frame) - 180.0).abs() < 1e-6,
+                    "{notation} {sequence} {:?}: {why}", [a1, a2, a3]);
+            }
+        }
+    }
+
+    /// The Rodrigues formula (seed 002) moves a point as the rotation's
+    /// matrix does.
+    #[test]
+    fn rodrigues_formula_moves_points_as_the_matrix(
+        seq in 0usize..24, a1 in -180.0..180.0f64, a2 in -180.0..180.0f64, a3 in -180.0..180.0f64,
+        p in proptest::array::uniform3(-100.0..100.0f64),
+    ) {
+        let rotation = matrix(sequences()[seq], [a1, a2, a3]);
+        let frame = pose(nalgebra::Vector3::zeros(), rotation);
+        prop_assume!(turn(&frame) < 179.0);
+        let g = sinuprep::rotation::forms::gibbs(&rotation).expect("not a half turn");
+        let rho = nalgebra::Vector3::from(p);
+        let moved = rotate_by_gibbs(&g, &rho);
+        prop_assert!((moved - rotation * rho).abs().max() < 1e-11);
+    }
+}

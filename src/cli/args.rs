@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use crate::cli::notation::Notation;
 use crate::emit::cycle600::Form;
 use crate::rotation::Sequence;
 use crate::workspace::SeverityName;
@@ -43,10 +44,15 @@ pub enum Command {
     Eval(EvalArgs),
     /// Print a rule's documentation (`sinuprep rule N001`), or list every rule (`--all`).
     Rule(RuleArgs),
-    /// Convert rotation angles from one sequence to another (three given, or
-    /// one triple per line on stdin).
+    /// Convert a rotation from one form to another: angles of any sequence, matrix,
+    /// quaternion, axis and angle, Gibbs vector, Sinumerik frame statements, a
+    /// post-processor's ROT_MAT (given, or one per line on stdin).
     #[command(allow_negative_numbers = true)]
     Convert(ConvertArgs),
+    /// Convert a whole frame, translation and rotation, from one form to another, or
+    /// give the tool-to-piece frame of a tool chain and a piece chain.
+    #[command(allow_negative_numbers = true)]
+    Frame(FrameArgs),
     /// Compute one swivel on a machine: the rotary axis positions its swivel
     /// data record gives a frame rotation (CYCLE800's axis-by-axis `_MODE` and
     /// angles), both solutions, the one the control takes, the rotation left
@@ -115,8 +121,16 @@ pub struct AxesArgs {
     #[arg(long, default_value_t = 57)]
     pub mode: i64,
     /// The three angles `_A`, `_B`, `_C` in degrees, in the order of the sequence.
-    #[arg(value_parser = finite_angle, num_args = 3, required = true, value_names = ["A", "B", "C"])]
+    #[arg(value_parser = finite_angle, num_args = 3, required_unless_present_any = ["export", "from_a3200"], value_names = ["A", "B", "C"])]
     pub angles: Vec<f64>,
+    /// Instead of a swivel, write the record's setup in another control's words:
+    /// `a3200`, Aerotech's ROTATION / ANGLE / Displacement commands (a table, P).
+    #[arg(long, value_enum, value_name = "CONTROL", conflicts_with_all = ["angles", "table"])]
+    pub export: Option<Export>,
+    /// Instead of a swivel, read an A3200 ROTATION setup and write the swivel data
+    /// record it determines, as `$TC_CARRn[1]=value` assignments.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["angles", "table", "export", "machine"])]
+    pub from_a3200: Option<PathBuf>,
     /// CYCLE800's `_DIR`: -1 takes the lower position of the direction-reference
     /// axis, 1 the higher (the other solution when the asked one is outside the limits).
     #[arg(long, default_value_t = -1, value_parser = direction)]
@@ -133,6 +147,13 @@ pub struct AxesArgs {
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
+}
+
+/// Another control's words for a machine.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Export {
+    /// Aerotech A3200: `ROTATION n InputAxes ... OutputAxes ...`, `ANGLE`, `Displacement`.
+    A3200,
 }
 
 #[derive(Debug, clap::Args)]
@@ -517,19 +538,51 @@ fn length(text: &str) -> Result<f64, String> {
 
 #[derive(Debug, clap::Args)]
 pub struct ConvertArgs {
-    /// The three angles, degrees, in the order the rotations are performed.
-    /// Without them, angle triples are read from stdin, one per line
-    /// (blanks or commas between the numbers), and one line is printed for
-    /// each: the output angles, or with --json one JSON object.
-    #[arg(value_parser = finite_angle, num_args = 3, value_names = ["A1", "A2", "A3"])]
-    pub angles: Option<Vec<f64>>,
-    /// Input sequence: `intrinsic:ZXY`, `extrinsic:XYZ`, `i:ZXY`, `e:57`.
+    /// The rotation in the --from form, numbers separated by blanks or commas: three
+    /// angles for a sequence, nine (rows; or the 16 of a 4x4 without translation) for
+    /// `matrix`, `w x y z` for `quaternion`, `x y z angle` for `axis-angle`, three for
+    /// `gibbs` and `chain`; statements for `sinumerik` and `gpp` (an argument a block).
+    /// Without them, stdin is read: one rotation a line in numbers (printed one after
+    /// the other), or the statements.
+    #[arg(value_name = "VALUES")]
+    pub values: Vec<String>,
+    /// Input form: a sequence (`intrinsic:ZXY`, `extrinsic:XYZ`, `i:ZXY`, `e:57`),
+    /// `matrix`, `quaternion`, `axis-angle`, `gibbs`, `sinumerik` (TRANS, ROT, AROT, ...
+    /// as the control composes them), `gpp` (ROT_MAT1..9, TRANS_MATX..Z) or `chain`
+    /// (intrinsic Z, X', Y'').
     #[arg(long)]
-    pub from: Sequence,
-    /// Output sequence, same forms as --from.
+    pub from: Notation,
+    /// Output form, same forms as --from.
     #[arg(long)]
-    pub to: Sequence,
+    pub to: Notation,
     /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct FrameArgs {
+    /// The frame in the --from form: X Y Z, then the rotation as `convert` takes it
+    /// (16 or 12 numbers, rows, for `matrix`); statements for `sinumerik` and `gpp`.
+    /// Without them (and without --tool), stdin is read.
+    #[arg(value_name = "VALUES", conflicts_with = "tool")]
+    pub values: Vec<String>,
+    /// Input form, as `convert --from` (also the form of --tool and --piece).
+    #[arg(long)]
+    pub from: Notation,
+    /// Output form, as `convert --to`; `chain` gives the position and the angles
+    /// about Z, X', Y'' of the tool-to-piece chain.
+    #[arg(long)]
+    pub to: Notation,
+    /// A link of the tool's chain in the fixed system (T_SO), in the --from form;
+    /// repeated, the links are chained in order. With --piece, the output is the
+    /// tool seen from the piece, T_SP = T_PO^-1 · T_SO.
+    #[arg(long, value_name = "FRAME", requires = "piece")]
+    pub tool: Vec<String>,
+    /// A link of the piece's chain in the fixed system (T_PO), as --tool.
+    #[arg(long, value_name = "FRAME", requires = "tool")]
+    pub piece: Vec<String>,
+    /// Print one JSON object instead of the form's text.
     #[arg(long)]
     pub json: bool,
 }

@@ -8,16 +8,21 @@ use std::path::{Path, PathBuf};
 use nalgebra::{Rotation3, Vector3};
 
 use crate::cli::analysis::MachinesTold;
-use crate::cli::args::{AxesArgs, MessageFormat};
+use crate::cli::args::{AxesArgs, Export, MessageFormat};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
-use crate::kinematics::{solve, split, Direction, Record, Request, Split, Swivel, TableAngle};
+use crate::kinematics::{
+    a3200, solve, split, Direction, Record, Request, Split, Swivel, TableAngle,
+};
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};
 
 pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
+    if let Some(path) = &args.from_a3200 {
+        return from_a3200(path, args.record.as_deref());
+    }
     if args.mode & !63 != 0 {
         return Err(CliError::Mode(args.mode));
     }
@@ -37,6 +42,14 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
     let machine = &on.machine;
     let mut record = pick(machine, args.record.as_deref(), &path)?.clone();
     record.direction_axis = args.reference_axis.map(|axis| usize::from(axis) - 1);
+    if let Some(Export::A3200) = args.export {
+        let setup = a3200::setup_of(&record).map_err(|error| CliError::A3200 {
+            path: path.clone(),
+            why: format!("record {}: {error}", describe(&record)),
+        })?;
+        write_stdout(setup.text().as_bytes())?;
+        return Ok(ExitStatus::Success.max(data));
+    }
     let angles = [args.angles[0], args.angles[1], args.angles[2]];
     let request = Request {
         rotation: matrix(sequence, angles),
@@ -99,6 +112,65 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         ExitStatus::Failure
     };
     Ok(found.max(data))
+}
+
+/// `--from-a3200 FILE`: the record an A3200 setup determines, as the
+/// control's `$TC_CARRn[m]=value` assignments (record `--record` when it is
+/// a number, else 1, named by `--record` when it is a name).
+fn from_a3200(path: &Path, record: Option<&str>) -> Result<ExitStatus, CliError> {
+    let text = std::fs::read(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let refused = |error: a3200::A3200Error| CliError::A3200 {
+        path: path.to_path_buf(),
+        why: error.to_string(),
+    };
+    let setup = a3200::Setup::read(&String::from_utf8_lossy(&text)).map_err(refused)?;
+    let mut found = a3200::record_of(&setup).map_err(refused)?;
+    match record.map(str::trim) {
+        Some(number) if number.parse::<u32>().is_ok_and(|n| n > 0) => {
+            found.number = number.parse().unwrap_or(1);
+        }
+        Some(name) => found.name = name.to_string(),
+        None => {}
+    }
+    write_stdout(assignments(&found).as_bytes())?;
+    Ok(ExitStatus::Success)
+}
+
+/// A record as the control holds it: what the record has, in the shape of
+/// `samples/MACHINE.SPF`.
+fn assignments(record: &Record) -> String {
+    let m = record.number;
+    let value = |n: u32, v: f64| format!("$TC_CARR{n}[{m}]={}", v + 0.0);
+    let text = |n: u32, t: &str| format!("$TC_CARR{n}[{m}]=\"{t}\"");
+    let mut head = vec![text(23, &record.kinematics.letter().to_string())];
+    if !record.name.is_empty() {
+        head.push(text(34, &record.name));
+    }
+    for (n, axis) in [35, 36].into_iter().zip(&record.axes) {
+        if !axis.name.is_empty() {
+            head.push(text(n, &axis.name));
+        }
+    }
+    let vector = |first: u32, v: &Vector3<f64>| {
+        (0..3)
+            .map(|i| value(first + i as u32, v[i]))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let [l1, l2, l3, l4] = &record.offsets;
+    let lines = [
+        head.join(" "),
+        vector(7, &record.axes[0].vector),
+        vector(10, &record.axes[1].vector),
+        vector(1, l1),
+        vector(4, l2),
+        vector(15, l3),
+        vector(18, l4),
+    ];
+    format!("{}\n", lines.join("\n"))
 }
 
 /// `--fix B=30`: the table's position; the name must be the table axis's.

@@ -1,33 +1,94 @@
-//! `sinuprep convert`: angles from one rotation sequence to another, three
-//! given on the command line or one triple per line on stdin.
+//! `sinuprep convert`: a rotation from one form to another (angles of any
+//! sequence, matrix, quaternion, axis and angle, Gibbs vector, Sinumerik
+//! frame statements, a post-processor's ROT_MAT), given on the command line
+//! or read from stdin: one per line for numbers (angle triples side by
+//! side), the whole input for statements.
 
 use std::io::{IsTerminal, Read};
 
 use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
+use crate::cli::notation::{self, Notation};
 use crate::cli::{write_stdout, ExitStatus};
-use crate::rotation::{convert, convert_all, Angles, Conversion, Sequence};
+use crate::rotation::forms::Pose;
+use crate::rotation::{convert, convert_all, decompose, Angles, Conversion, Sequence};
 
 pub fn run(args: &ConvertArgs) -> Result<ExitStatus, CliError> {
-    let text = match args.angles.as_deref() {
-        Some(&[a1, a2, a3]) => {
-            let conversion = convert(args.from, [a1, a2, a3], args.to);
-            if args.json {
-                json(args.to, &conversion)
-            } else {
-                table(args.from, args.to, &conversion)
-            }
-        }
-        _ => batch(args)?,
+    let text = match (args.from, args.to) {
+        _ if !args.values.is_empty() => single(args, &args.values)?,
+        (Notation::Angles(_), Notation::Angles(_)) => batch(args)?,
+        _ => each_of_stdin(args)?,
     };
     write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
 }
 
-/// Every triple of stdin, converted together (`convert_all`). The whole
-/// input is read and checked before anything is printed: a bad line stops
-/// the run without a partial output.
-fn batch(args: &ConvertArgs) -> Result<String, CliError> {
+/// The rotation of the command line's values.
+fn single(args: &ConvertArgs, values: &[String]) -> Result<String, CliError> {
+    if let (Notation::Angles(from), Notation::Angles(to)) = (args.from, args.to) {
+        let numbers = notation::numbers(&values.join(" ")).map_err(CliError::Form)?;
+        let [a1, a2, a3] = numbers[..] else {
+            return Err(CliError::Form(format!(
+                "{} numbers where three angles are expected",
+                numbers.len()
+            )));
+        };
+        let conversion = convert(from, [a1, a2, a3], to);
+        return Ok(if args.json {
+            json(to, &conversion)
+        } else {
+            table(&format!("{from} (code {})", from.code()), to, &conversion)
+        });
+    }
+    let pose = notation::read(args.from, values, false).map_err(CliError::Form)?;
+    output(args, &pose)
+}
+
+/// `pose`'s rotation in the form asked for.
+fn output(args: &ConvertArgs, pose: &Pose) -> Result<String, CliError> {
+    if let Notation::Angles(to) = args.to {
+        let conversion = Conversion {
+            matrix: pose.rotation,
+            output: decompose(to, &pose.rotation),
+        };
+        return Ok(if args.json {
+            json(to, &conversion)
+        } else {
+            table(&args.from.to_string(), to, &conversion)
+        });
+    }
+    let written = notation::write(args.to, pose, false).map_err(CliError::Form)?;
+    if let Some(warning) = &written.warning {
+        tellln!("{warning}");
+    }
+    Ok(if args.json {
+        format!("{}\n", written.json)
+    } else {
+        written.text
+    })
+}
+
+/// stdin read whole: one rotation in statements, or one a line in numbers.
+fn each_of_stdin(args: &ConvertArgs) -> Result<String, CliError> {
+    let input = read_stdin()?;
+    if args.from.is_text() {
+        return single(args, &[input]);
+    }
+    let mut text = String::new();
+    for (row, line) in input.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or_default();
+        let at_line = |why: String| CliError::Form(format!("stdin:{}: {why}", row + 1));
+        let numbers = notation::numbers(line).map_err(at_line)?;
+        if numbers.is_empty() {
+            continue;
+        }
+        let pose = notation::read_numbers(args.from, &numbers, false).map_err(at_line)?;
+        text.push_str(&output(args, &pose)?);
+    }
+    Ok(text)
+}
+
+fn read_stdin() -> Result<String, CliError> {
     // Waiting for a terminal to type triples would look like a hang.
     if std::io::stdin().is_terminal() {
         return Err(CliError::NoAngles);
@@ -40,11 +101,21 @@ fn batch(args: &ConvertArgs) -> Result<String, CliError> {
             path: "<stdin>".into(),
             source,
         })?;
-    let triples = read_triples(&String::from_utf8_lossy(&input))?;
+    Ok(String::from_utf8_lossy(&input).into_owned())
+}
+
+/// Every triple of stdin, converted together (`convert_all`). The whole
+/// input is read and checked before anything is printed: a bad line stops
+/// the run without a partial output.
+fn batch(args: &ConvertArgs) -> Result<String, CliError> {
+    let (Notation::Angles(from), Notation::Angles(to)) = (args.from, args.to) else {
+        return each_of_stdin(args);
+    };
+    let triples = read_triples(&read_stdin()?)?;
     let mut text = String::with_capacity(triples.len() * 64);
-    for conversion in convert_all(args.from, &triples, args.to) {
+    for conversion in convert_all(from, &triples, to) {
         if args.json {
-            text.push_str(&json(args.to, &conversion));
+            text.push_str(&json(to, &conversion));
         } else {
             // Shortest text that reads back as the same f64.
             let [a, b, c] = conversion.output.angles;
@@ -113,11 +184,12 @@ fn json(to: Sequence, conversion: &Conversion) -> String {
     format!("{value}\n")
 }
 
-fn table(from: Sequence, to: Sequence, conversion: &Conversion) -> String {
+/// For people: the angles and the matrix to six decimals, from `from` (a
+/// sequence with its code, or the form's name).
+fn table(from: &str, to: Sequence, conversion: &Conversion) -> String {
     let angles = |a: [f64; 3]| a.map(|x| format!("{x:>12.6}")).join(" ");
     let mut text = format!(
-        "{from} (code {}) -> {to} (code {})\n\nangles       {}\nalternative  {}\n\nrotation matrix\n",
-        from.code(),
+        "{from} -> {to} (code {})\n\nangles       {}\nalternative  {}\n\nrotation matrix\n",
         to.code(),
         angles(conversion.output.angles),
         angles(conversion.output.alternative),

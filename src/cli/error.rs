@@ -83,6 +83,20 @@ pub enum CliError {
     )]
     Record { path: PathBuf, why: String },
 
+    #[error("{0}")]
+    #[diagnostic(
+        code(sinuprep::form),
+        help("`sinuprep convert --help` lists what each form takes")
+    )]
+    Form(String),
+
+    #[error("{}: {why}", shown(path))]
+    #[diagnostic(
+        code(sinuprep::a3200),
+        help("an A3200 setup is `ROTATION n InputAxes x y z OutputAxes X Y Z`, `ROTATION n ANGLE A 1, 0` and `ROTATION n Displacement 10, 0, -15` lines, one ROTATION per rotary axis from the part outward")
+    )]
+    A3200 { path: PathBuf, why: String },
+
     #[error("`--mode {0}` is no axis-by-axis rotation of CYCLE800")]
     #[diagnostic(code(sinuprep::mode), help("give the sequence code of three rotations about the turned axes: 57 (X, Y', Z''), 45 (X, Z', Y''), 54 (Y, X', Z''), 30 (Y, Z', X''), 39 (Z, X', Y''), 27 (Z, Y', X''); the solid-angle, projection and direct modes are not computed"))]
     Mode(i64),

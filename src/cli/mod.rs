@@ -28,8 +28,10 @@ mod convert;
 mod describe;
 pub mod error;
 pub(crate) mod eval;
+mod frame;
 mod input;
 mod mapped;
+pub mod notation;
 mod output;
 mod parallel;
 mod platform;
@@ -104,6 +106,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Eval(eval) => eval::run(eval),
         args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),
+        args::Command::Frame(frame) => frame::run(frame),
         args::Command::Axes(axes) => axes::run(axes),
         args::Command::Probe(probe) => probe::run(probe),
         args::Command::Axis(axis) => axis::run(axis),

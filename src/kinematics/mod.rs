@@ -3,9 +3,11 @@
 //! [`crate::rotation`] (no syntax, no I/O): the record, Paden-Kahan's
 //! subproblems, and the swivel with its two solutions, limits, `_DIR`,
 //! Hirth grid, residual rotation and zero-point shift; a table under a
-//! two-axis head, three rotary axes, split between them. The model and its
-//! sources: `reference/kinematics.md`.
+//! two-axis head, three rotary axes, split between them; a table's setup in
+//! another control's words (Aerotech A3200). The model and its sources:
+//! `reference/kinematics.md`.
 
+pub mod a3200;
 pub mod record;
 pub mod split;
 pub(crate) mod subproblem;

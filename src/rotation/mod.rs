@@ -1,6 +1,7 @@
 //! Rotation mathematics for CYCLE600: sequences, trigonometry in degrees,
 //! angles <-> matrices (one conversion at a time or many side by side),
-//! frames.
+//! frames, and the other forms a rotation is written in (quaternion, axis
+//! and angle, Gibbs vector, a post-processor's matrix, a tool-to-piece chain).
 //!
 //! Pure functions on nalgebra. No spans, no syntax types, no printing: the
 //! conventions are those of `spec/cycle600.md` sections 2-4 (right-handed
@@ -9,6 +10,7 @@
 
 pub(crate) mod batch;
 pub mod euler;
+pub mod forms;
 pub mod frame;
 pub(crate) mod lanes;
 pub mod sequence;

@@ -14,6 +14,7 @@ pub mod cycle800;
 pub mod env;
 pub mod environment;
 pub mod eval;
+pub mod frame_statements;
 pub(crate) mod frames;
 pub mod head_def;
 pub mod highlight;
