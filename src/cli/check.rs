@@ -6,7 +6,6 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::cli::analysis;
-use crate::cli::archive::Opened;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
 use crate::cli::input::{again, binary, read, Bytes, Found};
@@ -19,6 +18,7 @@ use crate::cli::render::{
 use crate::cli::walk::expand;
 use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
+use crate::document::archive::Opened;
 use crate::edit::apply;
 use crate::lint;
 use crate::semantic::swivels::OnMachine;
@@ -367,14 +367,16 @@ fn check_file(
     let resolved = workspace.for_check(&named)?;
     let deny_warnings = resolved.deny_warnings;
     let mut settings = resolved.settings;
-    let mut opened = Opened::read(&file.bytes, &file.name)?;
+    let mut opened = Opened::read(&file.bytes, &file.name)
+        .map_err(|error| CliError::archive(&file.name, error))?;
     // The archive's definitions and subprograms, which a fix leaves alone.
     let unreadable = opened.settings(&file.bytes, &mut settings);
     let mut outcomes = outcomes(&opened, &file.bytes, &settings);
     if let Some(target) = fix_target {
         if let Some(fixed) = fix(&target, &opened, &file.bytes, &outcomes, args.unsafe_fixes)? {
             file.bytes = Bytes::Read(fixed);
-            opened = Opened::read(&file.bytes, &file.name)?;
+            opened = Opened::read(&file.bytes, &file.name)
+                .map_err(|error| CliError::archive(&file.name, error))?;
             outcomes = self::outcomes(&opened, &file.bytes, &settings);
         }
     }

@@ -158,3 +158,13 @@ pub enum CliError {
     #[diagnostic(code(sinuprep::write))]
     Write(#[from] std::io::Error),
 }
+
+impl CliError {
+    /// The archive `name` that cannot be read.
+    pub fn archive(name: &str, error: crate::archive::ArchiveError) -> Self {
+        CliError::Archive {
+            name: name.to_string(),
+            error,
+        }
+    }
+}

@@ -2,7 +2,6 @@
 //! a user can check the numbers before the program goes to the control.
 
 use crate::cli::analysis;
-use crate::cli::archive::Opened;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
@@ -11,6 +10,7 @@ use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::walk::expand;
 use crate::cli::{write_stdout, ExitStatus};
+use crate::document::archive::Opened;
 use crate::emit::cycle600::{code, Options};
 use crate::emit::number::format;
 use crate::kinematics::{Record, Swivel};
@@ -109,7 +109,8 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
     let resolved = workspace.for_rewrite(path)?;
     let machine = workspace.machine(&resolved.config)?;
     let mut settings = resolved.settings;
-    let opened = Opened::read(&file.bytes, &file.name)?;
+    let opened = Opened::read(&file.bytes, &file.name)
+        .map_err(|error| CliError::archive(&file.name, error))?;
     opened.settings(&file.bytes, &mut settings);
     let options = &settings.emit;
     let mut evaluated = Evaluated {

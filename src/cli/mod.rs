@@ -19,7 +19,6 @@ macro_rules! tellln {
 }
 
 mod analysis;
-mod archive;
 pub mod args;
 mod axes;
 mod axis;

@@ -31,26 +31,7 @@ pub struct FileReport<'a> {
     pub diagnostics: &'a [Diagnostic],
 }
 
-/// A file's or member's name as text output prints it: its control
-/// characters escaped as Rust writes them (`\n`, `\u{1b}`), so that a
-/// name holding a line break cannot print a line of its own (which GitHub
-/// Actions or a problem matcher would read as a finding) and one holding an
-/// escape sequence cannot drive the terminal. Every text format and message
-/// naming a file goes through it; JSON and SARIF escape them as JSON does.
-pub fn printable(name: &str) -> std::borrow::Cow<'_, str> {
-    if !name.chars().any(char::is_control) {
-        return std::borrow::Cow::Borrowed(name);
-    }
-    let mut out = String::with_capacity(name.len() + 8);
-    for c in name.chars() {
-        if c.is_control() {
-            out.extend(c.escape_debug());
-        } else {
-            out.push(c);
-        }
-    }
-    std::borrow::Cow::Owned(out)
-}
+pub use crate::document::printable;
 
 /// `path:line:col: severity[CODE] message`, one per line.
 pub fn short(report: &FileReport, out: &mut String) {

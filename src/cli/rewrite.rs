@@ -10,7 +10,6 @@ use std::sync::Arc;
 
 use crate::archive::Form;
 use crate::cli::analysis;
-use crate::cli::archive::Opened;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
@@ -19,6 +18,7 @@ use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::walk::expand;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
+use crate::document::archive::Opened;
 use crate::emit::{diff, write_applied};
 use crate::semantic::swivels::OnMachine;
 use crate::workspace::{Given, Workspace};
@@ -144,7 +144,8 @@ fn rewrite_file(
     settings.machine = workspace.machine(&resolved.config)?;
     settings.emit.keep_original = !args.no_original;
     settings.emit.inline_results = args.inline_results;
-    let opened = Opened::read(&file.bytes, &file.name)?;
+    let opened = Opened::read(&file.bytes, &file.name)
+        .map_err(|error| CliError::archive(&file.name, error))?;
     opened.settings(&file.bytes, &mut settings);
     let mut outcome = Outcome {
         status: ExitStatus::Success,

@@ -2,6 +2,7 @@
 //! writes for it out. The command line and an editor's server call these,
 //! so both report the same findings from the same analysis.
 
+pub mod archive;
 pub mod held;
 pub mod text;
 
@@ -126,6 +127,27 @@ impl<'src> Document<'src> {
             diagnostics,
         }
     }
+}
+
+/// A file's or member's name as text output prints it: its control
+/// characters escaped as Rust writes them (`\n`, `\u{1b}`), so that a
+/// name holding a line break cannot print a line of its own (which GitHub
+/// Actions or a problem matcher would read as a finding) and one holding an
+/// escape sequence cannot drive the terminal. Every text format and message
+/// naming a file goes through it; JSON and SARIF escape them as JSON does.
+pub fn printable(name: &str) -> std::borrow::Cow<'_, str> {
+    if !name.chars().any(char::is_control) {
+        return std::borrow::Cow::Borrowed(name);
+    }
+    let mut out = String::with_capacity(name.len() + 8);
+    for c in name.chars() {
+        if c.is_control() {
+            out.extend(c.escape_debug());
+        } else {
+            out.push(c);
+        }
+    }
+    std::borrow::Cow::Owned(out)
 }
 
 /// Whether `source` may define a macro of its own (`DEFINE`, in capitals

@@ -6,9 +6,8 @@
 use std::sync::Arc;
 
 use crate::archive::{self, Archive, MemberKind};
-use crate::cli::error::CliError;
-use crate::cli::render::printable;
 use crate::diagnostic::{Diagnostic, Fix};
+use crate::document::printable;
 use crate::document::Document;
 use crate::lint::Settings;
 use crate::semantic::environment::{holds_machine_data, Environment};
@@ -48,14 +47,8 @@ pub struct Unreadable {
 impl Opened {
     /// `bytes`, named `name`: an archive that cannot be read is an error
     /// naming the member and the offset, before anything is done with it.
-    pub fn read(bytes: &[u8], name: &str) -> Result<Self, CliError> {
-        let archive =
-            archive::read(bytes, name)
-                .transpose()
-                .map_err(|error| CliError::Archive {
-                    name: name.to_string(),
-                    error,
-                })?;
+    pub fn read(bytes: &[u8], name: &str) -> Result<Self, archive::ArchiveError> {
+        let archive = archive::read(bytes, name).transpose()?;
         let kind = match archive {
             Some(_) => ProgramKind::Main,
             None => program_kind(Some(name), bytes),
