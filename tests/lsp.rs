@@ -620,3 +620,32 @@ fn an_open_definition_file_applies_before_it_is_saved() {
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An archive is checked as `check` checks it: each program with what the
+/// archive gives it (its macros here), its findings placed in the archive,
+/// named by the member; not as one program (where the macros' member would
+/// read as a program without its end, and the DEF as coming too late).
+#[test]
+fn an_archive_is_checked_program_by_program() {
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/archive");
+    let (mut client, _) = Client::start(json!({}));
+    let read = |name: &str| {
+        let bytes = std::fs::read(fixtures.join(name)).expect("fixture");
+        String::from_utf8(bytes).expect("text archive")
+    };
+    let macros = format!("file://{}", fixtures.join("MACROS.ARC").display());
+    let found = client.open(&macros, &read("MACROS.ARC"));
+    assert_eq!(codes(&found), Vec::<&str>::new(), "{found:?}");
+    let shop = format!("file://{}", fixtures.join("SHOP.ARC").display());
+    let found = client.open(&shop, &read("SHOP.ARC"));
+    assert_eq!(codes(&found), ["N022"], "{found:?}");
+    assert_eq!(
+        found[0]["range"]["start"],
+        json!({ "line": 57, "character": 7 })
+    );
+    assert!(found[0]["message"]
+        .as_str()
+        .expect("message")
+        .starts_with("PART_MPF: "));
+    client.stop();
+}

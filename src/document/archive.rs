@@ -241,3 +241,36 @@ impl Opened {
         unreadable
     }
 }
+
+/// The analysis of an archive (`name`, `source`) as an editor shows it: each
+/// program checked as `check` checks it, with what the archive gives it,
+/// its findings placed in the archive; the model and the walk of the whole
+/// text answer the questions about names. `None` for a file that is no
+/// archive, or one that cannot be read as one (it is a program then).
+pub fn analyze<'src>(
+    name: &str,
+    source: &'src [u8],
+    settings: &Settings,
+) -> Option<crate::lint::Analyzed<'src>> {
+    let opened = Opened::read(source, name).ok()?;
+    opened.archive.as_ref()?;
+    let mut settings = settings.clone();
+    let mut findings = Vec::new();
+    for unreadable in opened.settings(source, &mut settings) {
+        findings.extend(opened.in_archive(source, unreadable.member, unreadable.diagnostics));
+    }
+    for program in opened.programs(source) {
+        let analyzed = program.document.analyze(&settings);
+        let member = program.member?;
+        findings.extend(opened.in_archive(source, member, analyzed.findings));
+    }
+    findings.sort_by_key(|found| (found.span.start, found.code));
+    let (model, walk) = super::model_and_walk(source, ProgramKind::Main, &settings);
+    Some(crate::lint::Analyzed {
+        model,
+        walk,
+        findings,
+        unresolved_calls: Vec::new(),
+        names_as_operators: 0,
+    })
+}

@@ -72,11 +72,13 @@ impl Held {
     ) -> R {
         self.with_dependent(|text, lazy| {
             let analyzed = lazy.analyzed.get_or_init(|| {
-                // As `Document::analyze`, the name borrowed for no longer
-                // than the analysis runs.
+                // As `Document::analyze` (each program of an archive), the
+                // name borrowed for no longer than the analysis runs.
                 let source = text.bytes();
-                let kind = crate::syntax::program_kind(Some(name), source);
-                crate::lint::analyze_program(source, name, kind, settings)
+                super::archive::analyze(name, source, settings).unwrap_or_else(|| {
+                    let kind = crate::syntax::program_kind(Some(name), source);
+                    crate::lint::analyze_program(source, name, kind, settings)
+                })
             });
             answer(Analysis {
                 text,

@@ -75,11 +75,7 @@ impl<'src> Document<'src> {
     /// never names CYCLE600), without the rules: what the questions about
     /// names and calls read (an editor's hover, definition, symbols).
     pub fn model_and_walk(&self, settings: &Settings) -> (Model<'src>, Option<Analysis>) {
-        let macros = settings.environment.expansions.clone();
-        let model = Model::build_with(self.source, self.kind, macros);
-        let walk = crate::semantic::mentions_cycle600(self.source)
-            .then(|| analyze(&model, &settings.supplied, settings.heads.as_ref()));
-        (model, walk)
+        model_and_walk(self.source, self.kind, settings)
     }
 
     /// The CYCLE600 calls rewritten as `settings.emit` asks, with the
@@ -148,6 +144,19 @@ pub fn printable(name: &str) -> std::borrow::Cow<'_, str> {
         }
     }
     std::borrow::Cow::Owned(out)
+}
+
+/// [`Document::model_and_walk`] of `source`, read as a program of `kind`.
+pub(crate) fn model_and_walk<'src>(
+    source: &'src [u8],
+    kind: ProgramKind,
+    settings: &Settings,
+) -> (Model<'src>, Option<Analysis>) {
+    let macros = settings.environment.expansions.clone();
+    let model = Model::build_with(source, kind, macros);
+    let walk = crate::semantic::mentions_cycle600(source)
+        .then(|| analyze(&model, &settings.supplied, settings.heads.as_ref()));
+    (model, walk)
 }
 
 /// Whether `source` may define a macro of its own (`DEFINE`, in capitals
