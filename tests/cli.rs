@@ -1823,6 +1823,42 @@ fn per_file_ignores_leave_out_rules_in_the_files_they_match() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `--force-exclude` (or `force-exclude = true`) leaves out a file named on
+/// the command line that `exclude` matches, or that lies in a folder it
+/// matches, as pre-commit passes every changed file; by default a file
+/// named is taken.
+#[test]
+fn force_exclude_leaves_out_files_named_that_exclude_matches() {
+    let dir = scratch("force-exclude");
+    std::fs::create_dir_all(dir.join("old")).expect("dir");
+    for path in ["old/P.MPF", "Q.MPF"] {
+        std::fs::write(dir.join(path), "GOTOF NOWHERE\nM30\n").expect("write");
+    }
+    std::fs::write(dir.join("sinuprep.toml"), "exclude = [\"old\"]\n").expect("config");
+    let old = dir.join("old").join("P.MPF");
+    let (old, q) = (old.to_str().expect("utf-8"), dir.join("Q.MPF"));
+    let q = q.to_str().expect("utf-8");
+    let output = run(&["check", "--format", "short", old, q], b"");
+    assert_exit(&output, 1);
+    assert!(stdout(&output).contains("P.MPF"), "{}", stdout(&output));
+    let output = run(
+        &["check", "--format", "short", "--force-exclude", old, q],
+        b"",
+    );
+    assert_exit(&output, 1);
+    let (out, stderr) = (stdout(&output), String::from_utf8_lossy(&output.stderr));
+    assert!(!out.contains("P.MPF") && out.contains("Q.MPF"), "{out}");
+    assert!(stderr.contains("is excluded (force-exclude)"), "{stderr}");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "exclude = [\"old\"]\nforce-exclude = true\n",
+    )
+    .expect("config");
+    let output = run(&["check", "--format", "short", old], b"");
+    assert_exit(&output, 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `X,Y,Z` of a point, each number in full precision.
 fn xyz(p: nalgebra::Point3<f64>) -> String {
     format!("{},{},{}", p.x, p.y, p.z)

@@ -258,6 +258,9 @@ pub struct WalkArgs {
     /// Walk into hidden folders and take hidden files (names beginning with `.`).
     #[arg(long)]
     pub hidden: bool,
+    /// Leave out a file named on the command line when the exclude patterns match it or a folder it lies in, as a walk does (for tools that pass every changed file, as pre-commit does; also `force-exclude = true` in sinuprep.toml).
+    #[arg(long)]
+    pub force_exclude: bool,
 }
 
 impl WalkArgs {
@@ -285,6 +288,7 @@ impl WalkArgs {
                 (_, true) => Some(false),
                 _ => None,
             },
+            force_exclude: self.force_exclude.then_some(true),
         }
     }
 }

@@ -87,11 +87,29 @@ pub fn expand(paths: &[PathBuf], walk: &Walk) -> Result<Vec<Result<Found, CliErr
                 let name = printable(&path.display().to_string()).into_owned();
                 tellln!("note: {name} holds no program{why}\n  help: {help}");
             }
+        } else if excluded_when_named(path, walk)? {
+            let name = printable(&path.display().to_string()).into_owned();
+            tellln!("note: {name} is excluded (force-exclude): not checked");
         } else if first_time(path, &mut seen) {
             out.push(Ok(Found::named(path.clone())));
         }
     }
     Ok(out)
+}
+
+/// Whether the file `path`, named on the command line, is left out:
+/// `force-exclude` is on for its folder's settings, and `exclude` matches it
+/// or a folder it lies in. Standard input is never left out.
+fn excluded_when_named(path: &Path, walk: &Walk) -> Result<bool, CliError> {
+    if path == Path::new("-") {
+        return Ok(false);
+    }
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    let patterns = walk.workspace.patterns(dir)?;
+    Ok(patterns.force_exclude && patterns.excludes_named(&canonical(path)))
 }
 
 /// What a walk left out, counted for the message of a folder that yields

@@ -58,6 +58,11 @@ pub struct Config {
     /// Whether a walk leaves out what `.gitignore`, `.ignore` and git's
     /// exclude files ignore [default: true].
     pub respect_gitignore: Option<bool>,
+    /// Whether a file named on the command line is left out when `exclude`
+    /// matches it (or a folder it lies in), as a walk leaves it out: for
+    /// tools that pass every changed file, as pre-commit does [default:
+    /// false].
+    pub force_exclude: Option<bool>,
     /// Rule codes or prefixes not reported in the files a pattern matches
     /// (`"probe/*" = ["N005"]`), over `select` and `ignore`.
     pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
@@ -149,7 +154,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 21] = [
+const KEYS: [&str; 22] = [
     "select",
     "ignore",
     "severity-min",
@@ -171,6 +176,7 @@ const KEYS: [&str; 21] = [
     "extend-exclude",
     "respect-gitignore",
     "per-file-ignores",
+    "force-exclude",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

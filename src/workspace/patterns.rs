@@ -31,6 +31,9 @@ pub struct WalkGiven {
     /// Whether `.gitignore`, `.ignore` and git's exclude files are
     /// respected, over the file's `respect-gitignore` (by default they are).
     pub respect_gitignore: Option<bool>,
+    /// Whether `exclude` applies to the files named too, over the file's
+    /// `force-exclude` (by default it does not).
+    pub force_exclude: Option<bool>,
 }
 
 /// One settings file's patterns, with the command line's.
@@ -47,6 +50,7 @@ pub struct Patterns {
     /// The include patterns, for messages.
     pub included: Vec<String>,
     pub respect_gitignore: bool,
+    pub force_exclude: bool,
     /// Rule codes or prefixes by the files they are ignored in.
     per_file_ignores: Vec<(Gitignore, Vec<String>)>,
 }
@@ -101,6 +105,10 @@ impl Patterns {
                 .or(config.respect_gitignore)
                 .unwrap_or(true),
             per_file_ignores,
+            force_exclude: given
+                .force_exclude
+                .or(config.force_exclude)
+                .unwrap_or(false),
         })
     }
 
@@ -125,6 +133,15 @@ impl Patterns {
         self.exclude
             .iter()
             .any(|m| m.matched(path, is_dir).is_ignore())
+    }
+
+    /// Whether `exclude` leaves out the file at `path` (absolute), named on
+    /// the command line: it, or a folder it lies in, matches.
+    pub fn excludes_named(&self, path: &Path) -> bool {
+        self.exclude.iter().any(|m| {
+            // The matcher reads only paths below its own root.
+            path.starts_with(m.path()) && m.matched_path_or_any_parents(path, false).is_ignore()
+        })
     }
 
     /// The rule codes and prefixes `per-file-ignores` ignores in the program
