@@ -987,3 +987,41 @@ fn include_and_exclude_say_what_a_walk_takes_relative_to_their_settings_file() {
     assert_eq!(reported(&output), ["p/A.MPF", "p/x/draft/D.MPF"]);
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// An in-place write on Windows keeps the hidden, system, archive and
+/// not-indexed attributes of the file it replaces, as it keeps read-only.
+/// Where the file system cannot hold the hidden attribute (Wine without
+/// extended attributes), there is nothing to keep, and the test says so.
+#[test]
+#[cfg(windows)]
+fn an_in_place_write_keeps_a_hidden_files_attributes() {
+    use std::io::Write as _;
+    use std::os::windows::fs::{MetadataExt, OpenOptionsExt};
+    const HIDDEN: u32 = 0x2;
+    let dir = scratch("files-windows-hidden");
+    let repo = support::repo();
+    let original = fs::read(repo.join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    fs::copy(repo.join("samples/HEAD_DEF.SPF"), dir.join("HEAD_DEF.SPF")).expect("heads");
+    let program = dir.join("PART.MPF");
+    let mut file = fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .attributes(HIDDEN)
+        .open(&program)
+        .expect("a hidden program");
+    file.write_all(&original).expect("write");
+    drop(file);
+    let hidden = |path: &std::path::Path| {
+        fs::metadata(path).expect("metadata").file_attributes() & HIDDEN != 0
+    };
+    if !hidden(&program) {
+        eprintln!("this file system keeps no hidden attribute: nothing to keep");
+        return;
+    }
+    let name = program.to_str().expect("utf-8");
+    let output = run_in(&repo, &["rewrite", "--in-place", "--no-backup", name]);
+    assert_exit(&output, 0);
+    assert_ne!(fs::read(&program).expect("read"), original, "rewritten");
+    assert!(hidden(&program), "the rewritten file is still hidden");
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -118,7 +118,7 @@ fn replace(
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     remove_stale_temporaries(&dir, &name);
-    let (mut file, mut temporary) = Temporary::create(&dir, &name, like.is_some())?;
+    let (mut file, mut temporary) = Temporary::create(&dir, &name, like)?;
     let result = (|| {
         write_buffered(&mut file, write)?;
         file.sync_all()?;
@@ -153,12 +153,16 @@ enum Temporary {
 impl Temporary {
     /// A nameless file where the platform and the file system allow, else a
     /// named one.
-    fn create(dir: &Path, name: &str, private: bool) -> std::io::Result<(File, Temporary)> {
+    fn create(
+        dir: &Path,
+        name: &str,
+        replaces: Option<&Metadata>,
+    ) -> std::io::Result<(File, Temporary)> {
         #[cfg(target_os = "linux")]
-        if let Some(file) = nameless::create(dir, private)? {
+        if let Some(file) = nameless::create(dir, replaces.is_some())? {
             return Ok((file, Temporary::Nameless));
         }
-        let (file, path) = create_temporary(dir, name, private)?;
+        let (file, path) = create_temporary(dir, name, replaces)?;
         Ok((file, Temporary::Named(path)))
     }
 
@@ -280,13 +284,17 @@ const TEMPORARY_SUFFIX: &str = ".tmp";
 /// A new temporary file beside the target, under a name nobody can guess,
 /// created exclusively, and locked for as long as this run holds it. Where
 /// it replaces a file it starts readable by its owner only, and is given the
-/// file's mode once written; a new file gets the usual mode (0666 less the
-/// umask).
-fn create_temporary(dir: &Path, name: &str, private: bool) -> std::io::Result<(File, PathBuf)> {
+/// file's mode once written (on Windows, its attributes from the start); a
+/// new file gets the usual mode (0666 less the umask).
+fn create_temporary(
+    dir: &Path,
+    name: &str,
+    replaces: Option<&Metadata>,
+) -> std::io::Result<(File, PathBuf)> {
     let prefix = temporary_prefix(name);
     for _ in 0..64 {
         let path = dir.join(format!("{prefix}{:016x}{TEMPORARY_SUFFIX}", random()));
-        let file = match crate::cli::platform::new_file(private).open(&path) {
+        let file = match crate::cli::platform::new_file(replaces).open(&path) {
             Ok(file) => file,
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => return Err(e),

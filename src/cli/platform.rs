@@ -3,7 +3,8 @@
 //! temporary file nobody else reads, the rename that replaces a file, and
 //! the file behind standard input.
 //! Unix (Linux, macOS) keeps all of it; Windows has no owner, group or mode
-//! bits to keep (the read-only attribute is kept), and its identity of a
+//! bits to keep (the read-only, hidden, system, archive and not-indexed
+//! attributes are kept; alternate data streams are not), and its identity of a
 //! file is not in the standard library's stable API, so a file met twice
 //! there (through a link the walk was asked to follow) is read twice.
 
@@ -36,21 +37,35 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
     }
 }
 
-/// Options for a new file, created exclusively: readable by its owner only
-/// where `private` (the mode of the file it replaces is given once it is
-/// written), else with the usual mode (0666 less the umask).
-pub fn new_file(private: bool) -> OpenOptions {
+/// Options for a new file, created exclusively. One that `replaces` a file
+/// is readable by its owner only on Unix (the mode of the file it replaces
+/// is given once it is written), and has its hidden, system, archive and
+/// not-indexed attributes from the start on Windows (where no call of the
+/// standard library sets them later); a new file has the usual mode (0666
+/// less the umask).
+pub fn new_file(replaces: Option<&Metadata>) -> OpenOptions {
     let mut options = OpenOptions::new();
     options.write(true).create_new(true);
     #[cfg(unix)]
     {
         use std::os::unix::fs::OpenOptionsExt;
-        options.mode(if private { 0o600 } else { 0o666 });
+        options.mode(if replaces.is_some() { 0o600 } else { 0o666 });
     }
-    #[cfg(not(unix))]
-    let _ = private;
+    #[cfg(windows)]
+    if let Some(like) = replaces {
+        use std::os::windows::fs::{MetadataExt, OpenOptionsExt};
+        options.attributes(like.file_attributes() & KEPT_ATTRIBUTES);
+    }
+    #[cfg(not(any(unix, windows)))]
+    let _ = replaces;
     options
 }
+
+/// The attributes a replaced file keeps on Windows: hidden (2), system (4),
+/// archive (0x20), not content-indexed (0x2000). Read-only is given once the
+/// file is written ([`keep_owner_and_mode`]).
+#[cfg(windows)]
+pub const KEPT_ATTRIBUTES: u32 = 0x2 | 0x4 | 0x20 | 0x2000;
 
 /// A new file at `path`, readable and writable by this process only, whose
 /// name is gone once the caller holds it: removed at once on Unix, deleted
