@@ -649,3 +649,26 @@ fn an_archive_is_checked_program_by_program() {
         .starts_with("PART_MPF: "));
     client.stop();
 }
+
+/// A hover on a G or M function says what it does, in the Programming
+/// Manual's terms; a machine builder's M function is not guessed at.
+#[test]
+fn a_g_or_m_function_hover_says_what_it_does() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, PART);
+    let hover = client.request("textDocument/hover", at(URI, 3, 1));
+    assert_eq!(
+        hover["contents"]["value"],
+        "G17: working plane X/Y, infeed along Z (G group 6)"
+    );
+    assert_eq!(
+        hover["range"],
+        json!({ "start": { "line": 3, "character": 0 }, "end": { "line": 3, "character": 3 } })
+    );
+    let hover = client.request("textDocument/hover", at(URI, 3, 20));
+    assert_eq!(hover["contents"]["value"], "M3: spindle clockwise");
+    client.open("untitled:COOLANT.MPF", "M8\nM30\n");
+    let hover = client.request("textDocument/hover", at("untitled:COOLANT.MPF", 0, 1));
+    assert_eq!(hover, Value::Null);
+    client.stop();
+}

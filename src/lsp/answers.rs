@@ -90,6 +90,9 @@ impl<'a, 't> Snapshot<'a, 't> {
         if let Some(hover) = self.cycle800_hover(at) {
             return Some(hover);
         }
+        if let Some(hover) = self.function_hover(at) {
+            return Some(hover);
+        }
         let found = self.uses().at(at)?;
         let text = match self.uses().definition(self.model, found) {
             Some(definition) if definition.span == found.span => {
@@ -149,6 +152,20 @@ impl<'a, 't> Snapshot<'a, 't> {
             }
         }
         Some(markdown(text, self.range(statement)))
+    }
+
+    /// On a G or M function: what it does.
+    fn function_hover(&self, at: usize) -> Option<lsp::Hover> {
+        let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
+        let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), row..row + 1);
+        let token = tokens
+            .into_iter()
+            .find(|t| t.span.start <= at && at < t.span.end.max(t.span.start + 1))?;
+        if token.class != crate::semantic::highlight::Class::Keyword {
+            return None;
+        }
+        let text = crate::semantic::functions::describe(token.span.of(self.text.bytes()))?;
+        Some(markdown(text, self.range(token.span)))
     }
 
     /// A name the program does not define: where the control finds it.

@@ -16,6 +16,7 @@ pub mod environment;
 pub mod eval;
 pub mod frame_statements;
 pub(crate) mod frames;
+pub mod functions;
 pub mod head_def;
 pub mod highlight;
 pub(crate) mod labels;
