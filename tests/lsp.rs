@@ -446,6 +446,17 @@ fn a_cycle800_hover_says_what_the_call_asks_for() {
         assert!(shown.contains(expected), "{expected}\n{shown}");
     }
     assert_eq!(hover["range"]["start"]["character"], 0);
+    // A CYCLE600 on the same machine: eval's table, and where the axes go.
+    client.open(
+        &uri,
+        "CYCLE600(0,\"HEAD_CA\",0,57,0,0,0,0,-30,0,0,0,0,0,1,39,0,0,0)\nM30\n",
+    );
+    let hover = client.request("textDocument/hover", at(&uri, 0, 3));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("MACHINE.SPF`: record 1 (HEAD_CA): C="),
+        "{shown}"
+    );
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -275,7 +275,7 @@ fn solved_json(solved: &Solved) -> serde_json::Value {
     }
 }
 
-fn swivel_text(site: &CallSite, machine: &OnMachine) -> Option<String> {
+pub(crate) fn swivel_text(site: &CallSite, machine: &OnMachine) -> Option<String> {
     Some(solved_text(&swivel(site, machine)?))
 }
 

@@ -82,10 +82,14 @@ impl<'a, 't> Snapshot<'a, 't> {
         let source = self.text.bytes();
         if let Some(site) = self.calls().find(|site| contains(site.statement, at)) {
             let table = crate::cli::eval::call_table(site, self.name, source, &self.settings.emit);
-            return Some(markdown(
-                format!("```\n{table}```"),
-                self.range(site.statement),
-            ));
+            let mut text = format!("```\n{table}```");
+            // As `eval --machine` adds: where the head's axes go.
+            let on_machine = self.settings.machine.as_ref().and_then(|machine| {
+                let positions = crate::cli::eval::swivel_text(site, machine)?;
+                Some(format!("\n\nOn `{}`: {positions}", machine.name))
+            });
+            text.extend(on_machine);
+            return Some(markdown(text, self.range(site.statement)));
         }
         if let Some(hover) = self.cycle800_hover(at) {
             return Some(hover);
