@@ -683,3 +683,35 @@ fn a_g_or_m_function_hover_says_what_it_does() {
     assert_eq!(hover, Value::Null);
     client.stop();
 }
+
+/// Workspace symbols: the names defined in every open document that hold
+/// the query, in any case.
+#[test]
+fn workspace_symbols_search_every_open_document() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open("untitled:A.MPF", "POCKET_ROUGH:\nG0 X0\nM30\n");
+    client.open(
+        "untitled:B.SPF",
+        "PROC POCKET_FINISH\nDEF REAL _DEPTH\nM17\n",
+    );
+    let found = client.request("workspace/symbol", json!({ "query": "pocket" }));
+    let names: Vec<(&str, &str)> = found
+        .as_array()
+        .expect("symbols")
+        .iter()
+        .map(|s| {
+            (
+                s["name"].as_str().expect("name"),
+                s["location"]["uri"].as_str().expect("uri"),
+            )
+        })
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("POCKET_ROUGH", "untitled:A.MPF"),
+            ("POCKET_FINISH", "untitled:B.SPF")
+        ]
+    );
+    client.stop();
+}

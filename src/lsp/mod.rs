@@ -71,6 +71,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
             work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
         })),
         inlay_hint_provider: Some(lsp::OneOf::Left(true)),
+        workspace_symbol_provider: Some(lsp::OneOf::Left(true)),
         semantic_tokens_provider: Some(
             lsp::SemanticTokensServerCapabilities::SemanticTokensOptions(
                 lsp::SemanticTokensOptions {
@@ -349,6 +350,13 @@ impl Server<'_> {
     fn answer_request(&self, request: Request) -> Result<serde_json::Value, (ErrorCode, String)> {
         use lsp::request as r;
         match request.method.as_str() {
+            r::WorkspaceSymbolRequest::METHOD => {
+                let params: lsp::WorkspaceSymbolParams = serde_json::from_value(request.params)
+                    .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
+                let symbols = self.workspace_symbols(&params.query);
+                serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(symbols))
+                    .map_err(|e| (ErrorCode::InternalError, e.to_string()))
+            }
             r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
                 Ok(s.hover(p.text_document_position_params.position))
             }),
@@ -414,6 +422,31 @@ impl Server<'_> {
                 format!("sinuprep does not answer `{method}`"),
             )),
         }
+    }
+
+    /// The symbols of every open document whose name holds `query` (any
+    /// case), in the documents' order by URI.
+    #[allow(deprecated)] // `SymbolInformation::deprecated` must still be written.
+    fn workspace_symbols(&self, query: &str) -> Vec<lsp::SymbolInformation> {
+        let query = query.to_uppercase();
+        let mut uris: Vec<&lsp::Uri> = self.documents.keys().collect();
+        uris.sort_by_key(|uri| uri.as_str());
+        let mut out = Vec::new();
+        for uri in uris {
+            let symbols = self.documents[uri].with_snapshot(self.unit, |s| s.symbols());
+            let matching = symbols
+                .into_iter()
+                .filter(|symbol| symbol.name.to_uppercase().contains(&query));
+            out.extend(matching.map(|symbol| lsp::SymbolInformation {
+                name: symbol.name,
+                kind: symbol.kind,
+                tags: None,
+                deprecated: None,
+                location: lsp::Location::new(uri.clone(), symbol.selection_range),
+                container_name: None,
+            }));
+        }
+        out
     }
 
     /// The answer to a request about one open document, or why the
