@@ -715,3 +715,34 @@ fn workspace_symbols_search_every_open_document() {
     );
     client.stop();
 }
+
+/// A large program is analysed off the main loop: a request about another
+/// document is answered while its findings are still being made, and they
+/// come after.
+#[test]
+fn a_large_program_is_analysed_while_other_requests_are_answered() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, PART);
+    let mut large = String::new();
+    for n in 0..15_000 {
+        large.push_str(&format!(
+            "LOOP{n}:\nIF R1>{n}\nR2=R2+SIN({n})*COS(R1)\nG1 X=R2 Y{n} F500\nENDIF\n"
+        ));
+    }
+    large.push_str("M30\n");
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": "untitled:LARGE.MPF", "languageId": "sinumerik",
+                                  "version": 1, "text": large } }),
+    );
+    client.send(
+        json!({ "jsonrpc": "2.0", "id": 77, "method": "textDocument/hover",
+                        "params": { "textDocument": { "uri": URI },
+                                    "position": { "line": 3, "character": 1 } } }),
+    );
+    let first = client.receive();
+    assert_eq!(first["id"], 77, "the hover is answered first: {first}");
+    let found = client.diagnostics("untitled:LARGE.MPF");
+    assert!(found.is_empty(), "{found:?}");
+    client.stop();
+}

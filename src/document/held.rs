@@ -1,8 +1,10 @@
 //! A document an editor holds open, with its analysis kept beside its text
 //! until the text or its settings change: every request about one version
-//! of the document reads one analysis, instead of parsing it again.
+//! of the document reads one analysis, instead of parsing it again. It can
+//! be shared across threads: the analysis is made by whichever asks first
+//! (a thread of its own for a large program), and the others wait for it.
 
-use std::cell::OnceCell;
+use std::sync::OnceLock;
 
 use self_cell::self_cell;
 
@@ -14,8 +16,8 @@ use crate::semantic::uses::Uses;
 /// The analysis of one version of the text, made when first asked for.
 #[derive(Default)]
 struct Lazy<'t> {
-    analyzed: OnceCell<Analyzed<'t>>,
-    uses: OnceCell<Uses>,
+    analyzed: OnceLock<Analyzed<'t>>,
+    uses: OnceLock<Uses>,
 }
 
 self_cell!(
@@ -31,7 +33,7 @@ self_cell!(
 pub struct Analysis<'a, 't> {
     pub text: &'t Text,
     pub analyzed: &'a Analyzed<'t>,
-    uses: &'a OnceCell<Uses>,
+    uses: &'a OnceLock<Uses>,
 }
 
 impl Analysis<'_, '_> {
@@ -92,6 +94,12 @@ impl Held {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_held_document_is_shared_across_threads() {
+        fn shared<T: Send + Sync>() {}
+        shared::<Held>();
+    }
 
     fn findings(held: &Held, settings: &Settings) -> (usize, Vec<&'static str>) {
         held.with_analysis("A.MPF", settings, |analysis| {

@@ -9,6 +9,7 @@ use std::ops::Range;
 
 use crate::span::{char_len, is_utf8, line_end, next_line_start, width, ColumnUnit, Position};
 
+#[derive(Clone)]
 pub struct Text {
     bytes: Vec<u8>,
     /// Where each line starts; the first is 0. A line ends at LF, CRLF or a

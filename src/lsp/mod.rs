@@ -12,9 +12,11 @@
 mod answers;
 mod convert;
 mod transport;
+mod worker;
 
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::Arc;
 
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
 use lsp_types as lsp;
@@ -106,7 +108,19 @@ fn serve(connection: &Connection) -> Result<(), String> {
         workspace: Workspace::default(),
         unit,
         pull,
+        worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),
     };
+    let served = serve_messages(&mut server);
+    // What is queued is published before the connection closes.
+    if let Some(worker) = server.worker.take() {
+        worker.finish();
+    }
+    served
+}
+
+/// The messages of the session, until `exit` or the end of the input.
+fn serve_messages(server: &mut Server) -> Result<(), String> {
+    let connection = server.connection;
     // After `shutdown` the protocol allows only `exit`; a client that
     // closes the connection instead has still ended the session in order.
     let mut shut_down = false;
@@ -142,16 +156,24 @@ fn serve(connection: &Connection) -> Result<(), String> {
     }
 }
 
-/// A document the client has open.
+/// A document the client has open; shared with the worker that publishes
+/// its findings.
+#[derive(Clone)]
 struct Open {
     /// Its text, and the analysis every request about this version reads.
-    held: Held,
+    held: Arc<Held>,
     /// The path or URI its settings are found by and its findings named by.
-    name: String,
-    settings: Settings,
+    name: Arc<str>,
+    settings: Arc<Settings>,
 }
 
 impl Open {
+    /// The held document, to be changed: the worker's copy, if it still
+    /// reads one, keeps the old text.
+    fn take_held(held: Arc<Held>) -> Held {
+        Arc::try_unwrap(held).unwrap_or_else(|shared| Held::open(shared.text().clone()))
+    }
+
     /// Answers from this version's analysis, made by the first question.
     fn with_snapshot<R>(&self, unit: ColumnUnit, answer: impl FnOnce(&Snapshot) -> R) -> R {
         self.held
@@ -170,6 +192,9 @@ struct Server<'c> {
     unit: ColumnUnit,
     /// The client pulls diagnostics (`textDocument/diagnostic`).
     pull: bool,
+    /// Publishes the findings of the documents that change (none for a
+    /// client that pulls them).
+    worker: Option<worker::Worker>,
 }
 
 impl Server<'_> {
@@ -201,8 +226,14 @@ impl Server<'_> {
                 if let Some(params) = extract::<lsp::DidCloseTextDocumentParams>(notification) {
                     let uri = params.text_document.uri;
                     self.documents.remove(&uri);
-                    if !self.pull {
-                        self.send_diagnostics(uri.clone(), Vec::new());
+                    // Its findings cleared, after any still queued.
+                    if let Some(worker) = &self.worker {
+                        let (uri, unit) = (uri.clone(), self.unit);
+                        worker.publish(worker::Job {
+                            uri,
+                            open: None,
+                            unit,
+                        });
                     }
                     // Its unsaved text no longer counts: the file does.
                     if self.is_read_by_settings(&uri) {
@@ -240,7 +271,7 @@ impl Server<'_> {
         let open: Vec<(lsp::Uri, Held)> = self
             .documents
             .drain()
-            .map(|(uri, open)| (uri, open.held.forget()))
+            .map(|(uri, open)| (uri, Open::take_held(open.held).forget()))
             .collect();
         for (uri, held) in open {
             self.open(uri, held);
@@ -258,9 +289,9 @@ impl Server<'_> {
             |p| p.to_string_lossy().into_owned(),
         );
         let open = Open {
-            held,
-            name,
-            settings,
+            held: Arc::new(held),
+            name: name.into(),
+            settings: Arc::new(settings),
         };
         self.documents.insert(uri.clone(), open);
         self.publish(uri);
@@ -288,7 +319,7 @@ impl Server<'_> {
             return;
         };
         let unit = self.unit;
-        open.held = open.held.edit(|text| {
+        open.held = Arc::new(Open::take_held(open.held).edit(|text| {
             for change in params.content_changes {
                 match change.range {
                     Some(range) => {
@@ -298,7 +329,7 @@ impl Server<'_> {
                     None => *text = Text::new(change.text.into_bytes()),
                 }
             }
-        });
+        }));
         self.documents.insert(uri.clone(), open);
         self.publish(uri.clone());
         // An edit of a settings file applies to every open document as it
@@ -317,14 +348,14 @@ impl Server<'_> {
         let Some(open) = self.documents.get(&uri) else {
             return;
         };
-        let diagnostics = open.with_snapshot(self.unit, |snapshot| snapshot.diagnostics());
-        self.send_diagnostics(uri, diagnostics);
-    }
-
-    fn send_diagnostics(&self, uri: lsp::Uri, diagnostics: Vec<lsp::Diagnostic>) {
-        let params = lsp::PublishDiagnosticsParams::new(uri, diagnostics, None);
-        let method = lsp::notification::PublishDiagnostics::METHOD.to_string();
-        self.send(Message::Notification(Notification::new(method, params)));
+        if let Some(worker) = &self.worker {
+            let (open, unit) = (open.clone(), self.unit);
+            worker.publish(worker::Job {
+                uri,
+                open: Some(open),
+                unit,
+            });
+        }
     }
 
     fn request(&mut self, request: Request) {

@@ -13,6 +13,9 @@ pub struct Client {
     stdin: ChildStdin,
     stdout: BufReader<ChildStdout>,
     next_id: u64,
+    /// Messages received while another was awaited: the server publishes
+    /// findings from a thread of its own, in between its answers.
+    pending: std::collections::VecDeque<Value>,
 }
 
 impl Client {
@@ -33,6 +36,7 @@ impl Client {
             stdin,
             stdout,
             next_id: 0,
+            pending: std::collections::VecDeque::new(),
         };
         let initialized = client.request("initialize", json!({ "capabilities": capabilities }));
         client.notify("initialized", json!({}));
@@ -76,29 +80,37 @@ impl Client {
         self.next_id += 1;
         let id = self.next_id;
         self.send(json!({ "jsonrpc": "2.0", "id": id, "method": method, "params": params }));
-        loop {
-            let message = self.receive();
-            if message["id"] == json!(id) {
-                return match message.get("error") {
-                    Some(error) => json!({ "error": error }),
-                    None => message["result"].clone(),
-                };
-            }
+        let message = self.next(|message| message["id"] == json!(id));
+        match message.get("error") {
+            Some(error) => json!({ "error": error }),
+            None => message["result"].clone(),
         }
     }
 
     /// The next diagnostics published for `uri`.
     pub fn diagnostics(&mut self, uri: &str) -> Vec<Value> {
+        let message = self.next(|message| {
+            message["method"] == "textDocument/publishDiagnostics"
+                && message["params"]["uri"] == uri
+        });
+        message["params"]["diagnostics"]
+            .as_array()
+            .expect("a list")
+            .clone()
+    }
+
+    /// The first message, received or kept from before, that `wanted`
+    /// takes; the others are kept for later.
+    pub fn next(&mut self, wanted: impl Fn(&Value) -> bool) -> Value {
+        if let Some(at) = self.pending.iter().position(&wanted) {
+            return self.pending.remove(at).expect("found");
+        }
         loop {
             let message = self.receive();
-            if message["method"] == "textDocument/publishDiagnostics"
-                && message["params"]["uri"] == uri
-            {
-                return message["params"]["diagnostics"]
-                    .as_array()
-                    .expect("a list")
-                    .clone();
+            if wanted(&message) {
+                return message;
             }
+            self.pending.push_back(message);
         }
     }
 
