@@ -61,6 +61,8 @@ pub struct Config {
     /// Rule codes or prefixes not reported in the files a pattern matches
     /// (`"probe/*" = ["N005"]`), over `select` and `ignore`.
     pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
+    /// `[format]`: how `sinuprep fmt` lays programs out.
+    pub format: Option<crate::format::FormatConfig>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -137,7 +139,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 21] = [
+const KEYS: [&str; 22] = [
     "select",
     "ignore",
     "severity-min",
@@ -159,6 +161,7 @@ const KEYS: [&str; 21] = [
     "extend-exclude",
     "respect-gitignore",
     "per-file-ignores",
+    "format",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

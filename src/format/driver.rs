@@ -1,0 +1,289 @@
+//! One program formatted: the model built once, then each line in order
+//! laid out at its level, with its words' case and the renumbering's
+//! replacements, unless it is one to leave; blank lines in a row limited.
+//! The result is a list of edits, one per changed line, so that an
+//! archive's member is formatted like any file and a diff names lines.
+
+use std::collections::HashSet;
+
+use crate::diagnostic::Diagnostic;
+use crate::edit::Edit;
+use crate::format::case::language_words;
+use crate::format::layout::{plain_prefix, prefix_end, write, Depths, LineParts, Words};
+use crate::format::protect::{is_data_file, mentions_hmi, Hmi};
+use crate::format::renumber::{self, Plan};
+use crate::format::{Case, Settings};
+use crate::semantic::addresses::{self, is_end_word};
+use crate::semantic::Model;
+use crate::span::Span;
+use crate::syntax::lines::raw_lines;
+use crate::syntax::tree::{Block, LineKind, StatementKind};
+use crate::syntax::ProgramKind;
+
+/// What the formatter says about a file besides its edits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Note {
+    /// Where it applies (an empty span at 0 for the whole file).
+    pub span: Span,
+    pub message: String,
+    /// Something asked for was not done (`--renumber` refused).
+    pub refused: bool,
+}
+
+/// A program formatted.
+#[derive(Debug, Default)]
+pub struct Formatted {
+    /// One edit a changed line (or a blank line removed), in order.
+    pub edits: Vec<Edit>,
+    /// Syntax errors: when there are any, the program is left as it is.
+    pub syntax: Vec<Diagnostic>,
+    pub notes: Vec<Note>,
+    /// Blocks numbered again.
+    pub renumbered: usize,
+}
+
+/// Formats `source`, the program `name` (a path or an archive's member
+/// name, whose suffix tells a definition file).
+pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings) -> Formatted {
+    let mut formatted = Formatted::default();
+    if is_data_file(name) {
+        formatted.notes.push(Note {
+            span: Span::new(0, 0),
+            message: "a definition file: its data are left as they are".to_string(),
+            refused: false,
+        });
+        return formatted;
+    }
+    let model = Model::build(source, kind);
+    if !model.syntax.is_empty() {
+        formatted.syntax = model.syntax;
+        return formatted;
+    }
+    let plan = match settings.renumber {
+        Some((start, step)) => match renumber::plan(&model, start, step) {
+            Ok(plan) => Some(plan),
+            Err(refusal) => {
+                formatted.notes.push(Note {
+                    span: refusal.span,
+                    message: format!("not renumbered: {}", refusal.message),
+                    refused: true,
+                });
+                None
+            }
+        },
+        None => None,
+    };
+    match lay_out(&model, settings, plan.as_ref()) {
+        Ok(edits) => {
+            formatted.edits = edits;
+            if let Some(plan) = plan.filter(|p| p.blocks > 0) {
+                formatted.renumbered = plan.blocks;
+                formatted.notes.push(Note {
+                    span: Span::new(0, 0),
+                    message: format!(
+                        "{} block numbers changed: a block search, an ASUB or another program's `CALL ... BLOCK ... TO` naming them is not seen here",
+                        plan.blocks
+                    ),
+                    refused: false,
+                });
+            }
+        }
+        Err(span) => {
+            formatted.notes.push(Note {
+                span,
+                message: "not renumbered: this block number or reference stands in a line left as it is (HMI region, emitted code, a macro, after the program's end)".to_string(),
+                refused: true,
+            });
+            formatted.edits = lay_out(&model, settings, None).unwrap_or_default();
+        }
+    }
+    formatted
+}
+
+/// The edits of every line; `Err` with the span of a renumbering's
+/// replacement that falls in a line left as it is.
+fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Vec<Edit>, Span> {
+    let source = model.source;
+    let structure = model.structure();
+    let mut depths = Depths::new(model);
+    let mut hmi = mentions_hmi(source).then(Hmi::default);
+    let macro_lines: Vec<Span> = model.macro_uses.iter().map(|u| u.span).collect();
+    let mut next_macro = 0;
+    let replacements = plan.map_or(&[][..], |p| &p.replacements[..]);
+    let mut next_replacement = 0;
+    let mut end = ProgramEnd::new(model);
+    let mut edits = Vec::new();
+    let mut out = Vec::new();
+    let mut words = Vec::new();
+    let mut blank_run = 0;
+    for (row, raw) in raw_lines(source).enumerate() {
+        let content = raw.content;
+        let depth = depths.at(row);
+        let first = next_replacement;
+        while replacements
+            .get(next_replacement)
+            .is_some_and(|(span, _)| span.start < content.end.max(content.start + 1))
+        {
+            next_replacement += 1;
+        }
+        let own = &replacements[first..next_replacement];
+        while macro_lines
+            .get(next_macro)
+            .is_some_and(|s| s.end <= content.start)
+        {
+            next_macro += 1;
+        }
+        let uses_macro = macro_lines
+            .get(next_macro)
+            .is_some_and(|s| s.start < content.end);
+        let hmi_owns = match &mut hmi {
+            Some(hmi) => hmi.owns(content.of(source)),
+            None => false,
+        };
+        let emitted = structure.marked_call(row).is_some() || structure.is_emitted(row);
+        let plain = model.lines.is_plain(row);
+        let tree = (!plain).then(|| model.lines.line(row));
+        let block = match tree.as_deref() {
+            Some(crate::syntax::tree::Line {
+                kind: LineKind::Block(block),
+                ..
+            }) => Some(block),
+            Some(_) => None,
+            None => None,
+        };
+        let after_end = end.line(row, plain, block);
+        if !after_end {
+            end.learn(source, content, plain, block, depth);
+        }
+        if let Some(line) = tree.as_deref() {
+            if let LineKind::Header { .. } = line.kind {
+                depths.set_proc_body(false);
+            }
+        }
+        let header = !plain && block.is_none();
+        if hmi_owns || emitted || uses_macro || after_end || header {
+            if let Some((span, _)) = own.first() {
+                return Err(*span);
+            }
+            blank_run = 0;
+            continue;
+        }
+        let parts = match block {
+            None => {
+                let (prefix, _) = plain_prefix(source, content);
+                let code_end = memchr::memchr(b';', content.of(source))
+                    .map_or(content.end, |at| content.start + at);
+                LineParts {
+                    content,
+                    prefix_end: prefix,
+                    code_end,
+                    words: Words::Letters,
+                    replacements: own,
+                }
+            }
+            Some(block) => {
+                let code_end = block.comment.map_or(content.end, |c| c.start);
+                words.clear();
+                if settings.case != Case::Keep {
+                    words = language_words(source, content, code_end, block);
+                }
+                LineParts {
+                    content,
+                    prefix_end: prefix_end(block),
+                    code_end,
+                    words: Words::Spans(&words),
+                    replacements: own,
+                }
+            }
+        };
+        write(source, &parts, depth, &settings.indent, settings.case, &mut out);
+        if out.is_empty() {
+            blank_run += 1;
+            if blank_run > settings.max_blank_lines {
+                edits.push(Edit::replace(raw.full(), Vec::new()));
+                continue;
+            }
+        } else {
+            blank_run = 0;
+        }
+        if out != content.of(source) {
+            edits.push(Edit::replace(content, out.clone()));
+        }
+        if block.is_some_and(opens_proc) {
+            depths.set_proc_body(settings.indent_proc_body);
+        }
+    }
+    Ok(edits)
+}
+
+fn opens_proc(block: &Block) -> bool {
+    block
+        .statements
+        .iter()
+        .any(|s| matches!(s.kind, StatementKind::Proc(_)))
+}
+
+/// Where a main program ends (M2, M30 outside every control block): the
+/// lines after it, up to a line a jump may reach (a label, a block number
+/// a jump names) or another program (a header, a PROC), are not read by
+/// the control and stay as they are.
+struct ProgramEnd {
+    main: bool,
+    ended: bool,
+    /// Rows whose block number some jump names.
+    jumped_to: HashSet<usize>,
+}
+
+impl ProgramEnd {
+    fn new(model: &Model) -> Self {
+        let structure = model.structure();
+        Self {
+            main: model.kind == ProgramKind::Main,
+            ended: false,
+            jumped_to: structure.numbers.iter().map(|&(_, row)| row).collect(),
+        }
+    }
+
+    /// Whether line `row` stands after the end; fed every line in order.
+    fn line(&mut self, row: usize, plain: bool, block: Option<&Block>) -> bool {
+        if !self.main {
+            return false;
+        }
+        if self.ended {
+            let reachable = self.jumped_to.contains(&row)
+                || (!plain && block.is_none_or(|b| b.label.is_some() || opens_proc(b)));
+            if !reachable {
+                return true;
+            }
+            self.ended = false;
+        }
+        false
+    }
+
+    /// Learns whether the line `content` (at `depth`) ends the program.
+    fn learn(
+        &mut self,
+        source: &[u8],
+        content: Span,
+        plain: bool,
+        block: Option<&Block>,
+        depth: usize,
+    ) {
+        if !self.main || depth > 0 {
+            return;
+        }
+        let ends = match (plain, block) {
+            (true, _) => {
+                memchr::memchr2(b'M', b'm', content.of(source)).is_some()
+                    && addresses::of_plain(source, content)
+                        .iter()
+                        .any(|a| is_end_word(source, a))
+            }
+            (false, Some(block)) => addresses::of_block(source, block)
+                .iter()
+                .any(|a| is_end_word(source, a)),
+            (false, None) => false,
+        };
+        self.ended |= ends;
+    }
+}
