@@ -55,10 +55,6 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
         return formatted;
     }
     let model = Model::build(source, kind);
-    if !model.syntax.is_empty() {
-        formatted.syntax = model.syntax;
-        return formatted;
-    }
     let plan = match settings.renumber {
         Some((start, step)) => match renumber::plan(&model, start, step) {
             Ok(plan) => Some(plan),
@@ -73,9 +69,8 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
         },
         None => None,
     };
-    match lay_out(&model, settings, plan.as_ref()) {
-        Ok(edits) => {
-            formatted.edits = edits;
+    let laid = match lay_out(&model, settings, plan.as_ref()) {
+        Ok(laid) => {
             if let Some(plan) = plan.filter(|p| p.blocks > 0) {
                 formatted.renumbered = plan.blocks;
                 formatted.notes.push(Note {
@@ -87,6 +82,7 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
                     refused: false,
                 });
             }
+            laid
         }
         Err(span) => {
             formatted.notes.push(Note {
@@ -94,15 +90,36 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
                 message: "not renumbered: this block number or reference stands in a line left as it is (HMI region, emitted code, a macro, after the program's end)".to_string(),
                 refused: true,
             });
-            formatted.edits = lay_out(&model, settings, None).unwrap_or_default();
+            lay_out(&model, settings, None).unwrap_or_default()
         }
+    };
+    // An error in what the control never reads (after the end) stops
+    // nothing; any other leaves the program as it is.
+    let unread = |at: usize| {
+        let after = laid.unread.partition_point(|span| span.end <= at);
+        laid.unread.get(after).is_some_and(|span| span.start <= at)
+    };
+    if model.syntax.iter().any(|d| !unread(d.span.start)) {
+        formatted.notes.clear();
+        formatted.renumbered = 0;
+        formatted.syntax = model.syntax;
+        return formatted;
     }
+    formatted.edits = laid.edits;
     formatted
+}
+
+/// The lines' edits, and the lines after the program's end (left as they
+/// are: the control does not read them), as spans in order.
+#[derive(Default)]
+struct Laid {
+    edits: Vec<Edit>,
+    unread: Vec<Span>,
 }
 
 /// The edits of every line; `Err` with the span of a renumbering's
 /// replacement that falls in a line left as it is.
-fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Vec<Edit>, Span> {
+fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Laid, Span> {
     let source = model.source;
     let structure = model.structure();
     let mut depths = Depths::new(model);
@@ -113,6 +130,7 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Ve
     let mut next_replacement = 0;
     let mut end = ProgramEnd::new(model);
     let mut edits = Vec::new();
+    let mut unread: Vec<Span> = Vec::new();
     let mut out = Vec::new();
     let mut words = Vec::new();
     let mut blank_run = 0;
@@ -158,6 +176,12 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Ve
         if let Some(line) = tree.as_deref() {
             if let LineKind::Header { .. } = line.kind {
                 depths.set_proc_body(false);
+            }
+        }
+        if after_end {
+            match unread.last_mut() {
+                Some(last) if last.end == raw.content.start => last.end = raw.full().end,
+                _ => unread.push(raw.full()),
             }
         }
         let header = !plain && block.is_none();
@@ -213,7 +237,7 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Ve
             depths.set_proc_body(settings.indent_proc_body);
         }
     }
-    Ok(edits)
+    Ok(Laid { edits, unread })
 }
 
 fn opens_proc(block: &Block) -> bool {

@@ -2,8 +2,9 @@
 //! (blocks without a number stay without), and every reference to a block
 //! number rewritten to the new number of the block it lands on: GOTO,
 //! GOTOF, GOTOB, GOTOC and CASE targets (where each lands is the block
-//! structure's answer, the walk's), `REPEAT` ranges (searched backward from
-//! the REPEAT) and `CALL BLOCK ... TO ...` ranges of the program itself.
+//! structure's answer, the walk's) and `CALL BLOCK ... TO ...` ranges of
+//! the program itself. (`REPEAT` names labels only, as the grammar reads
+//! it: a label is never renumbered.)
 //!
 //! It refuses rather than guesses: a jump whose target is computed at run
 //! time, or that names a number no block has, stops the renumbering of the
@@ -70,7 +71,7 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
             message: "the new block numbers would overflow".to_string(),
         })?;
     }
-    // Old number -> rows, for the searches REPEAT and CALL BLOCK make.
+    // Old number -> rows, for the search CALL BLOCK makes.
     let mut rows_of: HashMap<u64, Vec<usize>> = HashMap::new();
     for &(row, old, _) in &numbered {
         rows_of.entry(old).or_default().push(row);
@@ -107,23 +108,12 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
             replacements.push((span, new_text(landing, span, "this jump")?));
         }
         for statement in &block.statements {
-            match &statement.kind {
-                StatementKind::Repeat { targets, .. } => {
-                    for target in targets {
-                        let Some(number) = n_number(target.span.of(source)) else {
-                            continue;
-                        };
-                        let span = Span::new(target.span.start + 1, target.span.end);
-                        let landing = rows_of
-                            .get(&number)
-                            .and_then(|rows| rows.iter().copied().rev().find(|&r| r < row));
-                        replacements.push((span, new_text(landing, span, "this REPEAT")?));
-                    }
-                }
-                StatementKind::IndirectCall {
-                    keyword,
-                    target: Some(target),
-                } if keyword.is(source, "CALL") => {
+            if let StatementKind::IndirectCall {
+                keyword,
+                target: Some(target),
+            } = &statement.kind
+            {
+                if keyword.is(source, "CALL") {
                     for span in own_block_range(source, *target) {
                         let number = n_number(
                             &source[span.start - 1..span.end],
@@ -139,7 +129,6 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
                         replacements.push((span, new_text(landing, span, "this CALL BLOCK")?));
                     }
                 }
-                _ => {}
             }
         }
     }
