@@ -16,6 +16,7 @@ use crate::format::{Case, Settings};
 use crate::semantic::addresses::{self, is_end_word};
 use crate::semantic::Model;
 use crate::span::Span;
+use crate::syntax::lexer::find_ignoring_case;
 use crate::syntax::lines::raw_lines;
 use crate::syntax::tree::{Block, LineKind, StatementKind};
 use crate::syntax::ProgramKind;
@@ -134,6 +135,7 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<La
     let mut out = Vec::new();
     let mut words = Vec::new();
     let mut blank_run = 0;
+    let mut emitted_run = false;
     for (row, raw) in raw_lines(source).enumerate() {
         let content = raw.content;
         let depth = depths.at(row);
@@ -158,7 +160,15 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<La
             Some(hmi) => hmi.owns(content.of(source)),
             None => false,
         };
-        let emitted = structure.marked_call(row).is_some() || structure.is_emitted(row);
+        // The `; sinuprep:` line, the frames or CYCLE800 the block
+        // structure knows sinuprep emitted under it, and the assignments of
+        // its results (`_CYC600_1=...`) the GUD form writes there.
+        let marked = structure.marked_call(row).is_some();
+        emitted_run = marked
+            || (emitted_run
+                && (structure.is_emitted(row)
+                    || find_ignoring_case(content.of(source), b"_CYC600_").is_some()));
+        let emitted = emitted_run;
         let plain = model.lines.is_plain(row);
         let tree = (!plain).then(|| model.lines.line(row));
         let block = match tree.as_deref() {

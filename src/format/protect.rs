@@ -10,8 +10,10 @@
 //!   (`;#7__DlgK contour definition begin - Don't change!` to
 //!   `;#End contour definition end - Don't change!`) are left as they are.
 //! - `; sinuprep:` lines and the blocks `rewrite` emitted under them (the
-//!   block structure knows them), and lines that use a DEFINE macro, whose
-//!   text is not what the control reads there.
+//!   frames and CYCLE800 the block structure knows, and the lines right
+//!   after it that write `_CYC600_` results), and lines that use a DEFINE
+//!   macro, whose text is not what the control reads there (the driver
+//!   follows both).
 //! - Definition files (`.DEF`, `_DEF`, GUD): data, not a program.
 //!
 //! The lines after the program's end are the driver's to leave (it knows
