@@ -9,7 +9,9 @@ use std::collections::HashSet;
 use crate::diagnostic::Diagnostic;
 use crate::edit::Edit;
 use crate::format::case::language_words;
-use crate::format::layout::{plain_prefix, prefix_end, write, Depths, LineParts, Words};
+use crate::format::layout::{
+    is_tidy_plain, plain_prefix, prefix_end, write, Depths, LineParts, Words,
+};
 use crate::format::protect::{is_data_file, mentions_hmi, Hmi};
 use crate::format::renumber::{self, Plan};
 use crate::format::{Case, Settings};
@@ -204,9 +206,15 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<La
         }
         let parts = match block {
             None => {
+                let bytes = content.of(source);
+                let code_len = memchr::memchr(b';', bytes).unwrap_or(bytes.len());
+                if depth == 0 && own.is_empty() && is_tidy_plain(bytes, code_len, settings.case) {
+                    // Not blank: a plain line has words.
+                    blank_run = 0;
+                    continue;
+                }
                 let (prefix, _) = plain_prefix(source, content);
-                let code_end = memchr::memchr(b';', content.of(source))
-                    .map_or(content.end, |at| content.start + at);
+                let code_end = content.start + code_len;
                 LineParts {
                     content,
                     prefix_end: prefix,
@@ -266,6 +274,11 @@ struct ProgramEnd {
     ended: bool,
     /// Rows whose block number some jump names.
     jumped_to: HashSet<usize>,
+    /// Where the next `M` or `m` at or after the line asked about is: a
+    /// plain line without one ends nothing, and one search over the bytes
+    /// finds them all, instead of one a line.
+    next_m: Option<usize>,
+    searched_to: usize,
 }
 
 impl ProgramEnd {
@@ -275,6 +288,8 @@ impl ProgramEnd {
             main: model.kind == ProgramKind::Main,
             ended: false,
             jumped_to: structure.numbers.iter().map(|&(_, row)| row).collect(),
+            next_m: None,
+            searched_to: 0,
         }
     }
 
@@ -308,7 +323,14 @@ impl ProgramEnd {
         }
         let ends = match (plain, block) {
             (true, _) => {
-                memchr::memchr2(b'M', b'm', content.of(source)).is_some()
+                if self.searched_to <= content.start
+                    && self.next_m.is_none_or(|at| at < content.start)
+                {
+                    self.next_m = memchr::memchr2(b'M', b'm', &source[content.start..])
+                        .map(|at| content.start + at);
+                    self.searched_to = self.next_m.unwrap_or(source.len()) + 1;
+                }
+                self.next_m.is_some_and(|at| at < content.end)
                     && addresses::of_plain(source, content)
                         .iter()
                         .any(|a| is_end_word(source, a))

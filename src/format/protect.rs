@@ -24,12 +24,19 @@ use memchr::memmem;
 /// Markers that make a line the HMI's (see the module's documentation).
 const LINE_MARKERS: [&[u8]; 5] = [b"*RO*", b"*GP*", b"*HD*", b";#SM", b"Don't change"];
 
+/// The HMI writes these after `;#7__DlgK ` and `;#End `, with "Don't
+/// change!" (which [`mentions_hmi`] looks for by its `#` and `'`).
 const CONTOUR_BEGIN: &[u8] = b"contour definition begin";
 const CONTOUR_END: &[u8] = b"contour definition end";
 
 /// Whether `source` holds any HMI marker at all: most programs hold none,
 /// and then no line is searched.
 pub fn mentions_hmi(source: &[u8]) -> bool {
+    // Every marker holds one of these, which CAM output rarely does: one
+    // pass over the bytes instead of seven.
+    if memchr::memchr3(b'*', b'#', b'\'', source).is_none() {
+        return false;
+    }
     LINE_MARKERS
         .iter()
         .chain([&CONTOUR_BEGIN, &CONTOUR_END])
@@ -61,8 +68,10 @@ impl Hmi {
     }
 }
 
+/// As the HMI writes them: in this case only, so that whether a line is
+/// the HMI's never depends on what formatting does to its case.
 fn contains(haystack: &[u8], needle: &[u8]) -> bool {
-    crate::syntax::lexer::find_ignoring_case(haystack, needle).is_some()
+    memmem::find(haystack, needle).is_some()
 }
 
 /// Whether the file named `name` holds definitions (GUD, macros, machine
