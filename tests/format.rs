@@ -137,6 +137,9 @@ fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
     let renumbered = settings.renumber.is_some();
     let (once, _) = formatted(name, source, settings);
     let (twice, _) = formatted(name, &once, settings);
+    let kind = program_kind(Some(name), source);
+    let merged = sinuprep::format::format_merged(name, source, kind, settings);
+    assert!(apply(source, &merged.edits) == once, "{name}: merged edits differ");
     assert!(
         once == twice,
         "{name}: formatting again changed it:\n{}",
@@ -145,7 +148,6 @@ fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
     // The model's reading, with the program's own macros expanded, is the
     // one the formatter goes by.
     let errors = |bytes: &[u8]| Model::build(bytes, program_kind(Some(name), bytes)).syntax.len();
-    let kind = program_kind(Some(name), source);
     if !format(name, source, kind, settings).syntax.is_empty() {
         assert!(errors(source) > 0, "{name}: refused without an error");
         assert_eq!(once, source, "{name}: a program with syntax errors changed");

@@ -20,7 +20,7 @@ use crate::cli::walk::expand;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::emit::diff;
 use crate::edit::write_applied;
-use crate::format::format;
+use crate::format::{format, format_merged};
 use crate::span::LineIndex;
 use crate::workspace::{Given, Workspace};
 
@@ -94,6 +94,8 @@ fn format_file(found: &Found, args: &FmtArgs, workspace: &Workspace) -> Result<O
     let mut findings = false;
     for program in opened.programs(&file.bytes) {
         let source = program.document.source;
+        // Merged edits for a file written whole; a diff shows lines.
+        let format = if args.diff { format } else { format_merged };
         let formatted = format(program.document.name, source, program.document.kind, &settings);
         if !formatted.syntax.is_empty() {
             findings = true;

@@ -48,6 +48,30 @@ pub struct Formatted {
 /// Formats `source`, the program `name` (a path or an archive's member
 /// name, whose suffix tells a definition file).
 pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings) -> Formatted {
+    format_with(name, source, kind, settings, false)
+}
+
+/// [`format`], the edits of neighbouring lines merged into one (with the
+/// line endings between them): the same bytes once applied, in a few large
+/// edits instead of one a line, for a file written whole (a program whose
+/// every line changes took four times its size in per-line edits). A diff
+/// or an editor's range wants [`format`]'s.
+pub fn format_merged(
+    name: &str,
+    source: &[u8],
+    kind: ProgramKind,
+    settings: &Settings,
+) -> Formatted {
+    format_with(name, source, kind, settings, true)
+}
+
+fn format_with(
+    name: &str,
+    source: &[u8],
+    kind: ProgramKind,
+    settings: &Settings,
+    merge: bool,
+) -> Formatted {
     let mut formatted = Formatted::default();
     if is_data_file(name) {
         formatted.notes.push(Note {
@@ -72,7 +96,7 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
         },
         None => None,
     };
-    let laid = match lay_out(&model, settings, plan.as_ref()) {
+    let laid = match lay_out(&model, settings, plan.as_ref(), merge) {
         Ok(laid) => {
             if let Some(plan) = plan.filter(|p| p.blocks > 0) {
                 formatted.renumbered = plan.blocks;
@@ -93,7 +117,7 @@ pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings)
                 message: "not renumbered: this block number or reference stands in a line left as it is (HMI region, emitted code, a macro, after the program's end)".to_string(),
                 refused: true,
             });
-            lay_out(&model, settings, None).unwrap_or_default()
+            lay_out(&model, settings, None, merge).unwrap_or_default()
         }
     };
     // An error in what the control never reads (after the end) stops
@@ -122,7 +146,12 @@ struct Laid {
 
 /// The edits of every line; `Err` with the span of a renumbering's
 /// replacement that falls in a line left as it is.
-fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<Laid, Span> {
+fn lay_out(
+    model: &Model,
+    settings: &Settings,
+    plan: Option<&Plan>,
+    merge: bool,
+) -> Result<Laid, Span> {
     let source = model.source;
     let structure = model.structure();
     let mut depths = Depths::new(model);
@@ -242,20 +271,37 @@ fn lay_out(model: &Model, settings: &Settings, plan: Option<&Plan>) -> Result<La
         if out.is_empty() {
             blank_run += 1;
             if blank_run > settings.max_blank_lines {
-                edits.push(Edit::replace(raw.full(), Vec::new()));
+                push(&mut edits, source, raw.full(), &[], merge);
                 continue;
             }
         } else {
             blank_run = 0;
         }
         if out != content.of(source) {
-            edits.push(Edit::replace(content, out.clone()));
+            push(&mut edits, source, content, &out, merge);
         }
         if block.is_some_and(opens_proc) {
             depths.set_proc_body(settings.indent_proc_body);
         }
     }
     Ok(Laid { edits, unread })
+}
+
+/// Adds the edit `span` -> `text`; with `merge`, into the last edit when
+/// only a line ending lies between them.
+fn push(edits: &mut Vec<Edit>, source: &[u8], span: Span, text: &[u8], merge: bool) {
+    if merge {
+        if let Some(last) = edits.last_mut() {
+            let between = &source[last.span.end..span.start];
+            if between.len() <= 2 && between.iter().all(|&b| b == b'\r' || b == b'\n') {
+                last.text.extend_from_slice(between);
+                last.text.extend_from_slice(text);
+                last.span.end = span.end;
+                return;
+            }
+        }
+    }
+    edits.push(Edit::replace(span, text.to_vec()));
 }
 
 fn opens_proc(block: &Block) -> bool {
