@@ -530,7 +530,10 @@ fn fmt_formats_each_program_member_and_keeps_the_archive_readable() {
         }
     }
     assert!(formatted > 0);
-    let check = run(&["check", "--format", "short", path.to_str().expect("utf-8")], b"");
+    let check = run(
+        &["check", "--format", "short", path.to_str().expect("utf-8")],
+        b"",
+    );
     assert_ne!(check.status.code(), Some(2), "{}", stdout(&check));
     // Formatted once, it is formatted.
     let again = run(&["fmt", "--check", path.to_str().expect("utf-8")], b"");

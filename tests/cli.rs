@@ -1887,8 +1887,11 @@ fn fmt_reads_its_settings_and_renumbers() {
     )
     .expect("write");
     let path = dir.join("P.MPF");
-    std::fs::write(&path, "N5 IF R1==1 GOTOF N30\nWHILE R1<2\nG1 X1\n\nENDWHILE\nN30 M30\n")
-        .expect("write");
+    std::fs::write(
+        &path,
+        "N5 IF R1==1 GOTOF N30\nWHILE R1<2\nG1 X1\n\nENDWHILE\nN30 M30\n",
+    )
+    .expect("write");
     let path_arg = path.to_str().expect("utf-8");
     let output = run(&["fmt", "--renumber", "100,100", path_arg], b"");
     assert_exit(&output, 0);

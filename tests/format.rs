@@ -97,7 +97,11 @@ fn kinds(block: &Block) -> String {
         .iter()
         .map(|s| {
             let debug = format!("{:?}", s.kind);
-            debug.split(['(', ' ', '{']).next().unwrap_or_default().to_string()
+            debug
+                .split(['(', ' ', '{'])
+                .next()
+                .unwrap_or_default()
+                .to_string()
         })
         .collect::<Vec<_>>()
         .join(" ")
@@ -139,7 +143,10 @@ fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
     let (twice, _) = formatted(name, &once, settings);
     let kind = program_kind(Some(name), source);
     let merged = sinuprep::format::format_merged(name, source, kind, settings);
-    assert!(apply(source, &merged.edits) == once, "{name}: merged edits differ");
+    assert!(
+        apply(source, &merged.edits) == once,
+        "{name}: merged edits differ"
+    );
     assert!(
         once == twice,
         "{name}: formatting again changed it:\n{}",
@@ -147,7 +154,11 @@ fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
     );
     // The model's reading, with the program's own macros expanded, is the
     // one the formatter goes by.
-    let errors = |bytes: &[u8]| Model::build(bytes, program_kind(Some(name), bytes)).syntax.len();
+    let errors = |bytes: &[u8]| {
+        Model::build(bytes, program_kind(Some(name), bytes))
+            .syntax
+            .len()
+    };
     if !format(name, source, kind, settings).syntax.is_empty() {
         assert!(errors(source) > 0, "{name}: refused without an error");
         assert_eq!(once, source, "{name}: a program with syntax errors changed");
@@ -163,9 +174,15 @@ fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
     );
     let (before, after) = (shape(source, renumbered), shape(&once, renumbered));
     assert_eq!(before.kinds, after.kinds, "{name}: statements changed");
-    assert!(before.code == after.code, "{name}: code changed beyond blanks and case");
+    assert!(
+        before.code == after.code,
+        "{name}: code changed beyond blanks and case"
+    );
     assert!(before.strings == after.strings, "{name}: a string changed");
-    assert!(before.comments == after.comments, "{name}: a comment changed");
+    assert!(
+        before.comments == after.comments,
+        "{name}: a comment changed"
+    );
     assert_eq!(
         landings(name, source),
         landings(name, &once),
@@ -181,7 +198,9 @@ fn every_program() -> Vec<(String, Vec<u8>)> {
         .filter(|p| {
             // Archives are formatted member by member (tests below).
             !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("arc"))
-                && !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("snap"))
+                && !p
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("snap"))
         })
         .map(|p| {
             let bytes = std::fs::read(&p).expect("readable");
@@ -228,10 +247,32 @@ fn every_program_formats_idempotently_and_means_what_it_meant() {
 fn random_programs_format_idempotently() {
     // Blocks of every kind, nested, in random case and spacing.
     let pieces = [
-        "IF R1==1", "ENDIF", "ELSE", "WHILE R2<3", "ENDWHILE", "FOR R3=1 TO 3", "ENDFOR", "LOOP",
-        "ENDLOOP", "REPEAT", "UNTIL R1>2", "g1 x10  y20", "GOTOF N30", "GOTOB LBL", "LBL:",
-        "msg(\"a  b\")", "; a comment  ", "", "   ", "n30 m3", "CASE R1 OF 1 GOTOF N30 DEFAULT GOTOF LBL",
-        "DEF REAL _X", "$p_uifr[1]=ctrans(x,1)", "REPEAT LBL N30 P=2", "M30", "G0 Z5 ;*RO*",
+        "IF R1==1",
+        "ENDIF",
+        "ELSE",
+        "WHILE R2<3",
+        "ENDWHILE",
+        "FOR R3=1 TO 3",
+        "ENDFOR",
+        "LOOP",
+        "ENDLOOP",
+        "REPEAT",
+        "UNTIL R1>2",
+        "g1 x10  y20",
+        "GOTOF N30",
+        "GOTOB LBL",
+        "LBL:",
+        "msg(\"a  b\")",
+        "; a comment  ",
+        "",
+        "   ",
+        "n30 m3",
+        "CASE R1 OF 1 GOTOF N30 DEFAULT GOTOF LBL",
+        "DEF REAL _X",
+        "$p_uifr[1]=ctrans(x,1)",
+        "REPEAT LBL N30 P=2",
+        "M30",
+        "G0 Z5 ;*RO*",
     ];
     let mut state = 0x9e37_79b9_7f4a_7c15_u64;
     let mut next = |n: usize| {
@@ -258,7 +299,8 @@ fn random_programs_format_idempotently() {
         };
         let name = format!("random{round}.mpf");
         assert_formats_safely(&name, text.as_bytes(), &settings);
-        formatted_rounds += usize::from(formatted(&name, text.as_bytes(), &settings).0 != text.as_bytes());
+        formatted_rounds +=
+            usize::from(formatted(&name, text.as_bytes(), &settings).0 != text.as_bytes());
     }
     assert!(formatted_rounds > 200, "{formatted_rounds} of 400 changed");
 }
@@ -272,7 +314,11 @@ fn formats() {
             .expect("inside the repo")
             .to_string_lossy()
             .into_owned();
-        let first = String::from_utf8_lossy(&source).lines().next().unwrap_or_default().to_string();
+        let first = String::from_utf8_lossy(&source)
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .to_string();
         let extra: Vec<&str> = first
             .strip_prefix("; args:")
             .map(|a| a.split_whitespace().collect())

@@ -18,8 +18,8 @@ use crate::cli::parallel;
 use crate::cli::render::{human, printable, FileReport};
 use crate::cli::walk::expand;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
-use crate::emit::diff;
 use crate::edit::write_applied;
+use crate::emit::diff;
 use crate::format::{format, format_merged};
 use crate::span::LineIndex;
 use crate::workspace::{Given, Workspace};
@@ -96,7 +96,12 @@ fn format_file(found: &Found, args: &FmtArgs, workspace: &Workspace) -> Result<O
         let source = program.document.source;
         // Merged edits for a file written whole; a diff shows lines.
         let format = if args.diff { format } else { format_merged };
-        let formatted = format(program.document.name, source, program.document.kind, &settings);
+        let formatted = format(
+            program.document.name,
+            source,
+            program.document.kind,
+            &settings,
+        );
         if !formatted.syntax.is_empty() {
             findings = true;
             let report = FileReport {

@@ -22,10 +22,10 @@ use crate::syntax::visit::gotos;
 /// modifiers of a coordinate (`AC`, `IC`, ...).
 const FUNCTIONS: &[&str] = &[
     "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN2", "SQRT", "ABS", "POT", "TRUNC", "ROUND", "LN",
-    "EXP", "MINVAL", "MAXVAL", "BOUND", "CTRANS", "CROT", "CSCALE", "CMIRROR", "CFINE", "AC",
-    "IC", "DC", "ACP", "ACN", "CAC", "CIC", "CACP", "CACN", "AXSTRING", "SPRINT", "SUBSTR",
-    "TOLOWER", "TOUPPER", "STRLEN", "INDEX", "RINDEX", "MATCH", "NUMBER", "ISNUMBER", "AXNAME",
-    "ISAXIS", "ISVAR", "ISFILE", "TRUE", "FALSE", "GOTOS", "M17", "MSG", "SETAL",
+    "EXP", "MINVAL", "MAXVAL", "BOUND", "CTRANS", "CROT", "CSCALE", "CMIRROR", "CFINE", "AC", "IC",
+    "DC", "ACP", "ACN", "CAC", "CIC", "CACP", "CACN", "AXSTRING", "SPRINT", "SUBSTR", "TOLOWER",
+    "TOUPPER", "STRLEN", "INDEX", "RINDEX", "MATCH", "NUMBER", "ISNUMBER", "AXNAME", "ISAXIS",
+    "ISVAR", "ISFILE", "TRUE", "FALSE", "GOTOS", "M17", "MSG", "SETAL",
 ];
 
 /// The spans of the language's words in `block`'s code (before
@@ -52,7 +52,12 @@ pub fn language_words(source: &[u8], content: Span, code_end: usize, block: &Blo
     // A block number a jump names: `GOTOF n100`.
     for goto in gotos(block) {
         if let Some(GotoTarget::Label(name)) = &goto.target {
-            if goto.target.as_ref().and_then(|t| t.block_number(source)).is_some() {
+            if goto
+                .target
+                .as_ref()
+                .and_then(|t| t.block_number(source))
+                .is_some()
+            {
                 words.push(Span::new(name.span.start, name.span.start + 1));
             }
         }

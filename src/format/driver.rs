@@ -267,7 +267,14 @@ fn lay_out(
                 }
             }
         };
-        write(source, &parts, depth, &settings.indent, settings.case, &mut out);
+        write(
+            source,
+            &parts,
+            depth,
+            &settings.indent,
+            settings.case,
+            &mut out,
+        );
         if out.is_empty() {
             blank_run += 1;
             if blank_run > settings.max_blank_lines {

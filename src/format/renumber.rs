@@ -115,10 +115,8 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
             {
                 if keyword.is(source, "CALL") {
                     for span in own_block_range(source, *target) {
-                        let number = n_number(
-                            &source[span.start - 1..span.end],
-                        )
-                        .unwrap_or(u64::MAX);
+                        let number =
+                            n_number(&source[span.start - 1..span.end]).unwrap_or(u64::MAX);
                         // Searched as GOTO searches: forward, then back.
                         let landing = rows_of.get(&number).and_then(|rows| {
                             rows.iter()

@@ -352,11 +352,10 @@ impl Server<'_> {
             r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
                 (p.text_document.uri, None)
             }),
-            r::RangeFormatting::METHOD => {
-                self.format(request, |p: lsp::DocumentRangeFormattingParams| {
+            r::RangeFormatting::METHOD => self
+                .format(request, |p: lsp::DocumentRangeFormattingParams| {
                     (p.text_document.uri, Some(p.range))
-                })
-            }
+                }),
             method => Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
