@@ -65,7 +65,7 @@ fn main() {
         let name = input.file_name().and_then(|n| n.to_str()).unwrap_or("?");
         let path = input.to_str().expect("utf-8");
         let output = dir.join("out.mpf");
-        let runs: [(String, Vec<&str>); 3] = [
+        let runs: [(String, Vec<&str>); 4] = [
             (format!("wc -l {name}"), vec!["wc", "-l", path]),
             (
                 format!("check {name}"),
@@ -91,6 +91,12 @@ fn main() {
                     path,
                 ],
             ),
+            // The formatter's whole analysis, nothing to write: the
+            // generated programs are laid out already.
+            (
+                format!("fmt --check {name}"),
+                vec![binary.to_str().expect("utf-8"), "fmt", "--check", path],
+            ),
         ];
         for (label, command) in runs {
             let (seconds, peak, anon) = process::measure(&command, process::Input::Nothing);
@@ -103,6 +109,23 @@ fn main() {
             );
         }
     }
+    // A CAM program whose every line changes (lower case, blanks doubled,
+    // trailing blanks), formatted to stdout.
+    let messy = dir.join("CAM_MESSY.MPF");
+    let tidy = std::fs::read(&cam).expect("read");
+    std::fs::write(&messy, messy_program(&tidy)).expect("write");
+    let bytes = std::fs::metadata(&messy).map(|m| m.len()).unwrap_or(0) as f64;
+    let blocks = bytecount_lines(&messy);
+    let command = [binary.to_str().expect("utf-8"), "fmt", "-"];
+    let (seconds, peak, anon) = process::measure(&command, process::Input::File(&messy));
+    println!(
+        "{:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1} {:>10.1}",
+        "fmt - < CAM_MESSY.MPF (every line changed)",
+        bytes / seconds / 1e6,
+        blocks / seconds,
+        peak as f64 / 1024.0,
+        anon as f64 / 1024.0
+    );
     // Findings by the thousand: every did-you-mean searches thousands of
     // names (a quadratic search took 22 s on 2,000 x 2,000).
     let many = dir.join("MANY_FINDINGS.MPF");
@@ -214,6 +237,26 @@ fn cam_program(size: usize, every: usize) -> Vec<u8> {
     }
     out.extend_from_slice(b"TRAFOOF\nM30\n");
     out
+}
+
+/// `program` with every line made untidy for the formatter: lower case,
+/// two blanks between words, a blank at the end.
+fn messy_program(program: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(program.len() * 5 / 4);
+    for &byte in program {
+        match byte {
+            b' ' => out.extend_from_slice(b"  "),
+            b'\n' => out.extend_from_slice(b" \n"),
+            _ => out.push(byte.to_ascii_lowercase()),
+        }
+    }
+    out
+}
+
+fn bytecount_lines(path: &Path) -> f64 {
+    std::fs::read(path)
+        .map(|b| b.iter().filter(|&&c| c == b'\n').count())
+        .unwrap_or(0) as f64
 }
 
 /// The real programs of the outside corpus, one after another until `size`.

@@ -26,6 +26,8 @@
 //!   turn (the Rodrigues inverse problem), an axis from measured positions; pure math.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
+//! - [`format`]: `sinuprep fmt`: layout, case and renumbering as text edits, from the model's
+//!   block structure and jumps; strings, comments and the HMI's regions untouched.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.
 //! - [`suggest`]: did-you-mean, shared by the parser's and the rules' messages.
 //! - [`document`]: the front door: a program in, its findings and its rewrite out, for the
@@ -44,6 +46,7 @@ pub mod diagnostic;
 pub mod document;
 pub mod edit;
 pub mod emit;
+pub mod format;
 pub mod kinematics;
 pub mod lint;
 pub mod lsp;

@@ -503,3 +503,40 @@ fn an_archive_s_macro_member_expands_in_its_programs() {
     assert_exit(&output, 0);
     assert_eq!(stdout(&output), "");
 }
+
+#[test]
+fn fmt_formats_each_program_member_and_keeps_the_archive_readable() {
+    let dir = scratch("arc-fmt");
+    let path = dir.join("SETUP.ARC");
+    let before = shop_binary();
+    std::fs::write(&path, &before).expect("write");
+    let output = run(&["fmt", path.to_str().expect("utf-8")], b"");
+    assert_exit(&output, 0);
+    let after = std::fs::read(&path).expect("read");
+    assert_ne!(after, before, "nothing formatted");
+    // Every header reads, with its size and checksum.
+    let (old, new) = (binary_members(&before), binary_members(&after));
+    assert_eq!(old.len(), new.len());
+    let mut formatted = 0;
+    for ((old_path, old_data), (new_path, new_data)) in old.iter().zip(&new) {
+        assert_eq!(old_path, new_path);
+        if old_path.ends_with("_MPF") || old_path.ends_with("_SPF") {
+            // A member formats as the same program alone would.
+            let alone = run(&["fmt", "-"], old_data);
+            assert_eq!(new_data, &alone.stdout, "{old_path}");
+            formatted += usize::from(new_data != old_data);
+        } else {
+            assert_eq!(new_data, old_data, "{old_path} unchanged");
+        }
+    }
+    assert!(formatted > 0);
+    let check = run(
+        &["check", "--format", "short", path.to_str().expect("utf-8")],
+        b"",
+    );
+    assert_ne!(check.status.code(), Some(2), "{}", stdout(&check));
+    // Formatted once, it is formatted.
+    let again = run(&["fmt", "--check", path.to_str().expect("utf-8")], b"");
+    assert_exit(&again, 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}

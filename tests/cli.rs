@@ -2937,3 +2937,88 @@ fn frame_statements_a_rewrite_emits_read_back_as_the_calls_rotation() {
     }
     assert_eq!(calls, 2);
 }
+
+#[test]
+fn fmt_writes_in_place_lists_with_check_and_reads_stdin() {
+    let dir = scratch("fmt-cli");
+    let messy = b"n10 if r1==1\r\ng1   x10  \r\n\r\n\r\n\r\nendif\r\nm30\r\n";
+    let tidy = b"N10 IF R1==1\r\n  G1 X10\r\n\r\nENDIF\r\nM30\r\n";
+    let part = dir.join("PART.MPF");
+    let nested = dir.join("sub");
+    std::fs::create_dir_all(&nested).expect("folder");
+    let other = nested.join("OTHER.SPF");
+    std::fs::write(&part, messy).expect("write");
+    std::fs::write(&other, tidy).expect("write");
+    let dir_arg = dir.to_str().expect("utf-8");
+    // --check lists the files that would change, writes nothing, exit 1.
+    let check = run(&["fmt", "--check", dir_arg], b"");
+    assert_exit(&check, 1);
+    assert!(stdout(&check).contains("PART.MPF"), "{}", stdout(&check));
+    assert!(!stdout(&check).contains("OTHER.SPF"), "{}", stdout(&check));
+    assert_eq!(std::fs::read(&part).expect("read"), messy);
+    // --diff shows it, writes nothing.
+    let diff = run(&["fmt", "--diff", part.to_str().expect("utf-8")], b"");
+    assert_exit(&diff, 0);
+    assert!(stdout(&diff).contains("+  G1 X10"), "{}", stdout(&diff));
+    assert_eq!(std::fs::read(&part).expect("read"), messy);
+    // stdin to stdout, CRLF kept.
+    let piped = run(&["fmt", "-"], messy);
+    assert_exit(&piped, 0);
+    assert_eq!(piped.stdout, tidy);
+    // In place over a folder; a second run finds nothing to do.
+    assert_exit(&run(&["fmt", dir_arg], b""), 0);
+    assert_eq!(std::fs::read(&part).expect("read"), tidy);
+    assert_eq!(std::fs::read(&other).expect("read"), tidy);
+    assert_exit(&run(&["fmt", "--check", dir_arg], b""), 0);
+    // No backup, no temporary file left beside it.
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .expect("list")
+        .map(|e| e.expect("entry").file_name())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn fmt_leaves_a_program_with_syntax_errors_and_says_why() {
+    let dir = scratch("fmt-errors");
+    let path = dir.join("BROKEN.MPF");
+    let source = b"  g1 x10\nIF R1==\n  m30\n";
+    std::fs::write(&path, source).expect("write");
+    let output = run(&["fmt", path.to_str().expect("utf-8")], b"");
+    assert_exit(&output, 1);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("not formatted"), "{stderr}");
+    assert_eq!(std::fs::read(&path).expect("read"), source);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn fmt_reads_its_settings_and_renumbers() {
+    let dir = scratch("fmt-settings");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "[format]\nindent = 4\ncase = \"lower\"\nmax-blank-lines = 0\n",
+    )
+    .expect("write");
+    let path = dir.join("P.MPF");
+    std::fs::write(
+        &path,
+        "N5 IF R1==1 GOTOF N30\nWHILE R1<2\nG1 X1\n\nENDWHILE\nN30 M30\n",
+    )
+    .expect("write");
+    let path_arg = path.to_str().expect("utf-8");
+    let output = run(&["fmt", "--renumber", "100,100", path_arg], b"");
+    assert_exit(&output, 0);
+    assert_eq!(
+        std::fs::read_to_string(&path).expect("read"),
+        "n100 if r1==1 gotof n200\nwhile r1<2\n    g1 x1\nendwhile\nn200 m30\n"
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("2 block numbers changed"), "{stderr}");
+    // A value the settings cannot take is the tool's error.
+    std::fs::write(dir.join("sinuprep.toml"), "[format]\nindent = 40\n").expect("write");
+    assert_exit(&run(&["fmt", path_arg], b""), 2);
+    assert_exit(&run(&["fmt", "--renumber", "10,0", path_arg], b""), 2);
+    let _ = std::fs::remove_dir_all(&dir);
+}

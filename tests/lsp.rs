@@ -746,3 +746,37 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
     assert!(found.is_empty(), "{found:?}");
     client.stop();
 }
+
+#[test]
+fn formatting_gives_the_edits_of_fmt() {
+    let (mut client, initialized) = Client::start(json!({}));
+    let capabilities = &initialized["capabilities"];
+    assert_eq!(capabilities["documentFormattingProvider"], true);
+    assert_eq!(capabilities["documentRangeFormattingProvider"], true);
+    client.open(URI, "; ü😀\nif r1==1\ng1  x10\nendif\n");
+    let edits = client.request(
+        "textDocument/formatting",
+        json!({ "textDocument": { "uri": URI }, "options": { "tabSize": 4, "insertSpaces": true } }),
+    );
+    assert_eq!(
+        edits,
+        json!([
+            { "range": { "start": { "line": 1, "character": 0 }, "end": { "line": 1, "character": 8 } }, "newText": "IF R1==1" },
+            { "range": { "start": { "line": 2, "character": 0 }, "end": { "line": 2, "character": 7 } }, "newText": "  G1 X10" },
+            { "range": { "start": { "line": 3, "character": 0 }, "end": { "line": 3, "character": 5 } }, "newText": "ENDIF" },
+        ])
+    );
+    // A range gets the edits of the lines it touches.
+    let edits = client.request(
+        "textDocument/rangeFormatting",
+        json!({
+            "textDocument": { "uri": URI },
+            "range": { "start": { "line": 2, "character": 1 }, "end": { "line": 2, "character": 2 } },
+            "options": { "tabSize": 4, "insertSpaces": true },
+        }),
+    );
+    assert_eq!(edits.as_array().map(Vec::len), Some(1), "{edits}");
+    assert_eq!(edits[0]["newText"], "  G1 X10");
+    let (code, _) = client.stop();
+    assert_eq!(code, Some(0));
+}

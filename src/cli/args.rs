@@ -39,6 +39,9 @@ pub enum Command {
     /// Rewrite CYCLE600 calls as native CYCLE800 / frames / TRAORI code; every
     /// other byte stays as it is.
     Rewrite(RewriteArgs),
+    /// Lay programs out (indent by block, blanks, case) and renumber them
+    /// (`--renumber`), in place; strings, comments and HMI regions stay as they are.
+    Fmt(FmtArgs),
     /// Show how each CYCLE600 call evaluates: parameters, provenance, matrix,
     /// angles, results and the code a rewrite emits.
     Eval(EvalArgs),
@@ -387,6 +390,27 @@ pub struct RewriteArgs {
     /// Print a unified diff instead of the program.
     #[arg(long, conflicts_with_all = ["output", "in_place"])]
     pub diff: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct FmtArgs {
+    /// Programs or directories (walked as `check` walks them); an archive's programs are formatted in it; `-` reads stdin and writes stdout.
+    pub paths: Vec<PathBuf>,
+    #[command(flatten)]
+    pub walk: WalkArgs,
+    /// Write nothing; list the files that would change and exit 1 if any would.
+    #[arg(long, conflicts_with = "diff")]
+    pub check: bool,
+    /// Print a unified diff instead of writing.
+    #[arg(long)]
+    pub diff: bool,
+    /// Number the numbered blocks again from START in steps of STEP, and every jump, CASE,
+    /// REPEAT and CALL BLOCK range that names them.
+    #[arg(long, value_name = "START,STEP", value_parser = crate::cli::fmt::renumbering)]
+    pub renumber: Option<(u64, u64)>,
+    /// The settings file (default: the nearest sinuprep.toml from the program's directory upward).
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]

@@ -27,6 +27,7 @@ mod convert;
 mod describe;
 pub mod error;
 pub(crate) mod eval;
+mod fmt;
 mod frame;
 mod input;
 mod mapped;
@@ -102,6 +103,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
     match &args.command {
         args::Command::Check(check) => check::run(check),
         args::Command::Rewrite(rewrite) => rewrite::run(rewrite),
+        args::Command::Fmt(fmt) => fmt::run(fmt),
         args::Command::Eval(eval) => eval::run(eval),
         args::Command::Rule(rule) => rule::run(rule),
         args::Command::Convert(convert) => convert::run(convert),

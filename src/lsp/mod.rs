@@ -11,6 +11,7 @@
 
 mod answers;
 mod convert;
+mod formatting;
 mod transport;
 mod worker;
 
@@ -84,6 +85,8 @@ fn serve(connection: &Connection) -> Result<(), String> {
                 },
             ),
         ),
+        document_formatting_provider: Some(lsp::OneOf::Left(true)),
+        document_range_formatting_provider: Some(lsp::OneOf::Left(true)),
         diagnostic_provider: pull.then(|| {
             lsp::DiagnosticServerCapabilities::Options(lsp::DiagnosticOptions {
                 identifier: Some("sinuprep".to_string()),
@@ -448,6 +451,13 @@ impl Server<'_> {
                 .answer(request, |s, p: lsp::SemanticTokensRangeParams| {
                     Ok(s.semantic_tokens(Some(p.range)))
                 }),
+            r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
+                (p.text_document.uri, None)
+            }),
+            r::RangeFormatting::METHOD => self
+                .format(request, |p: lsp::DocumentRangeFormattingParams| {
+                    (p.text_document.uri, Some(p.range))
+                }),
             method => Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
@@ -478,6 +488,33 @@ impl Server<'_> {
             }));
         }
         out
+    }
+
+    /// The edits `sinuprep fmt` would make to a document (or the lines of a
+    /// range), with the `[format]` settings of its `sinuprep.toml`.
+    fn format<P: serde::de::DeserializeOwned>(
+        &self,
+        request: Request,
+        target: impl FnOnce(P) -> (lsp::Uri, Option<lsp::Range>),
+    ) -> Result<serde_json::Value, (ErrorCode, String)> {
+        let params: P = serde_json::from_value(request.params)
+            .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
+        let (uri, range) = target(params);
+        let open = self.documents.get(&uri).ok_or_else(|| {
+            (
+                ErrorCode::InvalidParams,
+                format!("{} is not open", uri.as_str()),
+            )
+        })?;
+        let settings = match convert::path(&uri) {
+            Some(path) => self
+                .workspace
+                .for_format(&path)
+                .map_err(|e| (ErrorCode::RequestFailed, e.to_string()))?,
+            None => crate::format::Settings::default(),
+        };
+        let edits = formatting::edits(open.held.text(), &open.name, &settings, range, self.unit);
+        serde_json::to_value(edits).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }
 
     /// The answer to a request about one open document, or why the

@@ -66,6 +66,8 @@ pub struct Config {
     /// Rule codes or prefixes not reported in the files a pattern matches
     /// (`"probe/*" = ["N005"]`), over `select` and `ignore`.
     pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
+    /// `[format]`: how `sinuprep fmt` lays programs out.
+    pub format: Option<crate::format::FormatConfig>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
@@ -154,7 +156,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 22] = [
+const KEYS: [&str; 23] = [
     "select",
     "ignore",
     "severity-min",
@@ -177,6 +179,7 @@ const KEYS: [&str; 22] = [
     "respect-gitignore",
     "per-file-ignores",
     "force-exclude",
+    "format",
 ];
 
 /// The parser's message, with the key an unknown one was probably meant as.

@@ -264,6 +264,26 @@ impl Workspace {
         })
     }
 
+    /// What `fmt` does with `program` (a path, `-` for stdin): `[format]`
+    /// of its settings file.
+    pub fn for_format(&self, program: &Path) -> Result<crate::format::Settings, SettingsError> {
+        let start = if program == Path::new("-") {
+            Path::new(".")
+        } else {
+            program
+        };
+        let config = self.config(start)?;
+        if let Some(why) = config.format.as_ref().and_then(|f| f.check().err()) {
+            return Err(SettingsError::Config {
+                path: config.path.clone().unwrap_or_default(),
+                line: 1,
+                column: 1,
+                why: format!("[format] {why}"),
+            });
+        }
+        Ok(crate::format::Settings::from_config(config.format.as_ref()))
+    }
+
     /// `--config FILE`, or the nearest `sinuprep.toml` (any case) from
     /// `start` upward; each directory is looked up and each file read once a
     /// run.

@@ -1,0 +1,36 @@
+//! Document and range formatting: the edits `sinuprep fmt` makes, as the
+//! protocol's text edits. A program with syntax errors gets none, as on
+//! the command line; a range gets the edits of the lines it touches.
+
+use lsp_types as lsp;
+
+use crate::document::text::Text;
+use crate::format::{format, Settings};
+use crate::lsp::convert;
+use crate::span::{ColumnUnit, Span};
+use crate::syntax::program_kind;
+
+/// The edits that format `text` (or the lines `range` touches).
+pub fn edits(
+    text: &Text,
+    name: &str,
+    settings: &Settings,
+    range: Option<lsp::Range>,
+    unit: ColumnUnit,
+) -> Vec<lsp::TextEdit> {
+    let source = text.bytes();
+    let kind = program_kind(Some(name), source);
+    let within = range.map(|range| convert::span(text, range, unit));
+    let touches = |span: Span| {
+        within.is_none_or(|within| span.start <= within.end && within.start <= span.end)
+    };
+    format(name, source, kind, settings)
+        .edits
+        .into_iter()
+        .filter(|edit| touches(edit.span))
+        .map(|edit| lsp::TextEdit {
+            range: convert::range(text, edit.span, unit),
+            new_text: String::from_utf8_lossy(&edit.text).into_owned(),
+        })
+        .collect()
+}

@@ -1,0 +1,348 @@
+//! `sinuprep fmt`: snapshots of formatted fixtures and samples (input,
+//! output, notes), and invariants over every sample, fixture and program of
+//! the outside corpus that do not rely on the snapshots: formatting twice
+//! equals formatting once; the formatted program parses to the same
+//! statements modulo blanks and case (and, renumbered, block numbers);
+//! strings and comments are byte for byte the same; every jump lands on the
+//! same statement; a program with a syntax error is left as it is.
+
+mod support;
+
+use support::{assert_exit, run};
+
+use sinuprep::edit::apply;
+use sinuprep::format::{format, Case, Settings};
+use sinuprep::semantic::uses::{Role, Uses};
+use sinuprep::semantic::Model;
+use sinuprep::syntax::tree::{Block, LineKind};
+use sinuprep::syntax::{parse, program_kind};
+
+fn formatted(name: &str, source: &[u8], settings: &Settings) -> (Vec<u8>, Vec<String>) {
+    let kind = program_kind(Some(name), source);
+    let result = format(name, source, kind, settings);
+    let notes = result.notes.iter().map(|n| n.message.clone()).collect();
+    (apply(source, &result.edits), notes)
+}
+
+/// The bytes of a line's code with blanks outside strings left out, and
+/// in upper case outside strings; its strings; its comment.
+struct Shape {
+    code: Vec<Vec<u8>>,
+    kinds: Vec<String>,
+    strings: Vec<Vec<u8>>,
+    comments: Vec<Vec<u8>>,
+}
+
+fn shape(source: &[u8], renumbered: bool) -> Shape {
+    let program = parse(source);
+    let mut shape = Shape {
+        code: Vec::new(),
+        kinds: Vec::new(),
+        strings: Vec::new(),
+        comments: Vec::new(),
+    };
+    for line in &program.lines {
+        let content = line.raw.content;
+        let LineKind::Block(block) = &line.kind else {
+            shape.code.push(content.of(source).to_vec());
+            continue;
+        };
+        let code_end = block.comment.map_or(content.end, |c| c.start);
+        if let Some(comment) = block.comment {
+            shape.comments.push(comment.of(source).to_vec());
+        }
+        let mut code = Vec::new();
+        let mut quote = None;
+        let mut string = Vec::new();
+        let start = match (renumbered, block.number) {
+            (true, Some(number)) => number.span.end,
+            _ => content.start,
+        };
+        for &byte in &source[start..code_end] {
+            match quote {
+                Some(q) => {
+                    string.push(byte);
+                    code.push(byte);
+                    if byte == q {
+                        quote = None;
+                        shape.strings.push(std::mem::take(&mut string));
+                    }
+                }
+                None if byte == b'"' || byte == b'\'' => {
+                    quote = Some(byte);
+                    string.push(byte);
+                    code.push(byte);
+                }
+                None if byte == b' ' || byte == b'\t' => {}
+                None => code.push(byte.to_ascii_uppercase()),
+            }
+        }
+        if !is_blank_line(block) || !code.is_empty() {
+            shape.kinds.push(kinds(block));
+            if !renumbered {
+                shape.code.push(code);
+            }
+        }
+    }
+    shape
+}
+
+fn is_blank_line(block: &Block) -> bool {
+    block.is_empty() && block.comment.is_none() && block.number.is_none() && block.label.is_none()
+}
+
+fn kinds(block: &Block) -> String {
+    block
+        .statements
+        .iter()
+        .map(|s| {
+            let debug = format!("{:?}", s.kind);
+            debug
+                .split(['(', ' ', '{'])
+                .next()
+                .unwrap_or_default()
+                .to_string()
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Where each jump lands, as the ordinal of its line among the lines that
+/// are not blank (formatting removes blank lines only).
+fn landings(name: &str, source: &[u8]) -> Vec<Option<usize>> {
+    let model = Model::build(source, program_kind(Some(name), source));
+    let uses = Uses::of(&model);
+    let program = parse(source);
+    let mut ordinal = Vec::with_capacity(program.lines.len());
+    let mut count = 0;
+    for line in &program.lines {
+        ordinal.push(count);
+        let blank = match &line.kind {
+            LineKind::Block(block) => {
+                is_blank_line(block) && line.raw.content.of(source).trim_ascii().is_empty()
+            }
+            _ => false,
+        };
+        if !blank {
+            count += 1;
+        }
+    }
+    uses.all()
+        .iter()
+        .filter(|u| u.role == Role::JumpsTo)
+        .map(|u| {
+            uses.definition(&model, u)
+                .map(|definition| ordinal[definition.row])
+        })
+        .collect()
+}
+
+fn assert_formats_safely(name: &str, source: &[u8], settings: &Settings) {
+    let renumbered = settings.renumber.is_some();
+    let (once, _) = formatted(name, source, settings);
+    let (twice, _) = formatted(name, &once, settings);
+    let kind = program_kind(Some(name), source);
+    let merged = sinuprep::format::format_merged(name, source, kind, settings);
+    assert!(
+        apply(source, &merged.edits) == once,
+        "{name}: merged edits differ"
+    );
+    assert!(
+        once == twice,
+        "{name}: formatting again changed it:\n{}",
+        String::from_utf8_lossy(&twice)
+    );
+    // The model's reading, with the program's own macros expanded, is the
+    // one the formatter goes by.
+    let errors = |bytes: &[u8]| {
+        Model::build(bytes, program_kind(Some(name), bytes))
+            .syntax
+            .len()
+    };
+    if !format(name, source, kind, settings).syntax.is_empty() {
+        assert!(errors(source) > 0, "{name}: refused without an error");
+        assert_eq!(once, source, "{name}: a program with syntax errors changed");
+        return;
+    }
+    // Errors after the program's end, which the control never reads, are
+    // left where they are.
+    assert_eq!(
+        errors(&once),
+        errors(source),
+        "{name}: formatting changed the syntax errors:\n{}",
+        String::from_utf8_lossy(&once)
+    );
+    let (before, after) = (shape(source, renumbered), shape(&once, renumbered));
+    assert_eq!(before.kinds, after.kinds, "{name}: statements changed");
+    assert!(
+        before.code == after.code,
+        "{name}: code changed beyond blanks and case"
+    );
+    assert!(before.strings == after.strings, "{name}: a string changed");
+    assert!(
+        before.comments == after.comments,
+        "{name}: a comment changed"
+    );
+    assert_eq!(
+        landings(name, source),
+        landings(name, &once),
+        "{name}: a jump lands elsewhere"
+    );
+}
+
+fn every_program() -> Vec<(String, Vec<u8>)> {
+    let mut files = support::own_inputs();
+    files.extend(support::corpus_files());
+    files
+        .into_iter()
+        .filter(|p| {
+            // Archives are formatted member by member (tests below).
+            !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("arc"))
+                && !p
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("snap"))
+        })
+        .map(|p| {
+            let bytes = std::fs::read(&p).expect("readable");
+            (p.to_string_lossy().into_owned(), bytes)
+        })
+        .collect()
+}
+
+#[test]
+fn every_program_formats_idempotently_and_means_what_it_meant() {
+    let programs = every_program();
+    assert!(programs.len() > 100, "{} programs", programs.len());
+    let settings = [
+        Settings::default(),
+        Settings {
+            indent: "\t".to_string(),
+            case: Case::Lower,
+            max_blank_lines: 0,
+            indent_proc_body: false,
+            ..Settings::default()
+        },
+        Settings {
+            renumber: Some((10, 10)),
+            ..Settings::default()
+        },
+        Settings {
+            renumber: Some((1, 1)),
+            case: Case::Keep,
+            ..Settings::default()
+        },
+    ];
+    let mut changed = 0;
+    for (name, source) in &programs {
+        for settings in &settings {
+            assert_formats_safely(name, source, settings);
+        }
+        changed += usize::from(formatted(name, source, &settings[0]).0 != *source);
+    }
+    // The test is worth something only if formatting changed programs.
+    assert!(changed > 20, "only {changed} programs changed");
+}
+
+#[test]
+fn random_programs_format_idempotently() {
+    // Blocks of every kind, nested, in random case and spacing.
+    let pieces = [
+        "IF R1==1",
+        "ENDIF",
+        "ELSE",
+        "WHILE R2<3",
+        "ENDWHILE",
+        "FOR R3=1 TO 3",
+        "ENDFOR",
+        "LOOP",
+        "ENDLOOP",
+        "REPEAT",
+        "UNTIL R1>2",
+        "g1 x10  y20",
+        "GOTOF N30",
+        "GOTOB LBL",
+        "LBL:",
+        "msg(\"a  b\")",
+        "; a comment  ",
+        "",
+        "   ",
+        "n30 m3",
+        "CASE R1 OF 1 GOTOF N30 DEFAULT GOTOF LBL",
+        "DEF REAL _X",
+        "$p_uifr[1]=ctrans(x,1)",
+        "REPEAT LBL N30 P=2",
+        "M30",
+        "G0 Z5 ;*RO*",
+    ];
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = |n: usize| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as usize
+    };
+    let mut formatted_rounds = 0;
+    for round in 0..400 {
+        let mut text = String::new();
+        for row in 0..(5 + next(30)) {
+            let piece = pieces[next(pieces.len())];
+            if next(3) == 0 {
+                text.push_str(&format!("N{} ", 10 * (row + 1)));
+            }
+            text.push_str(&" ".repeat(next(3)));
+            text.push_str(piece);
+            text.push_str(["\n", "\r\n", "  \n"][next(3)]);
+        }
+        let settings = Settings {
+            renumber: (round % 2 == 0).then_some((100, 5)),
+            ..Settings::default()
+        };
+        let name = format!("random{round}.mpf");
+        assert_formats_safely(&name, text.as_bytes(), &settings);
+        formatted_rounds +=
+            usize::from(formatted(&name, text.as_bytes(), &settings).0 != text.as_bytes());
+    }
+    assert!(formatted_rounds > 200, "{formatted_rounds} of 400 changed");
+}
+
+#[test]
+fn formats() {
+    insta::glob!("fixtures/format/*.mpf", |path| {
+        let source = std::fs::read(path).expect("fixture");
+        let relative = path
+            .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+            .expect("inside the repo")
+            .to_string_lossy()
+            .into_owned();
+        let first = String::from_utf8_lossy(&source)
+            .lines()
+            .next()
+            .unwrap_or_default()
+            .to_string();
+        let extra: Vec<&str> = first
+            .strip_prefix("; args:")
+            .map(|a| a.split_whitespace().collect())
+            .unwrap_or_default();
+        let mut args = vec!["fmt", "-"];
+        args.extend(extra.iter().copied());
+        let output = run(&args, &source);
+        let snapshot = format!(
+            "## Arguments\n{}\n## Exit status\n{}\n## Notes\n{}\n## Formatted\n{}",
+            extra.join(" "),
+            output.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&output.stderr).replace("<stdin>", &relative),
+            String::from_utf8_lossy(&output.stdout)
+        );
+        insta::assert_snapshot!(snapshot);
+    });
+}
+
+#[test]
+fn formatted_samples() {
+    for sample in ["PROBE_ALIGN.MPF", "PAPER_EXAMPLE3.MPF", "HEAD_DEF.SPF"] {
+        let path = format!("samples/{sample}");
+        let output = run(&["fmt", "--diff", &path], b"");
+        assert_exit(&output, 0);
+        insta::assert_snapshot!(sample, String::from_utf8_lossy(&output.stdout));
+    }
+}
