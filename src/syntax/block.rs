@@ -365,6 +365,27 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     parse_assignment_call_or_command(input, name, after_name)
 }
 
+/// Whether [`parse_statement_kind`] reads the name that starts `input`
+/// (`len` bytes, followed by neither `=` nor `[`) as a call's or a
+/// command's: it runs no multi-letter address into its digits (`CR25`) and
+/// is no keyword. The same tests, for [`crate::syntax::clean`].
+pub(crate) fn names_call_or_command(input: Input, len: usize) -> bool {
+    let text = &input.fragment()[..len];
+    let first = text[0];
+    if matches!(first | 0x20, b'c' | b'r') && multi_letter_address(text).is_some() {
+        return false;
+    }
+    if first == b'$' {
+        return true;
+    }
+    let after_name = input.take_from(len);
+    let name = Name {
+        span: span_between(&input, &after_name),
+    };
+    let mut buffer = [0u8; 16];
+    parse_keyword_statement(input, after_name, name, upper(&input, name, &mut buffer)).is_none()
+}
+
 /// The length of the multi-letter address (radius, chamfer, rounding) that
 /// `name` runs into its digits, as `CR25` for `CR=25`.
 fn multi_letter_address(name: &[u8]) -> Option<usize> {

@@ -12,7 +12,8 @@
 //! assignment whose value and indices are single operands), followed by a
 //! blank, the comment or the line's end. Property-tested against the parser.
 
-use crate::syntax::lexer::{is_blank, is_name_char, is_name_start, is_one_of};
+use crate::syntax::block::{block_number_digits, names_call_or_command};
+use crate::syntax::lexer::{is_blank, is_name_char, is_name_start, is_one_of, Input};
 use crate::syntax::MAX_PARSED_LINE;
 
 /// Whether the parser reads `content` (a line without its terminator)
@@ -22,6 +23,14 @@ pub fn reads_clean(content: &[u8]) -> bool {
         return false;
     }
     let mut at = skip_blanks(content, 0);
+    if let Some(digits) = block_number_digits(&content[at..]) {
+        at = skip_blanks(content, at + 1 + digits);
+    }
+    if let Some(end) = lone_keyword(content, at) {
+        if matches!(content.get(skip_blanks(content, end)), None | Some(b';')) {
+            return true;
+        }
+    }
     loop {
         if matches!(content.get(at), None | Some(b';')) {
             return true;
@@ -44,6 +53,17 @@ fn skip_blanks(bytes: &[u8], mut at: usize) -> usize {
     at
 }
 
+/// The end of the keyword at `at` that makes a block of its own without
+/// operands (`ENDIF`, `ELSE`, `ENDWHILE`, ...), if one is there.
+fn lone_keyword(bytes: &[u8], at: usize) -> Option<usize> {
+    const LONE: [&str; 6] = ["ELSE", "ENDIF", "ENDWHILE", "ENDFOR", "LOOP", "ENDLOOP"];
+    if !matches!(bytes.get(at)?, b'E' | b'e' | b'L' | b'l') {
+        return None;
+    }
+    let end = name(bytes, at)?;
+    is_one_of(&bytes[at..end], &LONE).then_some(end)
+}
+
 /// The end of the statement at `at` if it is one of those the module
 /// accepts.
 fn statement(bytes: &[u8], at: usize) -> Option<usize> {
@@ -54,23 +74,35 @@ fn statement(bytes: &[u8], at: usize) -> Option<usize> {
         return address(bytes, at);
     }
     let name_end = name(bytes, at)?;
-    // `ID=1 WHEN …` starts a synchronized action; an operator word after a
-    // value continues the expression; `NOT`, `B_NOT` and `DO` read otherwise.
-    if is_one_of(&bytes[at..name_end], SPECIAL_NAMES) {
+    let text = &bytes[at..name_end];
+    if is_special(text) {
         return None;
     }
-    let after = match bytes.get(name_end) {
-        Some(b'[') => indices(bytes, name_end)?,
-        _ => name_end,
-    };
-    value_after_equals(bytes, after)
+    let callable = || names_call_or_command(Input::new(&bytes[at..], at), text.len());
+    match bytes.get(name_end) {
+        Some(b'[') => {
+            let after = indices(bytes, name_end)?;
+            value_after_equals(bytes, after)
+        }
+        Some(b'(') if callable() => arguments(bytes, name_end),
+        _ if bytes.get(skip_blanks(bytes, name_end)) == Some(&b'=') => {
+            value_after_equals(bytes, name_end)
+        }
+        // `SETINT` names its interrupt in parentheses.
+        _ if !text.eq_ignore_ascii_case(b"SETINT") && callable() => Some(name_end),
+        _ => None,
+    }
 }
 
-/// Names the parser does not read as a plain assignment's target or a
-/// variable operand.
-const SPECIAL_NAMES: &[&str] = &[
-    "ID", "IDS", "NOT", "B_NOT", "DO", "DIV", "MOD", "B_AND", "B_XOR", "B_OR", "AND", "XOR", "OR",
-];
+/// `ID=1 WHEN …` starts a synchronized action; an operator word after a
+/// value continues the expression; `NOT`, `B_NOT` and `DO` read otherwise.
+fn is_special(name: &[u8]) -> bool {
+    const SPECIAL: [&str; 13] = [
+        "ID", "IDS", "NOT", "B_NOT", "DO", "DIV", "MOD", "B_AND", "B_XOR", "B_OR", "AND", "XOR",
+        "OR",
+    ];
+    name.len() <= 5 && is_one_of(name, &SPECIAL)
+}
 
 /// An address word: `X-12.5`, `X1=R2` (not `G1=…`), `X=5`, `R[1]=5`.
 fn address(bytes: &[u8], at: usize) -> Option<usize> {
@@ -116,26 +148,36 @@ fn name(bytes: &[u8], at: usize) -> Option<usize> {
     Some(end)
 }
 
-/// `'=' blank operand` after blanks at `at` (not `==`), the operand's end.
+/// More terms than a value chains with `:` here (frames: `CTRANS(…):CROT(…)`);
+/// a long chain goes deeper than the parser follows.
+const MOST_TERMS: usize = 16;
+
+/// `'=' blank term (':' term)*` after blanks at `at` (not `==`), the end of
+/// the value. What follows must not continue it: a blank, the comment or the
+/// line's end (the caller checks which; no statement it accepts starts with
+/// an operator).
 fn value_after_equals(bytes: &[u8], at: usize) -> Option<usize> {
     let equals = skip_blanks(bytes, at);
     if bytes.get(equals) != Some(&b'=') || bytes.get(equals + 1) == Some(&b'=') {
         return None;
     }
-    // What follows the value must not continue it: a blank, the comment or
-    // the line's end (the caller checks which; no statement it accepts
-    // starts with an operator).
-    operand(bytes, skip_blanks(bytes, equals + 1), true)
+    let mut end = operand(bytes, skip_blanks(bytes, equals + 1), true)?;
+    for _ in 1..MOST_TERMS {
+        if bytes.get(end) != Some(&b':') {
+            return Some(end);
+        }
+        end = operand(bytes, end + 1, true)?;
+    }
+    None
 }
 
-/// `'[' operand (',' operand)* ']'` at `at` (each operand without indices),
+/// `'[' operand (',' operand)* ']'` at `at` (each operand a simple one),
 /// its end.
 fn indices(bytes: &[u8], at: usize) -> Option<usize> {
     let mut at = at + 1;
     loop {
         at = skip_blanks(bytes, at);
-        let end = operand(bytes, at, false)?;
-        at = skip_blanks(bytes, end);
+        at = skip_blanks(bytes, operand(bytes, at, false)?);
         match bytes.get(at) {
             Some(b',') => at += 1,
             Some(b']') => return Some(at + 1),
@@ -144,35 +186,55 @@ fn indices(bytes: &[u8], at: usize) -> Option<usize> {
     }
 }
 
-/// A signed number, a number, a string or a variable (with indices if
-/// `indexed`), followed by a blank, `,`, `]`, `;` or the line's end; its
-/// end.
-fn operand(bytes: &[u8], at: usize, indexed: bool) -> Option<usize> {
-    let end = match *bytes.get(at)? {
-        b'-' | b'+' => number(bytes, at + 1)?,
-        b'0'..=b'9' | b'.' => number(bytes, at)?,
-        b'"' => at + 2 + memchr::memchr(b'"', bytes.get(at + 1..)?)?,
+/// `'(' ')' | '(' operand? (',' operand?)* ')'` at `at` (each operand a
+/// simple one), its end.
+fn arguments(bytes: &[u8], at: usize) -> Option<usize> {
+    let mut at = skip_blanks(bytes, at + 1);
+    if bytes.get(at) == Some(&b')') {
+        return Some(at + 1);
+    }
+    loop {
+        at = skip_blanks(bytes, at);
+        if !matches!(bytes.get(at), Some(b',' | b')')) {
+            at = skip_blanks(bytes, operand(bytes, at, false)?);
+        }
+        match bytes.get(at) {
+            Some(b',') => at += 1,
+            Some(b')') => return Some(at + 1),
+            _ => return None,
+        }
+    }
+}
+
+/// A signed number, a number, a string or a variable; when `compound`,
+/// also a variable with indices or a call. Its end; the caller checks
+/// what follows.
+fn operand(bytes: &[u8], at: usize, compound: bool) -> Option<usize> {
+    match *bytes.get(at)? {
+        b'-' | b'+' => number(bytes, at + 1),
+        b'0'..=b'9' | b'.' => number(bytes, at),
+        b'"' => {
+            let length = bytes.get(at + 1..)?.iter().position(|&b| b == b'"')?;
+            Some(at + 2 + length)
+        }
         _ => {
             let end = name(bytes, at)?;
-            if is_one_of(&bytes[at..end], SPECIAL_NAMES) {
+            if is_special(&bytes[at..end]) {
                 return None;
             }
             match bytes.get(end) {
-                Some(b'[') if indexed => indices(bytes, end)?,
-                _ => end,
+                Some(b'[') if compound => indices(bytes, end),
+                Some(b'(') if compound => arguments(bytes, end),
+                _ => Some(end),
             }
         }
-    };
-    match bytes.get(end) {
-        None => Some(end),
-        Some(&byte) if is_blank(byte) || matches!(byte, b',' | b']' | b';') => Some(end),
-        Some(_) => None,
     }
 }
 
 /// A decimal number at `at`, `12`, `.5`, `30.`: at least one digit, one
 /// point at most, no longer than the plain scan takes (so that it is never
-/// too large for a REAL); followed by anything but a digit or a point.
+/// too large for a REAL), followed by neither `E` (an exponent, or a
+/// broken one) nor a name character.
 fn number(bytes: &[u8], at: usize) -> Option<usize> {
     let (mut end, mut digits, mut points) = (at, 0, 0);
     loop {
@@ -183,7 +245,8 @@ fn number(bytes: &[u8], at: usize) -> Option<usize> {
         }
         end += 1;
     }
-    (digits > 0 && points <= 1 && end - at <= 24).then_some(end)
+    let ok = digits > 0 && points <= 1 && end - at <= 24;
+    (ok && !bytes.get(end).is_some_and(|&b| is_name_char(b))).then_some(end)
 }
 
 #[cfg(test)]
@@ -215,6 +278,15 @@ mod tests {
             "X=1600 Y=900 Z=0 E=0; edge cases",
             "$P_UIFR[1,X,TR]=0",
             "ENDIF=5",
+            "N10 ENDIF ; closes the IF",
+            "else",
+            "G0 SUPA Z0        ; retract Z",
+            "WARMUP_CYCLE(3600, 600)   ; 30% for 10 min",
+            "CMIRROR()",
+            "SET(0,,,9,)",
+            "$P_UIFR[1]=CTRANS(X,0.000,Y,0.000):CROT(X,0.000,Y,0.000,Z,0.000):CMIRROR()",
+            "X=IC(10)",
+            "TRAORI",
         ] {
             assert!(reads_clean(clean.as_bytes()), "{clean}");
             assert!(parses_clean(clean), "{clean}");
@@ -233,9 +305,18 @@ mod tests {
             "$TC_DP1[1,]=1",
             "R1[2]=5",
             "X=A[B[1]]",
-            "R1=SIN(30)",
-            "ENDIF",
-            "TRAORI",
+            "ENDIF X1",
+            "X1 ENDIF",
+            "IF(1)",
+            "TRANS X10",
+            "CR25",
+            "SETINT",
+            "APR 7",
+            "GOTOF END",
+            "X=A(B(1))",
+            "X=A (1)",
+            "X=A(1):",
+            "A(1):B(2)",
             "X=5 DIV 2",
             "/X1",
             "%_N_A_MPF",
@@ -254,6 +335,8 @@ mod tests {
             "[ NnGgXxRr$_A-Z0-9.=\\[\\],;\"+-]{0,30}",
             "( ?(N[0-9]{1,2}|[GXRNAOD][0-9]?|\\$?(TC|ID|IDS|OR|AND|DO|NOT|X_A)[0-9]?)(\\[([-+]?[0-9.]{1,3}|[XA]|\"[a;]?\"|AND|)( ?, ?([0-9.]{1,2}|X))?\\])? ?(=|==)? ?([-+]?[0-9.E]{0,4}|\"[A ;]{0,2}\"?|\\$?[A-Z_]{1,5}(\\[[0-9X]\\])?)){0,4}( ?;[A-Z ]*)?",
             "([XN]=[0-9] ){1,2}(OR|AND|XOR|MOD|DIV|B_OR|NOT|DO|ID|XA|N1)( ?= ?[0-9])?",
+            "(N1 ?|:2 )?((ELSE|endif|LOOP|ENDLOOPX|IF|TRANS|ATRANS|APR|CR2|RND|CHF1|SETINT|GOTOF|WHEN|CALL|DEF|REPEAT|PROC|CASE|SUPA|\\$A|_B)(\\(( ?(-?[0-9.]{1,2}|X|\"A\"|A\\[1\\])? ?,?){0,3}\\)(:[A-Z]{1,2}\\([0-9]?\\))?)? ?(=|:)? ?){1,3}( ?;[A-Z ]*)?",
+            "[A-Z$_]{1,3}=[A-Z]{1,2}\\(([0-9X, .\"-]|\\(|\\)){0,8}\\)(:[A-Z]{0,2}\\(?[0-9X,]{0,3}\\)?){0,3}",
         ]) {
             if reads_clean(text.as_bytes()) {
                 proptest::prop_assert!(parses_clean(&text), "{:?}", text);
