@@ -365,12 +365,13 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     parse_assignment_call_or_command(input, name, after_name)
 }
 
-/// Whether [`parse_statement_kind`] reads the name that starts `input`
-/// (`len` bytes, followed by neither `=` nor `[`) as a call's or a
-/// command's: it runs no multi-letter address into its digits (`CR25`) and
-/// is no keyword. The same tests, for [`crate::syntax::clean`].
-pub(crate) fn names_call_or_command(input: Input, len: usize) -> bool {
-    let text = &input.fragment()[..len];
+/// Whether [`parse_statement_kind`] reads `name` (followed by neither `=`
+/// nor `[`) as a call's or a command's: it runs no multi-letter address into
+/// its digits (`CR25`) and is no keyword. The same tests, for
+/// [`crate::syntax::clean`]; a keyword's statement is read from the name
+/// alone, since only whether there is one counts.
+pub(crate) fn names_call_or_command(name: Input) -> bool {
+    let text = name.fragment();
     let first = text[0];
     if matches!(first | 0x20, b'c' | b'r') && multi_letter_address(text).is_some() {
         return false;
@@ -378,12 +379,13 @@ pub(crate) fn names_call_or_command(input: Input, len: usize) -> bool {
     if first == b'$' {
         return true;
     }
-    let after_name = input.take_from(len);
-    let name = Name {
-        span: span_between(&input, &after_name),
+    let after_name = name.take_from(text.len());
+    let spanned = Name {
+        span: span_between(&name, &after_name),
     };
     let mut buffer = [0u8; 16];
-    parse_keyword_statement(input, after_name, name, upper(&input, name, &mut buffer)).is_none()
+    let word = upper(&name, spanned, &mut buffer);
+    parse_keyword_statement(name, after_name, spanned, word).is_none()
 }
 
 /// The length of the multi-letter address (radius, chamfer, rounding) that

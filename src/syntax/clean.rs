@@ -78,7 +78,7 @@ fn statement(bytes: &[u8], at: usize) -> Option<usize> {
     if is_special(text) {
         return None;
     }
-    let callable = || names_call_or_command(Input::new(&bytes[at..], at), text.len());
+    let callable = || names_call_or_command(Input::new(text, at));
     match bytes.get(name_end) {
         Some(b'[') => {
             let after = indices(bytes, name_end)?;
@@ -101,7 +101,13 @@ fn is_special(name: &[u8]) -> bool {
         "ID", "IDS", "NOT", "B_NOT", "DO", "DIV", "MOD", "B_AND", "B_XOR", "B_OR", "AND", "XOR",
         "OR",
     ];
-    name.len() <= 5 && is_one_of(name, &SPECIAL)
+    // By length and first letter first: this runs on every name.
+    matches!(name.len(), 2..=5)
+        && matches!(
+            name[0] | 0x20,
+            b'i' | b'n' | b'b' | b'd' | b'm' | b'a' | b'x' | b'o'
+        )
+        && is_one_of(name, &SPECIAL)
 }
 
 /// An address word: `X-12.5`, `X1=R2` (not `G1=…`), `X=5`, `R[1]=5`.
