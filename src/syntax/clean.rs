@@ -13,7 +13,7 @@
 //! blank, the comment or the line's end. Property-tested against the parser.
 
 use crate::syntax::block::{block_number_digits, names_call_or_command};
-use crate::syntax::lexer::{is_blank, is_name_char, is_name_start, is_one_of, Input};
+use crate::syntax::lexer::{is_blank, is_one_of, Input};
 use crate::syntax::MAX_PARSED_LINE;
 
 /// Whether the parser reads `content` (a line without its terminator)
@@ -40,17 +40,47 @@ pub fn reads_clean(content: &[u8]) -> bool {
         };
         match content.get(end) {
             None | Some(b';') => return true,
-            Some(&byte) if is_blank(byte) => at = skip_blanks(content, end),
+            Some(&byte) if is(byte, BLANK) => at = skip_blanks(content, end),
             Some(_) => return false,
         }
     }
 }
 
 fn skip_blanks(bytes: &[u8], mut at: usize) -> usize {
-    while bytes.get(at).is_some_and(|&b| is_blank(b)) {
+    while bytes.get(at).is_some_and(|&b| is(b, BLANK)) {
         at += 1;
     }
     at
+}
+
+/// The classes of a byte, looked up rather than tested: each byte of a line
+/// is asked about once or twice.
+const BLANK: u8 = 1;
+const NAME_START: u8 = 2;
+const NAME_CHAR: u8 = 4;
+
+static CLASSES: [u8; 256] = {
+    let mut table = [0; 256];
+    let mut byte = 0;
+    while byte < 256 {
+        let b = byte as u8;
+        if is_blank(b) {
+            table[byte] |= BLANK;
+        }
+        if b.is_ascii_alphabetic() || b == b'_' {
+            table[byte] |= NAME_START | NAME_CHAR;
+        }
+        if b.is_ascii_digit() {
+            table[byte] |= NAME_CHAR;
+        }
+        byte += 1;
+    }
+    table
+};
+
+#[inline(always)]
+fn is(byte: u8, class: u8) -> bool {
+    CLASSES[usize::from(byte)] & class != 0
 }
 
 /// The end of the keyword at `at` that makes a block of its own without
@@ -70,7 +100,7 @@ fn statement(bytes: &[u8], at: usize) -> Option<usize> {
     let first = bytes[at];
     // One letter not followed by a second name character is an address
     // (the parser's own test): `X10`, `R1=5`, `A[2]=1`.
-    if first.is_ascii_alphabetic() && !bytes.get(at + 1).is_some_and(|&b| is_name_start(b)) {
+    if first.is_ascii_alphabetic() && !bytes.get(at + 1).is_some_and(|&b| is(b, NAME_START)) {
         return address(bytes, at);
     }
     let name_end = name(bytes, at)?;
@@ -145,10 +175,10 @@ fn name(bytes: &[u8], at: usize) -> Option<usize> {
     while bytes.get(end) == Some(&b'$') {
         end += 1;
     }
-    if !bytes.get(end).is_some_and(|&b| is_name_start(b)) {
+    if !bytes.get(end).is_some_and(|&b| is(b, NAME_START)) {
         return None;
     }
-    while bytes.get(end).is_some_and(|&b| is_name_char(b)) {
+    while bytes.get(end).is_some_and(|&b| is(b, NAME_CHAR)) {
         end += 1;
     }
     Some(end)
@@ -252,7 +282,7 @@ fn number(bytes: &[u8], at: usize) -> Option<usize> {
         end += 1;
     }
     let ok = digits > 0 && points <= 1 && end - at <= 24;
-    (ok && !bytes.get(end).is_some_and(|&b| is_name_char(b))).then_some(end)
+    (ok && !bytes.get(end).is_some_and(|&b| is(b, NAME_CHAR))).then_some(end)
 }
 
 #[cfg(test)]
