@@ -932,13 +932,14 @@ pub fn parse_redef(input: Input) -> PResult<StatementKind> {
 /// Access levels for reading, writing and executing (Siemens, Job
 /// Planning, "Attribute: Access rights").
 const ACCESS_ATTRIBUTES: [&str; 7] = ["APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB"];
-const VALUED_ATTRIBUTES: [&str; 10] = [
+pub(crate) const VALUED_ATTRIBUTES: [&str; 10] = [
     "APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI",
 ];
 /// When a variable is initialised again (Siemens, Job Planning, "Attribute:
 /// Initialization value").
 const INIT_TIMES: [&str; 4] = ["INIPO", "INIRE", "INICF", "PRLOC"];
-const FLAG_ATTRIBUTES: [&str; 7] = ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
+pub(crate) const FLAG_ATTRIBUTES: [&str; 7] =
+    ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
 
 /// `attribute := ('APR' | 'APW' | ... | 'LLI' | 'ULI') expr | 'SYNR' | ... | 'PRLOC'`
 pub fn parse_attributes(mut input: Input) -> PResult<Vec<Attribute>> {

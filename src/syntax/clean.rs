@@ -12,8 +12,10 @@
 //! assignment whose value and indices are single operands), followed by a
 //! blank, the comment or the line's end. Property-tested against the parser.
 
-use crate::syntax::block::{block_number_digits, names_call_or_command};
-use crate::syntax::lexer::{is_blank, is_one_of, Input};
+use crate::syntax::block::{
+    block_number_digits, names_call_or_command, FLAG_ATTRIBUTES, VALUED_ATTRIBUTES,
+};
+use crate::syntax::lexer::{is_blank, is_one_of, Input, RESERVED};
 use crate::syntax::MAX_PARSED_LINE;
 
 /// Whether the parser reads `content` (a line without its terminator)
@@ -26,7 +28,9 @@ pub fn reads_clean(content: &[u8]) -> bool {
     if let Some(digits) = block_number_digits(&content[at..]) {
         at = skip_blanks(content, at + 1 + digits);
     }
-    if let Some(end) = lone_keyword(content, at) {
+    // Statements that stand alone in their block: nothing but the comment
+    // may follow.
+    if let Some(end) = lone_keyword(content, at).or_else(|| definition(content, at)) {
         if matches!(content.get(skip_blanks(content, end)), None | Some(b';')) {
             return true;
         }
@@ -92,6 +96,54 @@ fn lone_keyword(bytes: &[u8], at: usize) -> Option<usize> {
     }
     let end = name(bytes, at)?;
     is_one_of(&bytes[at..end], &LONE).then_some(end)
+}
+
+/// `DEF type name ('=' value)? (',' name ('=' value)?)*` at `at`, with a
+/// type other than STRING and names without dimensions, its end.
+fn definition(bytes: &[u8], at: usize) -> Option<usize> {
+    const TYPES: [&str; 6] = ["INT", "REAL", "BOOL", "CHAR", "AXIS", "FRAME"];
+    let end = name(bytes, at)?;
+    if !bytes[at..end].eq_ignore_ascii_case(b"DEF") || !is(*bytes.get(end)?, BLANK) {
+        return None;
+    }
+    let type_start = skip_blanks(bytes, end);
+    let type_end = name(bytes, type_start)?;
+    if !is_one_of(&bytes[type_start..type_end], &TYPES) || !is(*bytes.get(type_end)?, BLANK) {
+        return None;
+    }
+    let mut at = skip_blanks(bytes, type_end);
+    loop {
+        // A variable's name has two characters or more, is no reserved word,
+        // and no attribute, which the type would take instead.
+        let end = name(bytes, at)?;
+        let text = &bytes[at..end];
+        if text.len() < 2
+            || text[0] == b'$'
+            || is_one_of(text, RESERVED)
+            || is_one_of(text, &VALUED_ATTRIBUTES)
+            || is_one_of(text, &FLAG_ATTRIBUTES)
+        {
+            return None;
+        }
+        let mut end = end;
+        let next = skip_blanks(bytes, end);
+        if bytes.get(next) == Some(&b'=') {
+            if matches!(bytes.get(next + 1), Some(b'=')) {
+                return None;
+            }
+            let value_start = skip_blanks(bytes, next + 1);
+            // `(1, 2)` initialises an array.
+            if bytes.get(value_start) == Some(&b'(') {
+                return None;
+            }
+            end = value(bytes, value_start)?;
+        }
+        let next = skip_blanks(bytes, end);
+        if bytes.get(next) != Some(&b',') {
+            return Some(end);
+        }
+        at = skip_blanks(bytes, next + 1);
+    }
 }
 
 /// The end of the statement at `at` if it is one of those the module
@@ -184,25 +236,31 @@ fn name(bytes: &[u8], at: usize) -> Option<usize> {
     Some(end)
 }
 
-/// More terms than a value chains with `:` here (frames: `CTRANS(…):CROT(…)`);
-/// a long chain goes deeper than the parser follows.
+/// More terms than a value has here (frames: `CTRANS(…):CROT(…)`): a long
+/// chain goes deeper than the parser follows.
 const MOST_TERMS: usize = 16;
 
-/// `'=' blank term (':' term)*` after blanks at `at` (not `==`), the end of
-/// the value. What follows must not continue it: a blank, the comment or the
-/// line's end (the caller checks which; no statement it accepts starts with
-/// an operator).
+/// `'=' value` after blanks at `at` (not `==`), the end of the value.
 fn value_after_equals(bytes: &[u8], at: usize) -> Option<usize> {
     let equals = skip_blanks(bytes, at);
     if bytes.get(equals) != Some(&b'=') || bytes.get(equals + 1) == Some(&b'=') {
         return None;
     }
-    let mut end = operand(bytes, skip_blanks(bytes, equals + 1), true)?;
+    value(bytes, skip_blanks(bytes, equals + 1))
+}
+
+/// `term (operator term)*` at `at`, terms joined by `+ - * /` or chained by
+/// `:`, its end. What follows must not continue it: a blank, the comment or
+/// the line's end (the caller checks which; no statement it accepts starts
+/// with an operator, and blanks before one are the parser's to skip too).
+fn value(bytes: &[u8], at: usize) -> Option<usize> {
+    let mut end = operand(bytes, at, true)?;
     for _ in 1..MOST_TERMS {
-        if bytes.get(end) != Some(&b':') {
+        let next = skip_blanks(bytes, end);
+        if !matches!(bytes.get(next), Some(b'+' | b'-' | b'*' | b'/' | b':')) {
             return Some(end);
         }
-        end = operand(bytes, end + 1, true)?;
+        end = operand(bytes, skip_blanks(bytes, next + 1), true)?;
     }
     None
 }
@@ -323,6 +381,12 @@ mod tests {
             "$P_UIFR[1]=CTRANS(X,0.000,Y,0.000):CROT(X,0.000,Y,0.000,Z,0.000):CMIRROR()",
             "X=IC(10)",
             "TRAORI",
+            "X=2+3*4",
+            "X = 100 - 10*2 + 5",
+            "X=2*-3",
+            "DEF INT VAR1 = 4",
+            "DEF REAL START_CC=10, START_CC_SPEED=0.5, EXTRUSION_MULTIPLIER=1, RETRACT_CC=1",
+            "N10 def bool FLAG ; a flag",
         ] {
             assert!(reads_clean(clean.as_bytes()), "{clean}");
             assert!(parses_clean(clean), "{clean}");
@@ -353,6 +417,16 @@ mod tests {
             "X=A (1)",
             "X=A(1):",
             "A(1):B(2)",
+            "X=2+",
+            "X=2 DIV 3",
+            "DEF INT X",
+            "DEF INT IF",
+            "DEF INT APR 7",
+            "DEF INT AB X1",
+            "DEF INT AB=(1,2)",
+            "DEF STRING[8] TAG",
+            "DEF INT AB==1",
+            "X1 DEF INT AB",
             "X=5 DIV 2",
             "/X1",
             "%_N_A_MPF",
@@ -373,6 +447,8 @@ mod tests {
             "([XN]=[0-9] ){1,2}(OR|AND|XOR|MOD|DIV|B_OR|NOT|DO|ID|XA|N1)( ?= ?[0-9])?",
             "(N1 ?|:2 )?((ELSE|endif|LOOP|ENDLOOPX|IF|TRANS|ATRANS|APR|CR2|RND|CHF1|SETINT|GOTOF|WHEN|CALL|DEF|REPEAT|PROC|CASE|SUPA|\\$A|_B)(\\(( ?(-?[0-9.]{1,2}|X|\"A\"|A\\[1\\])? ?,?){0,3}\\)(:[A-Z]{1,2}\\([0-9]?\\))?)? ?(=|:)? ?){1,3}( ?;[A-Z ]*)?",
             "[A-Z$_]{1,3}=[A-Z]{1,2}\\(([0-9X, .\"-]|\\(|\\)){0,8}\\)(:[A-Z]{0,2}\\(?[0-9X,]{0,3}\\)?){0,3}",
+            "[XN]1? ?= ?(-?[0-9.]{1,2}|A|\"B\"|F\\(1\\)|OR|\\() ?([-+*/:=<>]{1,2} ?(-?[0-9.]{1,2}|A|\"B\"|F\\(1\\)|OR|\\(|) ?){0,3}( X1| ;)?",
+            "(N1 )?(DEF|def|REDEF|DEF ) ?(INT|REAL|STRING|NCK|APR|STRING\\[2\\]) ?(([A-Z$_]{1,3}|IF|APR|SYNR|TO)(\\[2\\])? ?(=|==)? ?(-?[0-9.]{0,2}|\\(1,2\\)|A\\+1|\"\")? ?,? ?){1,3}( X1| ;)?",
         ]) {
             if reads_clean(text.as_bytes()) {
                 proptest::prop_assert!(parses_clean(&text), "{:?}", text);
