@@ -1,16 +1,21 @@
-//! Lines of assignments and address words that the parser reads without an
-//! error, told without parsing them: `$TC_DP1[1,1]=120`, `CYCLES = 1`,
-//! `M3 S=_RPM`, `X=R2 Y=-2.5 ; comment`, the lines that setup files and
+//! Lines that the parser reads without an error, told without parsing them:
+//! assignments and address words (`$TC_DP1[1,1]=120`, `CYCLES = 1`,
+//! `M3 S=_RPM`, `X=R2 Y=-2.5 ; comment`), calls and commands
+//! (`WARMUP_CYCLE(3600, 600)`, `G0 SUPA Z0`), lone keywords (`ENDIF`) and
+//! one-line definitions (`DEF REAL START_CC=10`): what setup files and
 //! hand-written cycles are mostly made of. A line without an error yields
 //! nothing in the syntax pass ([`super::diagnostics`]), which steps over
-//! these as over plain lines: parsing one cost about 2,000 instructions
-//! (its tree built and dropped), telling it about 100.
+//! these as over plain lines: parsing one cost about 2,000 instructions (its
+//! tree built and dropped), telling it a few hundred.
 //!
 //! Strict and conservative, as [`super::plain::is_plain`] is: `false` means
 //! "parse it to know". Each statement is one the parser reads the same way
-//! wherever it stands in the block (an address word with a number, or an
-//! assignment whose value and indices are single operands), followed by a
-//! blank, the comment or the line's end. Property-tested against the parser.
+//! wherever it stands in the block: an address word with a number; an
+//! assignment whose value is operands (numbers, strings, variables, calls)
+//! joined by `+ - * /` or `:`, with indices and arguments of single
+//! operands; a call or command whose name the parser's own tests take for
+//! one (`block::names_call_or_command`); each followed by a blank,
+//! the comment or the line's end. Property-tested against the parser.
 
 use crate::syntax::block::{
     block_number_digits, names_call_or_command, FLAG_ATTRIBUTES, VALUED_ATTRIBUTES,
