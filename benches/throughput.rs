@@ -15,6 +15,11 @@
 //! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs; `SINUPREP_BENCH_ONLY=syntax`
 //! stops after the syntax table). The resident peak comes from
 //! `/usr/bin/time -f %M`; nothing is asserted.
+//!
+//! `SINUPREP_BENCH_ONLY=syntax-pass-cam` or `syntax-pass-hand` runs the
+//! syntax pass once over that input and does nothing else, for instruction
+//! counts: `SINUPREP_BENCH_SYNTAX_MB=2 valgrind --tool=callgrind
+//! --toggle-collect='sinuprep::syntax::diagnostics' <bench binary>`.
 
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
@@ -34,8 +39,13 @@ fn main() {
         .unwrap_or(100);
     let size = megabytes * 1_000_000;
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let only = std::env::var("SINUPREP_BENCH_ONLY").unwrap_or_default();
+    if let Some(input) = only.strip_prefix("syntax-pass-") {
+        syntax_pass_once(&root, input);
+        return;
+    }
     syntax_only(&root);
-    if std::env::var("SINUPREP_BENCH_ONLY").is_ok_and(|only| only == "syntax") {
+    if only == "syntax" {
         return;
     }
     let binary = process::release_binary();
@@ -188,6 +198,22 @@ fn syntax_only(root: &Path) {
             );
         }
     }
+}
+
+/// The syntax pass once over `SINUPREP_BENCH_SYNTAX_MB` of the CAM program
+/// (`input` "cam") or the hand-written cycles ("hand"), for a profiler.
+fn syntax_pass_once(root: &Path, input: &str) {
+    let megabytes: usize = std::env::var("SINUPREP_BENCH_SYNTAX_MB")
+        .ok()
+        .and_then(|m| m.parse().ok())
+        .unwrap_or(10);
+    let source = match input {
+        "cam" => cam_program(megabytes * 1_000_000, 0),
+        "hand" => hand_written_cycles(root, megabytes * 1_000_000),
+        _ => panic!("SINUPREP_BENCH_ONLY=syntax-pass-cam or syntax-pass-hand"),
+    };
+    let found = syntax_pass(black_box(&source));
+    println!("{} bytes, {found} syntax diagnostics", source.len());
 }
 
 /// A pass over a program's bytes, and a count it makes.

@@ -365,6 +365,29 @@ fn parse_statement_kind(input: Input) -> PResult<StatementKind> {
     parse_assignment_call_or_command(input, name, after_name)
 }
 
+/// Whether [`parse_statement_kind`] reads `name` (followed by neither `=`
+/// nor `[`) as a call's or a command's: it runs no multi-letter address into
+/// its digits (`CR25`) and is no keyword. The same tests, for
+/// [`crate::syntax::clean`]; a keyword's statement is read from the name
+/// alone, since only whether there is one counts.
+pub(crate) fn names_call_or_command(name: Input) -> bool {
+    let text = name.fragment();
+    let first = text[0];
+    if matches!(first | 0x20, b'c' | b'r') && multi_letter_address(text).is_some() {
+        return false;
+    }
+    if first == b'$' {
+        return true;
+    }
+    let after_name = name.take_from(text.len());
+    let spanned = Name {
+        span: span_between(&name, &after_name),
+    };
+    let mut buffer = [0u8; 16];
+    let word = upper(&name, spanned, &mut buffer);
+    parse_keyword_statement(name, after_name, spanned, word).is_none()
+}
+
 /// The length of the multi-letter address (radius, chamfer, rounding) that
 /// `name` runs into its digits, as `CR25` for `CR=25`.
 fn multi_letter_address(name: &[u8]) -> Option<usize> {
@@ -909,13 +932,14 @@ pub fn parse_redef(input: Input) -> PResult<StatementKind> {
 /// Access levels for reading, writing and executing (Siemens, Job
 /// Planning, "Attribute: Access rights").
 const ACCESS_ATTRIBUTES: [&str; 7] = ["APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB"];
-const VALUED_ATTRIBUTES: [&str; 10] = [
+pub(crate) const VALUED_ATTRIBUTES: [&str; 10] = [
     "APR", "APW", "APX", "APRP", "APWP", "APRB", "APWB", "PHU", "LLI", "ULI",
 ];
 /// When a variable is initialised again (Siemens, Job Planning, "Attribute:
 /// Initialization value").
 const INIT_TIMES: [&str; 4] = ["INIPO", "INIRE", "INICF", "PRLOC"];
-const FLAG_ATTRIBUTES: [&str; 7] = ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
+pub(crate) const FLAG_ATTRIBUTES: [&str; 7] =
+    ["SYNR", "SYNW", "SYNRW", "INIPO", "INIRE", "INICF", "PRLOC"];
 
 /// `attribute := ('APR' | 'APW' | ... | 'LLI' | 'ULI') expr | 'SYNR' | ... | 'PRLOC'`
 pub fn parse_attributes(mut input: Input) -> PResult<Vec<Attribute>> {

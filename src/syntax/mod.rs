@@ -7,6 +7,7 @@
 //! no values, no rotations.
 
 pub(crate) mod block;
+pub mod clean;
 mod errors;
 pub mod expr;
 pub(crate) mod input;
@@ -74,16 +75,19 @@ pub fn parse(source: &[u8]) -> Program<'_> {
 }
 
 /// The syntax diagnostics of a program, without keeping its tree: each line
-/// is parsed and dropped, so memory holds one line's tree at a time.
+/// is parsed and dropped, so memory holds one line's tree at a time. Plain
+/// lines and the lines [`clean::reads_clean`] accepts have no error to find
+/// and are not parsed.
 pub fn diagnostics(source: &[u8]) -> Vec<Diagnostic> {
     let lines = plain::scanned_lines(source).map(|line| match line {
         plain::Scanned::Plain(_) => None,
+        plain::Scanned::Other(raw) if clean::reads_clean(raw.content.of(source)) => None,
         plain::Scanned::Other(raw) => Some(raw),
     });
     diagnostics_of(source, lines)
 }
 
-/// The diagnostics of `lines`, `None` for a plain one.
+/// The diagnostics of `lines`, `None` for one without an error to find.
 fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -> Vec<Diagnostic> {
     let mut parser = LineParser::default();
     let mut found = Vec::new();
@@ -91,7 +95,7 @@ fn diagnostics_of(source: &[u8], lines: impl Iterator<Item = Option<RawLine>>) -
     // as much as scanning the line.
     for line in lines {
         match line {
-            // A plain line has no error to find.
+            // A line without an error changes nothing but the row.
             None => parser.pass_plain_line(),
             Some(raw) => found.extend(parser.line_diagnostic(source, raw)),
         }
@@ -153,7 +157,8 @@ struct OpenCall {
 }
 
 impl LineParser {
-    /// Steps over a line [`plain::is_plain`] accepts, as parsing it would.
+    /// Steps over a line without an error (one [`plain::is_plain`] or
+    /// [`clean::reads_clean`] accepts), as parsing it would.
     pub fn pass_plain_line(&mut self) {
         self.pass_plain_lines(1);
     }
