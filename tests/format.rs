@@ -218,6 +218,7 @@ fn every_program_formats_idempotently_and_means_what_it_meant() {
         Settings {
             indent: "\t".to_string(),
             case: Case::Lower,
+            case_names: true,
             max_blank_lines: 0,
             indent_proc_body: false,
             ..Settings::default()
@@ -345,4 +346,25 @@ fn formatted_samples() {
         assert_exit(&output, 0);
         insta::assert_snapshot!(sample, String::from_utf8_lossy(&output.stdout));
     }
+}
+
+/// `case-names`: the user's names take the case too (the control ignores
+/// it); by default they stay as written. Strings and comments never change.
+#[test]
+fn user_names_take_the_case_only_when_asked() {
+    let source = b"def real _depth=1 ; _depth\nproc_a:\n_depth=_depth+1\nif _depth<3 gotob proc_a\nmy_sub(\"_depth\")\nm30\n";
+    let (kept, _) = formatted("A.MPF", source, &Settings::default());
+    assert_eq!(
+        String::from_utf8_lossy(&kept),
+        "DEF REAL _depth=1 ; _depth\nproc_a:\n_depth=_depth+1\nIF _depth<3 GOTOB proc_a\nmy_sub(\"_depth\")\nM30\n"
+    );
+    let names = Settings {
+        case_names: true,
+        ..Settings::default()
+    };
+    let (upper, _) = formatted("A.MPF", source, &names);
+    assert_eq!(
+        String::from_utf8_lossy(&upper),
+        "DEF REAL _DEPTH=1 ; _depth\nPROC_A:\n_DEPTH=_DEPTH+1\nIF _DEPTH<3 GOTOB PROC_A\nMY_SUB(\"_depth\")\nM30\n"
+    );
 }

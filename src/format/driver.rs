@@ -16,6 +16,7 @@ use crate::format::protect::{is_data_file, mentions_hmi, Hmi};
 use crate::format::renumber::{self, Plan};
 use crate::format::{Case, Settings};
 use crate::semantic::addresses::{self, is_end_word};
+use crate::semantic::uses::Uses;
 use crate::semantic::Model;
 use crate::span::Span;
 use crate::syntax::lexer::find_ignoring_case;
@@ -165,6 +166,8 @@ fn lay_out(
     let mut unread: Vec<Span> = Vec::new();
     let mut out = Vec::new();
     let mut words = Vec::new();
+    // The user's names, where they take the case too.
+    let names = (settings.case_names && settings.case != Case::Keep).then(|| Uses::of(model));
     let mut blank_run = 0;
     let mut emitted_run = false;
     for (row, raw) in raw_lines(source).enumerate() {
@@ -257,6 +260,15 @@ fn lay_out(
                 words.clear();
                 if settings.case != Case::Keep {
                     words = language_words(source, content, code_end, block);
+                }
+                if let Some(names) = &names {
+                    // The uses are in source order: this line's, found by halving.
+                    let all = names.all();
+                    let first = all.partition_point(|u| u.span.start < content.start);
+                    let user = all[first..].iter().map(|u| u.span);
+                    words.extend(user.take_while(|s| s.end <= code_end));
+                    words.sort_unstable_by_key(|w| (w.start, w.end));
+                    words.dedup();
                 }
                 LineParts {
                     content,

@@ -48,6 +48,10 @@ pub struct Settings {
     /// Whether a PROC's body is indented one level.
     pub indent_proc_body: bool,
     pub case: Case,
+    /// The user's names (DEF variables, labels, PROC and subprogram names)
+    /// take `case` too: the control ignores their case, so it changes
+    /// nothing it does; by default they stay as written.
+    pub case_names: bool,
     /// Blank lines kept in a row, at most.
     pub max_blank_lines: usize,
     /// `--renumber START,STEP`.
@@ -60,6 +64,7 @@ impl Default for Settings {
             indent: "  ".to_string(),
             indent_proc_body: true,
             case: Case::Upper,
+            case_names: false,
             max_blank_lines: 1,
             renumber: None,
         }
@@ -74,6 +79,7 @@ pub struct FormatConfig {
     pub indent: Option<Indent>,
     pub indent_proc_body: Option<bool>,
     pub case: Option<Case>,
+    pub case_names: Option<bool>,
     pub max_blank_lines: Option<usize>,
 }
 
@@ -109,6 +115,9 @@ impl Settings {
         }
         if let Some(case) = config.case {
             settings.case = case;
+        }
+        if let Some(names) = config.case_names {
+            settings.case_names = names;
         }
         if let Some(max) = config.max_blank_lines {
             settings.max_blank_lines = max;
