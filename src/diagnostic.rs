@@ -43,6 +43,16 @@ pub struct Diagnostic {
     /// The edit that answers the finding, when one is known (boxed: most
     /// findings have none).
     pub fix: Option<Box<Fix>>,
+    /// Another place the finding concerns (the first definition of a name
+    /// defined again), which an editor shows beside it.
+    pub related: Option<Box<Related>>,
+}
+
+/// A place related to a finding, and what it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Related {
+    pub span: Span,
+    pub message: String,
 }
 
 /// Whether a fix may be applied without a person reading it.
@@ -95,7 +105,16 @@ impl Diagnostic {
             label: Cow::Borrowed(""),
             help: None,
             fix: None,
+            related: None,
         }
+    }
+
+    pub fn related(mut self, span: Span, message: impl Into<String>) -> Self {
+        self.related = Some(Box::new(Related {
+            span,
+            message: message.into(),
+        }));
+        self
     }
 
     pub fn fix(mut self, fix: Fix) -> Self {

@@ -780,3 +780,27 @@ fn formatting_gives_the_edits_of_fmt() {
     let (code, _) = client.stop();
     assert_eq!(code, Some(0));
 }
+
+/// A name defined again points at its first definition (related
+/// information), which the editor shows beside the finding.
+#[test]
+fn a_second_definition_points_at_the_first() {
+    let (mut client, _) = Client::start(json!({}));
+    let found = client.open(URI, "DEF REAL LENGTH\nR1=LENGTH\nDEF INT LENGTH\nM30\n");
+    let again = found
+        .iter()
+        .find(|d| {
+            d["message"]
+                .as_str()
+                .is_some_and(|m| m.contains("already defined"))
+        })
+        .expect("a finding on the second DEF");
+    let related = &again["relatedInformation"][0];
+    assert_eq!(related["location"]["uri"], URI);
+    assert_eq!(
+        related["location"]["range"],
+        json!({ "start": { "line": 0, "character": 9 }, "end": { "line": 0, "character": 15 } })
+    );
+    assert_eq!(related["message"], "`LENGTH` is first defined here");
+    client.stop();
+}

@@ -490,6 +490,16 @@ impl Sarif {
                     }
                 }],
             });
+            if let Some(related) = &d.related {
+                result["relatedLocations"] = serde_json::json!([{
+                    "id": 1,
+                    "physicalLocation": {
+                        "artifactLocation": location,
+                        "region": { "byteOffset": related.span.start, "byteLength": related.span.len() }
+                    },
+                    "message": { "text": related.message }
+                }]);
+            }
             if let Some(fix) = &d.fix {
                 // SARIF's own fix object: byte regions replaced by text.
                 let replacements: Vec<_> = fix

@@ -169,6 +169,9 @@ impl Opened {
             .into_iter()
             .map(|mut d| {
                 d.span = Span::new(d.span.start + at, d.span.end + at);
+                if let Some(related) = &mut d.related {
+                    related.span = Span::new(related.span.start + at, related.span.end + at);
+                }
                 d.message = format!("{name}: {}", d.message);
                 d.fix = d.fix.and_then(|fix| {
                     let edits = archive.edits(bytes, index, &fix.edits)?;

@@ -55,10 +55,11 @@ impl<'a, 't> Snapshot<'a, 't> {
         self.walk.into_iter().flat_map(|walk| &walk.calls)
     }
 
-    pub fn diagnostics(&self) -> Vec<lsp::Diagnostic> {
+    /// The findings of the document at `uri`.
+    pub fn diagnostics(&self, uri: &lsp::Uri) -> Vec<lsp::Diagnostic> {
         self.findings
             .iter()
-            .map(|found| convert::diagnostic(self.text, found, self.unit))
+            .map(|found| convert::diagnostic(self.text, uri, found, self.unit))
             .collect()
     }
 
@@ -341,7 +342,7 @@ impl<'a, 't> Snapshot<'a, 't> {
         let touches = |span: Span| span.start <= wanted.end && wanted.start <= span.end;
         let mut actions = Vec::new();
         for found in self.findings.iter().filter(|found| touches(found.span)) {
-            let diagnostic = convert::diagnostic(self.text, found, self.unit);
+            let diagnostic = convert::diagnostic(self.text, uri, found, self.unit);
             if let Some(fix) = &found.fix {
                 let safe = fix.applicability == crate::diagnostic::Applicability::Safe;
                 let mut action =

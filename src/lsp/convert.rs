@@ -60,7 +60,13 @@ fn saturate(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
-pub fn diagnostic(text: &Text, found: &Diagnostic, unit: ColumnUnit) -> lsp::Diagnostic {
+/// A finding of the document at `uri`, its related place in the same one.
+pub fn diagnostic(
+    text: &Text,
+    uri: &lsp::Uri,
+    found: &Diagnostic,
+    unit: ColumnUnit,
+) -> lsp::Diagnostic {
     let severity = match found.severity {
         Severity::Error => lsp::DiagnosticSeverity::ERROR,
         Severity::Warning => lsp::DiagnosticSeverity::WARNING,
@@ -77,6 +83,12 @@ pub fn diagnostic(text: &Text, found: &Diagnostic, unit: ColumnUnit) -> lsp::Dia
         code: Some(lsp::NumberOrString::String(found.code.to_string())),
         source: Some("sinuprep".to_string()),
         message,
+        related_information: found.related.as_ref().map(|related| {
+            vec![lsp::DiagnosticRelatedInformation {
+                location: lsp::Location::new(uri.clone(), range(text, related.span, unit)),
+                message: related.message.clone(),
+            }]
+        }),
         ..lsp::Diagnostic::default()
     }
 }

@@ -425,10 +425,10 @@ impl Server<'_> {
                 s.rename(&at.text_document.uri, at.position, &p.new_name)
             }),
             r::DocumentDiagnosticRequest::METHOD => {
-                self.answer(request, |s, _: lsp::DocumentDiagnosticParams| {
+                self.answer(request, |s, p: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,
-                        items: s.diagnostics(),
+                        items: s.diagnostics(&p.text_document.uri),
                     };
                     Ok(lsp::DocumentDiagnosticReportResult::Report(
                         lsp::DocumentDiagnosticReport::Full(

@@ -59,7 +59,7 @@ fn work(queue: &Receiver<Job>, out: &Sender<Message>) {
             let analysed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                 let open = job.open.as_ref();
                 open.map_or_else(Vec::new, |open| {
-                    open.with_snapshot(job.unit, |snapshot| snapshot.diagnostics())
+                    open.with_snapshot(job.unit, |snapshot| snapshot.diagnostics(&job.uri))
                 })
             }));
             // A failure inside sinuprep is said on stderr by the panic

@@ -4,6 +4,7 @@ use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext};
+use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N007",
@@ -31,10 +32,10 @@ pub struct Checker;
 
 impl Check for Checker {
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
-        let mut first: HashMap<&str, usize> = HashMap::new();
+        let mut first: HashMap<&str, (usize, Span)> = HashMap::new();
         for symbol in &file.model().symbols {
             match first.get(symbol.name.as_str()) {
-                Some(row) => out.push(
+                Some(&(row, span)) => out.push(
                     RULE.at(symbol.span)
                         .message(format!(
                             "`{}` is already defined on line {}",
@@ -42,10 +43,11 @@ impl Check for Checker {
                             row + 1
                         ))
                         .label("defined again")
-                        .help("remove one definition, or rename one of the variables"),
+                        .help("remove one definition, or rename one of the variables")
+                        .related(span, format!("`{}` is first defined here", symbol.name)),
                 ),
                 None => {
-                    first.insert(&symbol.name, symbol.row);
+                    first.insert(&symbol.name, (symbol.row, symbol.span));
                 }
             }
         }
