@@ -664,7 +664,7 @@ fn an_archive_is_checked_program_by_program() {
 /// A hover on a G or M function says what it does, in the Programming
 /// Manual's terms; a machine builder's M function is not guessed at.
 #[test]
-fn a_g_or_m_function_hover_says_what_it_does() {
+fn a_g_or_m_function_or_system_variable_hover_says_what_it_is() {
     let (mut client, _) = Client::start(json!({}));
     client.open(URI, PART);
     let hover = client.request("textDocument/hover", at(URI, 3, 1));
@@ -678,6 +678,12 @@ fn a_g_or_m_function_hover_says_what_it_does() {
     );
     let hover = client.request("textDocument/hover", at(URI, 3, 20));
     assert_eq!(hover["contents"]["value"], "M3: spindle clockwise");
+    client.open("untitled:CARR.MPF", "$TC_CARR9[1]=1\nM30\n");
+    let hover = client.request("textDocument/hover", at("untitled:CARR.MPF", 0, 4));
+    assert_eq!(
+        hover["contents"]["value"],
+        "$TC_CARR9[m]: swivel data record m, direction of rotary axis 1 (v1), z"
+    );
     client.open("untitled:COOLANT.MPF", "M8\nM30\n");
     let hover = client.request("textDocument/hover", at("untitled:COOLANT.MPF", 0, 1));
     assert_eq!(hover, Value::Null);

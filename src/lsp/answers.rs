@@ -159,17 +159,24 @@ impl<'a, 't> Snapshot<'a, 't> {
         Some(markdown(text, self.range(statement)))
     }
 
-    /// On a G or M function: what it does.
+    /// On a G or M function, what it does; on a system variable, what it
+    /// holds.
     fn function_hover(&self, at: usize) -> Option<lsp::Hover> {
         let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
         let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), row..row + 1);
         let token = tokens
             .into_iter()
             .find(|t| t.span.start <= at && at < t.span.end.max(t.span.start + 1))?;
-        if token.class != crate::semantic::highlight::Class::Keyword {
-            return None;
-        }
-        let text = crate::semantic::functions::describe(token.span.of(self.text.bytes()))?;
+        let word = token.span.of(self.text.bytes());
+        let text = match token.class {
+            crate::semantic::highlight::Class::Keyword => {
+                crate::semantic::functions::describe(word)?
+            }
+            crate::semantic::highlight::Class::SystemVariable => {
+                crate::semantic::functions::system_variable(word)?
+            }
+            _ => return None,
+        };
         Some(markdown(text, self.range(token.span)))
     }
 

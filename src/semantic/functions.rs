@@ -4,7 +4,10 @@
 //! itself predefines (Function Manual Basic Functions, "Auxiliary function
 //! outputs": M0, M1, M2, M3 to M5, M6, M17, M19, M30, M40 to M45, M70).
 //! Others (M7 to M9, a machine builder's M functions) mean what the machine
-//! builder made them mean, and are not described.
+//! builder made them mean, and are not described. And the system variables
+//! a program that swivels and probes reads: the swivel data record's
+//! `$TC_CARR1..65` (`../shared/reference/kinematics.md` §1.1, each field
+//! confirmed there), frames, positions and measured values.
 
 use crate::semantic::modal::g_group;
 
@@ -99,6 +102,85 @@ pub fn m_function(number: u32) -> Option<&'static str> {
     })
 }
 
+/// The field `$TC_CARR<field>` of a swivel data record.
+fn swivel_data(field: u32) -> Option<String> {
+    let xyz = |first: u32| ["x", "y", "z"][(field - first) as usize];
+    Some(match field {
+        1..=3 => format!("offset vector l1, {}", xyz(1)),
+        4..=6 => format!("offset vector l2, {}", xyz(4)),
+        7..=9 => format!("direction of rotary axis 1 (v1), {}", xyz(7)),
+        10..=12 => format!("direction of rotary axis 2 (v2), {}", xyz(10)),
+        13 | 14 => format!(
+            "angle of rotary axis {} where no channel axis is named ($TC_CARR{})",
+            field - 12,
+            field + 8
+        ),
+        15..=17 => format!("offset vector l3, {}", xyz(15)),
+        18..=20 => format!("offset vector l4, {}", xyz(18)),
+        21 | 22 => format!(
+            "channel axis of rotary axis {} (its position at block start is the angle)",
+            field - 20
+        ),
+        23 => "kinematic type: T (head), P (table), M (mixed)".to_string(),
+        24 | 25 => format!(
+            "offset of rotary axis {} (degrees): its angle in the initial state",
+            field - 23
+        ),
+        26 | 27 => format!("Hirth grid offset of rotary axis {} (degrees)", field - 25),
+        28 | 29 => format!(
+            "Hirth grid step of rotary axis {} (degrees; above 0, the axis is toothed)",
+            field - 27
+        ),
+        30 | 31 => format!("lower limit of rotary axis {} (degrees)", field - 29),
+        32 | 33 => format!("upper limit of rotary axis {} (degrees)", field - 31),
+        34 => "the record's name, CYCLE800's `_TC`".to_string(),
+        35 | 36 => format!("name of rotary axis {}", field - 34),
+        37 => "CYCLE800 options, in decimal digits".to_string(),
+        38..=40 => format!("CYCLE800 retraction position, {}", xyz(38)),
+        41..=43 => format!("fine offset of l1, {}", xyz(41)),
+        44..=46 => format!("fine offset of l2, {}", xyz(44)),
+        55..=57 => format!("fine offset of l3, {}", xyz(55)),
+        58..=60 => format!("fine offset of l4, {}", xyz(58)),
+        64 | 65 => format!("fine offset of rotary axis {}'s offset", field - 63),
+        _ => return None,
+    })
+}
+
+/// What a system variable (`$TC_CARR7`, `$P_UIFR`, `$MC_...`) holds; `None`
+/// for one not described.
+pub fn system_variable(name: &[u8]) -> Option<String> {
+    let name = String::from_utf8_lossy(name).to_ascii_uppercase();
+    if let Some(field) = name.strip_prefix("$TC_CARR") {
+        let what = swivel_data(field.parse().ok()?)?;
+        return Some(format!("{name}[m]: swivel data record m, {what}"));
+    }
+    let what = match name.as_str() {
+        "$P_UIFR" => "the settable frames (G54 to G57, G505 to G599), by number",
+        "$P_PFRAME" => "the programmable frame (TRANS, ROT, ... in the program)",
+        "$P_ACTFRAME" => "the whole frame in force",
+        "$P_TOOLNO" => "the number of the active tool",
+        "$P_TOOL" => "the active tool edge (D number)",
+        "$AA_IM" => "an axis's actual position, machine coordinates",
+        "$AA_IW" => "an axis's actual position, workpiece coordinates",
+        "$AA_MM" => "an axis's measured position, machine coordinates",
+        "$AA_MW" => "an axis's measured position, workpiece coordinates",
+        "$AC_MEA" => "the probe has switched (1) or not (0)",
+        _ => {
+            let kind = match name.get(..4) {
+                Some("$MN_") => "NC machine data",
+                Some("$MC_") => "channel machine data",
+                Some("$MA_") => "axis machine data",
+                Some("$SN_") => "NC setting data",
+                Some("$SC_") => "channel setting data",
+                Some("$SA_") => "axis setting data",
+                _ => return None,
+            };
+            return Some(format!("{name}: {kind}"));
+        }
+    };
+    Some(format!("{name}: {what}"))
+}
+
 /// A G or M word (`G01`, `m30`) described: `None` for another word or one
 /// not described.
 pub fn describe(word: &[u8]) -> Option<String> {
@@ -148,6 +230,26 @@ mod tests {
         assert_eq!(describe(b"G1234"), None);
         assert_eq!(describe(b"X10"), None);
         assert_eq!(describe(b"G"), None);
+    }
+
+    #[test]
+    fn system_variables_are_described() {
+        assert_eq!(
+            system_variable(b"$tc_carr8").as_deref(),
+            Some("$TC_CARR8[m]: swivel data record m, direction of rotary axis 1 (v1), y")
+        );
+        assert_eq!(
+            system_variable(b"$TC_CARR33").as_deref(),
+            Some("$TC_CARR33[m]: swivel data record m, upper limit of rotary axis 2 (degrees)")
+        );
+        assert_eq!(
+            system_variable(b"$MC_AXCONF_GEOAX_NAME_TAB").as_deref(),
+            Some("$MC_AXCONF_GEOAX_NAME_TAB: channel machine data")
+        );
+        // Fields the control does not define, names not described.
+        assert_eq!(system_variable(b"$TC_CARR50"), None);
+        assert_eq!(system_variable(b"$TC_CARR99"), None);
+        assert_eq!(system_variable(b"$P_SOMETHING"), None);
     }
 
     /// Every G function described belongs to the group the modal state
