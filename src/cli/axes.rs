@@ -12,7 +12,9 @@ use crate::cli::args::{AxesArgs, MessageFormat};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
-use crate::kinematics::{solve, split, Direction, Record, Request, Split, Swivel, TableAngle};
+use crate::kinematics::{
+    solve, split, Direction, Preference, Record, Request, Split, Swivel, TableAngle, TableAsk,
+};
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};
@@ -63,8 +65,13 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
                 .as_deref()
                 .map(|fix| fixed_position(fix, table, &path))
                 .transpose()?;
-            let split = split(table, &record, &request, 0.0, fixed)
-                .map_err(|error| refused(table, &error))?;
+            let ask = TableAsk {
+                current: 0.0,
+                fixed,
+                prefer: Preference::Middle,
+            };
+            let split =
+                split(table, &record, &request, &ask).map_err(|error| refused(table, &error))?;
             let mut head = split.head.clone();
             // The head's offsets shift nothing; the table's do.
             head.shift = head.shift.map(|shift| shift + split.shift);
@@ -136,7 +143,8 @@ fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliErro
 fn table_line(table: &Record, split: &Split) -> String {
     let how = match split.found {
         TableAngle::Fixed => "fixed by --fix",
-        TableAngle::Chosen => "chosen: the head nearest the middles of its limits",
+        TableAngle::Chosen(_) => "chosen: the head nearest the middles of its limits",
+        TableAngle::Beyond { .. } | TableAngle::Unreachable => "kept",
     };
     let limits = if split.table_within_limits {
         ""
