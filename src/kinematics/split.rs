@@ -23,7 +23,7 @@
 //! equal, found by a root finder on that interval. Nothing the table can
 //! do is missed, however narrow.
 
-use nalgebra::Vector3;
+use nalgebra::{Rotation3, Vector3};
 
 use crate::kinematics::record::{Hirth, Kinematics, Record, RecordError};
 use crate::kinematics::subproblem::UpToTwo;
@@ -97,8 +97,25 @@ pub struct Split {
     pub found: TableAngle,
     /// The head's swivel for what the table leaves.
     pub head: Swivel,
-    /// The zero-point shift the table's offset vectors make.
+    /// What the table leaves the head: the requested rotation with the
+    /// table's taken out, `T⁻¹ · R_req` (the frame CYCLE800 on the head's
+    /// record is asked for once the table has turned).
+    pub head_frame: Rotation3<f64>,
+    /// The table axis's turn `R(v1, α)` of the record's shift
+    /// (`l2 + R(v1, α) (l3 + l4) − (l2 + l3 + l4)`, the vector as entered).
+    pub table_turn: Rotation3<f64>,
+    /// The zero-point shift the table's offset vectors make: how far the
+    /// end of its chain moves.
     pub shift: Vector3<f64>,
+}
+
+impl Split {
+    /// How far a work zero at `x` (machine coordinates, the initial state)
+    /// moves as the table turns: `shift + (R − I) · x`, the chain's end
+    /// moving by `shift` and the work zero turning with the table about it.
+    pub fn work_zero_moves(&self, x: &Vector3<f64>) -> Vector3<f64> {
+        self.shift + (self.table_turn * x - x)
+    }
 }
 
 /// Records that do not make a table under a head.
@@ -309,6 +326,8 @@ impl<'a> Problem<'a> {
                 .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma)),
             found,
             head,
+            head_frame: turned,
+            table_turn: from_axis_angle(axis.vector, self.x0 + t),
             shift: shift(self.table, [gamma - axis.offset, 0.0]),
         }
     }
@@ -844,6 +863,64 @@ mod tests {
 
     fn split_at(table: &Record, head: &Record, asked: &Request, gamma: f64) -> Split {
         split(table, head, asked, &middle(Some(gamma))).expect("valid")
+    }
+
+    #[test]
+    fn nowhere_inside_the_limits_the_nearest_split_is_given() {
+        let (table, head) = machine();
+        // The tool along Y: a table about Y does not move it, and A reaches
+        // 30° only: 60° beyond, whatever the table does.
+        let asked = request(from_axis_angle(Vector3::x(), -90.0));
+        let nearest = split(&table, &head, &asked, &middle(None)).expect("valid");
+        let TableAngle::Beyond {
+            solution,
+            beyond_deg,
+        } = nearest.found
+        else {
+            panic!("{:?}", nearest.found)
+        };
+        assert!((beyond_deg - 60.0).abs() < 1e-9, "{beyond_deg}");
+        assert_eq!(nearest.head.chosen, None);
+        let positions = nearest.head.solutions[solution].positions;
+        assert!((positions[1].abs() - 90.0).abs() < 1e-9, "{positions:?}");
+        // A head whose 45° axis tilts the tool 90° at most, under a table
+        // about Z: the tool straight up is out of its reach at every angle.
+        let mut nutating = head.clone();
+        nutating.axes[1].vector = Vector3::new(0.0, 1.0, 1.0);
+        let mut about_z = table.clone();
+        about_z.axes[0].vector = Vector3::z();
+        let up = request(from_axis_angle(Vector3::x(), 180.0));
+        let unreachable = split(&about_z, &nutating, &up, &middle(None)).expect("valid");
+        assert_eq!(unreachable.found, TableAngle::Unreachable);
+        assert!(unreachable.head.solutions.is_empty());
+    }
+
+    #[test]
+    fn nearest_keeps_the_axes_where_they_stand_when_it_can() {
+        let (table, head) = machine();
+        // Tilted 20° about Y: the head alone can (the table stays at 0),
+        // the table alone can (B 20 keeps the head at its middles).
+        let asked = Request {
+            current: [0.0, 0.0],
+            ..request(from_axis_angle(Vector3::y(), 20.0))
+        };
+        let middle = split(&table, &head, &asked, &middle(None)).expect("valid");
+        assert!((middle.table - 20.0).abs() < 1e-9, "{}", middle.table);
+        let ask = TableAsk {
+            current: 0.0,
+            fixed: None,
+            prefer: Preference::Nearest,
+        };
+        let nearest = split(&table, &head, &asked, &ask).expect("valid");
+        assert_eq!(nearest.found, TableAngle::Chosen(Preference::Nearest));
+        // The largest of the three travels: no more than the middle's
+        // 20° of the table.
+        let travel = |split: &Split| {
+            let p = split.head.solutions[split.head.chosen.expect("taken")].positions;
+            split.table.abs().max(p[0].abs()).max(p[1].abs())
+        };
+        assert!(travel(&nearest) <= travel(&middle) + 1e-9);
+        assert!((reached(&table, &head, &nearest) - asked.rotation * Vector3::z()).norm() < 1e-9);
     }
 
     #[test]
