@@ -155,14 +155,15 @@ pub fn split(
         Preference::Middle => Goal::Middle,
         Preference::Nearest => Goal::Nearest,
     };
-    if let Some(best) = problem.minimise(goal, Select::Chosen, hirth) {
+    if let Some(best) = problem.minimise(&problem.events(goal), goal, Select::Chosen, hirth) {
         return Ok(problem.split(best.t, TableAngle::Chosen(ask.prefer)));
     }
     // Nowhere inside the limits: each of the head's two solutions as near
     // them as it comes, the nearer taken.
+    let events = problem.events(Goal::Beyond);
     let nearest = [0, 1]
         .into_iter()
-        .filter_map(|branch| problem.minimise(Goal::Beyond, Select::Branch(branch), hirth))
+        .filter_map(|branch| problem.minimise(&events, Goal::Beyond, Select::Branch(branch), hirth))
         .reduce(|a, b| if problem.better(&b, &a) { b } else { a });
     Ok(match nearest {
         Some(best) => problem.split(
@@ -405,10 +406,16 @@ impl<'a> Problem<'a> {
             || (a.cost <= b.cost + tie && (a.t - self.current).abs() < (b.t - self.current).abs())
     }
 
-    /// The best table position for `goal`, on the table's Hirth grid if
-    /// given; `None` where no position gives a solution `select` takes.
-    fn minimise(&self, goal: Goal, select: Select, hirth: Option<Hirth>) -> Option<Point> {
-        let events = self.events(goal);
+    /// The best table position for `goal` (its [`Self::events`] given), on
+    /// the table's Hirth grid if given; `None` where no position gives a
+    /// solution `select` takes.
+    fn minimise(
+        &self,
+        events: &[Event],
+        goal: Goal,
+        select: Select,
+        hirth: Option<Hirth>,
+    ) -> Option<Point> {
         // Each event measured on either side, or once where nothing jumps.
         let sides: Vec<[Option<Point>; 2]> = events
             .iter()

@@ -16,7 +16,7 @@ const ON_AXIS: f64 = 1e-9;
 pub fn angle_about(k: &Vector3<f64>, p: &Vector3<f64>, q: &Vector3<f64>) -> Option<f64> {
     let p_perp = p - k * k.dot(p);
     let q_perp = q - k * k.dot(q);
-    if p_perp.norm() < ON_AXIS || q_perp.norm() < ON_AXIS {
+    if p_perp.norm_squared() < ON_AXIS * ON_AXIS || q_perp.norm_squared() < ON_AXIS * ON_AXIS {
         return None;
     }
     Some(atan2_degrees(
