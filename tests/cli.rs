@@ -1095,6 +1095,7 @@ fn axes_tells_the_table_block_the_head_frame_and_the_work_zero() {
         let about_tool = number(&residual[1][0])
             .atan2(number(&residual[0][0]))
             .to_degrees();
+        assert!((number(&document["about_tool_deg"]) - about_tool).abs() < 1e-12);
         // The table's vector is entered reversed (0, -1, 0): it turns the
         // workpiece by R(v, B)⁻¹ in the model; the head by R(z, C) R(x, A).
         let v = Vector3::new(0.0, -1.0, 0.0);

@@ -470,9 +470,7 @@ fn table_text(
         None => out.push_str("taken: none, no solution lies inside the limits\n"),
     }
     if let (Some(residual), Some(shift)) = (swivel.residual, swivel.shift) {
-        let about_z = residual.matrix()[(1, 0)]
-            .atan2(residual.matrix()[(0, 0)])
-            .to_degrees();
+        let about_z = about_tool(&residual);
         out.push_str(&format!(
             "left in the frame: {}° about the tool axis\nzero-point shift: X{} Y{} Z{}\n",
             n(about_z),
@@ -482,6 +480,14 @@ fn table_text(
         ));
     }
     out
+}
+
+/// The angle (degrees) of a residual about the tool axis, all there is of
+/// it when the tool direction is met.
+fn about_tool(residual: &Rotation3<f64>) -> f64 {
+    residual.matrix()[(1, 0)]
+        .atan2(residual.matrix()[(0, 0)])
+        .to_degrees()
 }
 
 /// The swivel in one line: the record and the positions taken.
@@ -559,6 +565,7 @@ pub fn document(record: &Record, swivel: &Swivel) -> serde_json::Value {
         "solutions": solutions,
         "chosen": swivel.chosen,
         "residual": swivel.residual.as_ref().map(rows),
+        "about_tool_deg": swivel.residual.as_ref().map(about_tool),
         "shift": swivel.shift.as_ref().map(vector),
     })
 }

@@ -831,9 +831,9 @@ mod tests {
         let f = asked.rotation * Vector3::z();
         assert!((reached(&table, &head, &split) - f).norm() < 1e-9);
         // The head stays at its middles: the table takes the whole tilt.
-        assert!((split.table - 60.0).abs() < 1e-6, "{}", split.table);
+        assert!((split.table - 60.0).abs() < 1e-9, "{}", split.table);
         let positions = split.head.solutions[split.head.chosen.expect("taken")].positions;
-        assert!(positions[1].abs() < 1e-6, "{positions:?}");
+        assert!(positions[1].abs() < 1e-9, "{positions:?}");
     }
 
     #[test]
