@@ -931,6 +931,39 @@ mod tests {
     }
 
     #[test]
+    fn a_table_on_a_hirth_grid_takes_its_best_grid_position() {
+        let (mut table, mut head) = machine();
+        table.axes[0].hirth = Some(Hirth {
+            offset: 0.25,
+            increment: 2.5,
+        });
+        head.axes[0].limits = Some((-100.0, 100.0));
+        let spread = |split: &Split| {
+            let Some(chosen) = split.head.chosen else {
+                return f64::INFINITY;
+            };
+            let p = split.head.solutions[chosen].positions;
+            (p[0].abs() / 100.0).max(p[1].abs() / 30.0)
+        };
+        for (x, y) in [(10.0, 50.0), (-35.0, 20.0), (40.0, -70.0), (5.0, 5.0)] {
+            let asked =
+                request(from_axis_angle(Vector3::x(), x) * from_axis_angle(Vector3::y(), y));
+            let found = split(&table, &head, &asked, &middle(None)).expect("valid");
+            assert!((((found.table - 0.25) / 2.5).round() * 2.5 + 0.25 - found.table).abs() < 1e-9);
+            // Every grid position of the turn, one by one.
+            let best = (-72..72)
+                .map(|k| 0.25 + 2.5 * f64::from(k))
+                .map(|gamma| spread(&split_at(&table, &head, &asked, gamma)))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                spread(&found) <= best + 1e-12,
+                "{x} {y}: {} > {best}",
+                spread(&found)
+            );
+        }
+    }
+
+    #[test]
     fn records_of_other_kinds_are_refused() {
         let (table, head) = machine();
         let asked = request(Rotation3::identity());
