@@ -1031,6 +1031,184 @@ fn axes_splits_a_swivel_between_a_table_and_a_head() {
     assert!(flat(&not_a_table.stderr).contains("must be kinematics \"P\" with one rotary axis"));
 }
 
+/// What `axes --table` tells the machine, checked against a forward model
+/// of the chain written here: the table turned (about its pivot, `l2`), the
+/// head turned, the rotation left about the tool: together the requested
+/// frame; the head's frame (CYCLE800's angles in the `_MODE` asked for) the
+/// request with the table's turn taken out; the work zero moved as a point
+/// on the table. Both preferences; `nearest` moves the axes no more than
+/// `middle` does from the positions given with `--from`.
+#[test]
+fn axes_tells_the_table_block_the_head_frame_and_the_work_zero() {
+    use nalgebra::{Rotation3, Unit, Vector3};
+    let dir = scratch("axes-told");
+    let machine = dir.join("M.SPF");
+    let sample =
+        std::fs::read_to_string(support::repo().join("samples/MACHINE.SPF")).expect("machine");
+    // TABLE_B's pivot 500 mm along X and 300 mm up, closed by l4.
+    std::fs::write(
+        &machine,
+        format!(
+            "{sample}\n$TC_CARR4[5]=500 $TC_CARR6[5]=300 $TC_CARR18[5]=-500 $TC_CARR20[5]=-300\n"
+        ),
+    )
+    .expect("write");
+    let machine = machine.to_str().expect("utf-8");
+    let turn = |axis: Vector3<f64>, degrees: f64| {
+        Rotation3::from_axis_angle(&Unit::new_normalize(axis), degrees.to_radians())
+    };
+    let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+    // _MODE 27: Z, Y', X''.
+    let requested = turn(z, 30.0) * turn(y, 45.0) * turn(x, 60.0);
+    let pivot = Vector3::new(500.0, 0.0, 300.0);
+    let work_zero = Vector3::new(120.0, -40.0, 75.0);
+    let from = [100.0, 10.0, -20.0];
+    let mut travels = Vec::new();
+    for prefer in ["middle", "nearest"] {
+        let args = [
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "HEAD_H",
+            "--table",
+            "TABLE_B",
+            "--mode",
+            "27",
+            "--prefer",
+            prefer,
+            "--from",
+            "B=100,C=10",
+            "--from",
+            "a=-20",
+            "--work-zero=120,-40,75",
+        ];
+        let output = run(&[&args[..], &["--json", "30", "45", "60"]].concat(), b"");
+        assert_exit(&output, 0);
+        let document: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
+        let number = |value: &serde_json::Value| value.as_f64().expect("number");
+        let table = number(&document["table"]["position"]);
+        assert_eq!(document["table"]["prefer"], prefer);
+        let taken = &document["solutions"][document["chosen"].as_u64().expect("chosen") as usize];
+        let (c, a) = (number(&taken["axes"]["C"]), number(&taken["axes"]["A"]));
+        let residual = &document["residual"];
+        let about_tool = number(&residual[1][0])
+            .atan2(number(&residual[0][0]))
+            .to_degrees();
+        assert!((number(&document["about_tool_deg"]) - about_tool).abs() < 1e-12);
+        // The table's vector is entered reversed (0, -1, 0): it turns the
+        // workpiece by R(v, B)⁻¹ in the model; the head by R(z, C) R(x, A).
+        let v = Vector3::new(0.0, -1.0, 0.0);
+        let table_turn = turn(v, table);
+        let made = table_turn.inverse() * turn(z, c) * turn(x, a) * turn(z, about_tool);
+        assert!(
+            (made.matrix() - requested.matrix()).norm() < 1e-9,
+            "{prefer}: {made} against {requested}"
+        );
+        let frame = &document["head_frame"];
+        assert_eq!(frame["mode"], 27);
+        let angles: Vec<f64> = (0..3).map(|i| number(&frame["angles"][i])).collect();
+        let head_frame = turn(z, angles[0]) * turn(y, angles[1]) * turn(x, angles[2]);
+        assert!(
+            (head_frame.matrix() - (table_turn * requested).matrix()).norm() < 1e-9,
+            "{prefer}: {head_frame}"
+        );
+        let moved = pivot + table_turn * (work_zero - pivot) - work_zero;
+        let told = &document["work_zero"]["moves"];
+        let told = Vector3::new(number(&told[0]), number(&told[1]), number(&told[2]));
+        assert!(
+            (told - moved).norm() < 1e-9,
+            "{prefer}: {told} against {moved}"
+        );
+        let chain_end = &document["work_zero"]["chain_end_moves"];
+        let chain_end = Vector3::new(
+            number(&chain_end[0]),
+            number(&chain_end[1]),
+            number(&chain_end[2]),
+        );
+        assert!(
+            (chain_end - (pivot - table_turn * pivot)).norm() < 1e-9,
+            "{chain_end}"
+        );
+        assert_eq!(
+            document["table"]["block"].as_str(),
+            Some(format!("G0 B={}", format_position(table)).as_str())
+        );
+        travels.push(
+            [table - from[0], c - from[1], a - from[2]]
+                .iter()
+                .fold(0.0f64, |m, d| m.max(d.abs())),
+        );
+        let text = stdout(&run(&[&args[..], &["30", "45", "60"]].concat(), b""));
+        assert!(text.contains("table block: G0 B="), "{text}");
+        assert!(text.contains("head frame: ZYX "), "{text}");
+        assert!(
+            text.contains("work zero at X120 Y-40 Z75 moves by X"),
+            "{text}"
+        );
+    }
+    assert!(travels[1] <= travels[0] + 1e-9, "{travels:?}");
+    assert!(
+        travels[1] < travels[0] - 1.0,
+        "nearest moves less here: {travels:?}"
+    );
+
+    // Tool along Y: the table about Y cannot help, and A reaches 45° only.
+    let beyond = run(
+        &[
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "HEAD_H",
+            "--table",
+            "TABLE_B",
+            "--",
+            "-90",
+            "0",
+            "0",
+        ],
+        b"",
+    );
+    assert_exit(&beyond, 1);
+    assert!(
+        stdout(&beyond).contains("(no table position brings the head inside its limits; this one brings it nearest: solution 1 lies 45° beyond them)"),
+        "{}",
+        stdout(&beyond)
+    );
+    let wrong = run(
+        &[
+            "axes",
+            "--machine",
+            machine,
+            "--record",
+            "HEAD_H",
+            "--table",
+            "TABLE_B",
+            "--from",
+            "Q=1",
+            "0",
+            "0",
+            "0",
+        ],
+        b"",
+    );
+    assert_exit(&wrong, 2);
+    assert!(flat(&wrong.stderr).contains("no rotary axis `Q` here; the axes are `B`, `C`, `A`"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A position as `axes` prints it (4 decimals, no trailing zeros).
+fn format_position(value: f64) -> String {
+    let text = format!("{value:.4}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
+}
+
 /// A machine file's bad data is told at its line, and a record it makes
 /// unusable gives no answer.
 #[test]

@@ -7,7 +7,8 @@
 use nalgebra::{Rotation3, Unit, Vector3};
 use proptest::prelude::*;
 use sinuprep::kinematics::{
-    orientation, solve, split, Direction, Kinematics, Record, Request, RotaryAxis, TableAngle,
+    orientation, solve, split, Direction, Kinematics, Preference, Record, Request, RotaryAxis,
+    TableAngle, TableAsk,
 };
 
 fn axis(vector: Vector3<f64>, offset: f64, limits: Option<(f64, f64)>) -> RotaryAxis {
@@ -213,48 +214,113 @@ fn spread(head: &Record, positions: [f64; 2]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The largest travel (degrees) of the table and the head's axes from
+/// where they stood (what `Preference::Nearest` minimises), computed here on
+/// its own.
+fn travel(from: [f64; 3], table: f64, positions: [f64; 2]) -> f64 {
+    (table - from[0])
+        .abs()
+        .max((positions[0] - from[1]).abs())
+        .max((positions[1] - from[2]).abs())
+}
+
+/// How far (degrees) the head's positions lie beyond their limits at most,
+/// a position counted on the circle (`p` and `p ± 360` are one).
+fn beyond(head: &Record, positions: [f64; 2]) -> f64 {
+    head.axes
+        .iter()
+        .zip(positions)
+        .filter_map(|(axis, p)| {
+            let (min, max) = axis.limits.expect("limited");
+            (max - min < 360.0).then(|| {
+                let past = (p - min).rem_euclid(360.0);
+                if past <= max - min {
+                    0.0
+                } else {
+                    (past - (max - min)).min(360.0 - past)
+                }
+            })
+        })
+        .fold(0.0, f64::max)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
     /// Three rotary axes: the table's and the head's positions together turn
     /// the tool onto the frame, with the residual the whole frame; the
     /// table stays inside its limits, and no other table position (sampled
-    /// here) keeps the head nearer the middles of its limits.
+    /// here) is better under the preference asked for: the head nearer the
+    /// middles of its limits, or the axes nearer where they stood (to 1e-9:
+    /// the best table angle is found exactly). Where no table position brings
+    /// the head inside its limits, none sampled brings it nearer them than
+    /// the one given.
     #[test]
     fn a_table_and_a_head_together_make_the_frame(
         (table, head) in table_and_head(),
         az in -180.0..180.0f64, el in -89.0..89.0f64, angle in -180.0..180.0f64,
         samples in proptest::collection::vec(0.0..1.0f64, 24),
+        nearest in any::<bool>(), plus in any::<bool>(),
+        from in proptest::array::uniform3(-180.0..180.0f64),
     ) {
         let rotation = frame(direction(az, el), angle);
-        let request = Request { rotation, direction: Direction::Minus, current: [0.0; 2] };
-        let split = split(&table, &head, &request, 0.0, None).expect("valid records");
-        prop_assert_eq!(split.found, TableAngle::Chosen);
+        let prefer = if nearest { Preference::Nearest } else { Preference::Middle };
+        let (low, high) = table.axes[0].limits.unwrap_or((-180.0, 180.0));
+        // The axes' positions before: the table's inside its limits.
+        let from = if nearest { [from[0].clamp(low, high), from[1], from[2]] } else { [0.0; 3] };
+        let request = Request {
+            rotation,
+            direction: if plus { Direction::Plus } else { Direction::Minus },
+            current: [from[1], from[2]],
+        };
+        let ask = |fixed| TableAsk { current: from[0], fixed, prefer };
+        let split = split(&table, &head, &request, &ask(None)).expect("valid records");
         prop_assert!(split.table_within_limits);
         let table_turn = |gamma: f64| orientation(&table, [gamma - table.axes[0].offset, 0.0]);
-        let (low, high) = table.axes[0].limits.unwrap_or((-180.0, 180.0));
+        let at = |gamma: f64| sinuprep::kinematics::split(&table, &head, &request, &ask(Some(gamma))).expect("valid");
         let Some(chosen) = split.head.chosen else {
-            // Nowhere inside its limits: then no sampled table position helps either.
+            // Nowhere inside its limits: then no sampled table position
+            // brings the head inside them, nor nearer them.
+            let TableAngle::Beyond { solution, beyond_deg } = split.found else {
+                prop_assert_eq!(split.found, TableAngle::Unreachable);
+                prop_assert!(split.head.solutions.is_empty());
+                for s in samples {
+                    prop_assert!(at(low + s * (high - low)).head.solutions.is_empty());
+                }
+                return Ok(());
+            };
+            let given = beyond(&head, split.head.solutions[solution].exact);
+            prop_assert!((given - beyond_deg).abs() < 1e-9, "{} told as {}", given, beyond_deg);
+            prop_assert!(given > 0.0);
             for s in samples {
                 let gamma = low + s * (high - low);
-                let fixed = sinuprep::kinematics::split(&table, &head, &request, 0.0, Some(gamma)).expect("valid");
-                prop_assert!(fixed.head.chosen.is_none() || spread(&head, fixed.head.solutions[fixed.head.chosen.expect("taken")].positions) > 0.999);
+                let other = at(gamma);
+                prop_assert!(other.head.chosen.is_none(), "table {} brings the head inside", gamma);
+                for solution in &other.head.solutions {
+                    let theirs = beyond(&head, solution.exact);
+                    prop_assert!(given <= theirs + 1e-9, "table {} gives {} < {} at {}", gamma, theirs, given, split.table);
+                }
             }
             return Ok(());
         };
+        prop_assert_eq!(split.found, TableAngle::Chosen(prefer));
         let positions = split.head.solutions[chosen].positions;
         let kinematic = table_turn(split.table) * orientation(&head, positions);
         let f = rotation * Vector3::z();
         prop_assert!((kinematic * Vector3::z() - f).norm() < 1e-9);
         let residual = split.head.residual.expect("residual");
         prop_assert!(((kinematic * residual).matrix() - rotation.matrix()).norm() < 1e-9);
-        let best = spread(&head, positions);
+        let cost = |gamma: f64, positions: [f64; 2]| match prefer {
+            Preference::Middle => spread(&head, positions),
+            Preference::Nearest => travel(from, gamma, positions),
+        };
+        let best = cost(split.table, positions);
         for s in samples {
             let gamma = low + s * (high - low);
-            let other = sinuprep::kinematics::split(&table, &head, &request, 0.0, Some(gamma)).expect("valid");
+            let other = at(gamma);
             if let Some(index) = other.head.chosen {
-                let theirs = spread(&head, other.head.solutions[index].positions);
-                prop_assert!(best <= theirs + 1e-4, "table {} gives {} < {} at {}", gamma, theirs, best, split.table);
+                let theirs = cost(gamma, other.head.solutions[index].positions);
+                prop_assert!(best <= theirs + 1e-9, "table {} gives {} < {} at {}", gamma, theirs, best, split.table);
             }
         }
     }

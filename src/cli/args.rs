@@ -111,14 +111,34 @@ pub struct AxesArgs {
     pub record: Option<String>,
     /// A rotary table under the head: its record (kinematics "P", one axis), by
     /// name or number. The swivel is split over three rotary axes: the table's
-    /// angle is chosen so that the head (`--record`) stays nearest the middles of
-    /// its limits, and the head is solved for the rest.
+    /// angle is chosen as `--prefer` says (or fixed with `--fix`), and the head
+    /// (`--record`) is solved for the rest.
     #[arg(long, value_name = "NAME")]
     pub table: Option<String>,
     /// The table's angle, fixed instead of chosen: `--fix B=30` (the table
     /// axis's name, `$TC_CARR35`, and its position in degrees).
     #[arg(long, value_name = "AXIS=DEGREES", requires = "table")]
     pub fix: Option<String>,
+    /// Which table angle to choose. `middle`: the head's axes nearest the
+    /// middles of their limits (the default: the head keeps the most travel for
+    /// the machining that follows, and the answer does not depend on where the
+    /// axes stood, which offline is seldom known). `nearest`: the three axes
+    /// moved least from their positions before (`--from`), the largest travel
+    /// the smallest, as CAM systems choose.
+    #[arg(long, value_enum, default_value_t = Prefer::Middle, requires = "table", conflicts_with = "fix")]
+    pub prefer: Prefer,
+    /// The rotary axes' positions before the swivel, by their names
+    /// (`$TC_CARR35/36`): `--from B=10,C=90,A=0` or `--from B=10 --from A=0`.
+    /// What `--prefer nearest` measures from, the turn a position is placed in
+    /// and where an axis left free at a pole stays [default: each record's
+    /// `$TC_CARR13/14`].
+    #[arg(long, value_name = "AXIS=DEGREES", value_delimiter = ',')]
+    pub from: Vec<String>,
+    /// Where the work zero lies (machine coordinates, the table unturned), for how
+    /// far it moves with the table: `--work-zero=X,Y,Z` [default: 0,0,0, where
+    /// it moves as the end of the table's chain does].
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = point, requires = "table")]
+    pub work_zero: Option<[f64; 3]>,
     /// CYCLE800's `_MODE` for axis-by-axis rotation: the sequence code of the
     /// three rotations about the turned axes (57 = X, Y', Z''; 27 = Z, Y', X'').
     #[arg(long, default_value_t = 57)]
@@ -613,6 +633,13 @@ pub struct FrameArgs {
     /// Print one JSON object instead of the form's text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `axes --prefer`: which table angle a split chooses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Prefer {
+    Middle,
+    Nearest,
 }
 
 fn direction(text: &str) -> Result<i8, String> {

@@ -1,21 +1,25 @@
 //! `sinuprep axes`: one swivel computed on a machine, for people and for
 //! scripts: both solutions with their axis positions, limits and Hirth
 //! error, the one the control takes, the rotation left in the frame, the
-//! zero-point shift.
+//! zero-point shift. With a table under the head (`--table`), the split:
+//! the table's position and its block, the frame left to the head as
+//! CYCLE800 angles, and how far a work zero moves with the table. It
+//! computes and prints; it writes no program.
 
 use std::path::{Path, PathBuf};
 
 use nalgebra::{Rotation3, Vector3};
 
 use crate::cli::analysis::MachinesTold;
-use crate::cli::args::{AxesArgs, Export, MessageFormat};
+use crate::cli::args::{AxesArgs, Export, MessageFormat, Prefer};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
 use crate::kinematics::{
-    a3200, solve, split, Direction, Record, Request, Split, Swivel, TableAngle,
+    a3200, solve, split, Direction, Preference, Record, Request, Split, Swivel, TableAngle,
+    TableAsk,
 };
-use crate::rotation::{matrix, Kind, Sequence};
+use crate::rotation::{decompose, matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};
 
@@ -51,6 +55,21 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         return Ok(ExitStatus::Success.max(data));
     }
     let angles = [args.angles[0], args.angles[1], args.angles[2]];
+    let table = args
+        .table
+        .as_deref()
+        .map(|name| pick(machine, Some(name), &path))
+        .transpose()?;
+    // Where the axes stand before: `--from`, else $TC_CARR13/14.
+    let mut current = record.specified();
+    let mut table_current = table.map_or(0.0, |table| table.axes[0].angle);
+    for given in &args.from {
+        let (index, value) = from_position(given, &record, table, &path)?;
+        match index {
+            Some(i) => current[i] = value,
+            None => table_current = value,
+        }
+    }
     let request = Request {
         rotation: matrix(sequence, angles),
         direction: if args.dir > 0 {
@@ -58,49 +77,69 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         } else {
             Direction::Minus
         },
-        current: record.specified(),
+        current,
     };
     let refused = |record: &Record, error: &dyn std::fmt::Display| CliError::Record {
         path: path.clone(),
         why: format!("record {}: {error}", describe(record)),
     };
-    let (swivel, split) = match &args.table {
+    let (swivel, split) = match table {
         None => (
             solve(&record, &request).map_err(|error| refused(&record, &error))?,
             None,
         ),
-        Some(name) => {
-            let table = pick(machine, Some(name), &path)?;
+        Some(table) => {
             let fixed = args
                 .fix
                 .as_deref()
                 .map(|fix| fixed_position(fix, table, &path))
                 .transpose()?;
-            let split = split(table, &record, &request, 0.0, fixed)
-                .map_err(|error| refused(table, &error))?;
+            let ask = TableAsk {
+                current: table_current,
+                fixed,
+                prefer: match args.prefer {
+                    Prefer::Middle => Preference::Middle,
+                    Prefer::Nearest => Preference::Nearest,
+                },
+            };
+            let split =
+                split(table, &record, &request, &ask).map_err(|error| refused(table, &error))?;
             let mut head = split.head.clone();
             // The head's offsets shift nothing; the table's do.
             head.shift = head.shift.map(|shift| shift + split.shift);
             (head, Some((table, split)))
         }
     };
+    let work_zero = Vector3::from(args.work_zero.unwrap_or([0.0; 3]));
     let text = match (&split, args.json) {
         (None, true) => json(&record, &swivel),
-        (None, false) => table(&record, sequence, angles, args.dir, &swivel),
+        (None, false) => table_text(&record, sequence, angles, args.dir, &swivel),
         (Some((table_record, split)), true) => {
             let mut document = document(&record, &swivel);
             document["table"] = table_document(table_record, split);
+            document["head_frame"] = head_frame_document(sequence, split);
+            document["work_zero"] = serde_json::json!({
+                "at": [work_zero.x, work_zero.y, work_zero.z],
+                "moves": vector(&split.work_zero_moves(&work_zero)),
+                "chain_end_moves": vector(&split.shift),
+            });
             format!(
                 "{}\n",
                 serde_json::to_string_pretty(&document).unwrap_or_default()
             )
         }
         (Some((table_record, split)), false) => {
-            let mut text = table(&record, sequence, angles, args.dir, &swivel);
-            let line = table_line(table_record, split);
-            // After the record's line: the table is part of the machine.
-            let at = text.find('\n').map_or(text.len(), |n| n + 1);
-            text.insert_str(at, &line);
+            let mut text = table_text(&record, sequence, angles, args.dir, &swivel);
+            let mut lines = table_lines(table_record, split);
+            lines.push_str(&head_frame_line(sequence, split));
+            // After the record's line and the frame's: the table is part
+            // of the machine, and the head is asked for what it leaves.
+            let at = text
+                .match_indices('\n')
+                .nth(1)
+                .map_or(text.len(), |(n, _)| n + 1);
+            text.insert_str(at, &lines);
+            text.push_str(&work_zero_line(&work_zero, split));
             text
         }
     };
@@ -173,6 +212,59 @@ fn assignments(record: &Record) -> String {
     format!("{}\n", lines.join("\n"))
 }
 
+/// `--from B=10`: which axis (`None`: the table's, else the head's 0 or 1)
+/// and its position.
+fn from_position(
+    given: &str,
+    head: &Record,
+    table: Option<&Record>,
+    path: &Path,
+) -> Result<(Option<usize>, f64), CliError> {
+    let refused = |why: String| CliError::Record {
+        path: path.to_path_buf(),
+        why,
+    };
+    let mut names: Vec<(Option<usize>, String)> = (0..head.axis_count())
+        .map(|i| (Some(i), head.axes[i].label(i)))
+        .collect();
+    if let Some(table) = table {
+        names.insert(0, (None, table.axes[0].label(0)));
+    }
+    let known = names
+        .iter()
+        .map(|(_, name)| format!("`{name}`"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let (name, value) = given.split_once('=').ok_or_else(|| {
+        refused(format!(
+            "`--from {given}`: write an axis and its position, as `--from {}=30`",
+            names.first().map_or("A", |(_, name)| name.as_str())
+        ))
+    })?;
+    let index = names
+        .iter()
+        .find(|(_, known)| known.eq_ignore_ascii_case(name.trim()))
+        .map(|(index, _)| *index)
+        .ok_or_else(|| {
+            refused(format!(
+                "`--from {given}`: no rotary axis `{}` here; the axes are {known}",
+                name.trim()
+            ))
+        })?;
+    let value = value
+        .trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| {
+            refused(format!(
+                "`--from {given}`: `{}` is no number of degrees",
+                value.trim()
+            ))
+        })?;
+    Ok((index, value))
+}
+
 /// `--fix B=30`: the table's position; the name must be the table axis's.
 fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliError> {
     let label = table.axes[0].label(0);
@@ -204,26 +296,101 @@ fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliErro
         })
 }
 
-/// The table's part of a split, one line.
-fn table_line(table: &Record, split: &Split) -> String {
+/// The table's part of a split: its position and how it was found, and
+/// the block that positions it.
+fn table_lines(table: &Record, split: &Split) -> String {
+    let label = table.axes[0].label(0);
     let how = match split.found {
-        TableAngle::Fixed => "fixed by --fix",
-        TableAngle::Chosen => "chosen: the head nearest the middles of its limits",
+        TableAngle::Fixed => "fixed by --fix".to_string(),
+        TableAngle::Chosen(Preference::Middle) => {
+            "chosen: the head nearest the middles of its limits".to_string()
+        }
+        TableAngle::Chosen(Preference::Nearest) => {
+            "chosen: the axes nearest their positions before".to_string()
+        }
+        TableAngle::Beyond {
+            solution,
+            beyond_deg,
+        } => format!(
+            "no table position brings the head inside its limits; this one brings it nearest: solution {} lies {}° beyond them",
+            solution + 1,
+            format(beyond_deg, 6)
+        ),
+        TableAngle::Unreachable => {
+            "kept: at no table position can the head turn the tool onto the frame's Z axis"
+                .to_string()
+        }
     };
     let limits = if split.table_within_limits {
         ""
     } else {
         ", outside its limits"
     };
-    format!(
-        "table: record {}: {}={} ({how}{limits})\n",
+    let mut out = format!(
+        "table: record {}: {label}={} ({how}{limits})\n",
         describe(table),
-        table.axes[0].label(0),
         n(split.table)
+    );
+    if !table.axes[0].name.is_empty() {
+        out.push_str(&format!("table block: {}\n", positioning(table, split)));
+    }
+    out
+}
+
+/// The block that turns the table to its position: rapid, absolute.
+fn positioning(table: &Record, split: &Split) -> String {
+    format!("G0 {}={}", table.axes[0].name, n(split.table))
+}
+
+/// The head's frame as CYCLE800 angles of `sequence`.
+fn head_frame_angles(sequence: Sequence, split: &Split) -> [f64; 3] {
+    decompose(sequence, &split.head_frame).angles
+}
+
+fn head_frame_line(sequence: Sequence, split: &Split) -> String {
+    let [a, b, c] = head_frame_angles(sequence, split).map(n);
+    format!(
+        "head frame: {} {a} {b} {c} (_MODE {}): the frame with the table's turn taken out, CYCLE800's on the head's record\n",
+        sequence.letters(),
+        sequence.code()
     )
 }
 
+fn head_frame_document(sequence: Sequence, split: &Split) -> serde_json::Value {
+    serde_json::json!({
+        "mode": sequence.code(),
+        "sequence": sequence.letters(),
+        "angles": head_frame_angles(sequence, split),
+    })
+}
+
+fn work_zero_line(at: &Vector3<f64>, split: &Split) -> String {
+    let moves = split.work_zero_moves(at);
+    format!(
+        "work zero at X{} Y{} Z{} moves by X{} Y{} Z{} with the table (its chain's end by the zero-point shift)\n",
+        n(at.x),
+        n(at.y),
+        n(at.z),
+        n(moves.x),
+        n(moves.y),
+        n(moves.z)
+    )
+}
+
+fn vector(v: &Vector3<f64>) -> [f64; 3] {
+    [v.x, v.y, v.z]
+}
+
 fn table_document(table: &Record, split: &Split) -> serde_json::Value {
+    let (found, prefer, beyond, nearest) = match split.found {
+        TableAngle::Fixed => ("fixed", None, None, None),
+        TableAngle::Chosen(prefer) => ("chosen", Some(prefer.name()), None, None),
+        TableAngle::Beyond {
+            solution,
+            beyond_deg,
+        } => ("beyond", None, Some(beyond_deg), Some(solution)),
+        TableAngle::Unreachable => ("unreachable", None, None, None),
+    };
     serde_json::json!({
         "record": table.name,
         "number": table.number,
@@ -231,6 +398,11 @@ fn table_document(table: &Record, split: &Split) -> serde_json::Value {
         "position": split.table,
         "within_limits": split.table_within_limits,
         "fixed": split.found == TableAngle::Fixed,
+        "found": found,
+        "prefer": prefer,
+        "beyond_deg": beyond,
+        "nearest_solution": nearest,
+        "block": (!table.axes[0].name.is_empty()).then(|| positioning(table, split)),
     })
 }
 
@@ -300,7 +472,7 @@ fn kinematics_name(record: &Record) -> &'static str {
     }
 }
 
-fn table(
+fn table_text(
     record: &Record,
     sequence: Sequence,
     angles: [f64; 3],
@@ -369,9 +541,7 @@ fn table(
         None => out.push_str("taken: none, no solution lies inside the limits\n"),
     }
     if let (Some(residual), Some(shift)) = (swivel.residual, swivel.shift) {
-        let about_z = residual.matrix()[(1, 0)]
-            .atan2(residual.matrix()[(0, 0)])
-            .to_degrees();
+        let about_z = about_tool(&residual);
         out.push_str(&format!(
             "left in the frame: {}° about the tool axis\nzero-point shift: X{} Y{} Z{}\n",
             n(about_z),
@@ -381,6 +551,14 @@ fn table(
         ));
     }
     out
+}
+
+/// The angle (degrees) of a residual about the tool axis, all there is of
+/// it when the tool direction is met.
+fn about_tool(residual: &Rotation3<f64>) -> f64 {
+    residual.matrix()[(1, 0)]
+        .atan2(residual.matrix()[(0, 0)])
+        .to_degrees()
 }
 
 /// The swivel in one line: the record and the positions taken.
@@ -458,6 +636,7 @@ pub fn document(record: &Record, swivel: &Swivel) -> serde_json::Value {
         "solutions": solutions,
         "chosen": swivel.chosen,
         "residual": swivel.residual.as_ref().map(rows),
+        "about_tool_deg": swivel.residual.as_ref().map(about_tool),
         "shift": swivel.shift.as_ref().map(vector),
     })
 }

@@ -14,5 +14,5 @@ pub(crate) mod subproblem;
 pub mod swivel;
 
 pub use record::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
-pub use split::{split, Split, SplitError, TableAngle};
+pub use split::{split, Preference, Split, SplitError, TableAngle, TableAsk};
 pub use swivel::{orientation, solve, Direction, Request, Solution, Swivel};

@@ -16,13 +16,59 @@ const ON_AXIS: f64 = 1e-9;
 pub fn angle_about(k: &Vector3<f64>, p: &Vector3<f64>, q: &Vector3<f64>) -> Option<f64> {
     let p_perp = p - k * k.dot(p);
     let q_perp = q - k * k.dot(q);
-    if p_perp.norm() < ON_AXIS || q_perp.norm() < ON_AXIS {
+    if p_perp.norm_squared() < ON_AXIS * ON_AXIS || q_perp.norm_squared() < ON_AXIS * ON_AXIS {
         return None;
     }
     Some(atan2_degrees(
         k.dot(&p_perp.cross(&q_perp)),
         p_perp.dot(&q_perp),
     ))
+}
+
+/// None, one or two of a kind, held without an allocation: what the
+/// subproblems give, which the table's split asks for a hundred times a
+/// split.
+#[derive(Clone, Copy, Debug)]
+pub struct UpToTwo<T> {
+    items: [T; 2],
+    len: usize,
+}
+
+impl<T: Copy + Default> UpToTwo<T> {
+    pub fn new() -> Self {
+        Self {
+            items: [T::default(); 2],
+            len: 0,
+        }
+    }
+
+    /// Adds `item`; a third is not kept (none is ever made).
+    pub fn push(&mut self, item: T) {
+        if let Some(slot) = self.items.get_mut(self.len) {
+            *slot = item;
+            self.len += 1;
+        }
+    }
+}
+
+impl<T: Copy + Default> Default for UpToTwo<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T> std::ops::Deref for UpToTwo<T> {
+    type Target = [T];
+
+    fn deref(&self) -> &[T] {
+        &self.items[..self.len]
+    }
+}
+
+impl<T> std::ops::DerefMut for UpToTwo<T> {
+    fn deref_mut(&mut self) -> &mut [T] {
+        &mut self.items[..self.len]
+    }
 }
 
 /// The intermediate directions `w = R(b, θ2) p = R(a, −θ1) q` of
@@ -34,7 +80,7 @@ pub fn intermediates(
     b: &Vector3<f64>,
     p: &Vector3<f64>,
     q: &Vector3<f64>,
-) -> Vec<Vector3<f64>> {
+) -> UpToTwo<Vector3<f64>> {
     let d = a.dot(b);
     let c = a.cross(b);
     let denominator = 1.0 - d * d;
@@ -49,18 +95,19 @@ pub fn intermediates(
     // the frame by 3e-7), so only a γ below 1e-9 is that close.
     const BELOW_TANGENT: f64 = 1e-12;
     const ABOVE_TANGENT: f64 = 1e-18;
+    let mut found = UpToTwo::new();
     if gamma_squared < -BELOW_TANGENT {
-        return Vec::new();
+        return found;
     }
     let base = a * alpha + b * beta;
     if gamma_squared <= ABOVE_TANGENT {
-        return vec![base.normalize()];
+        found.push(base.normalize());
+        return found;
     }
     let gamma = gamma_squared.sqrt();
-    vec![
-        (base + c * gamma).normalize(),
-        (base - c * gamma).normalize(),
-    ]
+    found.push((base + c * gamma).normalize());
+    found.push((base - c * gamma).normalize());
+    found
 }
 
 #[cfg(test)]
@@ -84,7 +131,7 @@ mod tests {
         let q = Vector3::new(0.3, -0.5, 0.8).normalize();
         let ws = intermediates(&a, &b, &p, &q);
         assert_eq!(ws.len(), 2);
-        for w in &ws {
+        for w in ws.iter() {
             let t2 = angle_about(&b, &p, w).expect("θ2");
             let t1 = angle_about(&a, w, &q).expect("θ1");
             let reached = from_axis_angle(a, t1) * (from_axis_angle(b, t2) * p);

@@ -24,7 +24,7 @@
 use nalgebra::{Rotation3, Vector3};
 
 use crate::kinematics::record::{Kinematics, Record, RecordError};
-use crate::kinematics::subproblem::{angle_about, intermediates};
+use crate::kinematics::subproblem::{angle_about, intermediates, UpToTwo};
 use crate::rotation::frame::from_axis_angle;
 
 /// CYCLE800's `_DIR`: which of the two solutions.
@@ -48,7 +48,7 @@ pub struct Request {
 }
 
 /// One way the axes can make the orientation.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Solution {
     /// Axis positions (degrees), offsets applied, placed inside the limits
     /// where possible, on the Hirth grid where there is one.
@@ -85,17 +85,19 @@ pub struct Swivel {
 /// The axis positions for `request` on `record`.
 pub fn solve(record: &Record, request: &Request) -> Result<Swivel, RecordError> {
     record.check()?;
-    let f = request.rotation * Vector3::z();
-    let model_current = [0, 1].map(|i| request.current[i] - record.axes[i].offset);
-    let mut solutions: Vec<Solution> = model_angles(record, &f, model_current)
-        .into_iter()
-        .map(|angles| place(record, &f, angles, request.current))
-        .collect();
-    // One touching solution reached twice, or a pole: report it once.
-    solutions.dedup_by(|a, b| {
-        (a.positions[0] - b.positions[0]).abs() < 1e-9
-            && (a.positions[1] - b.positions[1]).abs() < 1e-9
-    });
+    Ok(solve_toward(
+        record,
+        request,
+        &(request.rotation * Vector3::z()),
+    ))
+}
+
+/// [`solve`] on a record [`Record::check`] passed, with the tool direction
+/// `f` (the requested rotation's Z axis) as the caller computed it: the
+/// table's split measures the head with the direction it computes, and
+/// takes the same solutions it measured.
+pub(crate) fn solve_toward(record: &Record, request: &Request, f: &Vector3<f64>) -> Swivel {
+    let solutions = solutions(record, f, request.current).to_vec();
     let chosen = choose(record, &solutions, request.direction, |s| s.within_limits);
     let preferred = choose(record, &solutions, request.direction, |_| true);
     let (residual, shift) = match chosen {
@@ -108,17 +110,37 @@ pub fn solve(record: &Record, request: &Request) -> Result<Swivel, RecordError> 
         }
         None => (None, None),
     };
-    Ok(Swivel {
+    Swivel {
         solutions,
         chosen,
         preferred,
         residual,
         shift,
-    })
+    }
+}
+
+/// The solutions for the tool direction `f` with the axes at `current`
+/// before (a record [`Record::check`] passed): [`solve`] without the
+/// choice, the residual and the shift, and without an allocation, for the
+/// table's split, which asks this for a hundred table angles.
+pub(crate) fn solutions(record: &Record, f: &Vector3<f64>, current: [f64; 2]) -> UpToTwo<Solution> {
+    let model_current = [0, 1].map(|i| current[i] - record.axes[i].offset);
+    let mut solutions = UpToTwo::new();
+    for angles in model_angles(record, f, model_current).iter() {
+        let solution = place(record, f, *angles, current);
+        // One touching solution reached twice, or a pole: report it once.
+        let same = |other: &Solution| {
+            (0..2).all(|i| (other.positions[i] - solution.positions[i]).abs() < 1e-9)
+        };
+        if !solutions.iter().any(same) {
+            solutions.push(solution);
+        }
+    }
+    solutions
 }
 
 /// The model angles (α1, α2) that meet the tool direction `f` exactly.
-fn model_angles(record: &Record, f: &Vector3<f64>, current: [f64; 2]) -> Vec<[f64; 2]> {
+fn model_angles(record: &Record, f: &Vector3<f64>, current: [f64; 2]) -> UpToTwo<[f64; 2]> {
     let t0 = Vector3::z();
     let v1 = record.axes[0].vector.normalize();
     if record.axis_count() == 1 {
@@ -127,11 +149,11 @@ fn model_angles(record: &Record, f: &Vector3<f64>, current: [f64; 2]) -> Vec<[f6
             Kinematics::Table => (*f, t0),
             _ => (t0, *f),
         };
-        if (v1.dot(&p) - v1.dot(&q)).abs() > 1e-9 {
-            return Vec::new();
+        let mut found = UpToTwo::new();
+        if (v1.dot(&p) - v1.dot(&q)).abs() <= 1e-9 {
+            found.push([angle_about(&v1, &p, &q).unwrap_or(current[0]), current[1]]);
         }
-        let angle = angle_about(&v1, &p, &q).unwrap_or(current[0]);
-        return vec![[angle, current[1]]];
+        return found;
     }
     let v2 = record.axes[1].vector.normalize();
     // R(a, θ1) R(b, θ2) p = q, and how (θ1, θ2) are the axes' angles.
@@ -144,17 +166,16 @@ fn model_angles(record: &Record, f: &Vector3<f64>, current: [f64; 2]) -> Vec<[f6
         Kinematics::Mixed => (-current[1], current[0]),
         _ => (current[0], current[1]),
     };
-    intermediates(&a, &b, &p, &q)
-        .into_iter()
-        .map(|w| {
-            let theta_2 = angle_about(&b, &p, &w).unwrap_or(free_2);
-            let theta_1 = angle_about(&a, &w, &q).unwrap_or(free_1);
-            match record.kinematics {
-                Kinematics::Mixed => [theta_2, -theta_1],
-                _ => [theta_1, theta_2],
-            }
-        })
-        .collect()
+    let mut found = UpToTwo::new();
+    for w in intermediates(&a, &b, &p, &q).iter() {
+        let theta_2 = angle_about(&b, &p, w).unwrap_or(free_2);
+        let theta_1 = angle_about(&a, w, &q).unwrap_or(free_1);
+        found.push(match record.kinematics {
+            Kinematics::Mixed => [theta_2, -theta_1],
+            _ => [theta_1, theta_2],
+        });
+    }
+    found
 }
 
 /// Machine positions of model `angles`: offsets added, each placed inside
@@ -274,7 +295,7 @@ fn turn(record: &Record, i: usize, angles: [f64; 2]) -> Rotation3<f64> {
 /// The solution `direction` asks for among the `usable` ones: among those
 /// inside the limits, the other when only one is (Siemens: "the
 /// alternative is selected automatically").
-fn choose(
+pub(crate) fn choose(
     record: &Record,
     solutions: &[Solution],
     direction: Direction,
