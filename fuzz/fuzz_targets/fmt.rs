@@ -21,6 +21,7 @@ fuzz_target!(|data: &[u8]| {
         max_blank_lines: usize::from(choice >> 3) % 3,
         indent_proc_body: choice & 0x20 == 0,
         renumber: (choice & 0x40 != 0).then_some((10, 10)),
+        case_names: choice & 0x80 != 0,
     };
     let name = "FUZZ.MPF";
     let kind = program_kind(Some(name), source);
