@@ -4,8 +4,6 @@
 //! or read from stdin: one per line for numbers (angle triples side by
 //! side), the whole input for statements.
 
-use std::io::{IsTerminal, Read};
-
 use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
 use crate::cli::notation::{self, Notation};
@@ -70,7 +68,7 @@ fn output(args: &ConvertArgs, pose: &Pose) -> Result<String, CliError> {
 
 /// stdin read whole: one rotation in statements, or one a line in numbers.
 fn each_of_stdin(args: &ConvertArgs) -> Result<String, CliError> {
-    let input = read_stdin()?;
+    let input = crate::cli::input::stdin_text(CliError::NoAngles)?;
     if args.from.is_text() {
         return single(args, &[input]);
     }
@@ -88,22 +86,6 @@ fn each_of_stdin(args: &ConvertArgs) -> Result<String, CliError> {
     Ok(text)
 }
 
-fn read_stdin() -> Result<String, CliError> {
-    // Waiting for a terminal to type triples would look like a hang.
-    if std::io::stdin().is_terminal() {
-        return Err(CliError::NoAngles);
-    }
-    let mut input = Vec::new();
-    std::io::stdin()
-        .lock()
-        .read_to_end(&mut input)
-        .map_err(|source| CliError::Read {
-            path: "<stdin>".into(),
-            source,
-        })?;
-    Ok(String::from_utf8_lossy(&input).into_owned())
-}
-
 /// Every triple of stdin, converted together (`convert_all`). The whole
 /// input is read and checked before anything is printed: a bad line stops
 /// the run without a partial output.
@@ -111,7 +93,7 @@ fn batch(args: &ConvertArgs) -> Result<String, CliError> {
     let (Notation::Angles(from), Notation::Angles(to)) = (args.from, args.to) else {
         return each_of_stdin(args);
     };
-    let triples = read_triples(&read_stdin()?)?;
+    let triples = read_triples(&crate::cli::input::stdin_text(CliError::NoAngles)?)?;
     let mut text = String::with_capacity(triples.len() * 64);
     for conversion in convert_all(from, &triples, to) {
         if args.json {

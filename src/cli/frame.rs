@@ -12,7 +12,9 @@ use crate::rotation::forms::{tool_to_piece, Pose};
 pub fn run(args: &FrameArgs) -> Result<ExitStatus, CliError> {
     let pose = if args.tool.is_empty() {
         let values = if args.values.is_empty() {
-            vec![read_stdin()?]
+            vec![crate::cli::input::stdin_text(CliError::Form(
+                "no frame given, and stdin is a terminal: give its values, or pipe them in".into(),
+            ))?]
         } else {
             args.values.clone()
         };
@@ -44,22 +46,4 @@ fn chain(from: Notation, links: &[String], option: &str) -> Result<Pose, CliErro
         product *= frame;
     }
     Ok(product)
-}
-
-fn read_stdin() -> Result<String, CliError> {
-    use std::io::{IsTerminal, Read};
-    if std::io::stdin().is_terminal() {
-        return Err(CliError::Form(
-            "no frame given, and stdin is a terminal: give its values, or pipe them in".into(),
-        ));
-    }
-    let mut input = Vec::new();
-    std::io::stdin()
-        .lock()
-        .read_to_end(&mut input)
-        .map_err(|source| CliError::Read {
-            path: "<stdin>".into(),
-            source,
-        })?;
-    Ok(String::from_utf8_lossy(&input).into_owned())
 }

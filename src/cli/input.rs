@@ -115,6 +115,25 @@ pub fn again(error: &CliError) -> CliError {
 /// The paths `command` reads: those named, else standard input, unless it
 /// is a terminal, where waiting for a program to be typed would look like a
 /// hang.
+/// Standard input read whole as text (bytes that are no UTF-8 replaced);
+/// `at_terminal` when it is a terminal, where waiting for typed input would
+/// look like a hang.
+pub fn stdin_text(at_terminal: CliError) -> Result<String, CliError> {
+    use std::io::IsTerminal;
+    if std::io::stdin().is_terminal() {
+        return Err(at_terminal);
+    }
+    let mut input = Vec::new();
+    std::io::stdin()
+        .lock()
+        .read_to_end(&mut input)
+        .map_err(|source| CliError::Read {
+            path: "<stdin>".into(),
+            source,
+        })?;
+    Ok(String::from_utf8_lossy(&input).into_owned())
+}
+
 pub fn named_or_stdin(paths: &[PathBuf], command: &'static str) -> Result<Vec<PathBuf>, CliError> {
     use std::io::IsTerminal;
     if !paths.is_empty() {

@@ -200,23 +200,7 @@ mod tests {
         ]
     }
 
-    /// A little random generator, so that the tests need no dependency.
-    struct Noise(u64);
-
-    impl Noise {
-        /// Uniform in [-1, 1].
-        fn next(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        }
-
-        fn vector(&mut self, size: f64) -> Vector3<f64> {
-            Vector3::new(self.next(), self.next(), self.next()) * size
-        }
-    }
+    use crate::measure::Noise;
 
     #[test]
     fn the_reference_example_comes_out() {

@@ -13,3 +13,24 @@
 pub mod circle;
 pub mod face;
 pub mod turn;
+
+/// A little random generator for the tests, so that they need no
+/// dependency.
+#[cfg(test)]
+pub(crate) struct Noise(pub u64);
+
+#[cfg(test)]
+impl Noise {
+    /// Uniform in [-1, 1].
+    pub fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
+
+    pub fn vector(&mut self, size: f64) -> nalgebra::Vector3<f64> {
+        nalgebra::Vector3::new(self.next(), self.next(), self.next()) * size
+    }
+}

@@ -161,21 +161,7 @@ fn axis(direction: Vector3<f64>, before: Vector3<f64>, after: Vector3<f64>, chi:
 mod tests {
     use super::*;
 
-    struct Noise(u64);
-
-    impl Noise {
-        fn next(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        }
-
-        fn vector(&mut self, size: f64) -> Vector3<f64> {
-            Vector3::new(self.next(), self.next(), self.next()) * size
-        }
-    }
+    use crate::measure::Noise;
 
     /// The numerical solve the analytical one is checked against:
     /// Levenberg-Marquardt on the residual R(v/|v|, χ) ρ − ρ' over v, from
