@@ -365,7 +365,8 @@ fn a_folder_is_rewritten_file_by_file() {
 
     let output = run_in(&dir, &["rewrite", "--heads", &heads, "in"]);
     assert_exit(&output, 2);
-    assert!(String::from_utf8_lossy(&output.stderr).contains("4 programs to rewrite"));
+    assert!(String::from_utf8_lossy(&output.stderr)
+        .contains("more than one program to rewrite (the folder in)"));
 
     let output = run_in(&dir, &["rewrite", "--check", "--heads", &heads, "in"]);
     assert_exit(&output, 1);
@@ -1023,5 +1024,51 @@ fn an_in_place_write_keeps_a_hidden_files_attributes() {
     assert_exit(&output, 0);
     assert_ne!(fs::read(&program).expect("read"), original, "rewritten");
     assert!(hidden(&program), "the rewritten file is still hidden");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// The walk goes on while the first files are checked: their findings are
+/// written before the walk reaches a folder far behind them. Checked by
+/// order, not time: stdout and stderr share one file, and the note about a
+/// link in the last folder can come only once the walk gets there, which a
+/// walk that lists every file first does before any finding.
+#[test]
+#[cfg(unix)] // a symbolic link makes the note
+fn findings_come_while_the_walk_goes_on() {
+    let dir = scratch("files-streaming");
+    let first = dir.join("programs/A");
+    let last = dir.join("programs/Z");
+    fs::create_dir_all(&first).expect("dir");
+    fs::create_dir_all(&last).expect("dir");
+    // More files than the threads may run ahead of what is written.
+    for n in 0..300 {
+        fs::write(
+            first.join(format!("P{n:03}.MPF")),
+            b"N10 GOTOF NOWHERE\nM30\n",
+        )
+        .expect("write");
+    }
+    symlink("../A/P000.MPF", last.join("LINK.MPF")).expect("symlink");
+    let log = dir.join("log");
+    let file = fs::File::create(&log).expect("log");
+    let status = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--format", "short", "programs"])
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .stdout(file.try_clone().expect("clone"))
+        .stderr(file)
+        .status()
+        .expect("runs");
+    assert_eq!(status.code(), Some(1));
+    let log = fs::read_to_string(&log).expect("log");
+    let note = log
+        .find("skipped programs/Z/LINK.MPF")
+        .expect("the link's note");
+    let findings_before = log[..note].matches("error[N001]").count();
+    // At most 64 files are worked on ahead of the one written next.
+    assert!(
+        findings_before >= 300 - 64 - 2,
+        "{findings_before} findings before the note:\n{log}"
+    );
     let _ = fs::remove_dir_all(&dir);
 }

@@ -150,7 +150,7 @@ fn the_cli_on_empty_input_and_on_a_directory() {
     // refuses; eval tells each (PROBE_ALIGN's measured angles are errors).
     let rewrite = run(&["rewrite", "samples"], b"");
     assert_exit(&rewrite, 2);
-    assert!(String::from_utf8_lossy(&rewrite.stderr).contains("programs to rewrite"));
+    assert!(String::from_utf8_lossy(&rewrite.stderr).contains("more than one program to rewrite"));
     let eval = run(&["eval", "samples"], b"");
     assert_exit(&eval, 1);
     assert!(String::from_utf8_lossy(&eval.stdout).contains("samples/PROBE_ALIGN.MPF"));

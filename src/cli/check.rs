@@ -8,14 +8,14 @@ use std::sync::Arc;
 use crate::cli::analysis;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{again, binary, read, Bytes, Found};
+use crate::cli::input::{binary, read, Bytes, Found};
 use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
     github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
     Statistics, JSON_BETWEEN, JSON_START,
 };
-use crate::cli::walk::expand;
+use crate::cli::walk::{files, Files};
 use crate::cli::ExitStatus;
 use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::document::archive::Opened;
@@ -247,27 +247,28 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
         (true, Some(_)) => vec![PathBuf::from("-")],
         (true, None) => vec![PathBuf::from(".")],
     };
-    let paths = expand(&named, &args.walk.walk(&workspace))?;
+    let walk = args.walk.walk(&workspace);
+    let mut files = files(&named, &walk);
     let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
     report_to(args.output_file.as_deref(), |out| {
-        report(args, &paths, colour, &workspace, out)
+        report(args, &mut files, colour, &workspace, out)
     })
 }
 
-/// Checks `paths`, writing the report to `out` as each file is done and
-/// the summary to stderr.
+/// Checks the files as the walk finds them, writing the report to `out` as
+/// each file is done and the summary to stderr.
 fn report(
     args: &CheckArgs,
-    paths: &[Result<Found, CliError>],
+    walk: &mut Files,
     colour: bool,
     workspace: &Workspace,
     out: &mut dyn Write,
 ) -> Result<ExitStatus, CliError> {
     // A failure comes with the name of the file, for the JSON and SARIF reports.
-    let work = |index: usize| match &paths[index] {
-        Ok(found) => check_file(found, args, colour, workspace)
+    let work = |found: Result<Found, CliError>| match found {
+        Ok(found) => check_file(&found, args, colour, workspace)
             .map_err(|error| (shown_name(&found.path, args), error)),
-        Err(error) => Err((walked_name(error), again(error))),
+        Err(error) => Err((walked_name(&error), error)),
     };
 
     // Files that could not be read or checked (an error each, on stderr).
@@ -282,7 +283,7 @@ fn report(
         out.write_all(JSON_START.as_bytes())?;
     }
     // Each file's report printed as soon as it and those before it are done.
-    parallel::each(paths.len(), work, |result| {
+    parallel::each(&mut *walk, work, |result| {
         match result {
             Ok(mut checked) => {
                 if let Some(notes) = &checked.notes {
@@ -313,12 +314,16 @@ fn report(
         }
         Ok::<(), CliError>(())
     })?;
+    // What ended the walk early (unreadable settings, a folder without
+    // programs) is the run's error, once the reports begun are complete.
+    let walked = walk.end();
     match args.format {
         _ if args.statistics => out.write_all(held.statistics.render(args.format).as_bytes())?,
         Format::Json => out.write_all(json_end(held.entries).as_bytes())?,
         Format::Sarif => out.write_all(held.sarif.finish().as_bytes())?,
         Format::Short | Format::Github | Format::Human => {}
     }
+    walked?;
     // For people: on stderr, so that what tools read stays the findings.
     // Nothing checked after an error: the error says it all ("no findings
     // in 0 files" read as a pass).

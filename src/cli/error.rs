@@ -46,12 +46,15 @@ pub enum CliError {
     )]
     Server(String),
 
-    #[error("{count} programs to rewrite, and only one standard output")]
+    #[error("more than one program to rewrite ({named}), and only one standard output")]
     #[diagnostic(
         code(sinuprep::usage),
         help("give --in-place, -o DIR (the tree is mirrored there), --check or --diff")
     )]
-    SeveralToStdout { count: usize },
+    SeveralToStdout {
+        /// What was named: `3 paths`, `the folder CAM`.
+        named: String,
+    },
 
     #[error("{}: the archive cannot be read: {error}", printable(name))]
     #[diagnostic(

@@ -5,10 +5,10 @@ use crate::cli::analysis;
 use crate::cli::args::EvalArgs;
 use crate::cli::axes;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
+use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::parallel;
 use crate::cli::render::printable;
-use crate::cli::walk::expand;
+use crate::cli::walk::files;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::document::archive::Opened;
 use crate::emit::cycle600::{code, Options};
@@ -31,16 +31,15 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         walk: args.walk.given(),
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let paths = expand(&named, &args.walk.walk(&workspace))?;
+    let walk = args.walk.walk(&workspace);
+    let mut files = files(&named, &walk);
     let mut worst = ExitStatus::Success;
-    let mut documents = Vec::new();
+    let mut json = JsonOut::default();
     let mut told = analysis::MachinesTold::default();
-    let work = |index: usize| match &paths[index] {
-        Ok(found) => eval_file(found, args, &workspace),
-        Err(error) => Err(again(error)),
-    };
+    let work = |found: Result<Found, CliError>| eval_file(&found?, args, &workspace);
     // Each file's evaluation printed as soon as it and those before it are done.
-    parallel::each(paths.len(), work, |outcome| {
+    parallel::each(&mut files, work, |outcome| {
+        json.file()?;
         match outcome {
             Ok(evaluated) => {
                 let format = args.analysis.message_format;
@@ -51,7 +50,9 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
                 }
                 match evaluated.output {
                     Output::Text(text) => write_stdout(text.as_bytes())?,
-                    Output::Json(programs) => documents.extend(programs),
+                    Output::Json(programs) => programs
+                        .into_iter()
+                        .try_for_each(|program| json.add(program))?,
                 }
             }
             Err(error) => {
@@ -61,18 +62,89 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
         }
         Ok::<(), CliError>(())
     })?;
+    // What ended the walk early is the run's error, once the JSON begun is
+    // complete.
+    let walked = files.end();
     if args.json {
-        // One program: its document; several (files, or an archive's
-        // programs): an array of them, in order.
-        let several = paths.len() > 1 || documents.len() > 1;
-        let value = match documents.len() {
-            1 if !several => documents.swap_remove(0),
-            _ => serde_json::Value::Array(documents),
-        };
-        let text = serde_json::to_string_pretty(&value).unwrap_or_default();
-        write_stdout(format!("{text}\n").as_bytes())?;
+        json.end()?;
     }
+    walked?;
     Ok(worst)
+}
+
+/// `--json` on stdout as the programs come: one program's document by
+/// itself; several (files, or an archive's programs) an array of them, in
+/// order, as `serde_json` prints one. Only the first document waits, until
+/// a second file or program says which it is.
+#[derive(Default)]
+struct JsonOut {
+    files: usize,
+    /// The first document, while it may be the only one.
+    first: Option<serde_json::Value>,
+    /// The array's elements written; `None` before it is begun.
+    written: Option<usize>,
+}
+
+impl JsonOut {
+    /// Another file's outcome is coming.
+    fn file(&mut self) -> Result<(), CliError> {
+        self.files += 1;
+        if self.files > 1 {
+            self.begin_array()?;
+        }
+        Ok(())
+    }
+
+    fn add(&mut self, document: serde_json::Value) -> Result<(), CliError> {
+        if self.written.is_none() && self.first.is_none() {
+            self.first = Some(document);
+            return Ok(());
+        }
+        self.begin_array()?;
+        self.element(&document)
+    }
+
+    /// Writes `[` and the document held, once.
+    fn begin_array(&mut self) -> Result<(), CliError> {
+        if self.written.is_none() {
+            self.written = Some(0);
+            write_stdout(b"[")?;
+            if let Some(first) = self.first.take() {
+                self.element(&first)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// One element of the array, indented as in a pretty-printed array (a
+    /// JSON text holds no line break but between its tokens).
+    fn element(&mut self, document: &serde_json::Value) -> Result<(), CliError> {
+        let written = self.written.get_or_insert(0);
+        let mut text = String::from(if *written == 0 { "\n" } else { ",\n" });
+        *written += 1;
+        for (n, line) in pretty(document).lines().enumerate() {
+            if n > 0 {
+                text.push('\n');
+            }
+            text.push_str("  ");
+            text.push_str(line);
+        }
+        write_stdout(text.as_bytes())
+    }
+
+    fn end(self) -> Result<(), CliError> {
+        let text = match (self.written, self.first) {
+            (Some(0), _) => "]".to_string(),
+            (Some(_), _) => "\n]".to_string(),
+            (None, Some(only)) => pretty(&only),
+            (None, None) => "[]".to_string(),
+        };
+        write_stdout(format!("{text}\n").as_bytes())
+    }
+}
+
+fn pretty(value: &serde_json::Value) -> String {
+    serde_json::to_string_pretty(value).unwrap_or_default()
 }
 
 enum Output {

@@ -11,11 +11,11 @@ use std::path::{Path, PathBuf};
 use crate::archive::Form;
 use crate::cli::args::FmtArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
+use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{human, printable, FileReport};
-use crate::cli::walk::expand;
+use crate::cli::walk::files;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::document::archive::Opened;
 use crate::edit::write_applied;
@@ -40,22 +40,21 @@ pub fn run(args: &FmtArgs) -> Result<ExitStatus, CliError> {
         walk: args.walk.given(),
         ..Given::default()
     })?;
-    let paths = expand(&named, &args.walk.walk(&workspace))?;
+    let walk = args.walk.walk(&workspace);
+    let mut files = files(&named, &walk);
     let mut worst = ExitStatus::Success;
-    let work = |index: usize| {
-        let found = match &paths[index] {
-            Ok(found) => found,
-            Err(error) => return failed(format!("{:?}", miette::Report::new(again(error)))),
-        };
-        format_file(found, args, &workspace)
+    let work = |found: Result<Found, CliError>| {
+        found
+            .and_then(|found| format_file(&found, args, &workspace))
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
     };
-    parallel::each(paths.len(), work, |outcome| {
+    parallel::each(&mut files, work, |outcome| {
         tell!("{}", outcome.stderr);
         write_stdout(&outcome.stdout)?;
         worst = worst.max(outcome.status);
         Ok::<(), CliError>(())
     })?;
+    files.end()?;
     Ok(worst)
 }
 

@@ -97,21 +97,6 @@ pub enum Links {
     Follow,
 }
 
-/// The walk's error about one entry (a directory it could not read), made
-/// again for that entry's place in the report: an error is not `Clone`.
-pub fn again(error: &CliError) -> CliError {
-    match error {
-        CliError::Read { path, source } => CliError::Read {
-            path: path.clone(),
-            source: std::io::Error::new(source.kind(), source.to_string()),
-        },
-        other => CliError::Read {
-            path: PathBuf::new(),
-            source: std::io::Error::other(other.to_string()),
-        },
-    }
-}
-
 /// The paths `command` reads: those named, else standard input, unless it
 /// is a terminal, where waiting for a program to be typed would look like a
 /// hang.

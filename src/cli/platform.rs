@@ -23,6 +23,18 @@ pub fn identity(_metadata: &Metadata) -> Option<(u64, u64)> {
     None
 }
 
+/// How many names (hard links) a file has, where the platform tells it.
+#[cfg(unix)]
+pub fn names(metadata: &Metadata) -> u64 {
+    use std::os::unix::fs::MetadataExt;
+    metadata.nlink()
+}
+
+#[cfg(not(unix))]
+pub fn names(_metadata: &Metadata) -> u64 {
+    1
+}
+
 /// Whether `a` and `b` are one file: by identity, else by canonical path.
 pub fn same_file(a: &Path, b: &Path) -> bool {
     match (std::fs::metadata(a), std::fs::metadata(b)) {

@@ -12,11 +12,11 @@ use crate::archive::Form;
 use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{again, binary, named_or_stdin, read, skip_binary, Found};
+use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::printable;
-use crate::cli::walk::expand;
+use crate::cli::walk::files;
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::document::archive::Opened;
 use crate::emit::{diff, write_applied};
@@ -52,24 +52,30 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         walk: args.walk.given(),
         ..analysis::given_to_rewrite(&args.analysis)
     })?;
-    let paths = expand(&named, &args.walk.walk(&workspace))?;
-    let several = paths.len() > 1 || args.paths.iter().any(|p| p.is_dir());
+    // Known before the walk: one file named, or more than one path (or a
+    // folder), whose rewrites cannot all go to one stdout or one `-o` file.
+    let several = named.len() > 1 || named.iter().any(|p| p.is_dir());
     let writes_files = args.in_place || args.check || args.diff || args.output.is_some();
     if several && !writes_files {
-        return Err(CliError::SeveralToStdout { count: paths.len() });
-    }
-    let mut worst = ExitStatus::Success;
-    let work = |index: usize| {
-        let found = match &paths[index] {
-            Ok(found) => found,
-            Err(error) => return failed(format!("{:?}", miette::Report::new(again(error)))),
+        let named = match named.iter().find(|p| p.is_dir()) {
+            Some(folder) if named.len() == 1 => {
+                format!("the folder {}", printable(&folder.display().to_string()))
+            }
+            _ => format!("{} paths", named.len()),
         };
-        rewrite_file(found, args, &workspace, several)
+        return Err(CliError::SeveralToStdout { named });
+    }
+    let walk = args.walk.walk(&workspace);
+    let mut files = files(&named, &walk);
+    let mut worst = ExitStatus::Success;
+    let work = |found: Result<Found, CliError>| {
+        found
+            .and_then(|found| rewrite_file(&found, args, &workspace, several))
             .unwrap_or_else(|error| failed(format!("{:?}", miette::Report::new(error))))
     };
     // Each program's messages as soon as it and those before it are done.
     let mut told = analysis::MachinesTold::default();
-    parallel::each(paths.len(), work, |outcome| {
+    parallel::each(&mut files, work, |outcome| {
         let format = args.analysis.message_format;
         worst = worst.max(told.tell(outcome.machine.as_deref(), format));
         tell!("{}", outcome.stderr);
@@ -77,6 +83,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
         worst = worst.max(outcome.status);
         Ok::<(), CliError>(())
     })?;
+    files.end()?;
     Ok(worst)
 }
 

@@ -20,7 +20,7 @@ use ignore::gitignore::{Gitignore, GitignoreBuilder};
 
 use crate::cli::error::CliError;
 use crate::cli::input::{Found, Links};
-use crate::cli::platform::identity;
+use crate::cli::platform;
 use crate::cli::render::printable;
 use crate::workspace::{file, Patterns, Workspace};
 
@@ -35,12 +35,17 @@ pub struct Walk<'a> {
     pub workspace: &'a Workspace,
 }
 
-/// Expands the command-line paths: a directory yields the files its
+/// The files the command-line paths name: a directory yields the files its
 /// settings include (by default its `.mpf`/`.spf` files and `.arc`
 /// archives, any case), recursively, sorted; a file named is taken whatever
 /// its name. Every file and directory is taken once, by its device and
 /// inode, so links that loop (`a -> .`, `up -> ..`) or name a file twice do
 /// not repeat it.
+///
+/// The walk is lazy: each directory is read when the files before it have
+/// been taken, so what it holds is the entries of the directories it is in
+/// (the deepest path's), never the list of every file, and the first files
+/// are checked while it goes on.
 ///
 /// As ripgrep and ruff walk: a link met in a directory is not followed
 /// unless `follow_links`, and nothing but a regular file is taken (a FIFO
@@ -49,52 +54,251 @@ pub struct Walk<'a> {
 /// whose kind cannot be told (a path past the system's length limit), is an
 /// error naming it. A path named on the command line is taken through a link.
 ///
-/// A directory that holds no program is an error unless `allow_empty` (then
-/// a note): a CI run over a mistyped or emptied folder must not pass in
-/// silence. Either says what was left out and how to take it.
-pub fn expand(paths: &[PathBuf], walk: &Walk) -> Result<Vec<Result<Found, CliError>>, CliError> {
-    let links = if walk.follow_links {
-        Links::Follow
-    } else {
-        Links::Skip
-    };
-    let mut out = Vec::new();
-    let mut seen = HashSet::new();
-    for path in paths {
-        if path.is_dir() {
-            let before = out.len();
-            let mut walker = Walker {
-                walk,
-                links,
-                seen: &mut seen,
-                out: &mut out,
-                left: Left::default(),
-            };
-            let ignores = Ignores::above(path);
-            walker.walk(path, &canonical(path), ignores)?;
-            let left = walker.left;
-            if out.len() == before {
-                let patterns = walk.workspace.patterns(path)?;
-                let why = left.describe();
-                let help = left.help(&patterns, walk.allow_empty);
-                if !walk.allow_empty {
-                    return Err(CliError::NoPrograms {
-                        path: path.clone(),
-                        why,
-                        help,
-                    });
-                }
-                let name = printable(&path.display().to_string()).into_owned();
-                tellln!("note: {name} holds no program{why}\n  help: {help}");
+/// A directory that holds no program ends the walk with an error unless
+/// `allow_empty` (then a note): a CI run over a mistyped or emptied folder
+/// must not pass in silence. Either says what was left out and how to take
+/// it. Such an error, or settings that cannot be read, is [`Files::end`]'s.
+pub fn files<'w>(paths: &'w [PathBuf], walk: &'w Walk<'w>) -> Files<'w> {
+    Files {
+        walk,
+        links: if walk.follow_links {
+            Links::Follow
+        } else {
+            Links::Skip
+        },
+        named: paths.iter(),
+        seen: Seen::named(paths),
+        root: None,
+        fatal: None,
+    }
+}
+
+/// The files of a command, found as they are asked for (see [`files`]):
+/// each a file to read, or an error naming an entry that could not be read.
+pub struct Files<'w> {
+    walk: &'w Walk<'w>,
+    links: Links,
+    named: std::slice::Iter<'w, PathBuf>,
+    seen: Seen,
+    /// The directory named on the command line being walked.
+    root: Option<Root>,
+    /// What ended the walk early.
+    fatal: Option<CliError>,
+}
+
+/// A directory named on the command line, being walked.
+struct Root {
+    path: PathBuf,
+    /// Files taken from it so far.
+    taken: usize,
+    left: Left,
+    /// The directories the walk is in, the deepest last.
+    folders: Vec<Folder>,
+}
+
+/// A directory being walked: its entries not yet looked at, sorted.
+struct Folder {
+    entries: std::vec::IntoIter<Entry>,
+    /// Its path below a canonical directory, for the patterns.
+    absolute: PathBuf,
+    patterns: Arc<Patterns>,
+    ignores: Ignores,
+}
+
+/// An entry's path, and its kind as the directory gives it (the link
+/// itself, not what it names), read without opening anything.
+type Entry = (PathBuf, std::io::Result<std::fs::FileType>);
+
+impl Iterator for Files<'_> {
+    type Item = Result<Found, CliError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            if self.fatal.is_some() {
+                return None;
             }
-        } else if excluded_when_named(path, walk)? {
-            let name = printable(&path.display().to_string()).into_owned();
-            tellln!("note: {name} is excluded (force-exclude): not checked");
-        } else if first_time(path, &mut seen) {
-            out.push(Ok(Found::named(path.clone())));
+            if let Some(mut root) = self.root.take() {
+                match self.step(&mut root) {
+                    Ok(Some(found)) => {
+                        root.taken += found.is_ok() as usize;
+                        self.root = Some(root);
+                        return Some(found);
+                    }
+                    Ok(None) => {
+                        if root.taken == 0 {
+                            if let Err(error) = self.none_in(&root) {
+                                self.fatal = Some(error);
+                            }
+                        }
+                    }
+                    Err(error) => self.fatal = Some(error),
+                }
+                continue;
+            }
+            let path = self.named.next()?;
+            if path.is_dir() {
+                let mut root = Root {
+                    path: path.clone(),
+                    taken: 0,
+                    left: Left::default(),
+                    folders: Vec::new(),
+                };
+                match self.enter(&mut root, path, canonical(path), Ignores::above(path)) {
+                    Ok(None) => self.root = Some(root),
+                    Ok(Some(unreadable)) => return Some(Err(unreadable)),
+                    Err(error) => self.fatal = Some(error),
+                }
+                continue;
+            }
+            match excluded_when_named(path, self.walk) {
+                Ok(true) => {
+                    let name = printable(&path.display().to_string()).into_owned();
+                    tellln!("note: {name} is excluded (force-exclude): not checked");
+                }
+                Ok(false) if self.seen.first_named(path) => {
+                    return Some(Ok(Found::named(path.clone())));
+                }
+                Ok(false) => {}
+                Err(error) => self.fatal = Some(error),
+            }
         }
     }
-    Ok(out)
+}
+
+impl Files<'_> {
+    /// What ended the walk early, if anything: settings that cannot be
+    /// read, or a directory without programs (unless `allow_empty`).
+    pub fn end(&mut self) -> Result<(), CliError> {
+        self.fatal.take().map_or(Ok(()), Err)
+    }
+
+    /// The next file (or unreadable entry) of `root`'s walk; `None` when it
+    /// is done.
+    fn step(&mut self, root: &mut Root) -> Result<Option<Result<Found, CliError>>, CliError> {
+        while let Some(folder) = root.folders.last_mut() {
+            let Some((path, kind)) = folder.entries.next() else {
+                root.folders.pop();
+                continue;
+            };
+            let Some(name) = path.file_name() else {
+                continue;
+            };
+            let absolute = folder.absolute.join(name);
+            if !self.walk.hidden && name.as_encoded_bytes().starts_with(b".") {
+                root.left.hidden += 1;
+                continue;
+            }
+            let kind = match kind {
+                Ok(kind) => kind,
+                Err(source) => return Ok(Some(Err(CliError::Read { path, source }))),
+            };
+            let link = kind.is_symlink();
+            let kind = if link {
+                // What the link names, looked up without opening it.
+                match std::fs::metadata(&path) {
+                    Ok(target) => Some(target.file_type()),
+                    Err(_) => None,
+                }
+            } else {
+                Some(kind)
+            };
+            let is_dir = kind.is_some_and(|k| k.is_dir());
+            let patterns = &folder.patterns;
+            if patterns.excludes(&absolute, is_dir) {
+                root.left.excluded += 1;
+                continue;
+            }
+            if patterns.respect_gitignore && folder.ignores.ignores(&absolute, is_dir) {
+                root.left.ignored += 1;
+                continue;
+            }
+            if !is_dir && !patterns.includes(&absolute) {
+                root.left.not_included += 1;
+                if root.left.examples.len() < 5 {
+                    let name = printable(&name.to_string_lossy()).into_owned();
+                    root.left.examples.push(name);
+                }
+                continue;
+            }
+            let Some(kind) = kind else {
+                skipped(&path, "a link that names nothing");
+                continue;
+            };
+            if link && self.links == Links::Skip {
+                skipped(&path, "a symbolic link (--follow-links follows links)");
+                continue;
+            }
+            if kind.is_dir() {
+                let absolute = if link { canonical(&path) } else { absolute };
+                let ignores = folder.ignores.clone();
+                if let Some(unreadable) = self.enter(root, &path, absolute, ignores)? {
+                    return Ok(Some(Err(unreadable)));
+                }
+            } else if !kind.is_file() {
+                skipped(&path, "not a regular file (a FIFO, a socket or a device)");
+            } else if self.seen.first_walked(&path, self.links) {
+                return Ok(Some(Ok(Found::walked(path, self.links))));
+            }
+        }
+        Ok(None)
+    }
+
+    /// Reads the directory `dir` (as named and reached, at `absolute` below
+    /// a canonical directory, under the ignore files `ignores` of the
+    /// folders above) into `root`'s walk; one already walked is left out.
+    /// One that cannot be read is the error returned in `Ok`.
+    fn enter(
+        &mut self,
+        root: &mut Root,
+        dir: &Path,
+        absolute: PathBuf,
+        ignores: Ignores,
+    ) -> Result<Option<CliError>, CliError> {
+        if !self.seen.first_directory(dir) {
+            return Ok(None);
+        }
+        let entries = match std::fs::read_dir(dir) {
+            Ok(entries) => entries,
+            Err(source) => {
+                let path = dir.to_path_buf();
+                return Ok(Some(CliError::Read { path, source }));
+            }
+        };
+        let mut entries: Vec<Entry> = entries
+            .filter_map(|e| e.ok().map(|e| (e.path(), e.file_type())))
+            .collect();
+        entries.sort_by(|a, b| a.0.cmp(&b.0));
+        let patterns = self.walk.workspace.patterns(dir)?;
+        let ignores = if patterns.respect_gitignore {
+            ignores.enter(&absolute, &entries)
+        } else {
+            ignores
+        };
+        root.folders.push(Folder {
+            entries: entries.into_iter(),
+            absolute,
+            patterns,
+            ignores,
+        });
+        Ok(None)
+    }
+
+    /// The error, or the note, for a directory that yielded no program.
+    fn none_in(&self, root: &Root) -> Result<(), CliError> {
+        let patterns = self.walk.workspace.patterns(&root.path)?;
+        let why = root.left.describe();
+        let help = root.left.help(&patterns, self.walk.allow_empty);
+        if !self.walk.allow_empty {
+            return Err(CliError::NoPrograms {
+                path: root.path.clone(),
+                why,
+                help,
+            });
+        }
+        let name = printable(&root.path.display().to_string()).into_owned();
+        tellln!("note: {name} holds no program{why}\n  help: {help}");
+        Ok(())
+    }
 }
 
 /// Whether the file `path`, named on the command line, is left out:
@@ -193,110 +397,6 @@ impl Left {
     }
 }
 
-struct Walker<'w, 'a> {
-    walk: &'w Walk<'a>,
-    links: Links,
-    seen: &'w mut HashSet<(u64, u64)>,
-    out: &'w mut Vec<Result<Found, CliError>>,
-    left: Left,
-}
-
-impl Walker<'_, '_> {
-    /// Walks `dir` (as named and reached), whose path is `absolute` below a
-    /// canonical directory, with the ignore files of the folders above.
-    fn walk(&mut self, dir: &Path, absolute: &Path, ignores: Ignores) -> Result<(), CliError> {
-        if !first_time(dir, self.seen) {
-            return Ok(());
-        }
-        let fail = |path: &Path, source| {
-            Err(CliError::Read {
-                path: path.to_path_buf(),
-                source,
-            })
-        };
-        let entries = match std::fs::read_dir(dir) {
-            Ok(entries) => entries,
-            Err(source) => {
-                self.out.push(fail(dir, source));
-                return Ok(());
-            }
-        };
-        // The kind of each entry as the directory gives it (the link itself,
-        // not what it names), without opening anything.
-        let mut entries: Vec<(PathBuf, std::io::Result<std::fs::FileType>)> = entries
-            .filter_map(|e| e.ok().map(|e| (e.path(), e.file_type())))
-            .collect();
-        entries.sort_by(|a, b| a.0.cmp(&b.0));
-        let patterns = self.walk.workspace.patterns(dir)?;
-        let ignores = if patterns.respect_gitignore {
-            ignores.enter(absolute, &entries)
-        } else {
-            ignores
-        };
-        for (path, kind) in entries {
-            let Some(name) = path.file_name() else {
-                continue;
-            };
-            let absolute = absolute.join(name);
-            if !self.walk.hidden && name.as_encoded_bytes().starts_with(b".") {
-                self.left.hidden += 1;
-                continue;
-            }
-            let kind = match kind {
-                Ok(kind) => kind,
-                Err(source) => {
-                    self.out.push(fail(&path, source));
-                    continue;
-                }
-            };
-            let link = kind.is_symlink();
-            let kind = if link {
-                // What the link names, looked up without opening it.
-                match std::fs::metadata(&path) {
-                    Ok(target) => Some(target.file_type()),
-                    Err(_) => None,
-                }
-            } else {
-                Some(kind)
-            };
-            let is_dir = kind.is_some_and(|k| k.is_dir());
-            if patterns.excludes(&absolute, is_dir) {
-                self.left.excluded += 1;
-                continue;
-            }
-            if patterns.respect_gitignore && ignores.ignores(&absolute, is_dir) {
-                self.left.ignored += 1;
-                continue;
-            }
-            if !is_dir && !patterns.includes(&absolute) {
-                self.left.not_included += 1;
-                if self.left.examples.len() < 5 {
-                    let name = printable(&name.to_string_lossy()).into_owned();
-                    self.left.examples.push(name);
-                }
-                continue;
-            }
-            let Some(kind) = kind else {
-                skipped(&path, "a link that names nothing");
-                continue;
-            };
-            if link && self.links == Links::Skip {
-                skipped(&path, "a symbolic link (--follow-links follows links)");
-                continue;
-            }
-            if kind.is_dir() {
-                let absolute = if link { canonical(&path) } else { absolute };
-                self.walk(&path, &absolute, ignores.clone())?;
-            } else if !kind.is_file() {
-                skipped(&path, "not a regular file (a FIFO, a socket or a device)");
-            } else if first_time(&path, self.seen) {
-                self.out.push(Ok(Found::walked(path, self.links)));
-            }
-        }
-        Ok(())
-    }
-}
-
 /// The ignore files that apply in a folder: those of the folder and of
 /// each folder above it, the deepest first, as git and ripgrep read them.
 #[derive(Clone, Default)]
@@ -335,11 +435,7 @@ impl Ignores {
     }
 
     /// These and those of `dir` (at `absolute`), whose entries are `entries`.
-    fn enter(
-        self,
-        absolute: &Path,
-        entries: &[(PathBuf, std::io::Result<std::fs::FileType>)],
-    ) -> Self {
+    fn enter(self, absolute: &Path, entries: &[Entry]) -> Self {
         let has = |name: &str| {
             entries
                 .iter()
@@ -412,12 +508,66 @@ fn canonical(path: &Path) -> PathBuf {
     std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
-/// Whether `path` has not been met before (a path that cannot be read is
-/// taken, to be reported when it is read).
-fn first_time(path: &Path, seen: &mut HashSet<(u64, u64)>) -> bool {
-    match std::fs::metadata(path) {
-        Ok(metadata) => identity(&metadata).is_none_or(|id| seen.insert(id)),
-        Err(_) => true,
+/// The files and directories a walk has taken, by identity, so that none
+/// is taken twice. What it holds grows with the directories, not with the
+/// files: a file is kept only where it can be met again (named on the
+/// command line, reached through links, or with more than one name).
+#[derive(Default)]
+struct Seen {
+    taken: HashSet<(u64, u64)>,
+    /// The files named on the command line, which a walk may meet too.
+    named: HashSet<(u64, u64)>,
+}
+
+impl Seen {
+    fn named(paths: &[PathBuf]) -> Self {
+        let named = paths
+            .iter()
+            .filter_map(|path| std::fs::metadata(path).ok())
+            .filter(|metadata| !metadata.is_dir())
+            .filter_map(|metadata| platform::identity(&metadata))
+            .collect();
+        Seen {
+            taken: HashSet::new(),
+            named,
+        }
+    }
+
+    /// Whether the directory `path` has not been walked before.
+    fn first_directory(&mut self, path: &Path) -> bool {
+        self.first_named(path)
+    }
+
+    /// Whether the file `path`, named on the command line, has not been
+    /// taken before. A path that cannot be read is taken, to be reported
+    /// when it is read.
+    fn first_named(&mut self, path: &Path) -> bool {
+        match std::fs::metadata(path)
+            .ok()
+            .as_ref()
+            .and_then(platform::identity)
+        {
+            Some(id) => self.taken.insert(id),
+            None => true,
+        }
+    }
+
+    /// Whether the file `path`, met in a directory reached following
+    /// `links` or not, has not been taken before.
+    fn first_walked(&mut self, path: &Path, links: Links) -> bool {
+        let Ok(metadata) = std::fs::metadata(path) else {
+            return true;
+        };
+        let Some(id) = platform::identity(&metadata) else {
+            return true;
+        };
+        let met_again =
+            links == Links::Follow || platform::names(&metadata) > 1 || self.named.contains(&id);
+        if met_again {
+            self.taken.insert(id)
+        } else {
+            !self.taken.contains(&id)
+        }
     }
 }
 
