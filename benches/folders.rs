@@ -1,5 +1,7 @@
-//! Many programs: `check` over n small programs in one folder, and the same
-//! n split over folders of 100 (per-program time should be the same), with
+//! Many programs: `check` over n small programs in one folder, the same n
+//! split over folders of 100 (per-program time should be the same), and n
+//! subprograms in folders of 100 (each folder's subprograms are read for the
+//! calls; what is kept of them must not grow with n), with
 //! the time to the first finding printed (findings come as files finish, in
 //! their order, not after the last) and the peak resident memory.
 //!
@@ -29,20 +31,30 @@ fn main() {
         let _ = std::fs::remove_dir_all(&dir);
         let flat = dir.join("flat");
         let split = dir.join("split");
+        let cycles = dir.join("cycles");
         for i in 0..count {
             let name = format!("P{i:06}.MPF");
             // One finding each (N001, a jump to no label), so that every
             // program prints a line.
             let program = format!("G0 X{i} Y0\nGOTOF NOWHERE\nM30\n");
-            let folder = split.join(format!("D{:04}", i / 100));
-            for path in [flat.join(&name), folder.join(&name)] {
+            let folder = format!("D{:04}", i / 100);
+            let cycle = (
+                cycles.join(&folder).join(format!("C{i:06}.SPF")),
+                format!("PROC C{i:06}(REAL _A)\nG0 X=_A\nGOTOF NOWHERE\nM17\n"),
+            );
+            let written = [
+                (flat.join(&name), program.clone()),
+                (split.join(&folder).join(&name), program),
+                cycle,
+            ];
+            for (path, text) in written {
                 if let Some(parent) = path.parent() {
                     std::fs::create_dir_all(parent).expect("bench directory");
                 }
-                std::fs::write(path, &program).expect("write");
+                std::fs::write(path, text).expect("write");
             }
         }
-        for (shape, path) in [("flat", &flat), ("split", &split)] {
+        for (shape, path) in [("flat", &flat), ("split", &split), ("cycles", &cycles)] {
             let (total, first, peak) = measure(&binary, path);
             println!(
                 "{shape:<6} {count:>8} {total:>9.2} {:>12.1} {first:>14.3} {:>14.1}",

@@ -108,7 +108,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
     let mut server = Server {
         connection,
         documents: HashMap::new(),
-        workspace: Workspace::default(),
+        workspace: Workspace::with_buffers(Given::default(), HashMap::new()),
         unit,
         pull,
         worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),

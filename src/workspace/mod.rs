@@ -15,6 +15,7 @@ mod error;
 pub mod file;
 mod folder;
 mod patterns;
+mod recent;
 mod values;
 
 use std::collections::HashMap;
@@ -26,6 +27,7 @@ pub use error::SettingsError;
 pub use patterns::{Patterns, WalkGiven, DEFAULT_INCLUDE};
 
 use folder::Listing;
+use recent::Recent;
 
 use crate::archive::{self, MemberKind};
 use crate::diagnostic::Severity;
@@ -93,11 +95,11 @@ pub struct Resolved {
 pub struct Workspace {
     given: Given,
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
-    listings: Mutex<HashMap<PathBuf, Arc<Listing>>>,
-    subprograms: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
+    listings: Recent<PathBuf, Arc<Listing>>,
+    subprograms: Recent<PathBuf, Arc<Procedures>>,
     machines: Mutex<HashMap<PathBuf, Arc<OnMachine>>>,
     /// The nearest `sinuprep.toml` of a program's directory.
-    nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
+    nearest: Recent<PathBuf, Option<PathBuf>>,
     configs: Mutex<HashMap<PathBuf, Config>>,
     /// The patterns of each settings file (`None`: no file).
     patterns: Mutex<HashMap<Option<PathBuf>, Arc<Patterns>>>,
@@ -106,8 +108,9 @@ pub struct Workspace {
     /// disk: settings a user is typing apply before they are saved.
     buffers: HashMap<PathBuf, Arc<[u8]>>,
     /// Every file read so far (settings, definitions, machine, HEAD_DEF,
-    /// values, subprograms): a change to one of them changes the settings.
-    read: Mutex<std::collections::HashSet<PathBuf>>,
+    /// values, subprograms), for an editor: a change to one of them changes
+    /// the settings. A run over files keeps none (it would grow with them).
+    read: Option<Mutex<std::collections::HashSet<PathBuf>>>,
 }
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
@@ -168,25 +171,27 @@ impl Workspace {
         })
     }
 
-    /// A workspace that reads the files in `buffers` from them: an
-    /// editor's open documents, unsaved.
+    /// An editor's workspace: it reads the files in `buffers` (the open
+    /// documents, unsaved) from them, and remembers what it read.
     pub fn with_buffers(given: Given, buffers: HashMap<PathBuf, Arc<[u8]>>) -> Self {
         Self {
             given,
             buffers,
+            read: Some(Mutex::default()),
             ..Self::default()
         }
     }
 
-    /// Whether the settings read so far read `path`.
+    /// Whether the settings read so far read `path` (an editor's workspace).
     pub fn has_read(&self, path: &Path) -> bool {
-        self.read.lock().is_ok_and(|read| read.contains(path))
+        let read = self.read.as_ref().and_then(|read| read.lock().ok());
+        read.is_some_and(|read| read.contains(path))
     }
 
     /// The bytes of `path`, from an editor's buffer of it if there is one;
-    /// the path is remembered ([`Self::has_read`]).
+    /// in an editor's workspace the path is remembered ([`Self::has_read`]).
     fn read(&self, path: &Path) -> std::io::Result<Vec<u8>> {
-        if let Ok(mut read) = self.read.lock() {
+        if let Some(Ok(mut read)) = self.read.as_ref().map(Mutex::lock) {
             read.insert(path.to_path_buf());
         }
         match self.buffers.get(path) {
@@ -297,7 +302,7 @@ impl Workspace {
                     start.parent().unwrap_or(Path::new(""))
                 };
                 let key = dir.to_path_buf();
-                cached(&self.nearest, &key, || {
+                self.nearest.get_or_make(&key, || {
                     config::nearest(start, |dir| match self.listing(dir) {
                         Ok(listing) => listing.settings(),
                         Err(_) => folder::settings_in(dir),
@@ -502,27 +507,21 @@ impl Workspace {
     }
 
     /// The names in `dir` that matter to a program beside them (any case).
-    /// Each directory is listed once a run.
+    /// Each directory is listed once while its programs are checked.
     fn listing(&self, dir: &Path) -> std::io::Result<Arc<Listing>> {
-        let known = self.listings.lock().ok().and_then(|l| l.get(dir).cloned());
-        if let Some(known) = known {
-            return Ok(known);
-        }
-        let listing = Arc::new(Listing::read(dir)?);
-        if let Ok(mut listings) = self.listings.lock() {
-            listings.insert(dir.to_path_buf(), listing.clone());
-        }
-        Ok(listing)
+        self.listings
+            .get_or_make(&dir.to_path_buf(), || Listing::read(dir).map(Arc::new))
     }
 
     /// The subprograms of `dir` (its `.SPF` files, any case, and the
-    /// parameter count of each one's PROC), each read once a run.
+    /// parameter count of each one's PROC), each read once while the
+    /// directory is in use.
     fn subprograms_in(
         &self,
         dir: &Path,
         listing: &Listing,
     ) -> Result<Arc<Procedures>, SettingsError> {
-        cached(&self.subprograms, &dir.to_path_buf(), || {
+        self.subprograms.get_or_make(&dir.to_path_buf(), || {
             let mut procedures = Procedures::new();
             for (name, path) in listing.subprograms(self.given.follow_links)? {
                 // A subprogram that vanished, cannot be read, or is no
