@@ -16,7 +16,8 @@ use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
 use crate::emit::split::{
-    about_tool, about_tool_line, describe, head_frame_document, head_frame_line, n, positioning, table_line,
+    about_tool, about_tool_line, describe, head_frame_document, head_frame_line, n, positioning,
+    table_line,
 };
 use crate::kinematics::{
     a3200, solve, split, Direction, Preference, Record, Request, Split, Swivel, TableAngle,

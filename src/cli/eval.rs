@@ -175,7 +175,15 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                 let name: &str = &name;
                 let index = LineIndex::new(source);
                 for site in calls {
-                    table(site, name, source, &index, options, machine.as_deref(), text);
+                    table(
+                        site,
+                        name,
+                        source,
+                        &index,
+                        options,
+                        machine.as_deref(),
+                        text,
+                    );
                     if let Some(machine) = &machine {
                         if let Some(lines) = swivel_lines(site, machine) {
                             // Under the call's table, before its blank line.
@@ -327,7 +335,9 @@ fn swivel_json(site: &CallSite, machine: &OnMachine) -> serde_json::Value {
         return solved_json(&solve_asked(&asked, machine));
     };
     match &over.split {
-        Err(error) => serde_json::json!({ "error": format!("record `{}` under record `{}`: {error}", describe(over.table), describe(over.head)) }),
+        Err(error) => {
+            serde_json::json!({ "error": format!("record `{}` under record `{}`: {error}", describe(over.table), describe(over.head)) })
+        }
         Ok(split) => {
             let mut document = axes::document(over.head, &split.together());
             document["table"] = axes::table_document(over.table, split);

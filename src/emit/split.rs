@@ -140,9 +140,8 @@ pub fn refusal(asked: &Asked, over: &OverTable) -> Diagnostic {
     let what = match &over.split {
         Err(error) => format!("the split cannot be computed: {error}"),
         Ok(split) => {
-            let block = positioning(table, split).unwrap_or_else(|| {
-                format!("{}={}", table.axes[0].label(0), n(split.table))
-            });
+            let block = positioning(table, split)
+                .unwrap_or_else(|| format!("{}={}", table.axes[0].label(0), n(split.table)));
             let found = match split.found {
                 TableAngle::Chosen(_) => String::new(),
                 found => format!(" ({})", how(found)),

@@ -370,7 +370,9 @@ impl<'a, 't> Snapshot<'a, 't> {
         for site in self.calls().filter(|site| touches(site.statement)) {
             let options = &self.settings.emit;
             let machine = self.settings.machine.as_deref();
-            if let Some(edits) = crate::emit::cycle600::call_edits(self.model, site, options, machine) {
+            if let Some(edits) =
+                crate::emit::cycle600::call_edits(self.model, site, options, machine)
+            {
                 let title = format!("Rewrite this CYCLE600 as {}", options.form.native());
                 let kind = lsp::CodeActionKind::REFACTOR_REWRITE;
                 actions.push(lsp::CodeActionOrCommand::CodeAction(

@@ -98,7 +98,7 @@ pub struct Workspace {
     listings: Mutex<HashMap<PathBuf, Arc<Listing>>>,
     subprograms: Mutex<HashMap<PathBuf, Arc<Procedures>>>,
     /// The machines read, by file and the table named under their heads.
-    machines: Mutex<HashMap<(PathBuf, Option<String>), Arc<OnMachine>>>,
+    machines: Mutex<HashMap<MachineKey, Arc<OnMachine>>>,
     /// The nearest `sinuprep.toml` of a program's directory.
     nearest: Mutex<HashMap<PathBuf, Option<PathBuf>>>,
     configs: Mutex<HashMap<PathBuf, Config>>,
@@ -112,6 +112,9 @@ pub struct Workspace {
     /// values, subprograms): a change to one of them changes the settings.
     read: Mutex<std::collections::HashSet<PathBuf>>,
 }
+
+/// A machine file and the table named under its heads.
+type MachineKey = (PathBuf, Option<String>);
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
 /// the parameter count of its PROC.
