@@ -1602,6 +1602,17 @@ fn rewrite_refuses_a_swivel_over_a_table_with_the_splits_numbers() {
     ] {
         assert!(told.contains(&line), "{line}\n{told}");
     }
+    // The frames form names no record: it is written, the split above it.
+    let frames = run(
+        &on_the_table("rewrite", &["--emit", "frames", TABLE_PROGRAM]),
+        b"",
+    );
+    assert_exit(&frames, 0);
+    assert!(
+        stdout(&frames).contains("; sinuprep: with the table TABLE_B under HEAD_H the axes go to B=50.361 C=0 A=-16.28\nN40 TRANS X0 Y0 Z0\n"),
+        "{}",
+        stdout(&frames)
+    );
     // Without the table, the head takes the whole swivel as CYCLE800.
     let plain = run(
         &["rewrite", "--machine", "samples/MACHINE.SPF", TABLE_PROGRAM],

@@ -18,7 +18,9 @@ the head nearest the middles of its limits), and the finding says what the machi
 the table's positioning block, the head's frame (the request with the table's turn taken out) as
 CYCLE800 angles in the call's `_MODE`, the head's axis positions and the rotation left about the
 tool. The call's bytes stay as they are. `eval --machine FILE --table NAME` shows the same split for
-each call. The frames and TRAORI forms name no record and are written as before.
+each call. The frames and TRAORI forms name no record and are written as before, the comment above
+them naming the split's positions (`; sinuprep: with the table TABLE_B under HEAD_H the axes go to
+B=50.361 C=0 A=-16.28`).
 
 ## Why it matters
 CYCLE800 drives one swivel data record, and a record combines two rotary axes at most (Siemens,

@@ -265,6 +265,32 @@ pub fn taken(asked: &Asked, on: &OnMachine) -> String {
             record.name.clone()
         }
     };
+    if let Some(OverTable {
+        table,
+        head,
+        split: Ok(split),
+    }) = split_on(asked, on)
+    {
+        let at = format!("{}={}", table.axes[0].label(0), decimals(split.table, 3));
+        return match split.head.chosen {
+            Some(index) => format!(
+                "with the table {} under {} the axes go to {at} {}",
+                name(table),
+                name(head),
+                positions(head, &split.head.solutions[index])
+            ),
+            None if split.head.solutions.is_empty() => format!(
+                "{} cannot reach this orientation at any position of the table {}",
+                name(head),
+                name(table)
+            ),
+            None => format!(
+                "with the table {} at {at}, {} reaches this orientation only outside its axis limits",
+                name(table),
+                name(head)
+            ),
+        };
+    }
     match solve_on(asked, &on.machine) {
         Err(Unsolved::NoRecord) => format!("{} defines no record `{}`", on.name, asked.record),
         Err(Unsolved::Unusable(record, error)) => {
