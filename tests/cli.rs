@@ -1738,6 +1738,26 @@ fn eval_shows_a_swivels_split_over_a_table() {
         stdout(&configured)
     );
     assert_exit(&run(&["rewrite", program.to_str().expect("utf-8")], b""), 1);
+    // `axes` reads the machine, and the table under its heads, alike.
+    let config = dir.join("sinuprep.toml");
+    let axes = run(
+        &[
+            "axes",
+            "--config",
+            config.to_str().expect("utf-8"),
+            "--record",
+            "HEAD_H",
+            "30",
+            "45",
+            "60",
+        ],
+        b"",
+    );
+    assert!(
+        stdout(&axes).contains("\ntable block: G0 B="),
+        "{}",
+        stdout(&axes)
+    );
     // A table that is no table, or none in the machine, is the tool's error.
     for (table, says) in [
         (
