@@ -25,7 +25,9 @@
 //! - [`measure`]: from measurements to rotations: a probed face's angles, the axis of a known
 //!   turn (the Rodrigues inverse problem), an axis from measured positions; pure math.
 //! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
-//! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes.
+//! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes; and a
+//!   swivel split over a table and a head in words (what the machine is told), shared by `axes`,
+//!   `eval` and the rewrite's refusal.
 //! - [`format`]: `sinuprep fmt`: layout, case and renumbering as text edits, from the model's
 //!   block structure and jumps; strings, comments and the HMI's regions untouched.
 //! - [`lint`]: the rules of `check`, one file each, and suppression comments.

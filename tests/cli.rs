@@ -1456,6 +1456,340 @@ fn eval_shows_the_axis_positions_of_each_swivel() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A program swivelling on the sample machine's head HEAD_H, which has the
+/// rotary table TABLE_B under it (`samples/MACHINE.SPF`, records 5 and 6).
+const TABLE_PROGRAM: &str = "tests/fixtures/table/TABLE_HEAD.MPF";
+
+/// `--machine samples/MACHINE.SPF --table TABLE_B` for `command`, then `more`.
+fn on_the_table<'a>(command: &'a str, more: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
+        command,
+        "--machine",
+        "samples/MACHINE.SPF",
+        "--table",
+        "TABLE_B",
+    ];
+    args.extend_from_slice(more);
+    args
+}
+
+/// The text between `before` and the next `after` in `text`.
+fn between<'t>(text: &'t str, before: &str, after: &str) -> &'t str {
+    let start = text
+        .find(before)
+        .unwrap_or_else(|| panic!("no `{before}` in {text}"))
+        + before.len();
+    let length = text[start..]
+        .find(after)
+        .unwrap_or_else(|| panic!("no `{after}` in {text}"));
+    &text[start..start + length]
+}
+
+fn number(text: &str) -> f64 {
+    text.trim()
+        .parse()
+        .unwrap_or_else(|_| panic!("`{text}` is no number"))
+}
+
+/// With a table under the head, `rewrite` writes no code for the swivel: it
+/// refuses (exit 1) with the split's numbers, which put the tool where the
+/// call asks on a model of the machine written here, and which `axes
+/// --table` gives for the same frame; the call's bytes stay, the other call
+/// is rewritten. Without `--table` the call is CYCLE800 of the head.
+#[test]
+fn rewrite_refuses_a_swivel_over_a_table_with_the_splits_numbers() {
+    use nalgebra::{Rotation3, Unit, Vector3};
+    let program = std::fs::read_to_string(TABLE_PROGRAM).expect("program");
+    let output = run(
+        &on_the_table("rewrite", &["--message-format", "short", TABLE_PROGRAM]),
+        b"",
+    );
+    assert_exit(&output, 1);
+    let rewritten = stdout(&output);
+    let swivel =
+        "N40 CYCLE600(0, \"HEAD_H\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 57, 0, 0, 0)\n";
+    assert!(
+        rewritten.contains(&format!("N30 D1 S2500 M3\n{swivel}N50 ")),
+        "{rewritten}"
+    );
+    assert!(!rewritten.contains("CYCLE800(0,\"HEAD_H\""), "{rewritten}");
+    assert!(
+        rewritten.contains("N70 _CYC600_1=\"HEAD_H\""),
+        "{rewritten}"
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let finding = stderr
+        .lines()
+        .find(|line| line.contains("[C620]"))
+        .unwrap_or_else(|| panic!("{stderr}"));
+    assert!(
+        finding.starts_with(&format!(
+            "{TABLE_PROGRAM}:8:5: error[C620] `HEAD_H` has the rotary table `TABLE_B` under it"
+        )),
+        "{finding}"
+    );
+    let table = number(between(finding, "the table to `G0 B=", "`"));
+    let frame: Vec<f64> = between(finding, "with XYZ ", " (_MODE")
+        .split(' ')
+        .map(number)
+        .collect();
+    assert!(finding.contains("(_MODE 57)"), "{finding}");
+    let c = number(between(finding, "its axes to C=", " A="));
+    let a = number(between(finding, " A=", ","));
+    let about = number(
+        between(finding, "A=", "° left about the tool axis")
+            .rsplit(", ")
+            .next()
+            .expect("angle"),
+    );
+    // The machine: TABLE_B turns the workpiece about (0, -1, 0) as entered
+    // (by R(v, B)⁻¹ in the model), HEAD_H the tool by R(z, C) R(x, A).
+    let turn = |axis: Vector3<f64>, degrees: f64| {
+        Rotation3::from_axis_angle(&Unit::new_normalize(axis), degrees.to_radians())
+    };
+    let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+    // The call: extrinsic X 30, Y 45, Z 60.
+    let requested = turn(z, 60.0) * turn(y, 45.0) * turn(x, 30.0);
+    let table_turn = turn(Vector3::new(0.0, -1.0, 0.0), table);
+    let made = table_turn.inverse() * turn(z, c) * turn(x, a) * turn(z, about);
+    // Four decimals printed: a ten-thousandth of a degree each.
+    assert!(
+        (made.matrix() - requested.matrix()).norm() < 1e-5,
+        "{made} against {requested}"
+    );
+    let head_frame = turn(x, frame[0]) * turn(y, frame[1]) * turn(z, frame[2]);
+    assert!(
+        (head_frame.matrix() - (table_turn * requested).matrix()).norm() < 1e-5,
+        "{head_frame}"
+    );
+    assert!((-45.0..=45.0).contains(&a), "HEAD_H's A limits: {a}");
+    // `axes --table` on the frame the call hands CYCLE800 (intrinsic XYZ,
+    // _DIR -1) tells the same.
+    let eval = run(&on_the_table("eval", &["--json", TABLE_PROGRAM]), b"");
+    let document: serde_json::Value = serde_json::from_slice(&eval.stdout).expect("JSON");
+    let angles: Vec<String> = (0..3)
+        .map(|i| document["calls"][0]["evaluation"]["output"]["angles"][i].to_string())
+        .collect();
+    let axes = run(
+        &[
+            &on_the_table(
+                "axes",
+                &["--record", "HEAD_H", "--mode", "57", "--dir", "-1", "--"],
+            )[..],
+            &angles.iter().map(String::as_str).collect::<Vec<_>>()[..],
+        ]
+        .concat(),
+        b"",
+    );
+    assert_exit(&axes, 0);
+    let told = stdout(&axes);
+    for line in [
+        format!("table block: G0 B={}", format_position(table)),
+        format!(
+            "head frame: XYZ {} (_MODE 57)",
+            between(finding, "with XYZ ", " (_MODE")
+        ),
+        format!(
+            "solution 1: C={} A={}",
+            format_position(c),
+            format_position(a)
+        ),
+        "taken: solution 1".to_string(),
+        format!(
+            "left in the frame: {}° about the tool axis",
+            format_position(about)
+        ),
+    ] {
+        assert!(told.contains(&line), "{line}\n{told}");
+    }
+    // The frames form names no record: it is written, the split above it.
+    let frames = run(
+        &on_the_table("rewrite", &["--emit", "frames", TABLE_PROGRAM]),
+        b"",
+    );
+    assert_exit(&frames, 0);
+    assert!(
+        stdout(&frames).contains("; sinuprep: with the table TABLE_B under HEAD_H the axes go to B=50.361 C=0 A=-16.28\nN40 TRANS X0 Y0 Z0\n"),
+        "{}",
+        stdout(&frames)
+    );
+    // Without the table, the head takes the whole swivel as CYCLE800.
+    let plain = run(
+        &["rewrite", "--machine", "samples/MACHINE.SPF", TABLE_PROGRAM],
+        b"",
+    );
+    assert_exit(&plain, 0);
+    assert!(
+        stdout(&plain).contains("N40 CYCLE800(0,\"HEAD_H\",0,57,"),
+        "{}",
+        stdout(&plain)
+    );
+    assert_ne!(stdout(&plain), program);
+    // The refusal as a person reads it.
+    let human = run(&on_the_table("rewrite", &[TABLE_PROGRAM]), b"");
+    assert_exit(&human, 1);
+    insta::assert_snapshot!(format!(
+        "{}\n--- stderr\n{}",
+        stdout(&human),
+        String::from_utf8_lossy(&human.stderr)
+    ));
+}
+
+/// `found` is `expected` but for numbers, which agree to 1e-9.
+fn assert_close(found: &serde_json::Value, expected: &serde_json::Value, at: &str) {
+    use serde_json::Value;
+    match (found, expected) {
+        (Value::Number(f), Value::Number(e)) => {
+            let (f, e) = (f.as_f64().expect("f64"), e.as_f64().expect("f64"));
+            assert!((f - e).abs() < 1e-9, "{at}: {f} against {e}");
+        }
+        (Value::Array(f), Value::Array(e)) => {
+            assert_eq!(f.len(), e.len(), "{at}");
+            for (i, (f, e)) in f.iter().zip(e).enumerate() {
+                assert_close(f, e, &format!("{at}[{i}]"));
+            }
+        }
+        (Value::Object(f), Value::Object(e)) => {
+            assert_eq!(
+                f.keys().collect::<Vec<_>>(),
+                e.keys().collect::<Vec<_>>(),
+                "{at}"
+            );
+            for (key, f) in f {
+                assert_close(f, &e[key], &format!("{at}.{key}"));
+            }
+        }
+        _ => assert_eq!(found, expected, "{at}"),
+    }
+}
+
+/// `eval` shows the split of each swivel over the table, in text and JSON,
+/// as `axes --table` computes it; the rewrite's finding comes with it.
+#[test]
+fn eval_shows_a_swivels_split_over_a_table() {
+    let output = run(&on_the_table("eval", &[TABLE_PROGRAM]), b"");
+    assert_exit(&output, 1);
+    let text = stdout(&output);
+    for line in [
+        "  table: record 5 (TABLE_B): B=50.3607 (chosen: the head nearest the middles of its limits)\n  table block: G0 B=50.3607\n  head frame: XYZ -16.2799 0 39.6393 (_MODE 57): the frame with the table's turn taken out, CYCLE800's on the head's record\n  axes     record 6 (HEAD_H): C=0 A=-16.2799 (solution 1 of 2)\n  left in the frame: 39.6393° about the tool axis\n",
+        "  emits    nothing: `HEAD_H` has the rotary table `TABLE_B` under it",
+    ] {
+        assert!(text.contains(line), "{line}\n{text}");
+    }
+    assert!(
+        flat(&output.stderr).contains("C620"),
+        "{}",
+        flat(&output.stderr)
+    );
+    let json = run(&on_the_table("eval", &["--json", TABLE_PROGRAM]), b"");
+    let document: serde_json::Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let call = &document["calls"][0];
+    assert_eq!(call["evaluation"]["emits"], serde_json::Value::Null);
+    let split = &call["axes"];
+    let angles: Vec<String> = (0..3)
+        .map(|i| call["evaluation"]["output"]["angles"][i].to_string())
+        .collect();
+    let axes = run(
+        &[
+            &on_the_table(
+                "axes",
+                &[
+                    "--json", "--record", "HEAD_H", "--mode", "57", "--dir", "-1", "--",
+                ],
+            )[..],
+            &angles.iter().map(String::as_str).collect::<Vec<_>>()[..],
+        ]
+        .concat(),
+        b"",
+    );
+    let mut expected: serde_json::Value = serde_json::from_slice(&axes.stdout).expect("JSON");
+    // `axes` alone tells where a work zero goes. Its frame is made again from
+    // the angles, eval's is the call's matrix: the last bits may differ.
+    expected
+        .as_object_mut()
+        .expect("object")
+        .remove("work_zero");
+    assert_close(split, &expected, "axes");
+    assert_eq!(split["table"]["block"], "G0 B=50.3607");
+    assert_eq!(split["head_frame"]["mode"], 57);
+    // The table from sinuprep.toml, beside the machine.
+    let dir = scratch("eval-table");
+    for name in ["TABLE_HEAD.MPF", "HEAD_DEF.SPF"] {
+        std::fs::copy(
+            support::repo().join("tests/fixtures/table").join(name),
+            dir.join(name),
+        )
+        .expect("copy");
+    }
+    let machine = support::repo().join("samples/MACHINE.SPF");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        format!(
+            "machine = {:?}\ntable = \"TABLE_B\"\n",
+            machine.to_str().expect("utf-8")
+        ),
+    )
+    .expect("config");
+    let program = dir.join("TABLE_HEAD.MPF");
+    let configured = run(&["eval", program.to_str().expect("utf-8")], b"");
+    assert!(
+        stdout(&configured).contains("  table block: G0 B=50.3607\n"),
+        "{}",
+        stdout(&configured)
+    );
+    assert_exit(&run(&["rewrite", program.to_str().expect("utf-8")], b""), 1);
+    // `axes` reads the machine, and the table under its heads, alike.
+    let config = dir.join("sinuprep.toml");
+    let axes = run(
+        &[
+            "axes",
+            "--config",
+            config.to_str().expect("utf-8"),
+            "--record",
+            "HEAD_H",
+            "30",
+            "45",
+            "60",
+        ],
+        b"",
+    );
+    assert!(
+        stdout(&axes).contains("\ntable block: G0 B="),
+        "{}",
+        stdout(&axes)
+    );
+    // A table that is no table, or none in the machine, is the tool's error.
+    for (table, says) in [
+        (
+            "HEAD_H",
+            "the table `HEAD_H` must be a record of kinematics \"P\" with one rotary axis",
+        ),
+        (
+            "TABLE_BB",
+            "no record `TABLE_BB` for the table (did you mean `TABLE_B`?)",
+        ),
+    ] {
+        let wrong = run(
+            &[
+                "eval",
+                "--machine",
+                "samples/MACHINE.SPF",
+                "--table",
+                table,
+                TABLE_PROGRAM,
+            ],
+            b"",
+        );
+        assert_exit(&wrong, 2);
+        assert!(
+            flat(&wrong.stderr).contains(says),
+            "{}",
+            flat(&wrong.stderr)
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// Completions and the man page come from the clap definition: every
 /// command and option is in them.
 #[test]

@@ -391,6 +391,12 @@ pub struct RewriteArgs {
     /// the rotary axis positions its record takes [default: `machine` in sinuprep.toml].
     #[arg(long, value_name = "FILE")]
     pub machine: Option<PathBuf>,
+    /// A rotary table under the machine's heads: its record (kinematics "P", one axis), by
+    /// name or number. A swivel on a head record splits over the table and the head, which
+    /// no native form is documented for: such a call is refused (C620) with the split's
+    /// numbers [default: `table` in sinuprep.toml].
+    #[arg(long, value_name = "NAME")]
+    pub table: Option<String>,
     /// With the machine, add the fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
     #[arg(long)]
     pub fine_offsets: bool,
@@ -445,6 +451,11 @@ pub struct EvalArgs {
     /// positions its record gives [default: `machine` in sinuprep.toml].
     #[arg(long, value_name = "FILE")]
     pub machine: Option<PathBuf>,
+    /// A rotary table under the machine's heads: its record (kinematics "P", one axis), by
+    /// name or number. A swivel on a head record shows its split over the table and the head,
+    /// as `axes --table` computes it [default: `table` in sinuprep.toml].
+    #[arg(long, value_name = "NAME")]
+    pub table: Option<String>,
     /// With the machine, add the fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
     #[arg(long)]
     pub fine_offsets: bool,

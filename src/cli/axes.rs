@@ -15,11 +15,15 @@ use crate::cli::args::{AxesArgs, Export, MessageFormat, Prefer};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::emit::number::format;
+use crate::emit::split::{
+    about_tool, about_tool_line, describe, head_frame_document, head_frame_line, n, positioning,
+    table_line,
+};
 use crate::kinematics::{
     a3200, solve, split, Direction, Preference, Record, Request, Split, Swivel, TableAngle,
     TableAsk,
 };
-use crate::rotation::{decompose, matrix, Kind, Sequence};
+use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};
 
@@ -55,11 +59,11 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         return Ok(ExitStatus::Success.max(data));
     }
     let angles = [args.angles[0], args.angles[1], args.angles[2]];
-    let table = args
-        .table
-        .as_deref()
-        .map(|name| pick(machine, Some(name), &path))
-        .transpose()?;
+    // The table `--table` names, or else sinuprep.toml's under a head.
+    let table = match args.table.as_deref() {
+        Some(name) => Some(pick(machine, Some(name), &path)?),
+        None => on.table_under(&record),
+    };
     // Where the axes stand before: `--from`, else $TC_CARR13/14.
     let mut current = record.specified();
     let mut table_current = table.map_or(0.0, |table| table.axes[0].angle);
@@ -104,10 +108,7 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
             };
             let split =
                 split(table, &record, &request, &ask).map_err(|error| refused(table, &error))?;
-            let mut head = split.head.clone();
-            // The head's offsets shift nothing; the table's do.
-            head.shift = head.shift.map(|shift| shift + split.shift);
-            (head, Some((table, split)))
+            (split.together(), Some((table, split)))
         }
     };
     let work_zero = Vector3::from(args.work_zero.unwrap_or([0.0; 3]));
@@ -132,6 +133,7 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
             let mut text = table_text(&record, sequence, angles, args.dir, &swivel);
             let mut lines = table_lines(table_record, split);
             lines.push_str(&head_frame_line(sequence, split));
+            lines.push('\n');
             // After the record's line and the frame's: the table is part
             // of the machine, and the head is asked for what it leaves.
             let at = text
@@ -299,69 +301,11 @@ fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliErro
 /// The table's part of a split: its position and how it was found, and
 /// the block that positions it.
 fn table_lines(table: &Record, split: &Split) -> String {
-    let label = table.axes[0].label(0);
-    let how = match split.found {
-        TableAngle::Fixed => "fixed by --fix".to_string(),
-        TableAngle::Chosen(Preference::Middle) => {
-            "chosen: the head nearest the middles of its limits".to_string()
-        }
-        TableAngle::Chosen(Preference::Nearest) => {
-            "chosen: the axes nearest their positions before".to_string()
-        }
-        TableAngle::Beyond {
-            solution,
-            beyond_deg,
-        } => format!(
-            "no table position brings the head inside its limits; this one brings it nearest: solution {} lies {}° beyond them",
-            solution + 1,
-            format(beyond_deg, 6)
-        ),
-        TableAngle::Unreachable => {
-            "kept: at no table position can the head turn the tool onto the frame's Z axis"
-                .to_string()
-        }
-    };
-    let limits = if split.table_within_limits {
-        ""
-    } else {
-        ", outside its limits"
-    };
-    let mut out = format!(
-        "table: record {}: {label}={} ({how}{limits})\n",
-        describe(table),
-        n(split.table)
-    );
-    if !table.axes[0].name.is_empty() {
-        out.push_str(&format!("table block: {}\n", positioning(table, split)));
+    let mut out = format!("{}\n", table_line(table, split));
+    if let Some(block) = positioning(table, split) {
+        out.push_str(&format!("table block: {block}\n"));
     }
     out
-}
-
-/// The block that turns the table to its position: rapid, absolute.
-fn positioning(table: &Record, split: &Split) -> String {
-    format!("G0 {}={}", table.axes[0].name, n(split.table))
-}
-
-/// The head's frame as CYCLE800 angles of `sequence`.
-fn head_frame_angles(sequence: Sequence, split: &Split) -> [f64; 3] {
-    decompose(sequence, &split.head_frame).angles
-}
-
-fn head_frame_line(sequence: Sequence, split: &Split) -> String {
-    let [a, b, c] = head_frame_angles(sequence, split).map(n);
-    format!(
-        "head frame: {} {a} {b} {c} (_MODE {}): the frame with the table's turn taken out, CYCLE800's on the head's record\n",
-        sequence.letters(),
-        sequence.code()
-    )
-}
-
-fn head_frame_document(sequence: Sequence, split: &Split) -> serde_json::Value {
-    serde_json::json!({
-        "mode": sequence.code(),
-        "sequence": sequence.letters(),
-        "angles": head_frame_angles(sequence, split),
-    })
 }
 
 fn work_zero_line(at: &Vector3<f64>, split: &Split) -> String {
@@ -381,7 +325,7 @@ fn vector(v: &Vector3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-fn table_document(table: &Record, split: &Split) -> serde_json::Value {
+pub(crate) fn table_document(table: &Record, split: &Split) -> serde_json::Value {
     let (found, prefer, beyond, nearest) = match split.found {
         TableAngle::Fixed => ("fixed", None, None, None),
         TableAngle::Chosen(prefer) => ("chosen", Some(prefer.name()), None, None),
@@ -402,7 +346,7 @@ fn table_document(table: &Record, split: &Split) -> serde_json::Value {
         "prefer": prefer,
         "beyond_deg": beyond,
         "nearest_solution": nearest,
-        "block": (!table.axes[0].name.is_empty()).then(|| positioning(table, split)),
+        "block": positioning(table, split),
     })
 }
 
@@ -449,19 +393,6 @@ fn list(names: &[String]) -> String {
     } else {
         names.join(", ")
     }
-}
-
-/// `2 (HEAD_CA)`, or the number alone.
-fn describe(record: &Record) -> String {
-    if record.name.is_empty() {
-        record.number.to_string()
-    } else {
-        format!("{} ({})", record.number, record.name)
-    }
-}
-
-fn n(value: f64) -> String {
-    format(value, 4)
 }
 
 fn kinematics_name(record: &Record) -> &'static str {
@@ -541,24 +472,15 @@ fn table_text(
         None => out.push_str("taken: none, no solution lies inside the limits\n"),
     }
     if let (Some(residual), Some(shift)) = (swivel.residual, swivel.shift) {
-        let about_z = about_tool(&residual);
         out.push_str(&format!(
-            "left in the frame: {}° about the tool axis\nzero-point shift: X{} Y{} Z{}\n",
-            n(about_z),
+            "{}\nzero-point shift: X{} Y{} Z{}\n",
+            about_tool_line(&residual),
             n(shift.x),
             n(shift.y),
             n(shift.z)
         ));
     }
     out
-}
-
-/// The angle (degrees) of a residual about the tool axis, all there is of
-/// it when the tool direction is met.
-fn about_tool(residual: &Rotation3<f64>) -> f64 {
-    residual.matrix()[(1, 0)]
-        .atan2(residual.matrix()[(0, 0)])
-        .to_degrees()
 }
 
 /// The swivel in one line: the record and the positions taken.

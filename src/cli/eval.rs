@@ -11,8 +11,11 @@ use crate::cli::render::printable;
 use crate::cli::walk::files;
 use crate::cli::{write_stdout, ExitStatus};
 use crate::document::archive::Opened;
-use crate::emit::cycle600::{code, Options};
+use crate::emit::cycle600::{code_on, Options};
 use crate::emit::number::format;
+use crate::emit::split::{
+    about_tool_line, describe, head_frame_document, head_frame_line, positioning, table_line,
+};
 use crate::kinematics::{Record, Swivel};
 use crate::semantic::cycle600::{Argument, Provenance};
 use crate::semantic::swivels::{self, Asked, OnMachine, Unsolved};
@@ -26,6 +29,7 @@ pub fn run(args: &EvalArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "eval")?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
+        table: args.table.clone(),
         follow_links: args.walk.follow_links,
         fine_offsets: args.fine_offsets,
         walk: args.walk.given(),
@@ -181,6 +185,8 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
     let resolved = workspace.for_rewrite(path)?;
     let machine = workspace.machine(&resolved.config)?;
     let mut settings = resolved.settings;
+    // The rewrite's findings as `rewrite` has them on this machine.
+    settings.machine = machine.clone();
     let opened = Opened::read(&file.bytes, &file.name)
         .map_err(|error| CliError::archive(&file.name, error))?;
     opened.settings(&file.bytes, &mut settings);
@@ -207,7 +213,7 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                 let calls: Vec<serde_json::Value> = calls
                     .iter()
                     .map(|site| {
-                        let mut call = json(site, source, options);
+                        let mut call = json(site, source, options, machine.as_deref());
                         if let Some(machine) = &machine {
                             call["axes"] = swivel_json(site, machine);
                         }
@@ -241,12 +247,23 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
                 let name: &str = &name;
                 let index = LineIndex::new(source);
                 for site in calls {
-                    table(site, name, source, &index, options, text);
+                    table(
+                        site,
+                        name,
+                        source,
+                        &index,
+                        options,
+                        machine.as_deref(),
+                        text,
+                    );
                     if let Some(machine) = &machine {
-                        if let Some(line) = swivel_text(site, machine) {
+                        if let Some(lines) = swivel_lines(site, machine) {
                             // Under the call's table, before its blank line.
                             text.pop();
-                            text.push_str(&format!("  axes     {line}\n\n"));
+                            for line in lines {
+                                text.push_str(&format!("  {line}\n"));
+                            }
+                            text.push('\n');
                         }
                     }
                 }
@@ -272,13 +289,6 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
         }
     }
     Ok(evaluated)
-}
-
-/// The swivel a rotating call makes on its record (what CYCLE800 gets),
-/// solved; `None` for a call that does not turn or turns from a frame only
-/// the control knows (additive).
-fn swivel(site: &CallSite, machine: &OnMachine) -> Option<Solved> {
-    Some(solve_asked(&swivels::of_cycle600(site)?, machine))
 }
 
 /// A swivel solved on its record, or why it could not be.
@@ -347,12 +357,66 @@ fn solved_json(solved: &Solved) -> serde_json::Value {
     }
 }
 
+/// Where a call's swivel takes the machine's axes, in one line (an
+/// editor's hover on a CYCLE600 shows it); a split, [`swivel_lines`] joined.
 pub(crate) fn swivel_text(site: &CallSite, machine: &OnMachine) -> Option<String> {
-    Some(solved_text(&swivel(site, machine)?))
+    let asked = swivels::of_cycle600(site)?;
+    if swivels::split_on(&asked, machine).is_some() {
+        return Some(swivel_lines(site, machine)?.join("; "));
+    }
+    Some(solved_text(&solve_asked(&asked, machine)))
 }
 
+/// What `eval` prints of a call's swivel on the machine: the positions the
+/// head record takes, or, with a table under the head, the split as `axes
+/// --table` prints it (the table and its block, the head's frame in the
+/// call's `_MODE`, the head's positions, the rotation about the tool).
+fn swivel_lines(site: &CallSite, machine: &OnMachine) -> Option<Vec<String>> {
+    let asked = swivels::of_cycle600(site)?;
+    let Some(over) = swivels::split_on(&asked, machine) else {
+        return Some(vec![format!(
+            "axes     {}",
+            solved_text(&solve_asked(&asked, machine))
+        )]);
+    };
+    let split = match &over.split {
+        Ok(split) => split,
+        Err(error) => {
+            return Some(vec![format!(
+                "table    record {} under record {}: {error}",
+                describe(over.table),
+                describe(over.head)
+            )])
+        }
+    };
+    let mut lines = vec![table_line(over.table, split)];
+    lines.extend(positioning(over.table, split).map(|block| format!("table block: {block}")));
+    lines.push(head_frame_line(asked.sequence, split));
+    lines.push(format!("axes     {}", axes::taken(over.head, &split.head)));
+    lines.extend(split.head.residual.as_ref().map(about_tool_line));
+    Some(lines)
+}
+
+/// A call's swivel on the machine as JSON: `axes --json`'s object, with a
+/// table under the head its `table` and `head_frame` too.
 fn swivel_json(site: &CallSite, machine: &OnMachine) -> serde_json::Value {
-    swivel(site, machine).map_or(serde_json::Value::Null, |solved| solved_json(&solved))
+    let Some(asked) = swivels::of_cycle600(site) else {
+        return serde_json::Value::Null;
+    };
+    let Some(over) = swivels::split_on(&asked, machine) else {
+        return solved_json(&solve_asked(&asked, machine));
+    };
+    match &over.split {
+        Err(error) => {
+            serde_json::json!({ "error": format!("record `{}` under record `{}`: {error}", describe(over.table), describe(over.head)) })
+        }
+        Ok(split) => {
+            let mut document = axes::document(over.head, &split.together());
+            document["table"] = axes::table_document(over.table, split);
+            document["head_frame"] = head_frame_document(asked.sequence, split);
+            document
+        }
+    }
 }
 
 fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {
@@ -389,16 +453,16 @@ fn provenance_text(argument: &Argument) -> String {
 }
 
 /// The table `eval` prints for one call (an editor's hover shows it).
-pub(crate) fn call_table(site: &CallSite, name: &str, source: &[u8], options: &Options) -> String {
+pub(crate) fn call_table(
+    site: &CallSite,
+    name: &str,
+    source: &[u8],
+    options: &Options,
+    machine: Option<&OnMachine>,
+) -> String {
     let mut out = String::new();
-    table(
-        site,
-        name,
-        source,
-        &LineIndex::new(source),
-        options,
-        &mut out,
-    );
+    let index = LineIndex::new(source);
+    table(site, name, source, &index, options, machine, &mut out);
     out
 }
 
@@ -408,6 +472,7 @@ fn table(
     source: &[u8],
     index: &LineIndex,
     options: &Options,
+    machine: Option<&OnMachine>,
     out: &mut String,
 ) {
     let row = index.position(site.statement.start).row;
@@ -480,7 +545,7 @@ fn table(
                 })
                 .collect();
             out.push_str(&format!("  results  {}\n", gud.join(" ")));
-            match code(site, evaluation, options) {
+            match code_on(site, evaluation, options, machine) {
                 Ok(blocks) => {
                     for (i, block) in blocks.iter().enumerate() {
                         out.push_str(&format!(
@@ -496,7 +561,12 @@ fn table(
     out.push('\n');
 }
 
-fn json(site: &CallSite, source: &[u8], options: &Options) -> serde_json::Value {
+fn json(
+    site: &CallSite,
+    source: &[u8],
+    options: &Options,
+    machine: Option<&OnMachine>,
+) -> serde_json::Value {
     let arguments: Vec<serde_json::Value> = site
         .bound
         .iter()
@@ -527,7 +597,7 @@ fn json(site: &CallSite, source: &[u8], options: &Options) -> serde_json::Value 
             "matrix": matrix,
             "additive_on_control": e.additive_on_control,
             "results": results,
-            "emits": code(site, e, options).ok(),
+            "emits": code_on(site, e, options, machine).ok(),
         })
     });
     serde_json::json!({

@@ -47,6 +47,7 @@ pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
     let named = named_or_stdin(&args.paths, "rewrite")?;
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
+        table: args.table.clone(),
         follow_links: args.walk.follow_links,
         fine_offsets: args.fine_offsets,
         walk: args.walk.given(),

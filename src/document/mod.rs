@@ -7,7 +7,7 @@ pub mod held;
 pub mod text;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::emit::cycle600::{rewrite, Rewrite};
+use crate::emit::cycle600::{rewrite_on, Rewrite};
 pub use crate::lint::Analyzed;
 use crate::lint::{self, Settings};
 use crate::semantic::{analyze, Analysis, Model};
@@ -104,7 +104,8 @@ impl<'src> Document<'src> {
         let (mut model, analysis) = self.model_and_walk(settings);
         let analysis = analysis.unwrap_or_default();
         let heads = settings.heads.as_ref();
-        let mut rewrite = rewrite(&model, &analysis, &settings.emit);
+        let machine = settings.machine.as_deref();
+        let mut rewrite = rewrite_on(&model, &analysis, &settings.emit, machine);
         if let Some(on) = &settings.machine {
             let comments = crate::emit::axes::comments(self.source, &analysis, &rewrite.edits, on);
             rewrite.edits.extend(comments);

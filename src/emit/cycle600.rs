@@ -13,6 +13,7 @@ use crate::registry;
 use crate::rotation::Kind;
 use crate::semantic::cycle600::{no_cycle800_form, Evaluation, Parameters};
 use crate::semantic::frames::FrameSeen;
+use crate::semantic::swivels::{self, OnMachine};
 use crate::semantic::value::Value;
 use crate::semantic::walk::{Analysis, CallSite};
 use crate::semantic::Model;
@@ -80,6 +81,17 @@ pub struct Rewrite {
 }
 
 pub fn rewrite(model: &Model, analysis: &Analysis, options: &Options) -> Rewrite {
+    rewrite_on(model, analysis, options, None)
+}
+
+/// [`rewrite`] for the machine `on`: a swivel on a head with a rotary table
+/// under it is refused (C620) in the CYCLE800 form.
+pub fn rewrite_on(
+    model: &Model,
+    analysis: &Analysis,
+    options: &Options,
+    on: Option<&OnMachine>,
+) -> Rewrite {
     let source = model.source;
     let eol = dominant_ending(source).as_bytes();
     let mut out = Rewrite::default();
@@ -92,7 +104,7 @@ pub fn rewrite(model: &Model, analysis: &Analysis, options: &Options) -> Rewrite
             .any(|d| d.severity == Severity::Error);
         if let (Some(evaluation), false) = (&site.evaluation, refused) {
             out.diagnostics.extend(site.diagnostics.iter().cloned());
-            match code(site, evaluation, options) {
+            match code_on(site, evaluation, options, on) {
                 Ok(blocks) => {
                     out.edits.extend(edits(source, site, &blocks, options, eol));
                     out.rewritten += 1;
@@ -190,10 +202,26 @@ pub fn rewrite(model: &Model, analysis: &Analysis, options: &Options) -> Rewrite
     out
 }
 
-/// The edits that rewrite one call evaluated offline, as [`rewrite`] writes
-/// them; `None` for a call it would refuse or compute at run time (whose
-/// code shares DEF lines with the program's other such calls).
-pub fn call_edits(model: &Model, site: &CallSite, options: &Options) -> Option<Vec<Edit>> {
+/// C620 for a call `code` writes as CYCLE800 on a head record with a
+/// rotary table under it on `on`: no native form of the split is known.
+fn over_table(site: &CallSite, options: &Options, on: Option<&OnMachine>) -> Option<Diagnostic> {
+    if options.form != Form::Cycle800 {
+        return None;
+    }
+    let asked = swivels::of_cycle600(site)?;
+    let over = swivels::split_on(&asked, on?)?;
+    Some(crate::emit::split::refusal(&asked, &over))
+}
+
+/// The edits that rewrite one call evaluated offline, as [`rewrite_on`]
+/// writes them on `on`; `None` for a call it would refuse or compute at run
+/// time (whose code shares DEF lines with the program's other such calls).
+pub fn call_edits(
+    model: &Model,
+    site: &CallSite,
+    options: &Options,
+    on: Option<&OnMachine>,
+) -> Option<Vec<Edit>> {
     let evaluation = site.evaluation.as_ref()?;
     if site
         .diagnostics
@@ -202,7 +230,7 @@ pub fn call_edits(model: &Model, site: &CallSite, options: &Options) -> Option<V
     {
         return None;
     }
-    let blocks = code(site, evaluation, options).ok()?;
+    let blocks = code_on(site, evaluation, options, on).ok()?;
     let eol = dominant_ending(model.source).as_bytes();
     Some(edits(model.source, site, &blocks, options, eol))
 }
@@ -279,6 +307,18 @@ pub fn code(
             Ok(blocks)
         }
     }
+}
+
+/// [`code`] on the machine `on`: a swivel on a head with a rotary table
+/// under it is refused in the CYCLE800 form (C620).
+pub fn code_on(
+    site: &CallSite,
+    evaluation: &Evaluation,
+    options: &Options,
+    on: Option<&OnMachine>,
+) -> Result<Vec<String>, Diagnostic> {
+    let blocks = code(site, evaluation, options)?;
+    over_table(site, options, on).map_or(Ok(blocks), Err)
 }
 
 /// The CYCLE800 call that swivels as `evaluation` does; `None` when its

@@ -7,5 +7,6 @@ pub mod cycle600;
 pub(crate) mod diff;
 pub mod number;
 pub(crate) mod runtime;
+pub mod split;
 
 pub use crate::edit::{apply, write_applied, Edit};

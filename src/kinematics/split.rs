@@ -116,6 +116,15 @@ impl Split {
     pub fn work_zero_moves(&self, x: &Vector3<f64>) -> Vector3<f64> {
         self.shift + (self.table_turn * x - x)
     }
+
+    /// The head's swivel with the table's zero-point shift in place of the
+    /// head's (a head's offsets shift nothing): what the table and the head
+    /// together do.
+    pub fn together(&self) -> Swivel {
+        let mut head = self.head.clone();
+        head.shift = head.shift.map(|shift| shift + self.shift);
+        head
+    }
 }
 
 /// Records that do not make a table under a head.

@@ -423,7 +423,9 @@ fn cycle600_findings(model: &Model, analysis: &Analysis, settings: &Settings) ->
     }
     if settings.selection.enables(cycle600_rewritable::RULE.code) {
         for site in &analysis.calls {
-            if let Some(edits) = call_edits(model, site, &settings.emit) {
+            if let Some(edits) =
+                call_edits(model, site, &settings.emit, settings.machine.as_deref())
+            {
                 out.push(rewritable(site, edits, settings.emit.form));
             }
         }

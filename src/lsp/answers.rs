@@ -82,7 +82,9 @@ impl<'a, 't> Snapshot<'a, 't> {
         let at = self.offset(position);
         let source = self.text.bytes();
         if let Some(site) = self.calls().find(|site| contains(site.statement, at)) {
-            let table = crate::cli::eval::call_table(site, self.name, source, &self.settings.emit);
+            let machine = self.settings.machine.as_deref();
+            let table =
+                crate::cli::eval::call_table(site, self.name, source, &self.settings.emit, machine);
             let mut text = format!("```\n{table}```");
             // As `eval --machine` adds: where the head's axes go.
             let on_machine = self.settings.machine.as_ref().and_then(|machine| {
@@ -367,7 +369,10 @@ impl<'a, 't> Snapshot<'a, 't> {
         }
         for site in self.calls().filter(|site| touches(site.statement)) {
             let options = &self.settings.emit;
-            if let Some(edits) = crate::emit::cycle600::call_edits(self.model, site, options) {
+            let machine = self.settings.machine.as_deref();
+            if let Some(edits) =
+                crate::emit::cycle600::call_edits(self.model, site, options, machine)
+            {
                 let title = format!("Rewrite this CYCLE600 as {}", options.form.native());
                 let kind = lsp::CodeActionKind::REFACTOR_REWRITE;
                 actions.push(lsp::CodeActionOrCommand::CodeAction(

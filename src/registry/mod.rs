@@ -18,6 +18,7 @@ pub mod cycle600_no_cycle800_form;
 pub mod cycle600_reserved_not_zero;
 pub mod cycle600_rewritable;
 pub mod cycle600_shares_block;
+pub mod cycle600_split_over_table;
 pub mod cycle600_unknown_argument;
 pub mod cycle600_unknown_head;
 pub mod head_def_missing;
@@ -50,6 +51,7 @@ pub static ALL: &[&RuleInfo] = &[
     &cycle600_frames_over_programmable_frame::RULE,
     &cycle600_nested_too_deep::RULE,
     &cycle600_rewritable::RULE,
+    &cycle600_split_over_table::RULE,
     &invalid_swivel_data::RULE,
     &swivel_unreachable::RULE,
     &swivel_direction_outside_limits::RULE,

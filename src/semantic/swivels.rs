@@ -6,7 +6,10 @@
 //! record it does not hold) is found here, before the program runs.
 
 use crate::diagnostic::Diagnostic;
-use crate::kinematics::{solve, Direction, Record, RecordError, Request, Solution, Swivel};
+use crate::kinematics::{
+    solve, split, Direction, Kinematics, Preference, Record, RecordError, Request, Solution, Split,
+    SplitError, Swivel, TableAsk,
+};
 use crate::registry::{
     hirth_rounding, swivel_direction_outside_limits, swivel_unreachable, undefined_swivel_record,
 };
@@ -30,6 +33,21 @@ pub struct OnMachine {
     pub machine: Machine,
     /// The orientation error (degrees) Hirth rounding may make unreported.
     pub hirth_tolerance_deg: f64,
+    /// The record of a rotary table under the machine's heads (`--table`,
+    /// `table` in sinuprep.toml): a swivel on a head record (`T`, two
+    /// axes) is split over the table and the head, three rotary axes.
+    /// Checked when the machine is read: a `P` record of one axis.
+    pub table: Option<String>,
+}
+
+impl OnMachine {
+    /// The table under `head`, when one is named and `head` is a head
+    /// (kinematics `T`, two rotary axes) other than the table's record.
+    pub fn table_under(&self, head: &Record) -> Option<&Record> {
+        let table = self.machine.record(self.table.as_deref()?)?;
+        let is_head = head.kinematics == Kinematics::Head && head.axis_count() == 2;
+        (is_head && table.number != head.number).then_some(table)
+    }
 }
 
 /// The default of `hirth-tolerance`: a hundredth of a degree tilts the
@@ -45,6 +63,9 @@ pub struct Asked {
     pub record: String,
     pub rotation: Rotation3<f64>,
     pub direction: Direction,
+    /// The axis order the call's CYCLE800 gives its angles in (its
+    /// `_MODE`; a CYCLE600's output as an intrinsic order).
+    pub sequence: Sequence,
 }
 
 /// The swivel of a CYCLE600 call evaluated offline: its target rotation as
@@ -56,6 +77,10 @@ pub fn of_cycle600(site: &CallSite) -> Option<Asked> {
     if p.recalculate_only || evaluation.additive_on_control {
         return None;
     }
+    let sequence = match p.output.kind {
+        Kind::Intrinsic => p.output,
+        Kind::Extrinsic => p.output.reversed(),
+    };
     Some(Asked {
         span: site.statement,
         record: p.head.clone(),
@@ -65,6 +90,7 @@ pub fn of_cycle600(site: &CallSite) -> Option<Asked> {
         } else {
             Direction::Minus
         },
+        sequence,
     })
 }
 
@@ -95,6 +121,7 @@ pub fn of_cycle800(source: &[u8], call: &Call) -> Option<Asked> {
         record,
         rotation: matrix(sequence, angles),
         direction,
+        sequence,
     })
 }
 
@@ -162,6 +189,38 @@ pub fn solve_on<'m>(
         .map_err(|error| Unsolved::Unusable(record, error))
 }
 
+/// A swivel split over the table under its head record and the head.
+pub struct OverTable<'m> {
+    pub table: &'m Record,
+    pub head: &'m Record,
+    /// The split, or why the records cannot make one.
+    pub split: Result<Split, SplitError>,
+}
+
+/// `asked` split over the table under the head record it names, as `axes
+/// --table` splits it by default: the table's angle chosen with the head
+/// nearest the middles of its limits, the axes standing at their specified
+/// angles (`$TC_CARR13/14`) before; `None` where no table lies under it.
+pub fn split_on<'m>(asked: &Asked, on: &'m OnMachine) -> Option<OverTable<'m>> {
+    let head = on.machine.record(&asked.record)?;
+    let table = on.table_under(head)?;
+    let request = Request {
+        rotation: asked.rotation,
+        direction: asked.direction,
+        current: head.specified(),
+    };
+    let ask = TableAsk {
+        current: table.axes[0].angle,
+        fixed: None,
+        prefer: Preference::Middle,
+    };
+    Some(OverTable {
+        table,
+        head,
+        split: split(table, head, &request, &ask),
+    })
+}
+
 /// What the control would report of `asked` on `on`, as findings.
 pub fn findings(asked: &Asked, on: &OnMachine) -> Vec<Diagnostic> {
     match solve_on(asked, &on.machine) {
@@ -206,6 +265,32 @@ pub fn taken(asked: &Asked, on: &OnMachine) -> String {
             record.name.clone()
         }
     };
+    if let Some(OverTable {
+        table,
+        head,
+        split: Ok(split),
+    }) = split_on(asked, on)
+    {
+        let at = format!("{}={}", table.axes[0].label(0), decimals(split.table, 3));
+        return match split.head.chosen {
+            Some(index) => format!(
+                "with the table {} under {} the axes go to {at} {}",
+                name(table),
+                name(head),
+                positions(head, &split.head.solutions[index])
+            ),
+            None if split.head.solutions.is_empty() => format!(
+                "{} cannot reach this orientation at any position of the table {}",
+                name(head),
+                name(table)
+            ),
+            None => format!(
+                "with the table {} at {at}, {} reaches this orientation only outside its axis limits",
+                name(table),
+                name(head)
+            ),
+        };
+    }
     match solve_on(asked, &on.machine) {
         Err(Unsolved::NoRecord) => format!("{} defines no record `{}`", on.name, asked.record),
         Err(Unsolved::Unusable(record, error)) => {

@@ -42,6 +42,10 @@ pub struct Config {
     /// The machine's swivel data records (`$TC_CARRn[m]=value`), relative to
     /// the configuration file.
     pub machine: Option<PathBuf>,
+    /// The record of a rotary table under the machine's heads (kinematics
+    /// "P", one rotary axis), by name or number: a swivel on a head record
+    /// is split over the table and the head.
+    pub table: Option<String>,
     /// The orientation error (degrees) a Hirth grid's rounding may make
     /// before `check` reports it (K004).
     pub hirth_tolerance: Option<f64>,
@@ -156,7 +160,7 @@ impl Config {
 }
 
 /// The keys of the file.
-const KEYS: [&str; 23] = [
+const KEYS: [&str; 24] = [
     "select",
     "ignore",
     "severity-min",
@@ -171,6 +175,7 @@ const KEYS: [&str; 23] = [
     "definitions",
     "cycles",
     "machine",
+    "table",
     "hirth-tolerance",
     "include",
     "extend-include",

@@ -109,4 +109,11 @@ pub enum SettingsError {
         line: usize,
         why: String,
     },
+
+    #[error("{origin}: {why}")]
+    #[diagnostic(
+        code(sinuprep::table),
+        help("name the rotary table's record (kinematics \"P\", one rotary axis) by its name or number, with --table or `table` in sinuprep.toml")
+    )]
+    Table { origin: String, why: String },
 }

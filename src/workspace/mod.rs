@@ -67,6 +67,8 @@ pub struct Given {
     pub walk: WalkGiven,
     /// The machine's swivel data records, for `check`'s swivel rules.
     pub machine: Option<PathBuf>,
+    /// The record of a rotary table under the machine's heads (`--table`).
+    pub table: Option<String>,
     /// Whether the records' fine offsets apply (SD42974).
     pub fine_offsets: bool,
     pub emit: Option<Form>,
@@ -97,7 +99,8 @@ pub struct Workspace {
     definitions: Mutex<HashMap<Vec<PathBuf>, Environment>>,
     listings: Recent<PathBuf, Arc<Listing>>,
     subprograms: Recent<PathBuf, Arc<Procedures>>,
-    machines: Mutex<HashMap<PathBuf, Arc<OnMachine>>>,
+    /// The machines read, by file and the table named under their heads.
+    machines: Mutex<HashMap<MachineKey, Arc<OnMachine>>>,
     /// The nearest `sinuprep.toml` of a program's directory.
     nearest: Recent<PathBuf, Option<PathBuf>>,
     configs: Mutex<HashMap<PathBuf, Config>>,
@@ -112,6 +115,9 @@ pub struct Workspace {
     /// the settings. A run over files keeps none (it would grow with them).
     read: Option<Mutex<std::collections::HashSet<PathBuf>>>,
 }
+
+/// A machine file and the table named under its heads.
+type MachineKey = (PathBuf, Option<String>);
 
 /// A directory's subprograms: file name (upper case, without `.SPF`) and
 /// the parameter count of its PROC.
@@ -417,16 +423,27 @@ impl Workspace {
     /// machine file, so that each finds the same in it (its findings are
     /// [`Machine::diagnostics`], the caller's to report once a run).
     pub fn machine(&self, config: &Config) -> Result<Option<Arc<OnMachine>>, SettingsError> {
+        // The table under the heads: the one given, or else sinuprep.toml's.
+        let table = self.given.table.clone().or_else(|| config.table.clone());
         let (path, key) = match (&self.given.machine, &config.machine) {
             (Some(path), _) => (path.clone(), None),
             (None, Some(path)) => (config.resolve(path), Some("machine")),
-            (None, None) => return Ok(None),
+            (None, None) => {
+                return match table {
+                    Some(table) => Err(SettingsError::Table {
+                        origin: self.table_origin(config),
+                        why: format!("the table `{table}` is named, but no machine: give --machine FILE or `machine` in sinuprep.toml"),
+                    }),
+                    None => Ok(None),
+                };
+            }
         };
+        let cache_key = (path.clone(), table.clone());
         if let Some(known) = self
             .machines
             .lock()
             .ok()
-            .and_then(|m| m.get(&path).cloned())
+            .and_then(|m| m.get(&cache_key).cloned())
         {
             return Ok(Some(known));
         }
@@ -440,18 +457,37 @@ impl Workspace {
                 error,
             }
         })?;
+        let machine = Machine::read(&data.bytes, reading);
+        if let Some(name) = &table {
+            if let Err(why) = table_record(&machine, name) {
+                return Err(SettingsError::Table {
+                    origin: self.table_origin(config),
+                    why: format!("{}: {why}", data.name),
+                });
+            }
+        }
         let on = Arc::new(OnMachine {
-            machine: Machine::read(&data.bytes, reading),
+            machine,
             name: data.name,
             source: data.bytes.into_owned(),
             hirth_tolerance_deg: config
                 .hirth_tolerance
                 .unwrap_or(swivels::HIRTH_TOLERANCE_DEG),
+            table,
         });
         if let Ok(mut machines) = self.machines.lock() {
-            machines.insert(path, on.clone());
+            machines.insert(cache_key, on.clone());
         }
         Ok(Some(on))
+    }
+
+    /// Where the table's name comes from, for a message.
+    fn table_origin(&self, config: &Config) -> String {
+        match (&self.given.table, &config.path) {
+            (Some(_), _) => "--table".to_string(),
+            (None, Some(path)) => format!("`table` in {}", path.display()),
+            (None, None) => "`table`".to_string(),
+        }
     }
 
     /// The subprograms a call of `program` may reach, as the control
@@ -633,6 +669,24 @@ fn codes(list: &[String], origin: &str) -> Result<Vec<String>, SettingsError> {
         code: unknown.code,
         did_you_mean: unknown.did_you_mean,
     })
+}
+
+/// Whether `name` is a record of `machine` that can be a rotary table under
+/// its heads: kinematics "P", one rotary axis.
+fn table_record(machine: &Machine, name: &str) -> Result<(), String> {
+    let Some(record) = machine.record(name) else {
+        let known: Vec<&str> = machine.usable().map(|r| r.name.as_str()).collect();
+        let meant = crate::suggest::closest(name, &known, 3)
+            .map(|m| format!(" (did you mean `{m}`?)"))
+            .unwrap_or_default();
+        return Err(format!("no record `{name}` for the table{meant}"));
+    };
+    if record.kinematics != crate::kinematics::Kinematics::Table || record.axis_count() != 1 {
+        return Err(format!(
+            "the table `{name}` must be a record of kinematics \"P\" with one rotary axis"
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]
