@@ -2253,6 +2253,50 @@ fn sarif_names_a_file_by_the_bytes_of_its_name() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A name with letters beyond ASCII, as shops name programs on Windows
+/// (`Kühl_Maß.MPF`; there UTF-16, here UTF-8): read, named in every format
+/// (SARIF by its UTF-8 bytes, percent-encoded), and rewritten in place under
+/// the same name with its backup. Runs under Wine too.
+#[test]
+fn a_name_beyond_ascii_is_read_named_and_rewritten_in_place() {
+    let dir = scratch("umlaut-name");
+    let repo = support::repo();
+    let path = dir.join("Kühl_Maß.MPF");
+    let original = std::fs::read(repo.join("samples/PAPER_EXAMPLE3.MPF")).expect("sample");
+    std::fs::write(&path, &original).expect("write");
+    std::fs::copy(repo.join("samples/HEAD_DEF.SPF"), dir.join("HEAD_DEF.SPF")).expect("heads");
+    let run_on = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(args)
+            .arg(&path)
+            .output()
+            .expect("binary runs")
+    };
+    let sarif = run_on(&["check", "--select", "C619", "--format", "sarif"]);
+    let sarif: serde_json::Value = serde_json::from_slice(&sarif.stdout).expect("SARIF");
+    let uri = sarif["runs"][0]["results"][0]["locations"][0]["physicalLocation"]
+        ["artifactLocation"]["uri"]
+        .as_str()
+        .expect("uri");
+    assert!(uri.ends_with("/K%C3%BChl_Ma%C3%9F.MPF"), "{uri}");
+    let short = run_on(&["check", "--select", "C619", "--format", "short"]);
+    assert!(
+        stdout(&short).contains("Kühl_Maß.MPF:"),
+        "{}",
+        stdout(&short)
+    );
+
+    let rewritten = run_on(&["rewrite", "--in-place"]);
+    assert_exit(&rewritten, 0);
+    let text = std::fs::read_to_string(&path).expect("rewritten");
+    assert!(text.contains("_CYC600_2=37.792346"), "{text}");
+    assert_eq!(
+        std::fs::read(dir.join("Kühl_Maß.MPF.bak")).expect("backup"),
+        original
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The main page's list of commands refers to `sinuprep-check(1)` and the
 /// others: `manpage --dir` writes each of them, `manpage check` prints one.
 #[test]

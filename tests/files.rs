@@ -986,6 +986,13 @@ fn include_and_exclude_say_what_a_walk_takes_relative_to_their_settings_file() {
         &[&json[..], &["--extend-exclude", "*.nc,control", "p"]].concat(),
     );
     assert_eq!(reported(&output), ["p/A.MPF", "p/x/draft/D.MPF"]);
+    // --include replaces the file's `include` and the default; the file's
+    // `extend-include` still adds.
+    let output = run_in(&dir, &[&json[..], &["--include", "*.nc", "p"]].concat());
+    assert_eq!(reported(&output), ["p/E.nc", "p/control/_N_PART_MPF"]);
+    fs::write(dir.join("sinuprep.toml"), "include = [\"*.MPF\"]\n").expect("write");
+    let output = run_in(&dir, &[&json[..], &["--include", "notes.*", "p"]].concat());
+    assert_eq!(reported(&output), ["p/notes.txt"]);
     let _ = fs::remove_dir_all(&dir);
 }
 

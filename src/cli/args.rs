@@ -269,6 +269,9 @@ pub struct WalkArgs {
     /// Leave out these too, besides `exclude` and `extend-exclude` in sinuprep.toml.
     #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
     pub extend_exclude: Vec<String>,
+    /// Take only the files these patterns match (`*.nc`, `_N_*_MPF`; relative to the current directory, any case; comma-separated, repeatable), in place of `include` in sinuprep.toml and of the default `.mpf`, `.spf` and `.arc`.
+    #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
+    pub include: Vec<String>,
     /// Take the files these patterns match too (`*.nc`, `_N_*_MPF`), besides `.mpf`, `.spf` and `.arc` (`include`, `extend-include` in sinuprep.toml).
     #[arg(long, value_delimiter = ',', value_name = "PATTERNS")]
     pub extend_include: Vec<String>,
@@ -305,6 +308,7 @@ impl WalkArgs {
         crate::workspace::WalkGiven {
             exclude: self.exclude.clone(),
             extend_exclude: self.extend_exclude.clone(),
+            include: self.include.clone(),
             extend_include: self.extend_include.clone(),
             respect_gitignore: match (self.respect_gitignore, self.no_respect_gitignore) {
                 (true, _) => Some(true),

@@ -74,16 +74,21 @@ static COLOUR: std::sync::OnceLock<args::ColorChoice> = std::sync::OnceLock::new
 
 /// Whether to colour what goes to a stream that is (or is not) a terminal:
 /// `--color always` or `never`; with `auto`, a terminal unless `NO_COLOR`
-/// is set, and anything where `CLICOLOR_FORCE` is (the conventions of
-/// no-color.org and bixense.com/clicolors).
+/// is set (on Windows, a console that shows colour), and anything where
+/// `CLICOLOR_FORCE` is (the conventions of no-color.org and
+/// bixense.com/clicolors).
 pub(crate) fn colour(terminal: bool) -> bool {
     let set = |name: &str| std::env::var_os(name).is_some_and(|v| !v.is_empty() && v != "0");
     match COLOUR.get().copied().unwrap_or(args::ColorChoice::Auto) {
-        args::ColorChoice::Always => true,
+        args::ColorChoice::Always => {
+            // Asked for: the console is made to show it where it can be.
+            platform::console_shows_colour();
+            true
+        }
         args::ColorChoice::Never => false,
         args::ColorChoice::Auto => {
             std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-                && (terminal || set("CLICOLOR_FORCE"))
+                && ((terminal && platform::console_shows_colour()) || set("CLICOLOR_FORCE"))
         }
     }
 }

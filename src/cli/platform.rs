@@ -35,6 +35,21 @@ pub fn names(_metadata: &Metadata) -> u64 {
     1
 }
 
+/// Whether a console shows colour escapes. Windows' console does once its
+/// virtual terminal mode is on (Windows 10 and later), which is set here,
+/// once, for stdout and stderr; an older console, or output that is not a
+/// console, gets no colour from `auto`.
+#[cfg(windows)]
+pub fn console_shows_colour() -> bool {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *ON.get_or_init(|| anstyle_query::windows::enable_virtual_terminal_processing().is_ok())
+}
+
+#[cfg(not(windows))]
+pub fn console_shows_colour() -> bool {
+    true
+}
+
 /// Whether `a` and `b` are one file: by identity, else by canonical path.
 pub fn same_file(a: &Path, b: &Path) -> bool {
     match (std::fs::metadata(a), std::fs::metadata(b)) {

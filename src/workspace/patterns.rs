@@ -26,6 +26,8 @@ pub struct WalkGiven {
     pub exclude: Vec<String>,
     /// Added to the file's `exclude` and `extend-exclude`.
     pub extend_exclude: Vec<String>,
+    /// In place of the file's `include` and the default (when not empty).
+    pub include: Vec<String>,
     /// Added to the file's `include` and `extend-include`.
     pub extend_include: Vec<String>,
     /// Whether `.gitignore`, `.ignore` and git's exclude files are
@@ -38,8 +40,9 @@ pub struct WalkGiven {
 
 /// One settings file's patterns, with the command line's.
 pub struct Patterns {
-    /// Files taken: the file's `include` (or [`DEFAULT_INCLUDE`]) and
-    /// `extend-include`, then the command line's.
+    /// Files taken: the file's `include` (or [`DEFAULT_INCLUDE`], unless
+    /// the command line has its own) and `extend-include`, then the command
+    /// line's.
     include: [Gitignore; 2],
     /// [`DEFAULT_INCLUDE`] is taken, told by the extension: a matcher of
     /// patterns in any case is a regular expression, which costs about
@@ -66,14 +69,23 @@ impl Patterns {
             .and_then(|p| p.parent())
             .map_or_else(|| here.clone(), canonical);
         let origin = |key: &str| format!("{} ({key})", config.describe());
-        let by_default = config.include.is_none();
-        let mut included: Vec<String> = config.include.clone().unwrap_or_default();
+        let from_line: Vec<String> = given
+            .include
+            .iter()
+            .chain(&given.extend_include)
+            .cloned()
+            .collect();
+        let (by_default, mut included) = match &config.include {
+            _ if !given.include.is_empty() => (false, Vec::new()),
+            None => (true, Vec::new()),
+            Some(include) => (false, include.clone()),
+        };
         included.extend(config.extend_include.iter().flatten().cloned());
         let include = [
             matcher(&root, &included, &origin("include"))?,
-            matcher(&here, &given.extend_include, "--extend-include")?,
+            matcher(&here, &from_line, "--include, --extend-include")?,
         ];
-        included.extend(given.extend_include.iter().cloned());
+        included.extend(from_line);
         if by_default {
             included.splice(0..0, DEFAULT_INCLUDE.map(String::from));
         }
