@@ -37,6 +37,11 @@ if ls "$scratch"/.PAPER_EXAMPLE3.MPF.sinuprep-* >/dev/null 2>&1; then
   echo "a temporary file was left beside the program"
   exit 1
 fi
+# A verbatim path (\\?\Z:\...), the form long paths and UNC shares take:
+# read, and named in SARIF by the path it stands for.
+cp tests/fixtures/lint/N022_trigger.mpf "$scratch/VERBATIM.MPF"
+wine "$out/sinuprep.exe" check --format sarif "\\\\?\\Z:${scratch//\//\\}\\VERBATIM.MPF" > "$scratch/verbatim.sarif" || true
+grep -q "\"uri\": \"file:///Z:${scratch}/VERBATIM.MPF\"" "$scratch/verbatim.sarif"
 # A program with errors: exit 1, the finding at its line and column.
 set +e
 wine "$out/sinuprep.exe" check --format short 'tests\fixtures\lint\N022_trigger.mpf' > "$scratch/check.txt"
