@@ -593,62 +593,17 @@ fn fix(
     outcomes: &[lint::Outcome],
     unsafe_fixes: bool,
 ) -> Result<Option<Vec<u8>>, CliError> {
-    let mut edits = Vec::new();
-    let mut answered = 0;
-    for (program, outcome) in opened.programs(bytes).iter().zip(outcomes) {
-        let diagnostics = &outcome.diagnostics;
-        let (own, count) = lint::fix::applicable(diagnostics, unsafe_fixes);
-        if own.is_empty() {
-            continue;
-        }
-        // With syntax errors only their own safe fixes (a byte-order mark
-        // removed) are applied: the rest was found on trees that may not be
-        // what was meant.
-        let (own, count) = match diagnostics.iter().any(|d| d.code.starts_with('S')) {
-            true => lint::fix::applicable(&syntax_fixes(diagnostics), false),
-            false => (own, count),
-        };
-        if own.is_empty() {
-            tellln!(
-                "{}: not fixed, because of its syntax errors",
-                printable(&program.name)
-            );
-            continue;
-        }
-        let shifted = match (&opened.archive, program.member) {
-            (Some(archive), Some(member)) => archive.edits(bytes, member, &own),
-            _ => Some(own),
-        };
-        let Some(shifted) = shifted else {
-            tellln!(
-                "{}: not fixed: its new size does not fit the archive's header",
-                printable(&program.name)
-            );
-            continue;
-        };
-        edits.extend(shifted);
-        answered += count;
+    let fixes = opened.fixes(bytes, outcomes, unsafe_fixes);
+    for (name, why) in &fixes.unfixed {
+        tellln!("{}: {}", printable(name), why.describe());
     }
-    if edits.is_empty() {
+    if fixes.edits.is_empty() {
         return Ok(None);
     }
-    let fixed = apply(bytes, &edits);
+    let fixed = apply(bytes, &fixes.edits);
     write_atomically(target, |out| out.write_all(&fixed), None)?;
+    let answered = fixes.answered;
     let s = if answered == 1 { "" } else { "s" };
     tellln!("{}: fixed {answered} finding{s}", printable(&opened.name));
     Ok(Some(fixed))
-}
-
-/// The syntax errors that carry a safe fix of their own.
-fn syntax_fixes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
-    diagnostics
-        .iter()
-        .filter(|d| d.code.starts_with('S'))
-        .filter(|d| {
-            d.fix
-                .as_deref()
-                .is_some_and(|fix| fix.applicability == Applicability::Safe)
-        })
-        .cloned()
-        .collect()
 }

@@ -3,6 +3,7 @@
 //! so both report the same findings from the same analysis.
 
 pub mod archive;
+pub mod fixes;
 pub mod held;
 pub mod text;
 
