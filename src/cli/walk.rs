@@ -89,7 +89,7 @@ pub struct Files<'w> {
 /// A directory named on the command line, being walked.
 struct Root {
     path: PathBuf,
-    /// Files taken from it so far.
+    /// Files (and unreadable entries) taken from it so far.
     taken: usize,
     left: Left,
     /// The directories the walk is in, the deepest last.
@@ -120,7 +120,7 @@ impl Iterator for Files<'_> {
             if let Some(mut root) = self.root.take() {
                 match self.step(&mut root) {
                     Ok(Some(found)) => {
-                        root.taken += found.is_ok() as usize;
+                        root.taken += 1;
                         self.root = Some(root);
                         return Some(found);
                     }
