@@ -810,3 +810,98 @@ fn a_second_definition_points_at_the_first() {
     assert_eq!(related["message"], "`LENGTH` is first defined here");
     client.stop();
 }
+
+/// A hover on a variable gives its type from its DEF and the value it holds
+/// at that use as the walk knows it offline, with where it comes from; a
+/// value that depends on a branch the walk cannot decide is said to be
+/// unknown, never guessed.
+#[test]
+fn a_variable_hover_gives_its_type_and_its_value_there() {
+    let program = "\
+DEF REAL _DEPTH=5
+DEF INT _N
+R1=_DEPTH*2
+IF R5>0
+_N=1
+ENDIF
+G1 Z=-_DEPTH X=R1 Y=_N
+R1=R1+1
+M30
+";
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, program);
+    let hover = |client: &mut Client, line, character| {
+        let hover = client.request("textDocument/hover", at(URI, line, character));
+        hover["contents"]["value"]
+            .as_str()
+            .expect("markdown")
+            .to_string()
+    };
+    let depth = hover(&mut client, 6, 7);
+    assert!(depth.contains("Type: `REAL`"), "{depth}");
+    assert!(
+        depth.contains("Value here: `5`, assigned on line 1"),
+        "{depth}"
+    );
+    let r1 = hover(&mut client, 6, 15);
+    assert!(r1.contains("Value here: `10`, assigned on line 3"), "{r1}");
+    assert!(!r1.contains("Type"), "an R parameter has no DEF: {r1}");
+    // Written in a branch the walk cannot decide: 0 or 1, so unknown.
+    let n = hover(&mut client, 6, 20);
+    assert!(n.contains("Type: `INT`"), "{n}");
+    assert!(n.contains("Value here: unknown offline: `_N`"), "{n}");
+    assert!(!n.contains("`0`") && !n.contains("`1`"), "{n}");
+    // Inside the branch, the value it is given there.
+    let given = hover(&mut client, 4, 0);
+    assert!(
+        given.contains("Value after this line: `1`, assigned on line 5"),
+        "{given}"
+    );
+    // The read of R1 on line 8 sees 10, its target holds 11 after it.
+    let read = hover(&mut client, 7, 4);
+    assert!(read.contains("Value here: `10`"), "{read}");
+    let written = hover(&mut client, 7, 0);
+    assert!(
+        written.contains("Value after this line: `11`, assigned on line 8"),
+        "{written}"
+    );
+    // The DEF itself: what it starts with.
+    let defined = hover(&mut client, 0, 10);
+    assert!(defined.contains("Type: `REAL`"), "{defined}");
+    assert!(defined.contains("Value after this line: `5`"), "{defined}");
+    client.stop();
+}
+
+/// A value measured on the machine is unknown offline, naming the
+/// measurement; with the values file of `sinuprep.toml` it is that file's
+/// value, and the hover says which file and line gave it.
+#[test]
+fn a_variable_hover_names_the_measurement_or_the_values_file() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-values-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let program = "CYCLE977(1,,,1,20)\nR10=_OVR[16]\nG1 X=R10\nM30\n";
+    let uri = format!("file://{}", dir.join("PROBE.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, program);
+    let hover = client.request("textDocument/hover", at(&uri, 2, 6));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Value here: unknown offline: `R10` (measured on line 1"),
+        "{shown}"
+    );
+    client.stop();
+
+    std::fs::write(dir.join("probe.values"), "R10=0.25\n").expect("values");
+    std::fs::write(dir.join("sinuprep.toml"), "values = \"probe.values\"\n").expect("toml");
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, program);
+    let hover = client.request("textDocument/hover", at(&uri, 2, 6));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Value here: `0.25`, supplied by ") && shown.contains("probe.values:1"),
+        "{shown}"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}

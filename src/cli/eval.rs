@@ -283,7 +283,8 @@ fn swivel_json(site: &CallSite, machine: &OnMachine) -> serde_json::Value {
     swivel(site, machine).map_or(serde_json::Value::Null, |solved| solved_json(&solved))
 }
 
-fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {
+/// A value as `eval` prints it (an editor's hover on a variable too).
+pub(crate) fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {
     match value {
         Ok(Value::Number(n)) => format(*n, 9),
         Ok(Value::Text(t)) => format!("\"{t}\""),
