@@ -347,6 +347,91 @@ vim.cmd("qa!")
     );
 }
 
+/// Emacs with eglot (Debian's `emacs-nox` and `elpa-eglot`, eglot 1.9 or
+/// later) starts the server, opens a program, and reads its findings through
+/// flymake and two hovers: on a CYCLE600 and on a result read after it.
+/// Required under CI (`.ci/run` installs them); skipped elsewhere without them.
+#[test]
+fn emacs_shows_the_findings_and_a_hover() {
+    let has_eglot = std::process::Command::new("emacs")
+        .args(["--batch", "--eval", "(require 'eglot)"])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .is_ok_and(|output| output.status.success());
+    if !has_eglot {
+        assert_ne!(
+            std::env::var("CI").as_deref(),
+            Ok("true"),
+            "CI must run the Emacs test"
+        );
+        eprintln!("NOTE: emacs with eglot not found: the Emacs test was SKIPPED");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("sinuprep-emacs-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a directory");
+    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
+    // Alone in its folder: no HEAD_DEF beside it, so C610 is reported.
+    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
+    // The README's recipe (a mode for the files, the server for the mode),
+    // then what a user would do by hand: open, wait, hover.
+    let script = r#"
+(require 'eglot)
+(define-derived-mode sinumerik-mode prog-mode "Sinumerik")
+(add-to-list 'auto-mode-alist '("\\.[ms]pf\\'" . sinumerik-mode))
+(add-to-list 'eglot-server-programs
+             `(sinumerik-mode . (,(getenv "SINUPREP_BIN") "lsp")))
+;; No version control here: the folder is the project.
+(add-hook 'project-find-functions (lambda (dir) (cons 'transient dir)))
+(defvar out nil)
+(defun hover-at (line word)
+  (goto-char (point-min))
+  (forward-line line)
+  (search-forward word)
+  (backward-char 2)
+  (let ((hover (jsonrpc-request (eglot--current-server-or-lose) :textDocument/hover
+                                (eglot--TextDocumentPositionParams))))
+    (dolist (text (split-string (plist-get (plist-get hover :contents) :value) "\n"))
+      (push (concat "hover " text) out))))
+(find-file "PART.MPF")
+(apply #'eglot (eglot--guess-contact))
+(let ((tries 0))
+  (while (and (null (flymake-diagnostics)) (< tries 200))
+    (accept-process-output nil 0.1)
+    (flymake-start)
+    (setq tries (1+ tries))))
+(dolist (d (flymake-diagnostics))
+  (push (format "diagnostic %d %s" (line-number-at-pos (flymake-diagnostic-beg d))
+                (flymake-diagnostic-text d))
+        out))
+(hover-at 13 "CYCLE600")
+(hover-at 27 "_CYC600_2")
+(with-temp-file "out.txt" (insert (mapconcat #'identity (reverse out) "\n")))
+(eglot-shutdown (eglot-current-server))
+(kill-emacs 0)
+"#;
+    std::fs::write(dir.join("test.el"), script).expect("the script");
+    let status = std::process::Command::new("emacs")
+        .args(["--batch", "-l", "test.el"])
+        .current_dir(&dir)
+        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("emacs runs");
+    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(status.status.success(), "{status:?}");
+    assert!(shown.contains("diagnostic 1 sinuprep [C610]: "), "{shown}");
+    assert!(
+        shown.contains("hover   output   intrinsic:ZXY (code 39)  37.792346  20.704811  49.106605"),
+        "{shown}"
+    );
+    assert!(
+        shown.contains("hover Value here: `39.639272238`, result of the CYCLE600 on line 26"),
+        "{shown}"
+    );
+}
+
 #[test]
 fn a_client_that_pulls_diagnostics_gets_them_once() {
     let capabilities =
