@@ -838,6 +838,45 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
     client.stop();
 }
 
+/// A large program changed twice while its first version is analysed: that
+/// analysis stops (within a few thousand lines) and is not published; the
+/// first findings published are the last version's.
+#[test]
+fn a_version_changed_while_analysed_is_not_published() {
+    let (mut client, _) = Client::start(json!({}));
+    let uri = "untitled:CHANGED.MPF";
+    let mut large = String::new();
+    for n in 0..15_000 {
+        large.push_str(&format!(
+            "LOOP{n}:\nIF R1>{n}\nR2=R2+SIN({n})*COS(R1)\nG1 X=R2 Y{n} F500\nENDIF\n"
+        ));
+    }
+    large.push_str("M30\n");
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": uri, "languageId": "sinumerik",
+                                  "version": 1, "text": large } }),
+    );
+    let insert = |version: u32, end: u32, text: &str| {
+        json!({ "textDocument": { "uri": uri, "version": version },
+                "contentChanges": [{ "range": { "start": { "line": 0, "character": 0 },
+                                                "end": { "line": end, "character": 0 } },
+                                     "text": text }] })
+    };
+    client.notify("textDocument/didChange", insert(2, 0, "GOTOF SECOND\n"));
+    client.notify("textDocument/didChange", insert(3, 1, "GOTOF THIRD\n"));
+    let found = client.diagnostics(uri);
+    let messages: Vec<&str> = found
+        .iter()
+        .map(|d| d["message"].as_str().expect("a message"))
+        .collect();
+    assert!(
+        messages.len() == 1 && messages[0].contains("THIRD"),
+        "the first findings published are the third version's: {messages:?}"
+    );
+    client.stop();
+}
+
 #[test]
 fn formatting_gives_the_edits_of_fmt() {
     let (mut client, initialized) = Client::start(json!({}));

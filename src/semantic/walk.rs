@@ -88,8 +88,26 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let (analysis, env, _) = run_probed(model, supplied, heads, None);
+    let (analysis, env, _) =
+        run_probed(model, supplied, heads, None, None).expect("only a stop ends a walk early");
     (analysis, env)
+}
+
+/// Asked now and then during an analysis whether to stop (its result is no
+/// longer wanted): `true` stops it.
+pub type Stop<'a> = &'a dyn Fn() -> bool;
+
+/// Lines walked between two questions to a [`Stop`].
+const LINES_BETWEEN_STOPS: usize = 4096;
+
+/// [`analyze`], stopped as soon as `stop` says so: `None` then.
+pub fn analyze_until(
+    model: &Model,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+    stop: Stop,
+) -> Option<Analysis> {
+    Some(run_probed(model, supplied, heads, None, Some(stop))?.0)
 }
 
 /// Where a value is looked at on the walk: the variable named at `name` (a
@@ -122,7 +140,9 @@ pub enum Seen {
 /// What the variable at `probe` holds there, as the walk that evaluates the
 /// CYCLE600 calls finds it.
 pub fn value_at(model: &Model, supplied: &Supplied, heads: Option<&Heads>, probe: &Probe) -> Seen {
-    let (_, _, seen) = run_probed(model, supplied, heads, Some(probe));
+    let Some((_, _, seen)) = run_probed(model, supplied, heads, Some(probe), None) else {
+        return Seen::NotReached;
+    };
     let mut seen = seen.into_iter();
     match (seen.next(), seen.next()) {
         (None, _) => Seen::NotReached,
@@ -137,10 +157,14 @@ fn run_probed(
     supplied: &Supplied,
     heads: Option<&Heads>,
     probe: Option<&Probe>,
-) -> (Analysis, Env, Vec<Seen>) {
+    stop: Option<Stop>,
+) -> Option<(Analysis, Env, Vec<Seen>)> {
     let mut modes = HashMap::new();
     loop {
-        let (walker, env) = walk_once(model, supplied, heads, &modes, probe);
+        let (walker, env) = walk_once(model, supplied, heads, &modes, probe, stop);
+        if walker.stopped {
+            return None;
+        }
         let assumed = walker.assumed();
         let learned: Vec<(usize, Mode)> = walker
             .analysis
@@ -153,7 +177,7 @@ fn run_probed(
         if learned.is_empty() {
             let mut analysis = walker.analysis;
             analysis.calls.sort_by_key(|c| (c.line, c.statement.start));
-            return (analysis, env, walker.seen);
+            return Some((analysis, env, walker.seen));
         }
         modes.extend(learned);
     }
@@ -166,6 +190,7 @@ fn walk_once<'a>(
     heads: Option<&'a Heads>,
     modes: &'a HashMap<usize, Mode>,
     probe: Option<&'a Probe>,
+    stop: Option<Stop<'a>>,
 ) -> (Walker<'a>, Env) {
     let structure = model.structure();
     let mut calls = [Vec::new(), Vec::new(), Vec::new()];
@@ -195,6 +220,9 @@ fn walk_once<'a>(
         too_deep: HashSet::new(),
         probe,
         seen: Vec::new(),
+        stop,
+        lines_walked: 0,
+        stopped: false,
     };
     let mut env = Env::of_program(Arc::clone(&structure.writers));
     walker.walk(0, model.lines.len(), &mut env);
@@ -280,6 +308,11 @@ struct Walker<'a> {
     /// A use whose value is asked for, and what each arrival at it found.
     probe: Option<&'a Probe>,
     seen: Vec<Seen>,
+    /// Asked every [`LINES_BETWEEN_STOPS`] lines whether to stop; once it
+    /// says so, every region ends where it is.
+    stop: Option<Stop<'a>>,
+    lines_walked: usize,
+    stopped: bool,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
@@ -336,6 +369,9 @@ impl<'a> Walker<'a> {
     fn walk_region(&mut self, start: usize, end: usize, env: &mut Env) {
         let mut pc = start;
         while pc < end {
+            if self.stop.is_some() && self.stops() {
+                return;
+            }
             self.enter(pc, env);
             if self.probe.is_some_and(|probe| probe.row == pc) {
                 self.look(pc, env, true);
@@ -416,6 +452,16 @@ impl<'a> Walker<'a> {
                 None => pc + 1,
             };
         }
+    }
+
+    /// Whether the walk is to stop, asking its [`Stop`] every few thousand
+    /// lines.
+    fn stops(&mut self) -> bool {
+        if !self.stopped && self.lines_walked.is_multiple_of(LINES_BETWEEN_STOPS) {
+            self.stopped = self.stop.is_some_and(|stop| stop());
+        }
+        self.lines_walked += 1;
+        self.stopped
     }
 
     /// Forget what loops and skipped regions write, on arriving at `line`.
@@ -1071,6 +1117,35 @@ mod tests {
         }
         program.push_str("M30\n");
         program
+    }
+
+    /// A walk told to stop stops at once, inside nested blocks too: the
+    /// question answered `stop` is the last one asked.
+    #[test]
+    fn a_walk_stops_when_told() {
+        let program = nested_loops(3, 20_000);
+        let model = Model::of(program.as_bytes());
+        let asked = std::cell::Cell::new(0);
+        let never = || {
+            asked.set(asked.get() + 1);
+            false
+        };
+        let walked = analyze_until(&model, &Supplied::default(), None, &never);
+        assert_eq!(walked.map(|a| a.calls.len()), Some(1));
+        // 20,007 lines, every one walked: a question every 4,096 of them,
+        // in each walk (twice: the call's `_SW_REC` is learned in the first).
+        let questions = asked.get();
+        assert_eq!(questions, 10);
+        for stop_at in 1..=questions {
+            asked.set(0);
+            let told = || {
+                asked.set(asked.get() + 1);
+                asked.get() == stop_at
+            };
+            let stopped = analyze_until(&model, &Supplied::default(), None, &told);
+            assert!(stopped.is_none(), "told at question {stop_at}");
+            assert_eq!(asked.get(), stop_at, "no question after the stop");
+        }
     }
 
     /// Forgetting what nested loops write costs the program's length times
