@@ -993,6 +993,23 @@ M30
     let defined = hover(&mut client, 0, 10);
     assert!(defined.contains("Type: `REAL`"), "{defined}");
     assert!(defined.contains("Value after this line: `5`"), "{defined}");
+    // A PROC parameter: its value is the caller's, unknown here.
+    client.open(
+        "untitled:DRILL.SPF",
+        "PROC DRILL(INT _DEPTH)\nG1 Z=-_DEPTH\nM17\n",
+    );
+    let shown = client.request("textDocument/hover", at("untitled:DRILL.SPF", 0, 16));
+    let shown = shown["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Type: `INT`") && shown.contains("Value: given by the caller"),
+        "{shown}"
+    );
+    let shown = client.request("textDocument/hover", at("untitled:DRILL.SPF", 1, 8));
+    let shown = shown["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Type: `INT`") && shown.contains("Value here: unknown offline"),
+        "{shown}"
+    );
     client.stop();
 }
 

@@ -181,40 +181,18 @@ impl<'a, 't> Snapshot<'a, 't> {
     }
 
     /// The type a DEF or a PROC parameter (`true`) gives the name it defines
-    /// at `definition`, as written, with an array's dimensions.
+    /// at `definition`, as written: the model's symbol.
     fn declaration(&self, definition: &Use) -> Option<(String, bool)> {
-        let source = self.text.bytes();
-        let block = self.model.lines.block(definition.row)?;
-        let written = |data_type: &crate::syntax::tree::DataType,
-                       declarator: &crate::syntax::tree::Declarator| {
-            let mut text = String::from_utf8_lossy(data_type.span.of(source)).into_owned();
-            if let (Some(first), Some(last)) =
-                (declarator.dimensions.first(), declarator.dimensions.last())
-            {
-                let dimensions = Span::new(first.span.start, last.span.end);
-                text.push_str(&format!(
-                    " [{}]",
-                    String::from_utf8_lossy(dimensions.of(source))
-                ));
-            }
-            text
-        };
-        block
-            .statements
+        let symbol = self
+            .model
+            .symbols
             .iter()
-            .find_map(|statement| match &statement.kind {
-                StatementKind::Def(def) => def
-                    .variables
-                    .iter()
-                    .find(|d| d.name.span == definition.span)
-                    .map(|d| (written(&def.data_type, d), false)),
-                StatementKind::Proc(proc) => proc
-                    .parameters
-                    .iter()
-                    .find(|p| p.declarator.name.span == definition.span)
-                    .map(|p| (written(&p.data_type, &p.declarator), true)),
-                _ => None,
-            })
+            .find(|s| s.span == definition.span)?;
+        let written = symbol.data_type.span.of(self.text.bytes());
+        Some((
+            String::from_utf8_lossy(written).into_owned(),
+            symbol.parameter,
+        ))
     }
 
     /// On a CYCLE800 call: each parameter's meaning, the plane's tool
