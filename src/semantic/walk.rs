@@ -511,7 +511,7 @@ impl<'a> Walker<'a> {
                     let target = goto
                         .target
                         .as_ref()
-                        .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
+                        .and_then(|t| self.model.landing(t, goto.kind, pc));
                     targets.push((target, certain));
                 }
                 StatementKind::Case(case) => {
@@ -536,14 +536,15 @@ impl<'a> Walker<'a> {
                             let target = goto
                                 .target
                                 .as_ref()
-                                .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
+                                .and_then(|t| self.model.landing(t, goto.kind, pc));
                             targets.push((target, true));
                         }
                         None => {
                             for goto in case.branches.iter().map(|(_, g)| g).chain(&case.default) {
-                                let target = goto.target.as_ref().and_then(|t| {
-                                    self.structure.resolve(self.model, t, goto.kind, pc)
-                                });
+                                let target = goto
+                                    .target
+                                    .as_ref()
+                                    .and_then(|t| self.model.landing(t, goto.kind, pc));
                                 targets.push((target, false));
                             }
                         }
