@@ -381,8 +381,7 @@ fn emacs_shows_the_findings_and_a_hover() {
 (add-to-list 'auto-mode-alist '("\\.[ms]pf\\'" . sinumerik-mode))
 (add-to-list 'eglot-server-programs
              `(sinumerik-mode . (,(getenv "SINUPREP_BIN") "lsp")))
-;; No version control here: the folder is the project.
-(add-hook 'project-find-functions (lambda (dir) (cons 'transient dir)))
+(add-hook 'sinumerik-mode-hook #'eglot-ensure)
 (defvar out nil)
 (defun hover-at (line word)
   (goto-char (point-min))
@@ -394,7 +393,8 @@ fn emacs_shows_the_findings_and_a_hover() {
     (dolist (text (split-string (plist-get (plist-get hover :contents) :value) "\n"))
       (push (concat "hover " text) out))))
 (find-file "PART.MPF")
-(apply #'eglot (eglot--guess-contact))
+;; eglot-ensure connects after the command that opened the file.
+(run-hooks 'post-command-hook)
 (let ((tries 0))
   (while (and (null (flymake-diagnostics)) (< tries 200))
     (accept-process-output nil 0.1)
