@@ -227,7 +227,8 @@ fn analyze_with<'src>(
         .expect("only a stop ends an analysis early")
 }
 
-/// Lines analysed between two questions to a [`Stop`].
+/// Lines parsed between two questions to a [`Stop`] (plain lines: see
+/// [`PlainRun::LINES`]).
 const LINES_BETWEEN_STOPS: usize = 4096;
 
 fn analyze_stopping<'src>(
@@ -263,10 +264,11 @@ fn analyze_stopping<'src>(
     // Asked again only after a line that is not plain (a DEFINE is none):
     // a CAM program's millions of plain lines pay a test of a local.
     let mut macros_reach_plain_lines = model.macros_reach_plain_lines();
+    // The stop is asked where the line pass already branches: at each run
+    // of plain lines given to the rules, and at a parsed line at least
+    // LINES_BETWEEN_STOPS after the last question. A plain line pays nothing.
+    let mut next_stop = 0;
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
-        if row.is_multiple_of(LINES_BETWEEN_STOPS) && stopped() {
-            return None;
-        }
         let raw = match line {
             Scanned::Plain(plain) if !(macros_reach_plain_lines && model.expands(plain.raw)) => {
                 // No syntax error, and only a few rules care: no tree to build.
@@ -281,11 +283,20 @@ fn analyze_stopping<'src>(
                 });
                 if plain_run.lines.len() == PlainRun::LINES {
                     plain_run.give(&file, &mut model, &mut checkers, &mut found);
+                    if stopped() {
+                        return None;
+                    }
                 }
                 continue;
             }
             other => other.raw(),
         };
+        if row >= next_stop {
+            if stopped() {
+                return None;
+            }
+            next_stop = row + LINES_BETWEEN_STOPS;
+        }
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -508,6 +519,9 @@ mod tests {
     #[test]
     fn an_analysis_stops_when_told() {
         let mut text = String::from("DEF REAL _A=30\n");
+        for n in 0..600 {
+            text.push_str(&format!("G1 X{n} Y1\n"));
+        }
         for n in 0..9_000 {
             text.push_str(&format!("IF R{n}>0\nR1=_A+{n}\nENDIF\n"));
         }
@@ -526,20 +540,18 @@ mod tests {
         let complete = analyze_program(source, "BIG.MPF", kind, &settings);
         assert_eq!(whole.findings, complete.findings);
         assert_eq!(whole.walk.map(|w| w.calls.len()), Some(1));
-        // 27,003 lines: 7 questions in the lines, one before each rule's
-        // last step, 5 in the walk (18,000 lines walked), one after it.
+        // 27,603 lines: 9 questions in the lines (the first, after each of
+        // two runs of 256 plain lines, then every 4,096 parsed lines), one
+        // before each rule's last step, 5 in the walk (18,600 lines
+        // walked), one after it.
         assert!(questions > 20, "{questions}");
         let walked = questions - 5..questions;
-        for stop_at in [
-            1,
-            2,
-            7,
-            8,
-            questions / 2,
-            walked.start,
-            walked.end - 1,
-            questions,
-        ] {
+        let lines = [1, 2, 3, 4, 9, 10];
+        for stop_at in
+            lines
+                .into_iter()
+                .chain([questions / 2, walked.start, walked.end - 1, questions])
+        {
             asked.set(0);
             let told = || {
                 asked.set(asked.get() + 1);
