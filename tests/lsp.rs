@@ -347,6 +347,91 @@ vim.cmd("qa!")
     );
 }
 
+/// Emacs with eglot (Debian's `emacs-nox` and `elpa-eglot`, eglot 1.9 or
+/// later) starts the server, opens a program, and reads its findings through
+/// flymake and two hovers: on a CYCLE600 and on a result read after it.
+/// Required under CI (`.ci/run` installs them); skipped elsewhere without them.
+#[test]
+fn emacs_shows_the_findings_and_a_hover() {
+    let has_eglot = std::process::Command::new("emacs")
+        .args(["--batch", "--eval", "(require 'eglot)"])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .is_ok_and(|output| output.status.success());
+    if !has_eglot {
+        assert_ne!(
+            std::env::var("CI").as_deref(),
+            Ok("true"),
+            "CI must run the Emacs test"
+        );
+        eprintln!("NOTE: emacs with eglot not found: the Emacs test was SKIPPED");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("sinuprep-emacs-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a directory");
+    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
+    // Alone in its folder: no HEAD_DEF beside it, so C610 is reported.
+    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
+    // The README's recipe (a mode for the files, the server for the mode),
+    // then what a user would do by hand: open, wait, hover.
+    let script = r#"
+(require 'eglot)
+(define-derived-mode sinumerik-mode prog-mode "Sinumerik")
+(add-to-list 'auto-mode-alist '("\\.[ms]pf\\'" . sinumerik-mode))
+(add-to-list 'eglot-server-programs
+             `(sinumerik-mode . (,(getenv "SINUPREP_BIN") "lsp")))
+(add-hook 'sinumerik-mode-hook #'eglot-ensure)
+(defvar out nil)
+(defun hover-at (line word)
+  (goto-char (point-min))
+  (forward-line line)
+  (search-forward word)
+  (backward-char 2)
+  (let ((hover (jsonrpc-request (eglot--current-server-or-lose) :textDocument/hover
+                                (eglot--TextDocumentPositionParams))))
+    (dolist (text (split-string (plist-get (plist-get hover :contents) :value) "\n"))
+      (push (concat "hover " text) out))))
+(find-file "PART.MPF")
+;; eglot-ensure connects after the command that opened the file.
+(run-hooks 'post-command-hook)
+(let ((tries 0))
+  (while (and (null (flymake-diagnostics)) (< tries 200))
+    (accept-process-output nil 0.1)
+    (flymake-start)
+    (setq tries (1+ tries))))
+(dolist (d (flymake-diagnostics))
+  (push (format "diagnostic %d %s" (line-number-at-pos (flymake-diagnostic-beg d))
+                (flymake-diagnostic-text d))
+        out))
+(hover-at 13 "CYCLE600")
+(hover-at 27 "_CYC600_2")
+(with-temp-file "out.txt" (insert (mapconcat #'identity (reverse out) "\n")))
+(eglot-shutdown (eglot-current-server))
+(kill-emacs 0)
+"#;
+    std::fs::write(dir.join("test.el"), script).expect("the script");
+    let status = std::process::Command::new("emacs")
+        .args(["--batch", "-l", "test.el"])
+        .current_dir(&dir)
+        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("emacs runs");
+    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(status.status.success(), "{status:?}");
+    assert!(shown.contains("diagnostic 1 sinuprep [C610]: "), "{shown}");
+    assert!(
+        shown.contains("hover   output   intrinsic:ZXY (code 39)  37.792346  20.704811  49.106605"),
+        "{shown}"
+    );
+    assert!(
+        shown.contains("hover Value here: `39.639272238`, result of the CYCLE600 on line 26"),
+        "{shown}"
+    );
+}
+
 #[test]
 fn a_client_that_pulls_diagnostics_gets_them_once() {
     let capabilities =
@@ -753,6 +838,45 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
     client.stop();
 }
 
+/// A large program changed twice while its first version is analysed: that
+/// analysis stops (within a few thousand lines) and is not published; the
+/// first findings published are the last version's.
+#[test]
+fn a_version_changed_while_analysed_is_not_published() {
+    let (mut client, _) = Client::start(json!({}));
+    let uri = "untitled:CHANGED.MPF";
+    let mut large = String::new();
+    for n in 0..15_000 {
+        large.push_str(&format!(
+            "LOOP{n}:\nIF R1>{n}\nR2=R2+SIN({n})*COS(R1)\nG1 X=R2 Y{n} F500\nENDIF\n"
+        ));
+    }
+    large.push_str("M30\n");
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": uri, "languageId": "sinumerik",
+                                  "version": 1, "text": large } }),
+    );
+    let insert = |version: u32, end: u32, text: &str| {
+        json!({ "textDocument": { "uri": uri, "version": version },
+                "contentChanges": [{ "range": { "start": { "line": 0, "character": 0 },
+                                                "end": { "line": end, "character": 0 } },
+                                     "text": text }] })
+    };
+    client.notify("textDocument/didChange", insert(2, 0, "GOTOF SECOND\n"));
+    client.notify("textDocument/didChange", insert(3, 1, "GOTOF THIRD\n"));
+    let found = client.diagnostics(uri);
+    let messages: Vec<&str> = found
+        .iter()
+        .map(|d| d["message"].as_str().expect("a message"))
+        .collect();
+    assert!(
+        messages.len() == 1 && messages[0].contains("THIRD"),
+        "the first findings published are the third version's: {messages:?}"
+    );
+    client.stop();
+}
+
 #[test]
 fn formatting_gives_the_edits_of_fmt() {
     let (mut client, initialized) = Client::start(json!({}));
@@ -809,4 +933,116 @@ fn a_second_definition_points_at_the_first() {
     );
     assert_eq!(related["message"], "`LENGTH` is first defined here");
     client.stop();
+}
+
+/// A hover on a variable gives its type from its DEF and the value it holds
+/// at that use as the walk knows it offline, with where it comes from; a
+/// value that depends on a branch the walk cannot decide is said to be
+/// unknown, never guessed.
+#[test]
+fn a_variable_hover_gives_its_type_and_its_value_there() {
+    let program = "\
+DEF REAL _DEPTH=5
+DEF INT _N
+R1=_DEPTH*2
+IF R5>0
+_N=1
+ENDIF
+G1 Z=-_DEPTH X=R1 Y=_N
+R1=R1+1
+M30
+";
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, program);
+    let hover = |client: &mut Client, line, character| {
+        let hover = client.request("textDocument/hover", at(URI, line, character));
+        hover["contents"]["value"]
+            .as_str()
+            .expect("markdown")
+            .to_string()
+    };
+    let depth = hover(&mut client, 6, 7);
+    assert!(depth.contains("Type: `REAL`"), "{depth}");
+    assert!(
+        depth.contains("Value here: `5`, assigned on line 1"),
+        "{depth}"
+    );
+    let r1 = hover(&mut client, 6, 15);
+    assert!(r1.contains("Value here: `10`, assigned on line 3"), "{r1}");
+    assert!(!r1.contains("Type"), "an R parameter has no DEF: {r1}");
+    // Written in a branch the walk cannot decide: 0 or 1, so unknown.
+    let n = hover(&mut client, 6, 20);
+    assert!(n.contains("Type: `INT`"), "{n}");
+    assert!(n.contains("Value here: unknown offline: `_N`"), "{n}");
+    assert!(!n.contains("`0`") && !n.contains("`1`"), "{n}");
+    // Inside the branch, the value it is given there.
+    let given = hover(&mut client, 4, 0);
+    assert!(
+        given.contains("Value after this line: `1`, assigned on line 5"),
+        "{given}"
+    );
+    // The read of R1 on line 8 sees 10, its target holds 11 after it.
+    let read = hover(&mut client, 7, 4);
+    assert!(read.contains("Value here: `10`"), "{read}");
+    let written = hover(&mut client, 7, 0);
+    assert!(
+        written.contains("Value after this line: `11`, assigned on line 8"),
+        "{written}"
+    );
+    // The DEF itself: what it starts with.
+    let defined = hover(&mut client, 0, 10);
+    assert!(defined.contains("Type: `REAL`"), "{defined}");
+    assert!(defined.contains("Value after this line: `5`"), "{defined}");
+    // A PROC parameter: its value is the caller's, unknown here.
+    client.open(
+        "untitled:DRILL.SPF",
+        "PROC DRILL(INT _DEPTH)\nG1 Z=-_DEPTH\nM17\n",
+    );
+    let shown = client.request("textDocument/hover", at("untitled:DRILL.SPF", 0, 16));
+    let shown = shown["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Type: `INT`") && shown.contains("Value: given by the caller"),
+        "{shown}"
+    );
+    let shown = client.request("textDocument/hover", at("untitled:DRILL.SPF", 1, 8));
+    let shown = shown["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Type: `INT`") && shown.contains("Value here: unknown offline"),
+        "{shown}"
+    );
+    client.stop();
+}
+
+/// A value measured on the machine is unknown offline, naming the
+/// measurement; with the values file of `sinuprep.toml` it is that file's
+/// value, and the hover says which file and line gave it.
+#[test]
+fn a_variable_hover_names_the_measurement_or_the_values_file() {
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-values-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let program = "CYCLE977(1,,,1,20)\nR10=_OVR[16]\nG1 X=R10\nM30\n";
+    let uri = format!("file://{}", dir.join("PROBE.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, program);
+    let hover = client.request("textDocument/hover", at(&uri, 2, 6));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Value here: unknown offline: `R10` (measured on line 1"),
+        "{shown}"
+    );
+    client.stop();
+
+    std::fs::write(dir.join("probe.values"), "R10=0.25\n").expect("values");
+    std::fs::write(dir.join("sinuprep.toml"), "values = \"probe.values\"\n").expect("toml");
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, program);
+    let hover = client.request("textDocument/hover", at(&uri, 2, 6));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("Value here: `0.25`, supplied by ") && shown.contains("probe.values:1"),
+        "{shown}"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
 }

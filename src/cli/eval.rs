@@ -419,7 +419,8 @@ fn swivel_json(site: &CallSite, machine: &OnMachine) -> serde_json::Value {
     }
 }
 
-fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {
+/// A value as `eval` prints it (an editor's hover on a variable too).
+pub(crate) fn value_text(value: &Result<Value, crate::semantic::value::Unknown>) -> String {
     match value {
         Ok(Value::Number(n)) => format(*n, 9),
         Ok(Value::Text(t)) => format!("\"{t}\""),

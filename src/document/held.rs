@@ -4,6 +4,7 @@
 //! be shared across threads: the analysis is made by whichever asks first
 //! (a thread of its own for a large program), and the others wait for it.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
 
 use self_cell::self_cell;
@@ -13,11 +14,14 @@ use super::Analyzed;
 use crate::lint::Settings;
 use crate::semantic::uses::Uses;
 
-/// The analysis of one version of the text, made when first asked for.
+/// The analysis of one version of the text, made when first asked for;
+/// `None` if it was stopped because the version went stale.
 #[derive(Default)]
 struct Lazy<'t> {
-    analyzed: OnceLock<Analyzed<'t>>,
+    analyzed: OnceLock<Option<Analyzed<'t>>>,
     uses: OnceLock<Uses>,
+    /// The text or the settings changed since: an analysis under way stops.
+    stale: AtomicBool,
 }
 
 self_cell!(
@@ -64,29 +68,44 @@ impl Held {
         Self::open(self.into_owner())
     }
 
+    /// Says that this version is no longer wanted (another took its place
+    /// while a thread still reads it): an analysis of it under way stops
+    /// within a few thousand lines, and none is made after.
+    pub fn stop(&self) {
+        self.with_dependent(|_, lazy| lazy.stale.store(true, Ordering::Relaxed));
+    }
+
     /// Answers from the analysis of the text as it is now, made with
-    /// `settings` under the name `name` by the first question asked.
+    /// `settings` under the name `name` by the first question asked;
+    /// `None` once the version is [stopped](Self::stop) before its analysis
+    /// was made.
     pub fn with_analysis<R>(
         &self,
         name: &str,
         settings: &Settings,
         answer: impl for<'a, 't> FnOnce(Analysis<'a, 't>) -> R,
-    ) -> R {
+    ) -> Option<R> {
         self.with_dependent(|text, lazy| {
             let analyzed = lazy.analyzed.get_or_init(|| {
                 // As `Document::analyze` (each program of an archive), the
                 // name borrowed for no longer than the analysis runs.
                 let source = text.bytes();
-                super::archive::analyze(name, source, settings).unwrap_or_else(|| {
+                let stale = || lazy.stale.load(Ordering::Relaxed);
+                if stale() {
+                    return None;
+                }
+                // An archive's programs are analysed whole: an archive is
+                // the size of a few programs, not of a CAM program.
+                super::archive::analyze(name, source, settings).or_else(|| {
                     let kind = crate::syntax::program_kind(Some(name), source);
-                    crate::lint::analyze_program(source, name, kind, settings)
+                    crate::lint::analyze_program_until(source, name, kind, settings, &stale)
                 })
             });
-            answer(Analysis {
+            Some(answer(Analysis {
                 text,
-                analyzed,
+                analyzed: analyzed.as_ref()?,
                 uses: &lazy.uses,
-            })
+            }))
         })
     }
 }
@@ -109,6 +128,33 @@ mod tests {
                 analysis.analyzed.findings.iter().map(|f| f.code).collect(),
             )
         })
+        .expect("a version not stopped")
+    }
+
+    /// A version stopped before it is analysed is never analysed: the
+    /// requests about it get no answer from it, and the next version is
+    /// analysed as usual.
+    #[test]
+    fn a_stopped_version_is_not_analysed() {
+        let settings = Settings::default();
+        let held = Held::open(Text::new(
+            b"GOTOF NOWHERE
+M30
+"
+            .to_vec(),
+        ));
+        held.stop();
+        let answered = held.with_analysis("A.MPF", &settings, |_| ());
+        assert_eq!(answered, None);
+        let held = held.edit(|text| {
+            text.replace(
+                6..13,
+                b"END
+END:",
+            )
+        });
+        let (_, codes) = findings(&held, &settings);
+        assert!(!codes.contains(&"N001"), "{codes:?}");
     }
 
     /// One analysis answers until the text changes; the next reads the

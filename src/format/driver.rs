@@ -348,11 +348,10 @@ struct ProgramEnd {
 
 impl ProgramEnd {
     fn new(model: &Model) -> Self {
-        let structure = model.structure();
         Self {
             main: model.kind == ProgramKind::Main,
             ended: false,
-            jumped_to: structure.numbers.iter().map(|&(_, row)| row).collect(),
+            jumped_to: model.block_numbers().iter().map(|&(_, row)| row).collect(),
             next_m: None,
             searched_to: 0,
         }

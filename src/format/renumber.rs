@@ -1,8 +1,8 @@
 //! `--renumber START,STEP`: the numbered blocks numbered again in order
 //! (blocks without a number stay without), and every reference to a block
 //! number rewritten to the new number of the block it lands on: GOTO,
-//! GOTOF, GOTOB, GOTOC and CASE targets (where each lands is the block
-//! structure's answer, the walk's) and `CALL BLOCK ... TO ...` ranges of
+//! GOTOF, GOTOB, GOTOC and CASE targets (where each lands is the
+//! model's answer, the walk's) and `CALL BLOCK ... TO ...` ranges of
 //! the program itself. (`REPEAT` names labels only, as the grammar reads
 //! it: a label is never renumbered.)
 //!
@@ -76,7 +76,6 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
     for &(row, old, _) in &numbered {
         rows_of.entry(old).or_default().push(row);
     }
-    let structure = model.structure();
     let new_text = |landing: Option<usize>, span: Span, what: &str| {
         landing
             .and_then(|row| new_of_row.get(&row))
@@ -103,7 +102,7 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
             if target.block_number(source).is_none() || goto.kind == GotoKind::Start {
                 continue;
             }
-            let landing = structure.resolve(model, target, goto.kind, row);
+            let landing = model.landing(target, goto.kind, row);
             let span = number_digits(target);
             replacements.push((span, new_text(landing, span, "this jump")?));
         }

@@ -25,6 +25,7 @@ use crate::registry::{cycle600_rewritable, invalid_swivel_data};
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::model::ModelBuilder;
 use crate::semantic::swivels::{self, OnMachine};
+pub use crate::semantic::walk::Stop;
 use crate::semantic::{analyze, Analysis, CallSite, Environment, Heads, Model, Supplied};
 use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
@@ -187,6 +188,20 @@ pub fn analyze_program<'src>(
     analyze_with(PlainScanner::Scan, source, name, kind, settings)
 }
 
+/// [`analyze_program`], stopped as soon as `stop` says so: `None` then. It
+/// is asked every few thousand lines, between the rules' last steps and
+/// during the CYCLE600 walk; an editor's server stops the analysis of a
+/// version of a document the user has changed since.
+pub fn analyze_program_until<'src>(
+    source: &'src [u8],
+    name: &str,
+    kind: ProgramKind,
+    settings: &Settings,
+    stop: Stop,
+) -> Option<Analyzed<'src>> {
+    analyze_stopping(PlainScanner::Scan, source, name, kind, settings, Some(stop))
+}
+
 /// [`check`] with the plain-line scanner given: [`PlainScanner::ParseEveryLine`]
 /// builds every line's tree, the reference the shortcut is tested against
 /// (`tests/lint.rs`, the `check` fuzz target).
@@ -208,6 +223,23 @@ fn analyze_with<'src>(
     kind: ProgramKind,
     settings: &Settings,
 ) -> Analyzed<'src> {
+    analyze_stopping(scan_plain_line, source, name, kind, settings, None)
+        .expect("only a stop ends an analysis early")
+}
+
+/// Lines parsed between two questions to a [`Stop`] (plain lines: see
+/// [`PlainRun::LINES`]).
+const LINES_BETWEEN_STOPS: usize = 4096;
+
+fn analyze_stopping<'src>(
+    scan_plain_line: PlainScanner,
+    source: &'src [u8],
+    name: &str,
+    kind: ProgramKind,
+    settings: &Settings,
+    stop: Option<Stop>,
+) -> Option<Analyzed<'src>> {
+    let stopped = || stop.is_some_and(|stop| stop());
     let Settings {
         selection,
         environment,
@@ -232,6 +264,10 @@ fn analyze_with<'src>(
     // Asked again only after a line that is not plain (a DEFINE is none):
     // a CAM program's millions of plain lines pay a test of a local.
     let mut macros_reach_plain_lines = model.macros_reach_plain_lines();
+    // The stop is asked where the line pass already branches: at each run
+    // of plain lines given to the rules, and at a parsed line at least
+    // LINES_BETWEEN_STOPS after the last question. A plain line pays nothing.
+    let mut next_stop = 0;
     for (row, line) in scanned_lines_with(source, scan_plain_line).enumerate() {
         let raw = match line {
             Scanned::Plain(plain) if !(macros_reach_plain_lines && model.expands(plain.raw)) => {
@@ -247,11 +283,20 @@ fn analyze_with<'src>(
                 });
                 if plain_run.lines.len() == PlainRun::LINES {
                     plain_run.give(&file, &mut model, &mut checkers, &mut found);
+                    if stopped() {
+                        return None;
+                    }
                 }
                 continue;
             }
             other => other.raw(),
         };
+        if row >= next_stop {
+            if stopped() {
+                return None;
+            }
+            next_stop = row + LINES_BETWEEN_STOPS;
+        }
         plain_run.give(&file, &mut model, &mut checkers, &mut found);
         let tree = model.parse(raw);
         if let LineKind::Block(block) = &tree.kind {
@@ -272,9 +317,24 @@ fn analyze_with<'src>(
     let model = file.model();
     found.extend(model.syntax.iter().cloned());
     for checker in &mut checkers {
+        if stopped() {
+            return None;
+        }
         checker.finish(&file, &mut found);
     }
-    let analysis = walk.then(|| analyze(model, &settings.supplied, settings.heads.as_ref()));
+    let analysis = match (walk, stop) {
+        (false, _) => None,
+        (true, None) => Some(analyze(model, &settings.supplied, settings.heads.as_ref())),
+        (true, Some(stop)) => Some(crate::semantic::walk::analyze_until(
+            model,
+            &settings.supplied,
+            settings.heads.as_ref(),
+            stop,
+        )?),
+    };
+    if stopped() {
+        return None;
+    }
     if let Some(analysis) = &analysis {
         found.extend(cycle600_findings(model, analysis, settings));
     }
@@ -311,13 +371,13 @@ fn analyze_with<'src>(
         .filter(|line| crate::syntax::macros::name_in_operator_position(line))
         .count();
     let unresolved_calls = file.take_unresolved().into_iter().collect();
-    Analyzed {
+    Some(Analyzed {
         model: file.into_model(),
         walk: analysis,
         findings: kept,
         unresolved_calls,
         names_as_operators,
-    }
+    })
 }
 
 /// The lines with syntax errors among `found` (sorted), each once.
@@ -448,4 +508,60 @@ fn rewritable(site: &CallSite, edits: Vec<Edit>, form: Form) -> Diagnostic {
             applicability: Applicability::Safe,
             edits,
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cell::Cell;
+
+    /// An analysis told to stop stops at once, wherever it is: in the
+    /// lines, between the rules' last steps, in the CYCLE600 walk. Counted,
+    /// not timed: the n-th question answered `stop` is the last one asked.
+    #[test]
+    fn an_analysis_stops_when_told() {
+        let mut text = String::from("DEF REAL _A=30\n");
+        for n in 0..600 {
+            text.push_str(&format!("G1 X{n} Y1\n"));
+        }
+        for n in 0..9_000 {
+            text.push_str(&format!("IF R{n}>0\nR1=_A+{n}\nENDIF\n"));
+        }
+        text.push_str("CYCLE600(0,\"TC1\",0,57,0,0,0,_A,0,0,0,0,0,1,0,57)\nM30\n");
+        let source = text.as_bytes();
+        let settings = Settings::default();
+        let kind = ProgramKind::Main;
+        let asked = Cell::new(0);
+        let never = || {
+            asked.set(asked.get() + 1);
+            false
+        };
+        let whole = analyze_program_until(source, "BIG.MPF", kind, &settings, &never)
+            .expect("never told to stop");
+        let questions = asked.get();
+        let complete = analyze_program(source, "BIG.MPF", kind, &settings);
+        assert_eq!(whole.findings, complete.findings);
+        assert_eq!(whole.walk.map(|w| w.calls.len()), Some(1));
+        // 27,603 lines: 9 questions in the lines (the first, after each of
+        // two runs of 256 plain lines, then every 4,096 parsed lines), one
+        // before each rule's last step, 5 in the walk (18,600 lines
+        // walked), one after it.
+        assert!(questions > 20, "{questions}");
+        let walked = questions - 5..questions;
+        let lines = [1, 2, 3, 4, 9, 10];
+        for stop_at in
+            lines
+                .into_iter()
+                .chain([questions / 2, walked.start, walked.end - 1, questions])
+        {
+            asked.set(0);
+            let told = || {
+                asked.set(asked.get() + 1);
+                asked.get() == stop_at
+            };
+            let stopped = analyze_program_until(source, "BIG.MPF", kind, &settings, &told);
+            assert!(stopped.is_none(), "told at question {stop_at}");
+            assert_eq!(asked.get(), stop_at, "no question after the stop");
+        }
+    }
 }

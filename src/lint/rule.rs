@@ -2,7 +2,7 @@
 //! one line at a time.
 
 use std::cell::{OnceCell, RefCell};
-use std::collections::{BTreeSet, HashSet};
+use std::collections::BTreeSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::addresses::{self, Address};
@@ -27,9 +27,6 @@ pub struct FileContext<'a, 'src> {
     /// The file holds declarations only (`.DEF`, `.INI`, `.GUD`, `.COM`),
     /// as its name says: decided once, asked on every line.
     pub definition_file: bool,
-    /// Block numbers some jump names, announced during the line pass.
-    wanted_numbers: RefCell<HashSet<u64>>,
-    block_numbers: OnceCell<Vec<(u64, usize)>>,
     /// The program's model, complete once the line pass is over.
     model: OnceCell<Model<'src>>,
     /// Subprograms called whose declaration was found nowhere, so that
@@ -50,8 +47,6 @@ impl<'a, 'src> FileContext<'a, 'src> {
             kind,
             environment,
             definition_file: crate::lint::rules::support::is_definition_file(name),
-            wanted_numbers: RefCell::default(),
-            block_numbers: OnceCell::new(),
             model: OnceCell::new(),
             unresolved: RefCell::default(),
         }
@@ -94,22 +89,6 @@ impl<'a, 'src> FileContext<'a, 'src> {
     /// Every label of the file; asked for once the line pass is over.
     pub fn labels(&self) -> &Labels {
         &self.model().labels
-    }
-
-    /// Announces, during the line pass, a block number a jump names.
-    pub fn want_block_number(&self, number: u64) {
-        self.wanted_numbers.borrow_mut().insert(number);
-    }
-
-    /// Every block number some jump names (see [`Self::want_block_number`])
-    /// with its row, sorted by number; asked for once the line pass is over,
-    /// and read from the file then: most programs never jump to a number,
-    /// and keeping every number as lines go by would cost more memory than
-    /// the rest of `check`.
-    pub fn block_numbers(&self) -> &[(u64, usize)] {
-        self.block_numbers.get_or_init(|| {
-            crate::syntax::plain::block_numbers(self.source, &self.wanted_numbers.borrow())
-        })
     }
 }
 

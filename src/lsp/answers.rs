@@ -9,6 +9,7 @@ use crate::document::text::Text;
 use crate::lint::Settings;
 use crate::semantic::cycle800;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
+use crate::semantic::walk;
 use crate::semantic::{Analysis, Model};
 use crate::span::{ColumnUnit, Span};
 use crate::syntax::tree::StatementKind;
@@ -114,7 +115,86 @@ impl<'a, 't> Snapshot<'a, 't> {
             ),
             None => self.elsewhere(found),
         };
+        let text = match found.namespace {
+            Namespace::Variable => text + &self.variable_facts(found),
+            _ => text,
+        };
         Some(markdown(text, self.range(found.span)))
+    }
+
+    /// On a variable: the type its DEF or PROC gives it, and the value it
+    /// holds at this use as the CYCLE600 walk finds it offline, with where
+    /// that comes from; a value the walk cannot know is said to be unknown,
+    /// with why.
+    fn variable_facts(&self, found: &Use) -> String {
+        let mut text = String::new();
+        let declared = self
+            .uses()
+            .definition(self.model, found)
+            .and_then(|definition| self.declaration(definition));
+        if let Some((data_type, parameter)) = &declared {
+            text.push_str(&format!("\n\nType: `{data_type}`"));
+            if *parameter && found.role == Role::Defines {
+                text.push_str("\n\nValue: given by the caller");
+                return text;
+            }
+        }
+        let probe = walk::Probe {
+            row: found.row,
+            name: found.span,
+            after: matches!(found.role, Role::Writes | Role::Defines),
+        };
+        let settings = self.settings;
+        let seen = walk::value_at(
+            self.model,
+            &settings.supplied,
+            settings.heads.as_ref(),
+            &probe,
+        );
+        let value = match seen {
+            walk::Seen::Value {
+                value: Ok(value),
+                origin,
+                ..
+            } => {
+                let shown = crate::cli::eval::value_text(&Ok(value));
+                match origin {
+                    Some(origin) => format!("`{shown}`, {origin}"),
+                    None => format!("`{shown}`"),
+                }
+            }
+            walk::Seen::Value {
+                value: Err(why), ..
+            } => why.to_string(),
+            walk::Seen::NotReached => {
+                "not known offline: the walk does not reach this line".to_string()
+            }
+            walk::Seen::Differs => {
+                "not known offline: it depends on the way the program comes here".to_string()
+            }
+        };
+        let when = if probe.after {
+            "Value after this line"
+        } else {
+            "Value here"
+        };
+        text.push_str(&format!("\n\n{when}: {value}"));
+        text
+    }
+
+    /// The type a DEF or a PROC parameter (`true`) gives the name it defines
+    /// at `definition`, as written: the model's symbol.
+    fn declaration(&self, definition: &Use) -> Option<(String, bool)> {
+        let symbol = self
+            .model
+            .symbols
+            .iter()
+            .find(|s| s.span == definition.span)?;
+        let written = symbol.data_type.span.of(self.text.bytes());
+        Some((
+            String::from_utf8_lossy(written).into_owned(),
+            symbol.parameter,
+        ))
     }
 
     /// On a CYCLE800 call: each parameter's meaning, the plane's tool

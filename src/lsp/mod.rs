@@ -172,13 +172,18 @@ struct Open {
 
 impl Open {
     /// The held document, to be changed: the worker's copy, if it still
-    /// reads one, keeps the old text.
+    /// reads one, keeps the old text, and stops analysing it.
     fn take_held(held: Arc<Held>) -> Held {
-        Arc::try_unwrap(held).unwrap_or_else(|shared| Held::open(shared.text().clone()))
+        Arc::try_unwrap(held).unwrap_or_else(|shared| {
+            shared.stop();
+            Held::open(shared.text().clone())
+        })
     }
 
-    /// Answers from this version's analysis, made by the first question.
-    fn with_snapshot<R>(&self, unit: ColumnUnit, answer: impl FnOnce(&Snapshot) -> R) -> R {
+    /// Answers from this version's analysis, made by the first question;
+    /// `None` for a version another took the place of before its analysis
+    /// was made.
+    fn with_snapshot<R>(&self, unit: ColumnUnit, answer: impl FnOnce(&Snapshot) -> R) -> Option<R> {
         self.held
             .with_analysis(&self.name, &self.settings, |analysis| {
                 answer(&Snapshot::new(analysis, &self.name, &self.settings, unit))
@@ -474,7 +479,9 @@ impl Server<'_> {
         uris.sort_by_key(|uri| uri.as_str());
         let mut out = Vec::new();
         for uri in uris {
-            let symbols = self.documents[uri].with_snapshot(self.unit, |s| s.symbols());
+            let symbols = self.documents[uri]
+                .with_snapshot(self.unit, |s| s.symbols())
+                .unwrap_or_default();
             let matching = symbols
                 .into_iter()
                 .filter(|symbol| symbol.name.to_uppercase().contains(&query));
@@ -539,6 +546,10 @@ impl Server<'_> {
         };
         let answer = open
             .with_snapshot(self.unit, |snapshot| answer(snapshot, params))
+            .ok_or_else(|| {
+                let why = "the document changed while it was analysed";
+                (ErrorCode::ContentModified, why.to_string())
+            })?
             .map_err(|why| (ErrorCode::RequestFailed, why))?;
         serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }

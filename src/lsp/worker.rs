@@ -3,7 +3,8 @@
 //! about the others. One thread takes the documents in the order they
 //! changed; of a document changed again before its turn, only the newest
 //! version is analysed, so findings are published in order and never for a
-//! version older than one already published.
+//! version older than one already published. A version changed while it is
+//! analysed stops being analysed within a few thousand lines, unpublished.
 
 use std::thread::JoinHandle;
 
@@ -57,14 +58,18 @@ fn work(queue: &Receiver<Job>, out: &Sender<Message>) {
         }
         for job in newest {
             let analysed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                let open = job.open.as_ref();
-                open.map_or_else(Vec::new, |open| {
-                    open.with_snapshot(job.unit, |snapshot| snapshot.diagnostics(&job.uri))
-                })
+                match job.open.as_ref() {
+                    Some(open) => {
+                        open.with_snapshot(job.unit, |snapshot| snapshot.diagnostics(&job.uri))
+                    }
+                    None => Some(Vec::new()),
+                }
             }));
             // A failure inside sinuprep is said on stderr by the panic
-            // itself; the document keeps the findings it had.
-            let Ok(diagnostics) = analysed else {
+            // itself; the document keeps the findings it had. A version
+            // changed while it was analysed stopped: the newer one is
+            // queued behind it.
+            let Ok(Some(diagnostics)) = analysed else {
                 continue;
             };
             let params = lsp::PublishDiagnosticsParams::new(job.uri, diagnostics, None);

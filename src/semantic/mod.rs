@@ -19,6 +19,7 @@ pub(crate) mod frames;
 pub mod functions;
 pub mod head_def;
 pub mod highlight;
+pub mod jumps;
 pub(crate) mod labels;
 pub(crate) mod line_order;
 pub mod machine;

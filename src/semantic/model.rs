@@ -14,6 +14,7 @@ use std::sync::{Arc, OnceLock};
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
+use crate::semantic::jumps::{self, Target};
 use crate::semantic::labels::Labels;
 use crate::semantic::line_order;
 use crate::semantic::structure::Structure;
@@ -22,9 +23,10 @@ use crate::syntax::lines::RawLine;
 use crate::syntax::macros::{Macros, Use};
 use crate::syntax::plain::{scanned_lines, PlainFacts, Scanned};
 use crate::syntax::tree::{
-    upper, Block, DataType, Line, LineKind, Statement, StatementKind, Variable, Word, WordValue,
+    upper, Block, DataType, GotoKind, GotoTarget, Line, LineKind, Statement, StatementKind,
+    Variable, Word, WordValue,
 };
-use crate::syntax::visit::reads;
+use crate::syntax::visit::{gotos, reads};
 use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 
 /// Plain lines passed to [`ModelBuilder::plain_lines`] at once, at most.
@@ -76,6 +78,11 @@ pub struct Model<'src> {
     /// The macros written in the program's lines and what each stood for,
     /// in source order (its trees are read from the expansions).
     pub macro_uses: Vec<Use>,
+    /// Block numbers some jump names (`GOTOF N100`, `CASE ... GOTOF 20`).
+    jump_numbers: HashSet<u64>,
+    /// Those block numbers with their lines, sorted: read from the file
+    /// when first asked for (most programs never jump to a number).
+    block_numbers: OnceLock<Vec<(u64, usize)>>,
     /// Built when first asked for, by whichever thread asks.
     structure: OnceLock<Structure>,
 }
@@ -141,6 +148,41 @@ impl<'src> Model<'src> {
             .ends
             .iter()
             .map(|(&open, &(_, end))| (open, end))
+    }
+
+    /// The lines that hold `target`, in order.
+    pub fn target_rows(&self, target: &Target) -> Vec<usize> {
+        match target {
+            Target::Label(name) => self.labels.rows(name).collect(),
+            Target::Number(number) => {
+                let numbers = self.block_numbers();
+                let first = numbers.partition_point(|(n, _)| n < number);
+                numbers[first..]
+                    .iter()
+                    .take_while(|(n, _)| n == number)
+                    .map(|&(_, row)| row)
+                    .collect()
+            }
+        }
+    }
+
+    /// The line a jump of `kind` from line `from` to `target` lands on,
+    /// searching as the control does; `None` where the search finds none
+    /// (or the target is computed).
+    pub fn landing(&self, target: &GotoTarget, kind: GotoKind, from: usize) -> Option<usize> {
+        self.target_landing(&Target::of(self.source, target)?, kind, from)
+    }
+
+    /// [`Self::landing`] of a jump to `target`.
+    pub fn target_landing(&self, target: &Target, kind: GotoKind, from: usize) -> Option<usize> {
+        jumps::search(&self.target_rows(target), kind, from)
+    }
+
+    /// Every block number a jump names, with its line, sorted by number and
+    /// then line; read from the file when first asked for.
+    pub(crate) fn block_numbers(&self) -> &[(u64, usize)] {
+        self.block_numbers
+            .get_or_init(|| crate::syntax::plain::block_numbers(self.source, &self.jump_numbers))
     }
 
     /// The block structure the walk follows, built when first asked for.
@@ -338,6 +380,7 @@ pub struct ModelBuilder<'src> {
     symbols: Vec<Symbol>,
     read_names: HashSet<String>,
     stopre: Vec<usize>,
+    jump_numbers: HashSet<u64>,
     first_executable: Option<(usize, usize)>,
     declarations_end: Option<usize>,
     /// The macros the next line is read with: the machine's, and those the
@@ -362,6 +405,7 @@ impl<'src> ModelBuilder<'src> {
             symbols: Vec::new(),
             read_names: HashSet::new(),
             stopre: Vec::new(),
+            jump_numbers: HashSet::new(),
             first_executable: None,
             declarations_end: None,
             macros: Arc::default(),
@@ -447,6 +491,9 @@ impl<'src> ModelBuilder<'src> {
         if view.plain {
             return;
         }
+        for goto in gotos(block) {
+            jumps::named_number(source, goto.target.as_ref(), &mut self.jump_numbers);
+        }
         for (index, statement) in block.statements.iter().enumerate() {
             self.read_names
                 .extend(view.reads(index).map(|v| upper(v.name.text(source))));
@@ -519,6 +566,8 @@ impl<'src> ModelBuilder<'src> {
             first_executable: self.first_executable,
             declarations_end: self.declarations_end,
             macro_uses: self.macro_uses,
+            jump_numbers: self.jump_numbers,
+            block_numbers: OnceLock::new(),
             structure: OnceLock::new(),
         }
     }
@@ -528,6 +577,25 @@ impl<'src> ModelBuilder<'src> {
 mod tests {
     use super::*;
     use crate::syntax::tree::TypeKind;
+
+    /// Where a jump lands, for every reader: a label or a block number
+    /// (`N20`, `N020`, `GOTOF 20` the same block), searched in the jump's
+    /// direction; numbers no jump names are not read.
+    #[test]
+    fn the_model_says_where_each_jump_lands() {
+        let program = "N10 GOTOF N020\nN20 LBL:\nN30 GOTOB LBL\nN40 GOTOF LBL\nN20 M30\n";
+        let model = Model::of(program.as_bytes());
+        assert_eq!(model.block_numbers(), [(20, 1), (20, 4)]);
+        assert_eq!(model.target_rows(&Target::Number(20)), [1, 4]);
+        assert_eq!(model.target_rows(&Target::Number(30)), [] as [usize; 0]);
+        let label = Target::Label("LBL".to_string());
+        assert_eq!(model.target_landing(&label, GotoKind::Backward, 2), Some(1));
+        assert_eq!(model.target_landing(&label, GotoKind::Forward, 3), None);
+        let number = Target::Number(20);
+        assert_eq!(model.target_landing(&number, GotoKind::Forward, 0), Some(1));
+        assert_eq!(model.target_landing(&number, GotoKind::Forward, 1), Some(4));
+        assert_eq!(model.target_landing(&number, GotoKind::Backward, 0), None);
+    }
 
     const PROGRAM: &str = "PROC PART(REAL DEPTH)\nDEF REAL _X, COUNT\nEXTERN SUB(INT)\nDEF NCK INT LIMIT\nSTART:\nG0 X10\nSTOPRE\nR1=DEPTH+_X\nIF R1>0 GOTOB START\nM17\n";
 

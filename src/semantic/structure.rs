@@ -14,10 +14,7 @@ use crate::semantic::env::Writers;
 use crate::semantic::eval::key;
 use crate::semantic::frames;
 use crate::semantic::model::Model;
-use crate::syntax::plain::block_numbers;
-use crate::syntax::tree::{
-    upper, Block, Call, Expr, GotoTarget, Statement, StatementKind, SyncAction,
-};
+use crate::syntax::tree::{upper, Block, Call, Expr, Statement, StatementKind, SyncAction};
 use crate::syntax::visit::gotos;
 use crate::syntax::Lines;
 
@@ -122,9 +119,6 @@ pub(crate) struct Structure {
     pub(crate) ends: HashMap<usize, (Option<usize>, usize)>,
     /// ELSE line -> ENDIF line.
     pub(crate) else_ends: HashMap<usize, usize>,
-    /// (block number, line), sorted; read only when a jump names a block
-    /// number, since a CAM program has millions of them.
-    pub(crate) numbers: Vec<(u64, usize)>,
     /// First line of a region a backward jump repeats -> its last line.
     pub(crate) loop_starts: HashMap<usize, usize>,
     /// Where each name is written, for forgetting a region's names.
@@ -148,7 +142,6 @@ impl Structure {
         let mut structure = Structure {
             ends: HashMap::new(),
             else_ends: HashMap::new(),
-            numbers: Vec::new(),
             loop_starts: HashMap::new(),
             writers: Arc::default(),
             rotation_lines: Vec::new(),
@@ -199,18 +192,11 @@ impl Structure {
                 structure.else_ends.insert(else_line, end);
             }
         }
-        let wanted: HashSet<u64> = jumps
-            .iter()
-            .filter_map(|(_, goto)| goto.target.as_ref()?.block_number(source))
-            .collect();
-        if !wanted.is_empty() {
-            structure.numbers = block_numbers(source, &wanted);
-        }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
         for (line, goto) in jumps {
             let target = match (&goto.kind, &goto.target) {
                 (crate::syntax::tree::GotoKind::Start, _) => Some(0),
-                (kind, Some(target)) => structure.resolve(model, target, *kind, line),
+                (kind, Some(target)) => model.landing(target, *kind, line),
                 _ => None,
             };
             if let Some(target) = target.filter(|&t| t <= line) {
@@ -264,39 +250,6 @@ impl Structure {
         let first = lines.partition_point(|&line| line < start);
         let last = lines.partition_point(|&line| line < end);
         &lines[first..last.max(first)]
-    }
-
-    /// The line a jump from `from` lands on, searching as its kind says.
-    pub(crate) fn resolve(
-        &self,
-        model: &Model,
-        target: &GotoTarget,
-        kind: crate::syntax::tree::GotoKind,
-        from: usize,
-    ) -> Option<usize> {
-        use crate::syntax::tree::GotoKind;
-        let source = model.source;
-        let lines: Vec<usize> = match (target.block_number(source), target) {
-            (Some(number), _) => {
-                let first = self.numbers.partition_point(|&(n, _)| n < number);
-                let numbered = self.numbers[first..]
-                    .iter()
-                    .take_while(|&&(n, _)| n == number);
-                numbered.map(|&(_, line)| line).collect()
-            }
-            (None, GotoTarget::Label(name)) => {
-                model.labels.rows(&upper(name.text(source))).collect()
-            }
-            (None, _) => return None,
-        };
-        let forward = lines.iter().copied().find(|&l| l > from);
-        let backward = lines.iter().copied().rev().find(|&l| l <= from);
-        match kind {
-            GotoKind::Forward => forward,
-            GotoKind::Backward => backward,
-            GotoKind::Both | GotoKind::Conditional => forward.or(backward),
-            GotoKind::Start => Some(0),
-        }
     }
 }
 

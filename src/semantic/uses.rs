@@ -114,7 +114,7 @@ impl Uses {
             .find(|g| target_span(g.target.as_ref()) == Some(of.span))
         {
             let target = goto.target.as_ref()?;
-            return model.structure().resolve(model, target, goto.kind, of.row);
+            return model.landing(target, goto.kind, of.row);
         }
         // A REPEAT searches its label backward from the line before it.
         let labels = model.labels.rows(&of.name);

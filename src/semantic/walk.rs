@@ -88,9 +88,83 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
+    let (analysis, env, _) =
+        run_probed(model, supplied, heads, None, None).expect("only a stop ends a walk early");
+    (analysis, env)
+}
+
+/// Asked now and then during an analysis whether to stop (its result is no
+/// longer wanted): `true` stops it.
+pub type Stop<'a> = &'a dyn Fn() -> bool;
+
+/// Lines walked between two questions to a [`Stop`].
+const LINES_BETWEEN_STOPS: usize = 4096;
+
+/// [`analyze`], stopped as soon as `stop` says so: `None` then.
+pub fn analyze_until(
+    model: &Model,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+    stop: Stop,
+) -> Option<Analysis> {
+    Some(run_probed(model, supplied, heads, None, Some(stop))?.0)
+}
+
+/// Where a value is looked at on the walk: the variable named at `name` (a
+/// span of line `row`), as the use reads it, or as the statement holding
+/// it leaves it (`after`: an assignment's target, a DEF).
+#[derive(Clone, Debug)]
+pub struct Probe {
+    pub row: usize,
+    pub name: Span,
+    pub after: bool,
+}
+
+/// What the walk finds in a variable at a [`Probe`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Seen {
+    /// The walk does not reach the line (a branch it knows is not taken,
+    /// or nesting too deep to follow).
+    NotReached,
+    /// Its value there, or why it has none offline, and where it comes
+    /// from: what `eval` shows for a CYCLE600 argument.
+    Value {
+        key: String,
+        value: Result<Value, Unknown>,
+        origin: Option<Origin>,
+    },
+    /// The walk reaches the line more than once and finds different values.
+    Differs,
+}
+
+/// What the variable at `probe` holds there, as the walk that evaluates the
+/// CYCLE600 calls finds it.
+pub fn value_at(model: &Model, supplied: &Supplied, heads: Option<&Heads>, probe: &Probe) -> Seen {
+    let Some((_, _, seen)) = run_probed(model, supplied, heads, Some(probe), None) else {
+        return Seen::NotReached;
+    };
+    let mut seen = seen.into_iter();
+    match (seen.next(), seen.next()) {
+        (None, _) => Seen::NotReached,
+        (Some(first), None) => first,
+        (Some(first), Some(second)) if first == second && seen.all(|s| s == first) => first,
+        _ => Seen::Differs,
+    }
+}
+
+fn run_probed(
+    model: &Model,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+    probe: Option<&Probe>,
+    stop: Option<Stop>,
+) -> Option<(Analysis, Env, Vec<Seen>)> {
     let mut modes = HashMap::new();
     loop {
-        let (walker, env) = walk_once(model, supplied, heads, &modes);
+        let (walker, env) = walk_once(model, supplied, heads, &modes, probe, stop);
+        if walker.stopped {
+            return None;
+        }
         let assumed = walker.assumed();
         let learned: Vec<(usize, Mode)> = walker
             .analysis
@@ -103,7 +177,7 @@ pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analys
         if learned.is_empty() {
             let mut analysis = walker.analysis;
             analysis.calls.sort_by_key(|c| (c.line, c.statement.start));
-            return (analysis, env);
+            return Some((analysis, env, walker.seen));
         }
         modes.extend(learned);
     }
@@ -115,6 +189,8 @@ fn walk_once<'a>(
     supplied: &'a Supplied,
     heads: Option<&'a Heads>,
     modes: &'a HashMap<usize, Mode>,
+    probe: Option<&'a Probe>,
+    stop: Option<Stop<'a>>,
 ) -> (Walker<'a>, Env) {
     let structure = model.structure();
     let mut calls = [Vec::new(), Vec::new(), Vec::new()];
@@ -142,10 +218,47 @@ fn walk_once<'a>(
         forgotten: Vec::new(),
         replayed: Vec::new(),
         too_deep: HashSet::new(),
+        probe,
+        seen: Vec::new(),
+        stop,
+        lines_walked: 0,
+        stopped: false,
     };
     let mut env = Env::of_program(Arc::clone(&structure.writers));
     walker.walk(0, model.lines.len(), &mut env);
     (walker, env)
+}
+
+/// The key of the variable `statement` names at `name`, with its indices
+/// evaluated in `scope`; `None` if it names none there (or an array whole).
+fn probe_key(
+    source: &[u8],
+    statement: &Statement,
+    name: Span,
+    scope: &dyn crate::semantic::eval::Lookup,
+) -> Option<Result<String, Unknown>> {
+    let whole = |at: Span| (at == name).then(|| Ok(key(&upper(at.of(source)), &[])));
+    match &statement.kind {
+        StatementKind::Assign(assign) if assign.target.name.span == name => {
+            return Some(variable_key(source, &assign.target, scope));
+        }
+        StatementKind::For { variable, .. } if variable.span == name => return whole(name),
+        StatementKind::Def(def) => {
+            let declared = def.variables.iter().find(|d| d.name.span == name);
+            if let Some(declarator) = declared {
+                return declarator
+                    .dimensions
+                    .is_empty()
+                    .then(|| whole(name))
+                    .flatten();
+            }
+        }
+        _ => {}
+    }
+    crate::syntax::visit::reads(statement)
+        .into_iter()
+        .find(|variable| variable.name.span == name)
+        .map(|variable| variable_key(source, variable, scope))
 }
 
 /// What a CYCLE600 call does, by its `_SW_REC`.
@@ -192,6 +305,14 @@ struct Walker<'a> {
     replayed: Vec<CallSite>,
     /// Lines of calls reported as nested too deep.
     too_deep: HashSet<usize>,
+    /// A use whose value is asked for, and what each arrival at it found.
+    probe: Option<&'a Probe>,
+    seen: Vec<Seen>,
+    /// Asked every [`LINES_BETWEEN_STOPS`] lines whether to stop; once it
+    /// says so, every region ends where it is.
+    stop: Option<Stop<'a>>,
+    lines_walked: usize,
+    stopped: bool,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
@@ -248,7 +369,13 @@ impl<'a> Walker<'a> {
     fn walk_region(&mut self, start: usize, end: usize, env: &mut Env) {
         let mut pc = start;
         while pc < end {
+            if self.stop.is_some() && self.stops() {
+                return;
+            }
             self.enter(pc, env);
+            if self.probe.is_some_and(|probe| probe.row == pc) {
+                self.look(pc, env, true);
+            }
             if let Some(statement) = self.structure.marked_call(pc) {
                 self.replay(pc, statement, env);
             }
@@ -327,6 +454,16 @@ impl<'a> Walker<'a> {
         }
     }
 
+    /// Whether the walk is to stop, asking its [`Stop`] every few thousand
+    /// lines.
+    fn stops(&mut self) -> bool {
+        if !self.stopped && self.lines_walked.is_multiple_of(LINES_BETWEEN_STOPS) {
+            self.stopped = self.stop.is_some_and(|stop| stop());
+        }
+        self.lines_walked += 1;
+        self.stopped
+    }
+
     /// Forget what loops and skipped regions write, on arriving at `line`.
     fn enter(&mut self, line: usize, env: &mut Env) {
         // Most programs have neither: skip hashing every line number.
@@ -374,7 +511,7 @@ impl<'a> Walker<'a> {
                     let target = goto
                         .target
                         .as_ref()
-                        .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
+                        .and_then(|t| self.model.landing(t, goto.kind, pc));
                     targets.push((target, certain));
                 }
                 StatementKind::Case(case) => {
@@ -399,14 +536,15 @@ impl<'a> Walker<'a> {
                             let target = goto
                                 .target
                                 .as_ref()
-                                .and_then(|t| self.structure.resolve(self.model, t, goto.kind, pc));
+                                .and_then(|t| self.model.landing(t, goto.kind, pc));
                             targets.push((target, true));
                         }
                         None => {
                             for goto in case.branches.iter().map(|(_, g)| g).chain(&case.default) {
-                                let target = goto.target.as_ref().and_then(|t| {
-                                    self.structure.resolve(self.model, t, goto.kind, pc)
-                                });
+                                let target = goto
+                                    .target
+                                    .as_ref()
+                                    .and_then(|t| self.model.landing(t, goto.kind, pc));
                                 targets.push((target, false));
                             }
                         }
@@ -486,96 +624,143 @@ impl<'a> Walker<'a> {
             }
         }
         for statement in &block.statements {
+            let probed = self.probe.filter(|probe| {
+                probe.row == pc
+                    && statement.span.start <= probe.name.start
+                    && probe.name.end <= statement.span.end
+            });
+            if probed.is_some_and(|probe| !probe.after) {
+                self.look(pc, env, false);
+            }
             self.record_result_reads(statement, env);
-            match &statement.kind {
-                StatementKind::Def(def) => {
-                    for declarator in &def.variables {
-                        let name = upper(declarator.name.text(self.source));
-                        let default = if def.data_type.kind == TypeKind::String {
-                            Value::Text(String::new())
-                        } else {
-                            Value::Number(0.0)
-                        };
-                        if !declarator.dimensions.is_empty() {
-                            match declarator.init {
-                                None => env.declare_array(name, default),
-                                Some(_) => env.forget(
-                                    &name,
-                                    Origin::Unevaluable {
-                                        line,
-                                        why: "array initialisers are not evaluated offline".into(),
-                                    },
-                                ),
-                            }
-                            continue;
-                        }
-                        let binding = match &declarator.init {
-                            None => Binding::Known {
-                                value: default,
-                                origin: Origin::Assigned { line },
-                            },
-                            Some(Initializer::Expr(expr)) => self.binding(&name, expr, env, line),
-                            Some(Initializer::List(_)) => Binding::Unknown {
-                                origin: Origin::Unevaluable {
-                                    line,
-                                    why: "a list initialiser".into(),
-                                },
-                            },
-                        };
-                        env.set(name, binding);
-                    }
-                }
-                StatementKind::Assign(assign) => {
-                    let scope = env.scope(self.supplied, line);
-                    match variable_key(self.source, &assign.target, &scope) {
-                        Ok(key) => {
-                            let binding = self.binding(&key, &assign.value, env, line);
-                            env.set(key, binding);
-                        }
-                        Err(_) => {
-                            let name = upper(assign.target.name.text(self.source));
-                            env.forget(
+            self.step(pc, statement, env);
+            if probed.is_some_and(|probe| probe.after) {
+                self.look(pc, env, false);
+            }
+        }
+    }
+
+    /// What the probed variable holds here: a new arrival at its line
+    /// (`arriving`), or a closer look at the statement that holds it.
+    fn look(&mut self, pc: usize, env: &Env, arriving: bool) {
+        let Some(probe) = self.probe else { return };
+        let Some(block) = self.block(pc) else { return };
+        let scope = env.scope(self.supplied, pc + 1);
+        let key = block
+            .statements
+            .iter()
+            .find_map(|statement| probe_key(self.source, statement, probe.name, &scope));
+        let seen = match key {
+            Some(Ok(key)) => Seen::Value {
+                value: crate::semantic::eval::Lookup::variable(&scope, &key),
+                origin: scope.origin(&key),
+                key,
+            },
+            // An index unknown here: which element is read is unknown.
+            Some(Err(why)) => Seen::Value {
+                key: upper(probe.name.of(self.source)),
+                value: Err(why),
+                origin: None,
+            },
+            None => return,
+        };
+        match self.seen.last_mut() {
+            Some(last) if !arriving => *last = seen,
+            _ => self.seen.push(seen),
+        }
+    }
+
+    /// One statement of a block, in the walk's order.
+    fn step(&mut self, pc: usize, statement: &Statement, env: &mut Env) {
+        let line = pc + 1;
+        match &statement.kind {
+            StatementKind::Def(def) => {
+                for declarator in &def.variables {
+                    let name = upper(declarator.name.text(self.source));
+                    let default = if def.data_type.kind == TypeKind::String {
+                        Value::Text(String::new())
+                    } else {
+                        Value::Number(0.0)
+                    };
+                    if !declarator.dimensions.is_empty() {
+                        match declarator.init {
+                            None => env.declare_array(name, default),
+                            Some(_) => env.forget(
                                 &name,
                                 Origin::Unevaluable {
                                     line,
-                                    why: "its index is unknown offline".into(),
+                                    why: "array initialisers are not evaluated offline".into(),
                                 },
-                            );
+                            ),
                         }
+                        continue;
                     }
-                }
-                StatementKind::For { variable, .. } => {
-                    env.forget(
-                        &key(&upper(variable.text(self.source)), &[]),
-                        Origin::ControlFlow {
-                            line,
-                            what: "FOR loop",
+                    let binding = match &declarator.init {
+                        None => Binding::Known {
+                            value: default,
+                            origin: Origin::Assigned { line },
                         },
-                    );
+                        Some(Initializer::Expr(expr)) => self.binding(&name, expr, env, line),
+                        Some(Initializer::List(_)) => Binding::Unknown {
+                            origin: Origin::Unevaluable {
+                                line,
+                                why: "a list initialiser".into(),
+                            },
+                        },
+                    };
+                    env.set(name, binding);
                 }
-                StatementKind::SyncAction(sync) => {
-                    for name in sync_writes(self.source, sync) {
+            }
+            StatementKind::Assign(assign) => {
+                let scope = env.scope(self.supplied, line);
+                match variable_key(self.source, &assign.target, &scope) {
+                    Ok(key) => {
+                        let binding = self.binding(&key, &assign.value, env, line);
+                        env.set(key, binding);
+                    }
+                    Err(_) => {
+                        let name = upper(assign.target.name.text(self.source));
                         env.forget(
                             &name,
-                            Origin::ControlFlow {
+                            Origin::Unevaluable {
                                 line,
-                                what: "synchronized action",
+                                why: "its index is unknown offline".into(),
                             },
                         );
                     }
                 }
-                StatementKind::Call(call) => self.call(
-                    pc,
-                    statement,
-                    &upper(call.name.text(self.source)),
-                    Some(call),
-                    env,
-                ),
-                StatementKind::Command(name) => {
-                    self.call(pc, statement, &upper(name.text(self.source)), None, env)
-                }
-                _ => {}
             }
+            StatementKind::For { variable, .. } => {
+                env.forget(
+                    &key(&upper(variable.text(self.source)), &[]),
+                    Origin::ControlFlow {
+                        line,
+                        what: "FOR loop",
+                    },
+                );
+            }
+            StatementKind::SyncAction(sync) => {
+                for name in sync_writes(self.source, sync) {
+                    env.forget(
+                        &name,
+                        Origin::ControlFlow {
+                            line,
+                            what: "synchronized action",
+                        },
+                    );
+                }
+            }
+            StatementKind::Call(call) => self.call(
+                pc,
+                statement,
+                &upper(call.name.text(self.source)),
+                Some(call),
+                env,
+            ),
+            StatementKind::Command(name) => {
+                self.call(pc, statement, &upper(name.text(self.source)), None, env)
+            }
+            _ => {}
         }
     }
 
@@ -933,6 +1118,35 @@ mod tests {
         }
         program.push_str("M30\n");
         program
+    }
+
+    /// A walk told to stop stops at once, inside nested blocks too: the
+    /// question answered `stop` is the last one asked.
+    #[test]
+    fn a_walk_stops_when_told() {
+        let program = nested_loops(3, 20_000);
+        let model = Model::of(program.as_bytes());
+        let asked = std::cell::Cell::new(0);
+        let never = || {
+            asked.set(asked.get() + 1);
+            false
+        };
+        let walked = analyze_until(&model, &Supplied::default(), None, &never);
+        assert_eq!(walked.map(|a| a.calls.len()), Some(1));
+        // 20,007 lines, every one walked: a question every 4,096 of them,
+        // in each walk (twice: the call's `_SW_REC` is learned in the first).
+        let questions = asked.get();
+        assert_eq!(questions, 10);
+        for stop_at in 1..=questions {
+            asked.set(0);
+            let told = || {
+                asked.set(asked.get() + 1);
+                asked.get() == stop_at
+            };
+            let stopped = analyze_until(&model, &Supplied::default(), None, &told);
+            assert!(stopped.is_none(), "told at question {stop_at}");
+            assert_eq!(asked.get(), stop_at, "no question after the stop");
+        }
     }
 
     /// Forgetting what nested loops write costs the program's length times

@@ -27,7 +27,7 @@ N20 GOTOF START    ; START is behind
 Use GOTOB (or GOTO, which searches both ways), or move the label."#,
 };
 
-/// The labels are the file's ([`FileContext::labels`]).
+/// The lines jumps land on are the model's ([`crate::semantic::Model::target_landing`]).
 #[derive(Default)]
 pub struct Checker {
     jumps: Vec<(Target, Span, usize, GotoKind)>,
@@ -55,26 +55,17 @@ impl Check for Checker {
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        let model = file.model();
         for (target, span, row, kind) in &self.jumps {
-            let rows: Vec<usize> = match target {
-                Target::Label(name) => file.labels().rows(name).collect(),
-                Target::Number(n) => {
-                    // Read from the file on first use: most programs never jump to one.
-                    let numbers = file.block_numbers();
-                    let first = numbers.partition_point(|(m, _)| m < n);
-                    numbers[first..]
-                        .iter()
-                        .take_while(|(m, _)| m == n)
-                        .map(|(_, r)| *r)
-                        .collect()
-                }
-            };
-            let (wrong, right, keyword) = match kind {
-                GotoKind::Forward => ("before", rows.iter().any(|r| r > row), "GOTOB"),
-                GotoKind::Backward => ("after", rows.iter().any(|r| r <= row), "GOTOF"),
+            let (wrong, keyword) = match kind {
+                GotoKind::Forward => ("before", "GOTOB"),
+                GotoKind::Backward => ("after", "GOTOF"),
                 _ => continue,
             };
-            if rows.is_empty() || right {
+            // Where the jump lands is the model's answer, the walk's: a
+            // target the program has that the search does not find.
+            let lands = model.target_landing(target, *kind, *row).is_some();
+            if lands || model.target_rows(target).is_empty() {
                 continue;
             }
             out.push(

@@ -13,46 +13,24 @@ pub fn upper(source: &[u8], span: Span) -> String {
     crate::syntax::tree::upper(span.of(source))
 }
 
-/// Where a jump can land: a named label, or a block number (kept as a
-/// number: a CAM program has millions of them, and no jump needs their text).
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Target {
-    Label(String),
-    Number(u64),
-}
-
-impl std::fmt::Display for Target {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Target::Label(name) => f.write_str(name),
-            Target::Number(n) => write!(f, "N{n}"),
-        }
-    }
-}
+/// Where a jump can land: the model's.
+pub use crate::semantic::jumps::Target;
 
 /// The block's label (upper case), if it has one.
 pub fn label(source: &[u8], block: &Block) -> Option<(String, Span)> {
     block.label.map(|l| (upper(source, l.span), l.span))
 }
 
-/// Where a jump goes; `None` for computed targets. A block number is
-/// announced to the file, which reads only announced numbers' rows.
+/// Where a jump goes, and the span that names it; `None` for computed
+/// targets.
 pub fn target(file: &FileContext, goto: &Goto) -> Option<(Target, Span)> {
-    let source = file.source;
-    let (target, span) = match goto.target.as_ref()? {
-        target @ GotoTarget::Label(name) => (
-            target
-                .block_number(source)
-                .map_or_else(|| Target::Label(upper(source, name.span)), Target::Number),
-            name.span,
-        ),
-        GotoTarget::Number(number) => (Target::Number(number.value as u64), number.span),
+    let named = goto.target.as_ref()?;
+    let span = match named {
+        GotoTarget::Label(name) => name.span,
+        GotoTarget::Number(number) => number.span,
         GotoTarget::Computed(_) => return None,
     };
-    if let Target::Number(number) = target {
-        file.want_block_number(number);
-    }
-    Some((target, span))
+    Some((Target::of(file.source, named)?, span))
 }
 
 /// A name a user could have defined: two leading letters (or `_` after a

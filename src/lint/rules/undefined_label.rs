@@ -93,15 +93,7 @@ impl Check for Checker {
             repeat,
         } in &self.jumps
         {
-            let exists = match target {
-                Target::Label(name) => file.labels().contains(name),
-                // Read from the file on first use: most programs never jump to one.
-                Target::Number(n) => file
-                    .block_numbers()
-                    .binary_search_by(|(m, _)| m.cmp(n))
-                    .is_ok(),
-            };
-            if exists {
+            if !file.model().target_rows(target).is_empty() {
                 continue;
             }
             let wanted = target.to_string();
