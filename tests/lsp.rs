@@ -182,6 +182,66 @@ fn a_fix_is_a_code_action() {
     client.stop();
 }
 
+/// "Fix all" (`source.fixAll.sinuprep`, what an editor asks for to fix
+/// on save) makes every safe fix at once, the same edits `check --fix`
+/// writes; it is offered only when source actions are asked for.
+#[test]
+fn fix_all_makes_what_check_fix_writes() {
+    let (mut client, _) = Client::start(json!({}));
+    let text = "G1 X1 F100 ; sinuprep: ignore N001\nG1 X2 ; sinuprep: ignore N002\nM30\n";
+    let found = client.open(URI, text);
+    assert_eq!(codes(&found), ["N099", "N099"]);
+    let ask = |client: &mut Client, only: Value| {
+        client.request(
+            "textDocument/codeAction",
+            json!({ "textDocument": { "uri": URI },
+                    "range": { "start": { "line": 2, "character": 0 }, "end": { "line": 2, "character": 0 } },
+                    "context": { "diagnostics": [], "only": only } }),
+        )
+    };
+    assert_eq!(ask(&mut client, Value::Null), json!([]));
+    let actions = ask(&mut client, json!(["source.fixAll"]));
+    assert_eq!(actions[0]["kind"], "source.fixAll.sinuprep", "{actions}");
+    assert_eq!(actions[0]["title"], "Fix all: 2 findings (sinuprep)");
+    let mut edits: Vec<(usize, usize, usize, String)> = actions[0]["edit"]["changes"][URI]
+        .as_array()
+        .expect("edits")
+        .iter()
+        .map(|edit| {
+            let at =
+                |end: &str, key: &str| edit["range"][end][key].as_u64().expect("position") as usize;
+            assert_eq!(at("start", "line"), at("end", "line"));
+            (
+                at("start", "line"),
+                at("start", "character"),
+                at("end", "character"),
+                edit["newText"].as_str().expect("text").to_string(),
+            )
+        })
+        .collect();
+    // Applied from the end, on an ASCII text: what `check --fix` writes.
+    edits.sort();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    for (line, start, end, new) in edits.into_iter().rev() {
+        lines[line].replace_range(start..end, &new);
+    }
+    let fixed = lines.join("\n") + "\n";
+    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-fix-all-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let path = dir.join("FIX.MPF");
+    std::fs::write(&path, text).expect("write");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["check", "--fix", "--quiet"])
+        .arg(&path)
+        .output()
+        .expect("check runs");
+    assert_eq!(status.status.code(), Some(0));
+    assert_eq!(std::fs::read_to_string(&path).expect("fixed"), fixed);
+    assert_eq!(fixed, "G1 X1 F100\nG1 X2\nM30\n");
+    let _ = std::fs::remove_dir_all(&dir);
+    client.stop();
+}
+
 #[test]
 fn no_message_breaks_the_server() {
     let (mut client, _) = Client::start(json!({}));

@@ -593,7 +593,8 @@ fn fix(
     outcomes: &[lint::Outcome],
     unsafe_fixes: bool,
 ) -> Result<Option<Vec<u8>>, CliError> {
-    let fixes = opened.fixes(bytes, outcomes, unsafe_fixes);
+    let findings = outcomes.iter().map(|outcome| &outcome.diagnostics[..]);
+    let fixes = opened.fixes(bytes, findings, unsafe_fixes);
     for (name, why) in &fixes.unfixed {
         tellln!("{}: {}", printable(name), why.describe());
     }

@@ -6,7 +6,7 @@
 use crate::diagnostic::{Applicability, Diagnostic};
 use crate::document::archive::Opened;
 use crate::edit::Edit;
-use crate::lint::{self, Outcome};
+use crate::lint;
 
 /// The edits that fix a file, and what they answer.
 #[derive(Debug, Default)]
@@ -41,14 +41,18 @@ impl Unfixed {
 
 impl Opened {
     /// The fixes of the programs in `bytes` (this file's), whose findings
-    /// are `outcomes` (one per program, in order): the safe ones, and the
-    /// unsafe ones too with `unsafe_fixes` ([`lint::fix::applicable`]).
-    /// With syntax errors only their own safe fixes (a byte-order mark
-    /// removed) are applied.
-    pub fn fixes(&self, bytes: &[u8], outcomes: &[Outcome], unsafe_fixes: bool) -> Fixes {
+    /// are `findings` (one list per program, in order, each at the
+    /// program's own offsets): the safe ones, and the unsafe ones too with
+    /// `unsafe_fixes` ([`lint::fix::applicable`]). With syntax errors only
+    /// their own safe fixes (a byte-order mark removed) are applied.
+    pub fn fixes<'d>(
+        &self,
+        bytes: &[u8],
+        findings: impl IntoIterator<Item = &'d [Diagnostic]>,
+        unsafe_fixes: bool,
+    ) -> Fixes {
         let mut fixes = Fixes::default();
-        for (program, outcome) in self.programs(bytes).iter().zip(outcomes) {
-            let diagnostics = &outcome.diagnostics;
+        for (program, diagnostics) in self.programs(bytes).iter().zip(findings) {
             let (own, count) = lint::fix::applicable(diagnostics, unsafe_fixes);
             if own.is_empty() {
                 continue;

@@ -4,6 +4,7 @@
 use lsp_types as lsp;
 
 use crate::diagnostic::Diagnostic;
+use crate::document::archive::Opened;
 use crate::document::held;
 use crate::document::text::Text;
 use crate::lint::Settings;
@@ -17,6 +18,10 @@ use crate::syntax::tree::StatementKind;
 use super::convert;
 
 /// One version of a document, analysed, for the requests about it.
+/// The kind of the action that makes every safe fix at once, as ruff names
+/// its own (`source.fixAll.ruff`).
+pub const FIX_ALL: &str = "source.fixAll.sinuprep";
+
 pub struct Snapshot<'a, 't> {
     text: &'t Text,
     name: &'a str,
@@ -425,8 +430,15 @@ impl<'a, 't> Snapshot<'a, 't> {
 
     /// Within `range`: each finding's fix, a suppression comment for each
     /// finding, and the rewrite of each CYCLE600 that can be written as
-    /// native code (the edits `rewrite` makes).
-    pub fn code_actions(&self, uri: &lsp::Uri, range: lsp::Range) -> Vec<lsp::CodeActionOrCommand> {
+    /// native code (the edits `rewrite` makes); when `only` asks for source
+    /// actions (the editor's "fix on save", its source action menu), every
+    /// safe fix of the document at once.
+    pub fn code_actions(
+        &self,
+        uri: &lsp::Uri,
+        range: lsp::Range,
+        only: Option<&[lsp::CodeActionKind]>,
+    ) -> Vec<lsp::CodeActionOrCommand> {
         let wanted = convert::span(self.text, range, self.unit);
         let touches = |span: Span| span.start <= wanted.end && wanted.start <= span.end;
         let mut actions = Vec::new();
@@ -447,6 +459,13 @@ impl<'a, 't> Snapshot<'a, 't> {
                 actions.push(lsp::CodeActionOrCommand::CodeAction(action));
             }
         }
+        let source = |kind: &lsp::CodeActionKind| {
+            let kind = kind.as_str();
+            FIX_ALL.starts_with(kind) && (kind == "source" || kind.starts_with("source."))
+        };
+        if only.is_some_and(|only| only.iter().any(source)) {
+            actions.extend(self.fix_all(uri).map(lsp::CodeActionOrCommand::CodeAction));
+        }
         for site in self.calls().filter(|site| touches(site.statement)) {
             let options = &self.settings.emit;
             let machine = self.settings.machine.as_deref();
@@ -461,6 +480,34 @@ impl<'a, 't> Snapshot<'a, 't> {
             }
         }
         actions
+    }
+
+    /// Every safe fix of the document at once, as `check --fix` makes them
+    /// (the library's [`Opened::fixes`]: an archive program by program);
+    /// `None` when there is nothing to fix. Its kind, `source.fixAll.sinuprep`,
+    /// is what an editor asks for to fix on save.
+    fn fix_all(&self, uri: &lsp::Uri) -> Option<lsp::CodeAction> {
+        let bytes = self.text.bytes();
+        let opened = Opened::read(bytes, self.name).ok()?;
+        let fixes = if opened.archive.is_some() {
+            // The archive's findings are placed in it; its programs' own,
+            // at their own offsets, are what the fixes are made from.
+            let outcomes: Vec<_> = opened
+                .programs(bytes)
+                .iter()
+                .map(|program| program.document.check_outcome(self.settings))
+                .collect();
+            opened.fixes(bytes, outcomes.iter().map(|o| &o.diagnostics[..]), false)
+        } else {
+            opened.fixes(bytes, [self.findings], false)
+        };
+        if fixes.edits.is_empty() {
+            return None;
+        }
+        let s = if fixes.answered == 1 { "" } else { "s" };
+        let title = format!("Fix all: {} finding{s} (sinuprep)", fixes.answered);
+        let kind = lsp::CodeActionKind::new(FIX_ALL);
+        Some(self.action(uri, &title, &fixes.edits, kind))
     }
 
     fn action(

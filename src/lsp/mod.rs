@@ -68,7 +68,16 @@ fn serve(connection: &Connection) -> Result<(), String> {
         references_provider: Some(lsp::OneOf::Left(true)),
         document_symbol_provider: Some(lsp::OneOf::Left(true)),
         folding_range_provider: Some(lsp::FoldingRangeProviderCapability::Simple(true)),
-        code_action_provider: Some(lsp::CodeActionProviderCapability::Simple(true)),
+        code_action_provider: Some(lsp::CodeActionProviderCapability::Options(
+            lsp::CodeActionOptions {
+                code_action_kinds: Some(vec![
+                    lsp::CodeActionKind::QUICKFIX,
+                    lsp::CodeActionKind::REFACTOR_REWRITE,
+                    lsp::CodeActionKind::new(answers::FIX_ALL),
+                ]),
+                ..lsp::CodeActionOptions::default()
+            },
+        )),
         rename_provider: Some(lsp::OneOf::Right(lsp::RenameOptions {
             prepare_provider: Some(true),
             work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
@@ -417,7 +426,8 @@ impl Server<'_> {
                 self.answer(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
             }
             r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
-                Ok(s.code_actions(&p.text_document.uri, p.range))
+                let only = p.context.only.as_deref();
+                Ok(s.code_actions(&p.text_document.uri, p.range, only))
             }),
             r::PrepareRenameRequest::METHOD => {
                 self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
