@@ -242,6 +242,33 @@ fn fix_all_makes_what_check_fix_writes() {
     client.stop();
 }
 
+/// A finding's code links to its rule's documentation: with no repository
+/// named in Cargo.toml, the page `sinuprep rule CODE` prints, written into
+/// the server's cache folder.
+#[test]
+fn a_findings_code_links_to_its_rules_page() {
+    let (mut client, _) = Client::start(json!({}));
+    let found = client.open(URI, "START:\nGOTOB STRAT\nM30\n");
+    assert_eq!(codes(&found), ["N001"]);
+    let href = found[0]["codeDescription"]["href"]
+        .as_str()
+        .expect("a link");
+    let page = Client::cache().join(format!(
+        "sinuprep/{}/rules/N001.md",
+        env!("CARGO_PKG_VERSION")
+    ));
+    assert!(
+        href.starts_with("file:///") && href.ends_with("/rules/N001.md"),
+        "{href}"
+    );
+    let rule = std::process::Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+        .args(["rule", "N001"])
+        .output()
+        .expect("rule runs");
+    assert_eq!(std::fs::read(&page).expect("the page"), rule.stdout);
+    client.stop();
+}
+
 #[test]
 fn no_message_breaks_the_server() {
     let (mut client, _) = Client::start(json!({}));
@@ -384,6 +411,7 @@ vim.cmd("qa!")
 "#;
     std::fs::write(dir.join("test.lua"), script).expect("the script");
     let status = std::process::Command::new("nvim")
+        .env("XDG_CACHE_HOME", Client::cache())
         .args([
             "--headless",
             "--clean",
@@ -472,6 +500,7 @@ fn emacs_shows_the_findings_and_a_hover() {
 "#;
     std::fs::write(dir.join("test.el"), script).expect("the script");
     let status = std::process::Command::new("emacs")
+        .env("XDG_CACHE_HOME", Client::cache())
         .args(["--batch", "-l", "test.el"])
         .current_dir(&dir)
         .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))

@@ -9,6 +9,7 @@ use miette::{
 };
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, Severity};
+use crate::lint::reference::{self, REPOSITORY};
 use crate::span::{
     line_end, line_start, next_line_start, previous_line_end, ColumnUnit, LineIndex, Position, Span,
 };
@@ -559,7 +560,7 @@ impl Sarif {
                     "help": { "text": info.docs, "markdown": info.docs },
                     "defaultConfiguration": { "level": level(info.severity) },
                 });
-                if let Some(uri) = help_uri(REPOSITORY, info) {
+                if let Some(uri) = reference::help_uri(REPOSITORY, info) {
                     rule["helpUri"] = uri.into();
                 }
                 rule
@@ -597,23 +598,6 @@ impl Sarif {
         text.push('\n');
         text
     }
-}
-
-/// The project's repository (`repository` in Cargo.toml), the tool's
-/// `informationUri` in SARIF and the base of its rules' `helpUri`; empty
-/// where Cargo.toml names none, and then neither is written.
-const REPOSITORY: &str = env!("CARGO_PKG_REPOSITORY");
-
-/// A rule's section of docs/rules.md in the repository. The page is
-/// generated from every rule (tests/lint.rs, `the_rule_reference`), so
-/// every rule has its section.
-fn help_uri(repository: &str, info: &crate::diagnostic::RuleInfo) -> Option<String> {
-    if repository.is_empty() {
-        return None;
-    }
-    let base = repository.trim_end_matches('/');
-    let anchor = crate::lint::reference::anchor(info);
-    Some(format!("{base}/blob/HEAD/docs/rules.md#{anchor}"))
 }
 
 /// The base the relative paths of a SARIF log are read against: the
@@ -835,17 +819,6 @@ impl Statistics {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_rules_help_is_its_section_of_the_reference_in_the_repository() {
-        let info = crate::lint::rule("N001").expect("N001");
-        assert_eq!(
-            help_uri("https://example.org/shop/sinuprep/", info).as_deref(),
-            Some("https://example.org/shop/sinuprep/blob/HEAD/docs/rules.md#n001-undefined-label")
-        );
-        // No repository in Cargo.toml: no link to a page that is nowhere.
-        assert_eq!(help_uri("", info), None);
-    }
 
     fn absolute(uri: &str) -> Uri {
         Uri::Absolute(uri.to_string())

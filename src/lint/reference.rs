@@ -35,6 +35,23 @@ pub fn anchor(info: &RuleInfo) -> String {
     format!("{}-{}", info.code, info.name).to_ascii_lowercase()
 }
 
+/// The project's repository (`repository` in Cargo.toml): SARIF's
+/// `informationUri`, and the base of the links to the rules' pages (SARIF's
+/// `helpUri`, an editor's finding code); empty where Cargo.toml names none,
+/// and then no such link is written.
+pub const REPOSITORY: &str = env!("CARGO_PKG_REPOSITORY");
+
+/// A rule's section of docs/rules.md in `repository`. The page is generated
+/// from every rule (tests/lint.rs, `the_rule_reference`), so every rule has
+/// its section.
+pub fn help_uri(repository: &str, info: &RuleInfo) -> Option<String> {
+    if repository.is_empty() {
+        return None;
+    }
+    let base = repository.trim_end_matches('/');
+    Some(format!("{base}/blob/HEAD/docs/rules.md#{}", anchor(info)))
+}
+
 /// Every rule in code order: a table of them, then each rule's page one
 /// heading level down. Written to `docs/rules.md`; a test holds the file to it.
 pub fn reference() -> String {
@@ -92,4 +109,20 @@ fn first_sentence(docs: &str) -> String {
         .find(|&i| bytes[i] == b'.' && bytes[i + 1] == b' ' && bytes[i + 2].is_ascii_uppercase())
         .map_or(text.len(), |i| i + 1);
     text[..end].to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rules_help_is_its_section_of_the_reference_in_the_repository() {
+        let info = crate::lint::rule("N001").expect("N001");
+        assert_eq!(
+            help_uri("https://example.org/shop/sinuprep/", info).as_deref(),
+            Some("https://example.org/shop/sinuprep/blob/HEAD/docs/rules.md#n001-undefined-label")
+        );
+        // No repository in Cargo.toml: no link to a page that is nowhere.
+        assert_eq!(help_uri("", info), None);
+    }
 }

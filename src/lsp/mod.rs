@@ -12,6 +12,7 @@
 mod answers;
 mod convert;
 mod formatting;
+mod rule_pages;
 mod transport;
 mod worker;
 

@@ -19,11 +19,19 @@ pub struct Client {
 }
 
 impl Client {
+    /// The cache folder the servers of this test process are given.
+    pub fn cache() -> std::path::PathBuf {
+        std::env::temp_dir().join(format!("sinuprep-lsp-cache-{}", std::process::id()))
+    }
+
     /// The server of this package's binary (the build of the test or the
-    /// benchmark), initialized with `capabilities`.
+    /// benchmark), initialized with `capabilities`. Its cache folder (where
+    /// it writes the rules' pages) is [`Self::cache`], not the user's.
     pub fn start(capabilities: Value) -> (Self, Value) {
         let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
             .arg("lsp")
+            .env("XDG_CACHE_HOME", Self::cache())
+            .env("LOCALAPPDATA", Self::cache())
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
