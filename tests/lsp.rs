@@ -362,29 +362,62 @@ fn inlay_hints_give_a_cycle600_its_angles_and_a_cycle800_its_mode() {
     client.stop();
 }
 
+/// Whether the editor `name` is there to run its test: when it is not, the
+/// test is skipped with a note, but never under CI (`.ci/run` installs it).
+fn editor_present(name: &str, present: bool) -> bool {
+    if !present {
+        assert_ne!(
+            std::env::var("CI").as_deref(),
+            Ok("true"),
+            "CI must run the {name} test"
+        );
+        eprintln!("NOTE: {name} not found: the {name} test was SKIPPED");
+    }
+    present
+}
+
+/// Runs `editor` with `script` (saved as `script_name`) in a folder of its
+/// own holding the paper's sample as PART.MPF, alone (no HEAD_DEF beside
+/// it, so C610 is reported), the server's binary in `SINUPREP_BIN`: its
+/// output and what the script wrote to out.txt.
+fn run_editor(
+    mut editor: std::process::Command,
+    script_name: &str,
+    script: &str,
+) -> (std::process::Output, String) {
+    let dir = std::env::temp_dir().join(format!(
+        "sinuprep-editor-{script_name}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a directory");
+    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
+    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
+    std::fs::write(dir.join(script_name), script).expect("the script");
+    let output = editor
+        .current_dir(&dir)
+        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
+        .env("XDG_CACHE_HOME", Client::cache())
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the editor runs");
+    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
+    let _ = std::fs::remove_dir_all(&dir);
+    (output, shown)
+}
+
 /// Neovim's own client (Debian's `neovim`, 0.7 or later) starts the server,
 /// opens a program and reads its findings and a hover on its CYCLE600.
 /// Required under CI (`.ci/run` installs it); skipped elsewhere without it.
 #[test]
 fn neovim_shows_the_findings_and_a_hover() {
-    if std::process::Command::new("nvim")
+    let present = std::process::Command::new("nvim")
         .arg("--version")
         .output()
-        .is_err()
-    {
-        assert_ne!(
-            std::env::var("CI").as_deref(),
-            Ok("true"),
-            "CI must run the Neovim test"
-        );
-        eprintln!("NOTE: nvim not found: the Neovim test was SKIPPED");
+        .is_ok();
+    if !editor_present("Neovim", present) {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("sinuprep-nvim-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a directory");
-    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
-    // Alone in its folder: no HEAD_DEF beside it, so C610 is reported.
-    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
     let script = r#"
 local out = {}
 local id = vim.lsp.start_client({ cmd = { os.getenv("SINUPREP_BIN"), "lsp" },
@@ -409,24 +442,16 @@ vim.lsp.get_client_by_id(id).stop()
 vim.wait(5000, function() return vim.lsp.get_client_by_id(id) == nil end, 50)
 vim.cmd("qa!")
 "#;
-    std::fs::write(dir.join("test.lua"), script).expect("the script");
-    let status = std::process::Command::new("nvim")
-        .env("XDG_CACHE_HOME", Client::cache())
-        .args([
-            "--headless",
-            "--clean",
-            "-u",
-            "NONE",
-            "-c",
-            "luafile test.lua",
-        ])
-        .current_dir(&dir)
-        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
-        .stdin(std::process::Stdio::null())
-        .output()
-        .expect("nvim runs");
-    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
-    let _ = std::fs::remove_dir_all(&dir);
+    let mut nvim = std::process::Command::new("nvim");
+    nvim.args([
+        "--headless",
+        "--clean",
+        "-u",
+        "NONE",
+        "-c",
+        "luafile test.lua",
+    ]);
+    let (status, shown) = run_editor(nvim, "test.lua", script);
     assert!(status.status.success(), "{status:?}");
     assert!(shown.contains("diagnostic 1 C610"), "{shown}");
     assert!(
@@ -446,21 +471,9 @@ fn emacs_shows_the_findings_and_a_hover() {
         .stdin(std::process::Stdio::null())
         .output()
         .is_ok_and(|output| output.status.success());
-    if !has_eglot {
-        assert_ne!(
-            std::env::var("CI").as_deref(),
-            Ok("true"),
-            "CI must run the Emacs test"
-        );
-        eprintln!("NOTE: emacs with eglot not found: the Emacs test was SKIPPED");
+    if !editor_present("Emacs with eglot", has_eglot) {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("sinuprep-emacs-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("a directory");
-    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
-    // Alone in its folder: no HEAD_DEF beside it, so C610 is reported.
-    std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
     // The README's recipe (a mode for the files, the server for the mode),
     // then what a user would do by hand: open, wait, hover.
     let script = r#"
@@ -498,17 +511,9 @@ fn emacs_shows_the_findings_and_a_hover() {
 (eglot-shutdown (eglot-current-server))
 (kill-emacs 0)
 "#;
-    std::fs::write(dir.join("test.el"), script).expect("the script");
-    let status = std::process::Command::new("emacs")
-        .env("XDG_CACHE_HOME", Client::cache())
-        .args(["--batch", "-l", "test.el"])
-        .current_dir(&dir)
-        .env("SINUPREP_BIN", env!("CARGO_BIN_EXE_sinuprep"))
-        .stdin(std::process::Stdio::null())
-        .output()
-        .expect("emacs runs");
-    let shown = std::fs::read_to_string(dir.join("out.txt")).unwrap_or_default();
-    let _ = std::fs::remove_dir_all(&dir);
+    let mut emacs = std::process::Command::new("emacs");
+    emacs.args(["--batch", "-l", "test.el"]);
+    let (status, shown) = run_editor(emacs, "test.el", script);
     assert!(status.status.success(), "{status:?}");
     assert!(shown.contains("diagnostic 1 sinuprep [C610]: "), "{shown}");
     assert!(
