@@ -19,6 +19,15 @@ pub fn n(value: f64) -> String {
     format(value, 4)
 }
 
+/// A record as a program names it: `HEAD_CA`, or its number.
+fn called(record: &Record) -> String {
+    if record.name.is_empty() {
+        record.number.to_string()
+    } else {
+        record.name.clone()
+    }
+}
+
 /// `2 (HEAD_CA)`, or the number alone.
 pub fn describe(record: &Record) -> String {
     if record.name.is_empty() {
@@ -132,11 +141,7 @@ pub fn head_positions(head: &Record, swivel: &Swivel) -> Option<String> {
 /// under it, and says what the split would tell the machine.
 pub fn refusal(asked: &Asked, over: &OverTable) -> Diagnostic {
     let (table, head) = (over.table, over.head);
-    let head_name = if head.name.is_empty() {
-        head.number.to_string()
-    } else {
-        head.name.clone()
-    };
+    let head_name = called(head);
     let what = match &over.split {
         Err(error) => format!("the split cannot be computed: {error}"),
         Ok(split) => {
@@ -168,7 +173,7 @@ pub fn refusal(asked: &Asked, over: &OverTable) -> Diagnostic {
         .at(asked.span)
         .message(format!(
             "`{head_name}` has the rotary table `{}` under it (--table): the swivel splits over three rotary axes, {what}; no code is written, since no native form of such a split is documented",
-            if table.name.is_empty() { table.number.to_string() } else { table.name.clone() }
+            called(table)
         ))
         .label("a swivel over three rotary axes")
         .help("CYCLE800 drives one swivel data record (two rotary axes at most), and no Siemens text confirms that a table turned before it keeps its turn in the frame: position the table and swivel the head as the message says by hand, or keep CYCLE600 (`sinuprep rule C620`)")
