@@ -1,8 +1,8 @@
 //! The CYCLE600 walk on the shapes that once made it slow: loops nested
 //! deep, each writing a variable of its own; many IFs with unknown
 //! conditions over many variables; a CYCLE600 inside all of them; 100
-//! loops around 100,000 blocks and 100,000 nested IFs (issue 29: lines
-//! times depth). `cargo bench --bench walk`; whole programs are
+//! loops around 100,000 blocks and 100,000 nested IFs (where the cost was
+//! lines times depth). `cargo bench --bench walk`; whole programs are
 //! `throughput`'s job.
 
 use divan::{black_box, Bencher};

@@ -2933,9 +2933,9 @@ fn axis_from_measured_positions_gives_the_axis_and_a_point_on_it() {
     insta::assert_snapshot!(stdout(&output));
 }
 
-// ---- every form, in and out; another control's words (issue 33) ----------
+// ---- every form, in and out; another control's words ---------------------
 
-/// The issue's example: the post-processor's nine ROT_MAT and three
+/// The post-processor seed's example: its nine ROT_MAT and three
 /// TRANS_MAT assignments in its own statement form (`ROT_MAT1=1;`), and read
 /// back to the same angles.
 #[test]

@@ -3,6 +3,9 @@
 
 use serde_json::{json, Value};
 
+mod support;
+use support::scratch;
+
 #[path = "support/lsp_client.rs"]
 mod lsp_client;
 use lsp_client::Client;
@@ -226,8 +229,7 @@ fn fix_all_makes_what_check_fix_writes() {
         lines[line].replace_range(start..end, &new);
     }
     let fixed = lines.join("\n") + "\n";
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-fix-all-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-fix-all");
     let path = dir.join("FIX.MPF");
     std::fs::write(&path, text).expect("write");
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_sinuprep"))
@@ -385,12 +387,7 @@ fn run_editor(
     script_name: &str,
     script: &str,
 ) -> (std::process::Output, String) {
-    let dir = std::env::temp_dir().join(format!(
-        "sinuprep-editor-{script_name}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("a directory");
+    let dir = scratch(&format!("editor-{script_name}"));
     let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/samples/PAPER_EXAMPLE3.MPF");
     std::fs::copy(sample, dir.join("PART.MPF")).expect("the sample");
     std::fs::write(dir.join(script_name), script).expect("the script");
@@ -597,9 +594,7 @@ fn a_finding_can_be_ignored_and_a_cycle600_rewritten_from_the_editor() {
 /// of the record's rotary axes.
 #[test]
 fn a_cycle800_hover_says_what_the_call_asks_for() {
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-cycle800-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-cycle800");
     let samples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("samples");
     std::fs::copy(samples.join("MACHINE.SPF"), dir.join("MACHINE.SPF")).expect("machine");
     std::fs::write(dir.join("sinuprep.toml"), "machine = \"MACHINE.SPF\"\n").expect("toml");
@@ -644,9 +639,7 @@ fn a_cycle800_hover_says_what_the_call_asks_for() {
 /// the file beside it, as the control finds it (any case).
 #[test]
 fn a_call_goes_to_the_subprogram_beside_the_program() {
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-subprogram-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-subprogram");
     std::fs::write(
         dir.join("pocket.spf"),
         ";pocket\nPROC POCKET(REAL _DEPTH, INT _N)\nM17\n",
@@ -674,9 +667,7 @@ fn a_call_goes_to_the_subprogram_beside_the_program() {
 /// go to their DEF and DEFINE there.
 #[test]
 fn a_global_variable_goes_to_its_definition_file() {
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-gud-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-gud");
     std::fs::write(
         dir.join("GUD7.DEF"),
         "; globals\nDEF NCK REAL _OFFSET_Z\nM30\n",
@@ -790,9 +781,7 @@ fn a_run_of_comment_lines_folds() {
 /// with the file's once it is closed unsaved.
 #[test]
 fn an_open_definition_file_applies_before_it_is_saved() {
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-buffers-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-buffers");
     std::fs::write(dir.join("GUD7.DEF"), "DEF NCK REAL ZERO_A\nM30\n").expect("gud");
     std::fs::write(dir.join("sinuprep.toml"), "definitions = [\"GUD7.DEF\"]\n").expect("toml");
     let program = format!("file://{}", dir.join("MAIN.MPF").display());
@@ -1112,9 +1101,7 @@ M30
 /// value, and the hover says which file and line gave it.
 #[test]
 fn a_variable_hover_names_the_measurement_or_the_values_file() {
-    let dir = std::env::temp_dir().join(format!("sinuprep-lsp-values-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let dir = scratch("lsp-values");
     let program = "CYCLE977(1,,,1,20)\nR10=_OVR[16]\nG1 X=R10\nM30\n";
     let uri = format!("file://{}", dir.join("PROBE.MPF").display());
     let (mut client, _) = Client::start(json!({}));

@@ -88,7 +88,7 @@ fn extrinsic_equals_intrinsic_reversed() {
     }
 }
 
-// ---- every form, in and out (issue 33) -------------------------------------
+// ---- every form, in and out -----------------------------------------------
 
 use sinuprep::cli::notation::{read, write, Notation};
 use sinuprep::rotation::forms::{pose, rotate_by_gibbs, Pose};

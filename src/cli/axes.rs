@@ -253,17 +253,12 @@ fn from_position(
                 name.trim()
             ))
         })?;
-    let value = value
-        .trim()
-        .parse::<f64>()
-        .ok()
-        .filter(|v| v.is_finite())
-        .ok_or_else(|| {
-            refused(format!(
-                "`--from {given}`: `{}` is no number of degrees",
-                value.trim()
-            ))
-        })?;
+    let value = degrees(value).ok_or_else(|| {
+        refused(format!(
+            "`--from {given}`: `{}` is no number of degrees",
+            value.trim()
+        ))
+    })?;
     Ok((index, value))
 }
 
@@ -285,17 +280,17 @@ fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliErro
             describe(table)
         )));
     }
-    value
-        .trim()
-        .parse::<f64>()
-        .ok()
-        .filter(|v| v.is_finite())
-        .ok_or_else(|| {
-            refused(format!(
-                "`--fix {fix}`: `{}` is no number of degrees",
-                value.trim()
-            ))
-        })
+    degrees(value).ok_or_else(|| {
+        refused(format!(
+            "`--fix {fix}`: `{}` is no number of degrees",
+            value.trim()
+        ))
+    })
+}
+
+/// `value` as a finite number of degrees.
+fn degrees(value: &str) -> Option<f64> {
+    value.trim().parse::<f64>().ok().filter(|v| v.is_finite())
 }
 
 /// The table's part of a split: its position and how it was found, and

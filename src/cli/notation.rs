@@ -416,7 +416,7 @@ mod tests {
         assert!(form_error.contains("`gpp`"), "{form_error}");
     }
 
-    /// The example: `convert 30 0 0 --from e:XYZ --to gpp`.
+    /// The post-processor seed's example: `convert 30 0 0 --from e:XYZ --to gpp`.
     #[test]
     fn gpp_statements_in_the_posts_own_form() {
         let pose = read(

@@ -329,17 +329,6 @@ impl Setup {
 mod tests {
     use super::*;
 
-    fn axis(name: &str, vector: [f64; 3]) -> RotaryAxis {
-        RotaryAxis {
-            name: name.into(),
-            vector: Vector3::from(vector),
-            offset: 0.0,
-            hirth: None,
-            limits: None,
-            angle: 0.0,
-        }
-    }
-
     /// The seed's machine: the part on the A table (about z), 15 mm above
     /// its top and 10 mm off its centre in X; A on the B trunnion (about y),
     /// whose axis lies 12 mm above A's point. As a record: B is axis 1, A
@@ -355,7 +344,10 @@ mod tests {
                 Vector3::new(0.0, 0.0, -12.0),
                 Vector3::new(-10.0, 0.0, 15.0),
             ],
-            axes: [axis("B", [0.0, 1.0, 0.0]), axis("A", [0.0, 0.0, 1.0])],
+            axes: [
+                RotaryAxis::along("B", [0.0, 1.0, 0.0]),
+                RotaryAxis::along("A", [0.0, 0.0, 1.0]),
+            ],
             options: 0,
             direction_axis: None,
         }
@@ -431,8 +423,8 @@ mod tests {
     #[test]
     fn one_axis_tables_take_the_whole_way_to_their_pivot() {
         let mut record = seed_machine();
-        record.axes[1] = axis("", [0.0; 3]);
-        record.axes[0] = axis("", [1.0, 0.0, 0.0]);
+        record.axes[1] = RotaryAxis::along("", [0.0; 3]);
+        record.axes[0] = RotaryAxis::along("", [1.0, 0.0, 0.0]);
         let setup = setup_of(&record).expect("a table");
         assert_eq!(
             setup.text(),

@@ -79,6 +79,22 @@ pub struct RotaryAxis {
     pub angle: f64,
 }
 
+/// An axis for the tests: `name` turning about `vector`, with no offset,
+/// Hirth grid, limits or specified angle.
+#[cfg(test)]
+impl RotaryAxis {
+    pub(crate) fn along(name: &str, vector: [f64; 3]) -> Self {
+        RotaryAxis {
+            name: name.into(),
+            vector: Vector3::from(vector),
+            offset: 0.0,
+            hirth: None,
+            limits: None,
+            angle: 0.0,
+        }
+    }
+}
+
 impl RotaryAxis {
     pub fn exists(&self) -> bool {
         self.vector.norm() > 0.0

@@ -768,12 +768,8 @@ mod tests {
 
     fn axis(name: &str, vector: [f64; 3], limits: Option<(f64, f64)>) -> RotaryAxis {
         RotaryAxis {
-            name: name.into(),
-            vector: Vector3::from(vector),
-            offset: 0.0,
-            hirth: None,
             limits,
-            angle: 0.0,
+            ..RotaryAxis::along(name, vector)
         }
     }
 

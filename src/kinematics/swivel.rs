@@ -317,17 +317,6 @@ mod tests {
     use crate::kinematics::record::{Hirth, RotaryAxis};
     use crate::rotation::{matrix, Kind, Sequence};
 
-    fn axis(name: &str, vector: [f64; 3]) -> RotaryAxis {
-        RotaryAxis {
-            name: name.into(),
-            vector: Vector3::from(vector),
-            offset: 0.0,
-            hirth: None,
-            limits: None,
-            angle: 0.0,
-        }
-    }
-
     fn record(kinematics: Kinematics, first: RotaryAxis, second: RotaryAxis) -> Record {
         Record {
             number: 1,
@@ -341,7 +330,7 @@ mod tests {
     }
 
     fn none() -> RotaryAxis {
-        axis("", [0.0; 3])
+        RotaryAxis::along("", [0.0; 3])
     }
 
     fn request(rotation: Rotation3<f64>) -> Request {
@@ -369,7 +358,11 @@ mod tests {
     #[test]
     fn a_table_about_y_turns_rot_y_minus_45_into_plus_45() {
         // Function Manual W1: table axis +Y, ROT Y-45 with TCOFR gives +45°.
-        let table = record(Kinematics::Table, axis("B", [0.0, 1.0, 0.0]), none());
+        let table = record(
+            Kinematics::Table,
+            RotaryAxis::along("B", [0.0, 1.0, 0.0]),
+            none(),
+        );
         let rotation = Rotation3::from_axis_angle(&Vector3::y_axis(), (-45f64).to_radians());
         let swivel = solve(&table, &request(rotation)).expect("valid");
         assert_eq!(positions(&swivel), [[45.0, 0.0]]);
@@ -380,8 +373,8 @@ mod tests {
         // W1 example: table "P", l4 = (0, 0, 15), A0 B45: X +10.607, Z -4.393.
         let mut table = record(
             Kinematics::Table,
-            axis("A", [1.0, 0.0, 0.0]),
-            axis("B", [0.0, 1.0, 0.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
+            RotaryAxis::along("B", [0.0, 1.0, 0.0]),
         );
         table.offsets[3] = Vector3::new(0.0, 0.0, 15.0);
         let shift = super::shift(&table, [0.0, 45.0]);
@@ -394,8 +387,8 @@ mod tests {
     fn a_c_a_head_has_two_solutions_half_a_turn_apart() {
         let head = record(
             Kinematics::Head,
-            axis("C", [0.0, 0.0, 1.0]),
-            axis("A", [1.0, 0.0, 0.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
         );
         let swivel = solve(&head, &request(toward([0.3, -0.5, 0.8]))).expect("valid");
         let mut found = positions(&swivel);
@@ -410,8 +403,8 @@ mod tests {
     fn a_45_degree_nutating_head_and_its_reach() {
         let head = record(
             Kinematics::Head,
-            axis("C", [0.0, 0.0, 1.0]),
-            axis("B", [0.0, 1.0, 1.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("B", [0.0, 1.0, 1.0]),
         );
         let tilt = 60f64.to_radians();
         let swivel = solve(&head, &request(toward([tilt.sin(), 0.0, tilt.cos()]))).expect("valid");
@@ -428,8 +421,8 @@ mod tests {
         // kinematics_examples.py: frame ROT X10, v2 = +Z: (B, C) = (-10, -90) or (+10, +90).
         let mixed = record(
             Kinematics::Mixed,
-            axis("B", [0.0, 1.0, 0.0]),
-            axis("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("B", [0.0, 1.0, 0.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
         );
         let rotation = matrix(
             Sequence::new(
@@ -453,8 +446,8 @@ mod tests {
     fn limits_place_a_position_and_dir_falls_back_to_the_other_solution() {
         let mut head = record(
             Kinematics::Head,
-            axis("C", [0.0, 0.0, 1.0]),
-            axis("A", [1.0, 0.0, 0.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
         );
         head.axes[0].limits = Some((0.0, 360.0));
         head.axes[1].limits = Some((-10.0, 90.0));
@@ -478,8 +471,8 @@ mod tests {
     fn a_hirth_grid_rounds_and_tells_the_error() {
         let mut head = record(
             Kinematics::Head,
-            axis("C", [0.0, 0.0, 1.0]),
-            axis("A", [1.0, 0.0, 0.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
         );
         head.axes[1].hirth = Some(Hirth {
             offset: 0.0,
@@ -555,8 +548,8 @@ mod tests {
     fn a_pole_keeps_the_free_axis_where_it_is() {
         let head = record(
             Kinematics::Head,
-            axis("C", [0.0, 0.0, 1.0]),
-            axis("A", [1.0, 0.0, 0.0]),
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
         );
         let swivel = solve(
             &head,

@@ -52,16 +52,11 @@ pub enum CircleError {
 /// second to the third is positive.
 pub fn three(positions: [Point3<f64>; 3], tolerance: f64) -> Result<Found, CircleError> {
     let [p1, p2, p3] = positions;
-    for (a, b) in [(p1, p2), (p1, p3), (p2, p3)] {
-        let distance = (b - a).norm();
-        if distance <= tolerance {
-            return Err(CircleError::Coincident { distance });
-        }
+    if let Some(distance) = super::coincident(positions, tolerance) {
+        return Err(CircleError::Coincident { distance });
     }
     let (a, b) = (p2 - p1, p3 - p1);
-    let cross = a.cross(&b);
-    let longest = a.norm().max(b.norm()).max((p3 - p2).norm());
-    let height = cross.norm() / longest;
+    let (cross, height) = super::triangle(positions);
     if height <= tolerance {
         return Err(CircleError::Collinear { height });
     }

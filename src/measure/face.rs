@@ -100,21 +100,13 @@ pub fn along(x: [Point3<f64>; 2], y: [Point3<f64>; 2], tolerance: f64) -> Result
 
 /// The face through three points, its normal up (the tool's side).
 pub fn through(points: [Point3<f64>; 3], tolerance: f64) -> Result<Face, FaceError> {
-    let [p1, p2, p3] = points;
-    for (a, b) in [(p1, p2), (p1, p3), (p2, p3)] {
-        let distance = (b - a).norm();
-        if distance <= tolerance {
-            return Err(FaceError::Coincident {
-                which: Measured::Points,
-                distance,
-            });
-        }
+    if let Some(distance) = super::coincident(points, tolerance) {
+        return Err(FaceError::Coincident {
+            which: Measured::Points,
+            distance,
+        });
     }
-    let (u, v) = (p2 - p1, p3 - p1);
-    let cross = u.cross(&v);
-    // Twice the triangle's area over its longest side: its least height.
-    let longest = u.norm().max(v.norm()).max((p3 - p2).norm());
-    let height = cross.norm() / longest;
+    let (cross, height) = super::triangle(points);
     if height <= tolerance {
         return Err(FaceError::Collinear { height });
     }

@@ -14,6 +14,29 @@ pub mod circle;
 pub mod face;
 pub mod turn;
 
+use nalgebra::{Point3, Vector3};
+
+/// The distance of the first two of three points that lie within
+/// `tolerance` of each other (a point measured twice), if any.
+fn coincident(points: [Point3<f64>; 3], tolerance: f64) -> Option<f64> {
+    let [p1, p2, p3] = points;
+    [(p1, p2), (p1, p3), (p2, p3)]
+        .into_iter()
+        .map(|(a, b)| (b - a).norm())
+        .find(|&distance| distance <= tolerance)
+}
+
+/// Three points as a triangle: `(p2 − p1) × (p3 − p1)` (its normal, not
+/// made unit) and its least height, twice its area over its longest side
+/// (how far the points are from lying on one line).
+fn triangle(points: [Point3<f64>; 3]) -> (Vector3<f64>, f64) {
+    let [p1, p2, p3] = points;
+    let (a, b) = (p2 - p1, p3 - p1);
+    let cross = a.cross(&b);
+    let longest = a.norm().max(b.norm()).max((p3 - p2).norm());
+    (cross, cross.norm() / longest)
+}
+
 /// A little random generator for the tests, so that they need no
 /// dependency.
 #[cfg(test)]
