@@ -35,13 +35,13 @@ pub struct Depths {
 
 impl Depths {
     pub fn new(model: &Model) -> Self {
-        let structure = model.structure();
-        let mut changes = Vec::with_capacity(structure.ends.len() * 2);
+        let closed = model.blocks.closed();
+        let mut changes = Vec::with_capacity(closed.len() * 2);
         let mut elses = Vec::new();
-        for (&open, &(else_row, end)) in &structure.ends {
-            changes.push((open + 1, 1));
-            changes.push((end, -1));
-            elses.extend(else_row);
+        for block in closed {
+            changes.push((block.row + 1, 1));
+            changes.push((block.end, -1));
+            elses.extend(block.else_row);
         }
         changes.sort_unstable();
         elses.sort_unstable();

@@ -385,10 +385,12 @@ impl<'a, 't> Snapshot<'a, 't> {
     pub fn folding(&self) -> Vec<lsp::FoldingRange> {
         let mut ranges: Vec<lsp::FoldingRange> = self
             .model
-            .block_ends()
-            .map(|(open, end)| lsp::FoldingRange {
-                start_line: open as u32,
-                end_line: end as u32,
+            .blocks
+            .closed()
+            .iter()
+            .map(|block| lsp::FoldingRange {
+                start_line: block.row as u32,
+                end_line: block.end as u32,
                 ..lsp::FoldingRange::default()
             })
             .collect();

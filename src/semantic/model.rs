@@ -14,6 +14,7 @@ use std::sync::{Arc, OnceLock};
 
 use crate::diagnostic::Diagnostic;
 use crate::semantic::addresses::{self, Address};
+use crate::semantic::blocks::{BlockMatcher, Blocks};
 use crate::semantic::jumps::{self, Target};
 use crate::semantic::labels::Labels;
 use crate::semantic::line_order;
@@ -65,6 +66,9 @@ pub struct Model<'src> {
     /// Syntax errors, in line order.
     pub syntax: Vec<Diagnostic>,
     pub labels: Labels,
+    /// The control blocks (IF, WHILE, FOR, LOOP, REPEAT) and what is wrong
+    /// with them.
+    pub blocks: Blocks,
     /// Defined names, in the order they are defined.
     pub symbols: Vec<Symbol>,
     /// Every name a statement reads (upper case), once.
@@ -139,15 +143,6 @@ impl<'src> Model<'src> {
         self.declarations_end
             .or(self.first_executable.map(|(_, start)| start))
             .unwrap_or(self.source.len())
-    }
-
-    /// Each control block (IF, WHILE, FOR, LOOP, REPEAT) that is closed:
-    /// the row it opens on and the row that closes it, 0-based.
-    pub fn block_ends(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
-        self.structure()
-            .ends
-            .iter()
-            .map(|(&open, &(_, end))| (open, end))
     }
 
     /// The lines that hold `target`, in order.
@@ -377,6 +372,7 @@ pub struct ModelBuilder<'src> {
     row: usize,
     syntax: Vec<Diagnostic>,
     labels: Labels,
+    blocks: BlockMatcher,
     symbols: Vec<Symbol>,
     read_names: HashSet<String>,
     stopre: Vec<usize>,
@@ -402,6 +398,7 @@ impl<'src> ModelBuilder<'src> {
             row: 0,
             syntax: Vec::new(),
             labels: Labels::default(),
+            blocks: BlockMatcher::default(),
             symbols: Vec::new(),
             read_names: HashSet::new(),
             stopre: Vec::new(),
@@ -491,6 +488,7 @@ impl<'src> ModelBuilder<'src> {
         if view.plain {
             return;
         }
+        self.blocks.line(row, block);
         for goto in gotos(block) {
             jumps::named_number(source, goto.target.as_ref(), &mut self.jump_numbers);
         }
@@ -534,6 +532,8 @@ impl<'src> ModelBuilder<'src> {
 
     /// Keeps the tree of the line just parsed for the passes after this one
     /// (if the builder keeps trees; passes asking for a line not kept parse it).
+    /// Inlined: a tree is a few hundred bytes, copied on every call.
+    #[inline]
     pub fn keep(&mut self, line: Line) {
         if self.keep_trees {
             let statements = match &line.kind {
@@ -560,6 +560,7 @@ impl<'src> ModelBuilder<'src> {
             lines,
             syntax: self.syntax,
             labels: self.labels.sorted(),
+            blocks: self.blocks.finish(),
             symbols: self.symbols,
             read_names: self.read_names,
             stopre: self.stopre,
@@ -637,6 +638,26 @@ mod tests {
         assert_eq!(model.first_r_parameter(1..2).map(|(n, _)| n), Some(1));
         assert_eq!(model.first_r_parameter(2..10), None);
         assert!(model.syntax.is_empty());
+    }
+
+    /// The blocks are matched in the model's own pass, plain lines between
+    /// them and a macro's expansion read as the control reads them.
+    #[test]
+    fn the_model_matches_the_control_blocks_once() {
+        let text = "DEFINE CLOSE AS ENDIF\nIF R1>0\nG1 X1\nN20 ELSE\nCLOSE\nWHILE R2<1\n";
+        let model = Model::of(text.as_bytes());
+        let closed: Vec<(usize, Option<usize>, usize)> = model
+            .blocks
+            .closed()
+            .iter()
+            .map(|c| (c.row, c.else_row, c.end))
+            .collect();
+        assert_eq!(closed, [(1, Some(3), 4)]);
+        assert_eq!(model.blocks.else_end(3), Some(4));
+        assert!(matches!(
+            model.blocks.faults[..],
+            [crate::semantic::blocks::Fault::NeverClosed(open)] if open.row == 5
+        ));
     }
 
     #[test]

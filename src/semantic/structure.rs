@@ -1,14 +1,13 @@
-//! The program's block structure, built once before the walk from the
-//! model: where each IF and loop ends (the model's block matching), block
-//! numbers jumps name, the regions backward jumps repeat, what each line
-//! writes, and the lines sinuprep wrote itself (a `; sinuprep:` call and the
-//! blocks emitted for it). Labels and STOPRE lines are the model's.
+//! What the walk needs of the program beyond the model, built once before
+//! it: the regions backward jumps repeat, what each line writes, and the
+//! lines sinuprep wrote itself (a `; sinuprep:` call and the blocks emitted
+//! for it). Labels, block pairs and STOPRE lines are the model's.
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
-use crate::semantic::blocks::{BlockMatcher, Event};
+use crate::semantic::blocks::opener;
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::env::Writers;
 use crate::semantic::eval::key;
@@ -113,12 +112,8 @@ fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Wri
     written
 }
 
-/// The block structure: where each IF/loop ends, labels, backward jumps.
+/// What the walk follows beyond the model: backward jumps, writers, marks.
 pub(crate) struct Structure {
-    /// Opener line -> (ELSE line, closing line).
-    pub(crate) ends: HashMap<usize, (Option<usize>, usize)>,
-    /// ELSE line -> ENDIF line.
-    pub(crate) else_ends: HashMap<usize, usize>,
     /// First line of a region a backward jump repeats -> its last line.
     pub(crate) loop_starts: HashMap<usize, usize>,
     /// Where each name is written, for forgetting a region's names.
@@ -140,8 +135,6 @@ impl Structure {
         let lines = &model.lines;
         let source = lines.source;
         let mut structure = Structure {
-            ends: HashMap::new(),
-            else_ends: HashMap::new(),
             loop_starts: HashMap::new(),
             writers: Arc::default(),
             rotation_lines: Vec::new(),
@@ -151,7 +144,6 @@ impl Structure {
             emitted: HashSet::new(),
         };
         structure.find_emitted(lines);
-        let mut blocks = BlockMatcher::default();
         // Jumps, resolved once every label is known.
         let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
         let mut writers = Writers::default();
@@ -179,19 +171,8 @@ impl Structure {
             }
             structure.cycle600_lines.extend(writes.cycle600_lines);
             jumps.extend(gotos(block).into_iter().map(|goto| (line, goto.clone())));
-            let ends = &mut structure.ends;
-            blocks.line(line, block, &mut |event| {
-                if let Event::Closed { open, row } = event {
-                    ends.insert(open.row, (open.else_row, row));
-                }
-            });
         }
         structure.writers = Arc::new(writers);
-        for &(else_line, end) in structure.ends.values() {
-            if let Some(else_line) = else_line {
-                structure.else_ends.insert(else_line, end);
-            }
-        }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
         for (line, goto) in jumps {
             let target = match (&goto.kind, &goto.target) {
@@ -253,22 +234,12 @@ impl Structure {
     }
 }
 
-/// The control statement that decides how a block is walked.
+/// The control statement that decides how a block is walked: the block it
+/// opens (the model's matching's opener), else an ELSE.
 pub(crate) fn control(block: &Block) -> Control<'_> {
-    for statement in &block.statements {
-        let control = match &statement.kind {
-            // `IF cond GOTOF L` is a jump, not a block.
-            StatementKind::If { condition } => {
-                if block
-                    .statements
-                    .iter()
-                    .any(|s| matches!(s.kind, StatementKind::Goto(_)))
-                {
-                    Control::None
-                } else {
-                    Control::IfBlock(condition)
-                }
-            }
+    match opener(block) {
+        Some((_, statement)) => match &statement.kind {
+            StatementKind::If { condition } => Control::IfBlock(condition),
             StatementKind::While { condition } => Control::Loop {
                 condition: Some(condition),
                 runs_once: false,
@@ -277,18 +248,19 @@ pub(crate) fn control(block: &Block) -> Control<'_> {
                 condition: None,
                 runs_once: false,
             },
-            StatementKind::Loop => Control::Loop {
+            // LOOP and REPEAT.
+            _ => Control::Loop {
                 condition: None,
                 runs_once: true,
             },
-            StatementKind::Repeat { targets, .. } if targets.is_empty() => Control::Loop {
-                condition: None,
-                runs_once: true,
-            },
-            StatementKind::Else => Control::Else,
-            _ => continue,
-        };
-        return control;
+        },
+        None if block
+            .statements
+            .iter()
+            .any(|s| matches!(s.kind, StatementKind::Else)) =>
+        {
+            Control::Else
+        }
+        None => Control::None,
     }
-    Control::None
 }

@@ -390,7 +390,8 @@ impl<'a> Walker<'a> {
             };
             match control(&block) {
                 Control::IfBlock(condition) => {
-                    if let Some(&(else_line, end_line)) = self.structure.ends.get(&pc) {
+                    if let Some(pair) = self.model.blocks.opened_on(pc) {
+                        let (else_line, end_line) = (pair.else_row, pair.end);
                         self.visit_expressions(&block, env);
                         let then_end = else_line.unwrap_or(end_line);
                         match self.truth(condition, env, pc) {
@@ -418,7 +419,7 @@ impl<'a> Walker<'a> {
                     condition,
                     runs_once,
                 } => {
-                    if let Some(&(_, end_line)) = self.structure.ends.get(&pc) {
+                    if let Some(end_line) = self.model.blocks.opened_on(pc).map(|b| b.end) {
                         if condition.is_some_and(|c| self.truth(c, env, pc) == Some(false)) {
                             pc = end_line + 1;
                             continue;
@@ -439,7 +440,7 @@ impl<'a> Walker<'a> {
                 }
                 // Reached at the end of a THEN branch walked in sequence.
                 Control::Else => {
-                    if let Some(&end_line) = self.structure.else_ends.get(&pc) {
+                    if let Some(end_line) = self.model.blocks.else_end(pc) {
                         pc = end_line + 1;
                         continue;
                     }

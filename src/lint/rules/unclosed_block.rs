@@ -1,8 +1,8 @@
 //! N004 `unclosed-block`: Finds IF, WHILE, FOR, LOOP and REPEAT blocks that are not closed, closed by the wrong keyword, or
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
-use crate::semantic::blocks::{BlockMatcher, Event};
+use crate::lint::rule::{Check, FileContext};
+use crate::semantic::blocks::Fault;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N004",
@@ -27,28 +27,17 @@ N30 ENDIF          ; closes nothing: the WHILE stays open
 Add or correct the closing keyword."#,
 };
 
-/// The matching is the model's (`semantic::blocks::BlockMatcher`), shared with the walk.
+/// The findings are the model's block matching's faults (`semantic::blocks`),
+/// the matching the walk and the formatter follow.
 #[derive(Default)]
-pub struct Checker {
-    blocks: BlockMatcher,
-}
+pub struct Checker;
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        _file: &FileContext,
-        row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
-        };
-        self.blocks.line(row, block, &mut |event| match event {
-            Event::Closed { .. } => {}
-            Event::LeftOpen { open, closer, row } => {
-                let keyword = open.opener.keyword();
-                out.push(
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        out.extend(file.model().blocks.faults.iter().map(|fault| {
+            match *fault {
+                Fault::LeftOpen { open, closer, row } => {
+                    let keyword = open.opener.keyword();
                     RULE.at(open.span)
                         .message(format!(
                             "{keyword} is not closed before {closer} on line {}",
@@ -59,33 +48,26 @@ impl Check for Checker {
                             "add {} before line {}",
                             open.opener.closer(),
                             row + 1
-                        )),
-                )
-            }
-            Event::Stray { closer, span } => out.push(
-                RULE.at(span)
+                        ))
+                }
+                Fault::Stray { closer, span } => RULE
+                    .at(span)
                     .message(format!("{closer} without its opening block"))
                     .label("closes nothing")
                     .help(format!("remove {closer}, or add the block it should close")),
-            ),
-            Event::StrayElse { span } => out.push(
-                RULE.at(span)
+                Fault::StrayElse { span } => RULE
+                    .at(span)
                     .message("ELSE without an open IF")
                     .label("no IF to belong to")
                     .help("add the IF, or remove the ELSE"),
-            ),
-        });
-    }
-
-    fn finish(&mut self, _file: &FileContext, out: &mut Vec<Diagnostic>) {
-        for open in std::mem::take(&mut self.blocks).finish() {
-            let keyword = open.opener.keyword();
-            out.push(
-                RULE.at(open.span)
-                    .message(format!("{keyword} is never closed"))
-                    .label(format!("{keyword} opened here"))
-                    .help(format!("add {} where the block ends", open.opener.closer())),
-            );
-        }
+                Fault::NeverClosed(open) => {
+                    let keyword = open.opener.keyword();
+                    RULE.at(open.span)
+                        .message(format!("{keyword} is never closed"))
+                        .label(format!("{keyword} opened here"))
+                        .help(format!("add {} where the block ends", open.opener.closer()))
+                }
+            }
+        }));
     }
 }
