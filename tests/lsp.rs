@@ -891,8 +891,8 @@ fn workspace_symbols_search_every_open_document() {
 }
 
 /// A large program is analysed off the main loop: a request about another
-/// document is answered while its findings are still being made, and they
-/// come after.
+/// document is answered while its findings are still being made, even when
+/// a request about the large one came first; its findings come after.
 #[test]
 fn a_large_program_is_analysed_while_other_requests_are_answered() {
     let (mut client, _) = Client::start(json!({}));
@@ -909,13 +909,22 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
         json!({ "textDocument": { "uri": "untitled:LARGE.MPF", "languageId": "sinumerik",
                                   "version": 1, "text": large } }),
     );
+    // Asked about first, the large program is answered once analysed: on
+    // a thread of its own, while the hover on the small one is answered.
+    client.send(
+        json!({ "jsonrpc": "2.0", "id": 76, "method": "textDocument/documentSymbol",
+                        "params": { "textDocument": { "uri": "untitled:LARGE.MPF" } } }),
+    );
     client.send(
         json!({ "jsonrpc": "2.0", "id": 77, "method": "textDocument/hover",
                         "params": { "textDocument": { "uri": URI },
                                     "position": { "line": 3, "character": 1 } } }),
     );
-    let first = client.receive();
+    let first = client.next(|message| message.get("id").is_some());
     assert_eq!(first["id"], 77, "the hover is answered first: {first}");
+    let symbols = client.next(|message| message["id"] == 76);
+    let labels = symbols["result"].as_array().map_or(0, Vec::len);
+    assert_eq!(labels, 15_000, "every label is a symbol");
     let found = client.diagnostics("untitled:LARGE.MPF");
     assert!(found.is_empty(), "{found:?}");
     client.stop();

@@ -1,8 +1,12 @@
-//! `sinuprep lsp`: the language server, over stdio with `lsp-server` (in
-//! order, synchronous: rust-analyzer's and ruff's choice). It holds the open
+//! `sinuprep lsp`: the language server, over stdio with `lsp-server`
+//! (synchronous: rust-analyzer's and ruff's choice). It holds the open
 //! documents and turns the protocol's requests into the library's calls and
 //! the answers back (`answers`, `convert`); every finding and every answer
-//! comes from the same analysis as `check` and `eval`. It writes protocol
+//! comes from the same analysis as `check` and `eval`. Notifications and
+//! the requests that make edits are handled in order on the main loop; the
+//! findings are made by a worker, and the requests that only read a
+//! document are answered on threads of their own, so that a document being
+//! analysed holds up no other. It writes protocol
 //! messages only to stdout; what it has to say otherwise goes to stderr.
 
 // `lsp_types::Uri` caches its parsed parts in a `Cell`; its `Hash` and `Eq`
@@ -383,65 +387,41 @@ impl Server<'_> {
         let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             self.answer_request(request)
         }))
-        .unwrap_or_else(|_| {
-            Err((
-                ErrorCode::InternalError,
-                "sinuprep failed on this request (said on stderr); please report it".to_string(),
-            ))
-        });
-        let response = match answer {
-            Ok(result) => Response::new_ok(id, result),
-            Err((code, message)) => Response::new_err(id, code as i32, message),
-        };
-        self.send(Message::Response(response));
+        .unwrap_or_else(|_| Some(Err(failed())));
+        if let Some(answer) = answer {
+            self.send(response(id, answer));
+        }
     }
 
-    fn answer_request(&self, request: Request) -> Result<serde_json::Value, (ErrorCode, String)> {
+    /// The answer to `request`; `None` for one answered on a thread of its
+    /// own ([`Self::answer_aside`]).
+    fn answer_request(&self, request: Request) -> Option<Answer> {
         use lsp::request as r;
         match request.method.as_str() {
-            r::WorkspaceSymbolRequest::METHOD => {
-                let params: lsp::WorkspaceSymbolParams = serde_json::from_value(request.params)
-                    .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
-                let symbols = self.workspace_symbols(&params.query);
-                serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(symbols))
-                    .map_err(|e| (ErrorCode::InternalError, e.to_string()))
-            }
-            r::HoverRequest::METHOD => self.answer(request, |s, p: lsp::HoverParams| {
+            r::HoverRequest::METHOD => self.answer_aside(request, |s, p: lsp::HoverParams| {
                 Ok(s.hover(p.text_document_position_params.position))
             }),
-            r::GotoDefinition::METHOD => self.answer(request, |s, p: lsp::GotoDefinitionParams| {
-                let at = p.text_document_position_params;
-                Ok(s.definition(&at.text_document.uri, at.position))
-            }),
-            r::References::METHOD => self.answer(request, |s, p: lsp::ReferenceParams| {
+            r::GotoDefinition::METHOD => {
+                self.answer_aside(request, |s, p: lsp::GotoDefinitionParams| {
+                    let at = p.text_document_position_params;
+                    Ok(s.definition(&at.text_document.uri, at.position))
+                })
+            }
+            r::References::METHOD => self.answer_aside(request, |s, p: lsp::ReferenceParams| {
                 let at = p.text_document_position;
                 let with_declaration = p.context.include_declaration;
                 Ok(s.references(&at.text_document.uri, at.position, with_declaration))
             }),
             r::DocumentSymbolRequest::METHOD => {
-                self.answer(request, |s, _: lsp::DocumentSymbolParams| {
+                self.answer_aside(request, |s, _: lsp::DocumentSymbolParams| {
                     Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
                 })
             }
             r::FoldingRangeRequest::METHOD => {
-                self.answer(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
+                self.answer_aside(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
             }
-            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
-                let only = p.context.only.as_deref();
-                Ok(s.code_actions(&p.text_document.uri, p.range, only))
-            }),
-            r::PrepareRenameRequest::METHOD => {
-                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
-                    s.prepare_rename(p.position)
-                        .map(lsp::PrepareRenameResponse::Range)
-                })
-            }
-            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
-                let at = p.text_document_position;
-                s.rename(&at.text_document.uri, at.position, &p.new_name)
-            }),
             r::DocumentDiagnosticRequest::METHOD => {
-                self.answer(request, |s, p: lsp::DocumentDiagnosticParams| {
+                self.answer_aside(request, |s, p: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,
                         items: s.diagnostics(&p.text_document.uri),
@@ -456,17 +436,48 @@ impl Server<'_> {
                     ))
                 })
             }
-            r::InlayHintRequest::METHOD => self.answer(request, |s, p: lsp::InlayHintParams| {
-                Ok(s.inlay_hints(p.range))
-            }),
+            r::InlayHintRequest::METHOD => self
+                .answer_aside(request, |s, p: lsp::InlayHintParams| {
+                    Ok(s.inlay_hints(p.range))
+                }),
             r::SemanticTokensFullRequest::METHOD => self
-                .answer(request, |s, _: lsp::SemanticTokensParams| {
+                .answer_aside(request, |s, _: lsp::SemanticTokensParams| {
                     Ok(s.semantic_tokens(None))
                 }),
             r::SemanticTokensRangeRequest::METHOD => self
-                .answer(request, |s, p: lsp::SemanticTokensRangeParams| {
+                .answer_aside(request, |s, p: lsp::SemanticTokensRangeParams| {
                     Ok(s.semantic_tokens(Some(p.range)))
                 }),
+            _ => Some(self.answer_now(request)),
+        }
+    }
+
+    /// The answer to a request answered in order on the main loop.
+    fn answer_now(&self, request: Request) -> Answer {
+        use lsp::request as r;
+        match request.method.as_str() {
+            r::WorkspaceSymbolRequest::METHOD => {
+                let params: lsp::WorkspaceSymbolParams = serde_json::from_value(request.params)
+                    .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
+                let symbols = self.workspace_symbols(&params.query);
+                serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(symbols))
+                    .map_err(|e| (ErrorCode::InternalError, e.to_string()))
+            }
+            // What makes edits is answered in order with the changes.
+            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
+                let only = p.context.only.as_deref();
+                Ok(s.code_actions(&p.text_document.uri, p.range, only))
+            }),
+            r::PrepareRenameRequest::METHOD => {
+                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
+                    s.prepare_rename(p.position)
+                        .map(lsp::PrepareRenameResponse::Range)
+                })
+            }
+            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
+                let at = p.text_document_position;
+                s.rename(&at.text_document.uri, at.position, &p.new_name)
+            }),
             r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
                 (p.text_document.uri, None)
             }),
@@ -541,29 +552,107 @@ impl Server<'_> {
         &self,
         request: Request,
         answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
-    ) -> Result<serde_json::Value, (ErrorCode, String)>
+    ) -> Answer
     where
         P: serde::de::DeserializeOwned + HasDocument,
         R: serde::Serialize,
     {
+        let (open, params) = self.about(request)?;
+        answer_from(&open, self.unit, params, answer)
+    }
+
+    /// [`Self::answer`], answered on a thread of its own: a document still
+    /// being analysed, or a hover that walks a large program, holds up no
+    /// other request. Only for requests that read (their answers may come
+    /// in any order); `None` once the thread is on its way.
+    fn answer_aside<P, R>(
+        &self,
+        request: Request,
+        answer: impl FnOnce(&Snapshot, P) -> Result<R, String> + Send + 'static,
+    ) -> Option<Answer>
+    where
+        P: serde::de::DeserializeOwned + HasDocument + Send + 'static,
+        R: serde::Serialize,
+    {
+        let id = request.id.clone();
+        let (open, params) = match self.about(request) {
+            Ok(about) => about,
+            Err(refused) => return Some(Err(refused)),
+        };
+        let (unit, sender) = (self.unit, self.connection.sender.clone());
+        let spawned = std::thread::Builder::new()
+            .name("sinuprep-request".to_string())
+            .spawn(move || {
+                let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    answer_from(&open, unit, params, answer)
+                }))
+                .unwrap_or_else(|_| Err(failed()));
+                // A client gone away ends the main loop through the receiver.
+                let _ = sender.send(response(id, answer));
+            });
+        match spawned {
+            Ok(_) => None,
+            Err(error) => Some(Err((
+                ErrorCode::InternalError,
+                format!("no thread for this request: {error}"),
+            ))),
+        }
+    }
+
+    /// The open document a request is about, and its parameters.
+    fn about<P>(&self, request: Request) -> Result<(Open, P), (ErrorCode, String)>
+    where
+        P: serde::de::DeserializeOwned + HasDocument,
+    {
         let params: P = serde_json::from_value(request.params)
             .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
-        let uri = params.document().clone();
-        let Some(open) = self.documents.get(&uri) else {
-            return Err((
+        match self.documents.get(params.document()) {
+            Some(open) => Ok((open.clone(), params)),
+            None => Err((
                 ErrorCode::InvalidParams,
-                format!("{} is not open", uri.as_str()),
-            ));
-        };
-        let answer = open
-            .with_snapshot(self.unit, |snapshot| answer(snapshot, params))
-            .ok_or_else(|| {
-                let why = "the document changed while it was analysed";
-                (ErrorCode::ContentModified, why.to_string())
-            })?
-            .map_err(|why| (ErrorCode::RequestFailed, why))?;
-        serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
+                format!("{} is not open", params.document().as_str()),
+            )),
+        }
     }
+}
+
+/// A request's result, or the error code and message it is refused with.
+type Answer = Result<serde_json::Value, (ErrorCode, String)>;
+
+/// What `answer` makes of `open`'s analysis.
+fn answer_from<P, R>(
+    open: &Open,
+    unit: ColumnUnit,
+    params: P,
+    answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
+) -> Answer
+where
+    R: serde::Serialize,
+{
+    let answer = open
+        .with_snapshot(unit, |snapshot| answer(snapshot, params))
+        .ok_or_else(|| {
+            let why = "the document changed while it was analysed";
+            (ErrorCode::ContentModified, why.to_string())
+        })?
+        .map_err(|why| (ErrorCode::RequestFailed, why))?;
+    serde_json::to_value(answer).map_err(|e| (ErrorCode::InternalError, e.to_string()))
+}
+
+fn response(id: lsp_server::RequestId, answer: Answer) -> Message {
+    Message::Response(match answer {
+        Ok(result) => Response::new_ok(id, result),
+        Err((code, message)) => Response::new_err(id, code as i32, message),
+    })
+}
+
+/// The error of a request that failed inside sinuprep (the panic said on
+/// stderr what failed).
+fn failed() -> (ErrorCode, String) {
+    (
+        ErrorCode::InternalError,
+        "sinuprep failed on this request (said on stderr); please report it".to_string(),
+    )
 }
 
 /// The document a request is about.
