@@ -75,6 +75,12 @@ impl Held {
         self.with_dependent(|_, lazy| lazy.stale.store(true, Ordering::Relaxed));
     }
 
+    /// Whether the analysis is made (or refused, the version stopped): a
+    /// question asked now is answered without waiting for it.
+    pub fn is_analysed(&self) -> bool {
+        self.with_dependent(|_, lazy| lazy.analyzed.get().is_some())
+    }
+
     /// Answers from the analysis of the text as it is now, made with
     /// `settings` under the name `name` by the first question asked;
     /// `None` once the version is [stopped](Self::stop) before its analysis

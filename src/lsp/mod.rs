@@ -398,30 +398,43 @@ impl Server<'_> {
     fn answer_request(&self, request: Request) -> Option<Answer> {
         use lsp::request as r;
         match request.method.as_str() {
-            r::HoverRequest::METHOD => self.answer_aside(request, |s, p: lsp::HoverParams| {
-                Ok(s.hover(p.text_document_position_params.position))
-            }),
-            r::GotoDefinition::METHOD => {
-                self.answer_aside(request, |s, p: lsp::GotoDefinitionParams| {
+            // A hover on a variable walks the program for its value.
+            r::HoverRequest::METHOD => {
+                self.answer_aside(request, Waits::Walk, |s, p: lsp::HoverParams| {
+                    Ok(s.hover(p.text_document_position_params.position))
+                })
+            }
+            r::GotoDefinition::METHOD => self.answer_aside(
+                request,
+                Waits::Analysis,
+                |s, p: lsp::GotoDefinitionParams| {
                     let at = p.text_document_position_params;
                     Ok(s.definition(&at.text_document.uri, at.position))
+                },
+            ),
+            r::References::METHOD => {
+                self.answer_aside(request, Waits::Analysis, |s, p: lsp::ReferenceParams| {
+                    let at = p.text_document_position;
+                    let with_declaration = p.context.include_declaration;
+                    Ok(s.references(&at.text_document.uri, at.position, with_declaration))
                 })
             }
-            r::References::METHOD => self.answer_aside(request, |s, p: lsp::ReferenceParams| {
-                let at = p.text_document_position;
-                let with_declaration = p.context.include_declaration;
-                Ok(s.references(&at.text_document.uri, at.position, with_declaration))
-            }),
-            r::DocumentSymbolRequest::METHOD => {
-                self.answer_aside(request, |s, _: lsp::DocumentSymbolParams| {
+            r::DocumentSymbolRequest::METHOD => self.answer_aside(
+                request,
+                Waits::Analysis,
+                |s, _: lsp::DocumentSymbolParams| {
                     Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
+                },
+            ),
+            r::FoldingRangeRequest::METHOD => {
+                self.answer_aside(request, Waits::Analysis, |s, _: lsp::FoldingRangeParams| {
+                    Ok(s.folding())
                 })
             }
-            r::FoldingRangeRequest::METHOD => {
-                self.answer_aside(request, |s, _: lsp::FoldingRangeParams| Ok(s.folding()))
-            }
-            r::DocumentDiagnosticRequest::METHOD => {
-                self.answer_aside(request, |s, p: lsp::DocumentDiagnosticParams| {
+            r::DocumentDiagnosticRequest::METHOD => self.answer_aside(
+                request,
+                Waits::Analysis,
+                |s, p: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,
                         items: s.diagnostics(&p.text_document.uri),
@@ -434,20 +447,23 @@ impl Server<'_> {
                             },
                         ),
                     ))
+                },
+            ),
+            r::InlayHintRequest::METHOD => {
+                self.answer_aside(request, Waits::Analysis, |s, p: lsp::InlayHintParams| {
+                    Ok(s.inlay_hints(p.range))
                 })
             }
-            r::InlayHintRequest::METHOD => self
-                .answer_aside(request, |s, p: lsp::InlayHintParams| {
-                    Ok(s.inlay_hints(p.range))
-                }),
-            r::SemanticTokensFullRequest::METHOD => self
-                .answer_aside(request, |s, _: lsp::SemanticTokensParams| {
-                    Ok(s.semantic_tokens(None))
-                }),
-            r::SemanticTokensRangeRequest::METHOD => self
-                .answer_aside(request, |s, p: lsp::SemanticTokensRangeParams| {
-                    Ok(s.semantic_tokens(Some(p.range)))
-                }),
+            r::SemanticTokensFullRequest::METHOD => self.answer_aside(
+                request,
+                Waits::Analysis,
+                |s, _: lsp::SemanticTokensParams| Ok(s.semantic_tokens(None)),
+            ),
+            r::SemanticTokensRangeRequest::METHOD => self.answer_aside(
+                request,
+                Waits::Analysis,
+                |s, p: lsp::SemanticTokensRangeParams| Ok(s.semantic_tokens(Some(p.range))),
+            ),
             _ => Some(self.answer_now(request)),
         }
     }
@@ -561,13 +577,15 @@ impl Server<'_> {
         answer_from(&open, self.unit, params, answer)
     }
 
-    /// [`Self::answer`], answered on a thread of its own: a document still
-    /// being analysed, or a hover that walks a large program, holds up no
-    /// other request. Only for requests that read (their answers may come
-    /// in any order); `None` once the thread is on its way.
+    /// [`Self::answer`], answered on a thread of its own when it may wait
+    /// (`waits`): a document still being analysed, or a hover that walks a
+    /// large program, holds up no other request. Only for requests that
+    /// read (their answers may come in any order); `None` once the thread
+    /// is on its way.
     fn answer_aside<P, R>(
         &self,
         request: Request,
+        waits: Waits,
         answer: impl FnOnce(&Snapshot, P) -> Result<R, String> + Send + 'static,
     ) -> Option<Answer>
     where
@@ -579,6 +597,12 @@ impl Server<'_> {
             Ok(about) => about,
             Err(refused) => return Some(Err(refused)),
         };
+        // On a thread of its own, the symbols of 10,000 lines took a few
+        // milliseconds more (`cargo bench --bench lsp`): what is ready is
+        // answered here.
+        if waits == Waits::Analysis && open.held.is_analysed() {
+            return Some(answer_from(&open, self.unit, params, answer));
+        }
         let (unit, sender) = (self.unit, self.connection.sender.clone());
         let spawned = std::thread::Builder::new()
             .name("sinuprep-request".to_string())
@@ -614,6 +638,15 @@ impl Server<'_> {
             )),
         }
     }
+}
+
+/// What answering a request that reads may wait for.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Waits {
+    /// Only the document's analysis.
+    Analysis,
+    /// A walk of the program too, however long it is.
+    Walk,
 }
 
 /// A request's result, or the error code and message it is refused with.
