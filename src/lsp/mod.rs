@@ -2,12 +2,12 @@
 //! (synchronous: rust-analyzer's and ruff's choice). It holds the open
 //! documents and turns the protocol's requests into the library's calls and
 //! the answers back (`answers`, `convert`); every finding and every answer
-//! comes from the same analysis as `check` and `eval`. Notifications and
-//! the requests that make edits are handled in order on the main loop; the
-//! findings are made by a worker, and the requests that only read a
-//! document are answered on threads of their own, so that a document being
-//! analysed holds up no other. It writes protocol
-//! messages only to stdout; what it has to say otherwise goes to stderr.
+//! comes from the same analysis as `check` and `eval`. The main loop takes
+//! the messages in order; the findings are made by a worker, and a request
+//! that must wait for a document's analysis (or walk a program, as a hover
+//! may) is answered on a thread of its own, so that a large document holds
+//! up no other. It writes protocol messages only to stdout; what it has to
+//! say otherwise goes to stderr.
 
 // `lsp_types::Uri` caches its parsed parts in a `Cell`; its `Hash` and `Eq`
 // read only its text, so it is a sound key.
@@ -394,17 +394,17 @@ impl Server<'_> {
     }
 
     /// The answer to `request`; `None` for one answered on a thread of its
-    /// own ([`Self::answer_aside`]).
+    /// own ([`Self::answer_when`]).
     fn answer_request(&self, request: Request) -> Option<Answer> {
         use lsp::request as r;
         match request.method.as_str() {
             // A hover on a variable walks the program for its value.
             r::HoverRequest::METHOD => {
-                self.answer_aside(request, Waits::Walk, |s, p: lsp::HoverParams| {
+                self.answer_document(request, Waits::Walk, |s, p: lsp::HoverParams| {
                     Ok(s.hover(p.text_document_position_params.position))
                 })
             }
-            r::GotoDefinition::METHOD => self.answer_aside(
+            r::GotoDefinition::METHOD => self.answer_document(
                 request,
                 Waits::Analysis,
                 |s, p: lsp::GotoDefinitionParams| {
@@ -413,25 +413,26 @@ impl Server<'_> {
                 },
             ),
             r::References::METHOD => {
-                self.answer_aside(request, Waits::Analysis, |s, p: lsp::ReferenceParams| {
+                self.answer_document(request, Waits::Analysis, |s, p: lsp::ReferenceParams| {
                     let at = p.text_document_position;
                     let with_declaration = p.context.include_declaration;
                     Ok(s.references(&at.text_document.uri, at.position, with_declaration))
                 })
             }
-            r::DocumentSymbolRequest::METHOD => self.answer_aside(
+            r::DocumentSymbolRequest::METHOD => self.answer_document(
                 request,
                 Waits::Analysis,
                 |s, _: lsp::DocumentSymbolParams| {
                     Ok(lsp::DocumentSymbolResponse::Nested(s.symbols()))
                 },
             ),
+            r::WorkspaceSymbolRequest::METHOD => self.workspace_symbols(request),
             r::FoldingRangeRequest::METHOD => {
-                self.answer_aside(request, Waits::Analysis, |s, _: lsp::FoldingRangeParams| {
+                self.answer_document(request, Waits::Analysis, |s, _: lsp::FoldingRangeParams| {
                     Ok(s.folding())
                 })
             }
-            r::DocumentDiagnosticRequest::METHOD => self.answer_aside(
+            r::DocumentDiagnosticRequest::METHOD => self.answer_document(
                 request,
                 Waits::Analysis,
                 |s, p: lsp::DocumentDiagnosticParams| {
@@ -450,89 +451,98 @@ impl Server<'_> {
                 },
             ),
             r::InlayHintRequest::METHOD => {
-                self.answer_aside(request, Waits::Analysis, |s, p: lsp::InlayHintParams| {
+                self.answer_document(request, Waits::Analysis, |s, p: lsp::InlayHintParams| {
                     Ok(s.inlay_hints(p.range))
                 })
             }
-            r::SemanticTokensFullRequest::METHOD => self.answer_aside(
+            r::SemanticTokensFullRequest::METHOD => self.answer_document(
                 request,
                 Waits::Analysis,
                 |s, _: lsp::SemanticTokensParams| Ok(s.semantic_tokens(None)),
             ),
-            r::SemanticTokensRangeRequest::METHOD => self.answer_aside(
+            r::SemanticTokensRangeRequest::METHOD => self.answer_document(
                 request,
                 Waits::Analysis,
                 |s, p: lsp::SemanticTokensRangeParams| Ok(s.semantic_tokens(Some(p.range))),
             ),
-            _ => Some(self.answer_now(request)),
-        }
-    }
-
-    /// The answer to a request answered in order on the main loop.
-    fn answer_now(&self, request: Request) -> Answer {
-        use lsp::request as r;
-        match request.method.as_str() {
-            r::WorkspaceSymbolRequest::METHOD => {
-                let params: lsp::WorkspaceSymbolParams = serde_json::from_value(request.params)
-                    .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
-                let symbols = self.workspace_symbols(&params.query);
-                serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(symbols))
-                    .map_err(|e| (ErrorCode::InternalError, e.to_string()))
-            }
-            // What makes edits is answered in order with the changes.
-            r::CodeActionRequest::METHOD => self.answer(request, |s, p: lsp::CodeActionParams| {
-                let only = p.context.only.as_deref();
-                Ok(s.code_actions(&p.text_document.uri, p.range, only))
-            }),
-            r::PrepareRenameRequest::METHOD => {
-                self.answer(request, |s, p: lsp::TextDocumentPositionParams| {
-                    s.prepare_rename(p.position)
-                        .map(lsp::PrepareRenameResponse::Range)
+            // Edits are made on the version the request names, whenever
+            // they are answered: the client applies them to that version.
+            r::CodeActionRequest::METHOD => {
+                self.answer_document(request, Waits::Analysis, |s, p: lsp::CodeActionParams| {
+                    let only = p.context.only.as_deref();
+                    Ok(s.code_actions(&p.text_document.uri, p.range, only))
                 })
             }
-            r::Rename::METHOD => self.answer(request, |s, p: lsp::RenameParams| {
-                let at = p.text_document_position;
-                s.rename(&at.text_document.uri, at.position, &p.new_name)
-            }),
-            r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
-                (p.text_document.uri, None)
-            }),
-            r::RangeFormatting::METHOD => self
-                .format(request, |p: lsp::DocumentRangeFormattingParams| {
+            r::PrepareRenameRequest::METHOD => self.answer_document(
+                request,
+                Waits::Analysis,
+                |s, p: lsp::TextDocumentPositionParams| {
+                    s.prepare_rename(p.position)
+                        .map(lsp::PrepareRenameResponse::Range)
+                },
+            ),
+            r::Rename::METHOD => {
+                self.answer_document(request, Waits::Analysis, |s, p: lsp::RenameParams| {
+                    let at = p.text_document_position;
+                    s.rename(&at.text_document.uri, at.position, &p.new_name)
+                })
+            }
+            r::Formatting::METHOD => {
+                Some(self.format(request, |p: lsp::DocumentFormattingParams| {
+                    (p.text_document.uri, None)
+                }))
+            }
+            r::RangeFormatting::METHOD => Some(
+                self.format(request, |p: lsp::DocumentRangeFormattingParams| {
                     (p.text_document.uri, Some(p.range))
                 }),
-            method => Err((
+            ),
+            method => Some(Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
-            )),
+            ))),
         }
     }
 
     /// The symbols of every open document whose name holds `query` (any
     /// case), in the documents' order by URI.
     #[allow(deprecated)] // `SymbolInformation::deprecated` must still be written.
-    fn workspace_symbols(&self, query: &str) -> Vec<lsp::SymbolInformation> {
-        let query = query.to_uppercase();
-        let mut uris: Vec<&lsp::Uri> = self.documents.keys().collect();
-        uris.sort_by_key(|uri| uri.as_str());
-        let mut out = Vec::new();
-        for uri in uris {
-            let symbols = self.documents[uri]
-                .with_snapshot(self.unit, |s| s.symbols())
-                .unwrap_or_default();
-            let matching = symbols
-                .into_iter()
-                .filter(|symbol| symbol.name.to_uppercase().contains(&query));
-            out.extend(matching.map(|symbol| lsp::SymbolInformation {
-                name: symbol.name,
-                kind: symbol.kind,
-                tags: None,
-                deprecated: None,
-                location: lsp::Location::new(uri.clone(), symbol.selection_range),
-                container_name: None,
-            }));
-        }
-        out
+    fn workspace_symbols(&self, request: Request) -> Option<Answer> {
+        let id = request.id.clone();
+        let params: lsp::WorkspaceSymbolParams = match serde_json::from_value(request.params) {
+            Ok(params) => params,
+            Err(error) => return Some(Err((ErrorCode::InvalidParams, error.to_string()))),
+        };
+        let mut documents: Vec<(lsp::Uri, Open)> = self
+            .documents
+            .iter()
+            .map(|(uri, open)| (uri.clone(), open.clone()))
+            .collect();
+        documents.sort_by(|(a, _), (b, _)| a.as_str().cmp(b.as_str()));
+        let ready = documents.iter().all(|(_, open)| open.held.is_analysed());
+        let unit = self.unit;
+        self.answer_when(id, ready, move || {
+            let query = params.query.to_uppercase();
+            let mut out = Vec::new();
+            for (uri, open) in documents {
+                let symbols = open
+                    .with_snapshot(unit, |s| s.symbols())
+                    .unwrap_or_default();
+                let matching = symbols
+                    .into_iter()
+                    .filter(|symbol| symbol.name.to_uppercase().contains(&query));
+                out.extend(matching.map(|symbol| lsp::SymbolInformation {
+                    name: symbol.name,
+                    kind: symbol.kind,
+                    tags: None,
+                    deprecated: None,
+                    location: lsp::Location::new(uri.clone(), symbol.selection_range),
+                    container_name: None,
+                }));
+            }
+            serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(out))
+                .map_err(|e| (ErrorCode::InternalError, e.to_string()))
+        })
     }
 
     /// The edits `sinuprep fmt` would make to a document (or the lines of a
@@ -562,27 +572,10 @@ impl Server<'_> {
         serde_json::to_value(edits).map_err(|e| (ErrorCode::InternalError, e.to_string()))
     }
 
-    /// The answer to a request about one open document, or why the
-    /// server will not do what it asks.
-    fn answer<P, R>(
-        &self,
-        request: Request,
-        answer: impl FnOnce(&Snapshot, P) -> Result<R, String>,
-    ) -> Answer
-    where
-        P: serde::de::DeserializeOwned + HasDocument,
-        R: serde::Serialize,
-    {
-        let (open, params) = self.about(request)?;
-        answer_from(&open, self.unit, params, answer)
-    }
-
-    /// [`Self::answer`], answered on a thread of its own when it may wait
-    /// (`waits`): a document still being analysed, or a hover that walks a
-    /// large program, holds up no other request. Only for requests that
-    /// read (their answers may come in any order); `None` once the thread
-    /// is on its way.
-    fn answer_aside<P, R>(
+    /// The answer to a request about one open document, made from its
+    /// analysis, or why the server will not do what it asks; answered here
+    /// when the analysis is made and the answer `waits` for nothing else.
+    fn answer_document<P, R>(
         &self,
         request: Request,
         waits: Waits,
@@ -597,20 +590,34 @@ impl Server<'_> {
             Ok(about) => about,
             Err(refused) => return Some(Err(refused)),
         };
+        let ready = waits == Waits::Analysis && open.held.is_analysed();
+        let unit = self.unit;
+        self.answer_when(id, ready, move || answer_from(&open, unit, params, answer))
+    }
+
+    /// `work`'s answer: made here when `ready`, else on a thread of its
+    /// own (`None` once it is on its way), so that a document still being
+    /// analysed, or a hover that walks a large program, holds up no other
+    /// request. Its answer may then come after later ones: the protocol
+    /// allows it, and it is made from the version the request named.
+    fn answer_when(
+        &self,
+        id: lsp_server::RequestId,
+        ready: bool,
+        work: impl FnOnce() -> Answer + Send + 'static,
+    ) -> Option<Answer> {
         // On a thread of its own, the symbols of 10,000 lines took a few
         // milliseconds more (`cargo bench --bench lsp`): what is ready is
         // answered here.
-        if waits == Waits::Analysis && open.held.is_analysed() {
-            return Some(answer_from(&open, self.unit, params, answer));
+        if ready {
+            return Some(work());
         }
-        let (unit, sender) = (self.unit, self.connection.sender.clone());
+        let sender = self.connection.sender.clone();
         let spawned = std::thread::Builder::new()
             .name("sinuprep-request".to_string())
             .spawn(move || {
-                let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    answer_from(&open, unit, params, answer)
-                }))
-                .unwrap_or_else(|_| Err(failed()));
+                let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
+                    .unwrap_or_else(|_| Err(failed()));
                 // A client gone away ends the main loop through the receiver.
                 let _ = sender.send(response(id, answer));
             });
