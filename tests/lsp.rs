@@ -754,6 +754,31 @@ fn semantic_tokens_give_each_word_its_class() {
     client.stop();
 }
 
+/// Past 200,000 lines the words are not coloured at once: the request is
+/// refused with the reason, and a range of them is still coloured.
+#[test]
+fn semantic_tokens_of_a_huge_program_are_refused_with_the_reason() {
+    let (mut client, _) = Client::start(json!({}));
+    let uri = "untitled:HUGE.MPF";
+    client.open(uri, &"G1 X1\n".repeat(200_001));
+    let full = client.request(
+        "textDocument/semanticTokens/full",
+        json!({ "textDocument": { "uri": uri } }),
+    );
+    let message = full["error"]["message"].as_str().expect("refused");
+    assert!(
+        message.contains("at most 200000 lines") && message.contains("200001 lines"),
+        "{message}"
+    );
+    let range = client.request(
+        "textDocument/semanticTokens/range",
+        json!({ "textDocument": { "uri": uri },
+                "range": { "start": { "line": 5, "character": 0 }, "end": { "line": 5, "character": 5 } } }),
+    );
+    assert_eq!(range["data"].as_array().map(Vec::len), Some(15), "{range}");
+    client.stop();
+}
+
 /// A run of comment lines folds as a comment; a lone one does not.
 #[test]
 fn a_run_of_comment_lines_folds() {

@@ -22,6 +22,11 @@ use super::convert;
 /// its own (`source.fixAll.ruff`).
 pub const FIX_ALL: &str = "source.fixAll.sinuprep";
 
+/// The most lines whose words are coloured in one answer: the words of a
+/// CAM program take about a second and 23 MB of JSON for 160,000 lines
+/// (10 MB), and an editor asks again after every change.
+pub const MOST_COLOURED_LINES: usize = 200_000;
+
 pub struct Snapshot<'a, 't> {
     text: &'t Text,
     name: &'a str,
@@ -633,17 +638,29 @@ impl Snapshot<'_, '_> {
     }
 
     /// The class of each word, for the client to colour: of the lines
-    /// `range` touches, or of the whole document.
-    pub fn semantic_tokens(&self, range: Option<lsp::Range>) -> lsp::SemanticTokens {
+    /// `range` touches, or of the whole document; refused past
+    /// [`MOST_COLOURED_LINES`] lines, the editor's own colours staying.
+    pub fn semantic_tokens(
+        &self,
+        range: Option<lsp::Range>,
+    ) -> Result<lsp::SemanticTokens, String> {
+        let lines = self.model.lines.len();
         let rows = match range {
-            Some(range) => range.start.line as usize..range.end.line as usize + 1,
-            None => 0..self.model.lines.len(),
+            Some(range) => range.start.line as usize..(range.end.line as usize + 1).min(lines),
+            None => 0..lines,
         };
+        if rows.len() > MOST_COLOURED_LINES {
+            return Err(format!(
+                "sinuprep colours at most {MOST_COLOURED_LINES} lines at once; {} lines were asked for \
+                 (the editor's own highlighting stays; a range of them is coloured)",
+                rows.len()
+            ));
+        }
         let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), rows);
-        lsp::SemanticTokens {
+        Ok(lsp::SemanticTokens {
             result_id: None,
             data: convert::semantic_tokens(self.text, &tokens, self.unit),
-        }
+        })
     }
 
     /// After each CYCLE600 evaluated offline, the angles it computes; after

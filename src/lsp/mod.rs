@@ -4,9 +4,9 @@
 //! the answers back (`answers`, `convert`); every finding and every answer
 //! comes from the same analysis as `check` and `eval`. The main loop takes
 //! the messages in order; the findings are made by a worker, and a request
-//! that must wait for a document's analysis (or walk a program, as a hover
-//! may) is answered on a thread of its own, so that a large document holds
-//! up no other. It writes protocol messages only to stdout; what it has to
+//! that must wait for a document's analysis, or work through the whole
+//! program (a hover's walk, the words' classes), is answered on a thread of
+//! its own, so that a large document holds up no other. It writes protocol messages only to stdout; what it has to
 //! say otherwise goes to stderr.
 
 // `lsp_types::Uri` caches its parsed parts in a `Cell`; its `Hash` and `Eq`
@@ -400,7 +400,7 @@ impl Server<'_> {
         match request.method.as_str() {
             // A hover on a variable walks the program for its value.
             r::HoverRequest::METHOD => {
-                self.answer_document(request, Waits::Walk, |s, p: lsp::HoverParams| {
+                self.answer_document(request, Waits::Work, |s, p: lsp::HoverParams| {
                     Ok(s.hover(p.text_document_position_params.position))
                 })
             }
@@ -455,15 +455,15 @@ impl Server<'_> {
                     Ok(s.inlay_hints(p.range))
                 })
             }
-            r::SemanticTokensFullRequest::METHOD => self.answer_document(
-                request,
-                Waits::Analysis,
-                |s, _: lsp::SemanticTokensParams| Ok(s.semantic_tokens(None)),
-            ),
+            r::SemanticTokensFullRequest::METHOD => {
+                self.answer_document(request, Waits::Work, |s, _: lsp::SemanticTokensParams| {
+                    s.semantic_tokens(None)
+                })
+            }
             r::SemanticTokensRangeRequest::METHOD => self.answer_document(
                 request,
-                Waits::Analysis,
-                |s, p: lsp::SemanticTokensRangeParams| Ok(s.semantic_tokens(Some(p.range))),
+                Waits::Work,
+                |s, p: lsp::SemanticTokensRangeParams| s.semantic_tokens(Some(p.range)),
             ),
             // Edits are made on the version the request names, whenever
             // they are answered: the client applies them to that version.
@@ -647,13 +647,14 @@ impl Server<'_> {
     }
 }
 
-/// What answering a request that reads may wait for.
+/// What answering a request may wait for.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Waits {
     /// Only the document's analysis.
     Analysis,
-    /// A walk of the program too, however long it is.
-    Walk,
+    /// Work of its own as long as the program: a hover's walk, the
+    /// classes of every word.
+    Work,
 }
 
 /// A request's result, or the error code and message it is refused with.
