@@ -754,6 +754,31 @@ fn semantic_tokens_give_each_word_its_class() {
     client.stop();
 }
 
+/// A program with more findings than an editor can show gets the first
+/// 10,000 by position, and one more that says how many there are.
+#[test]
+fn findings_past_the_most_shown_are_counted_not_sent() {
+    let (mut client, _) = Client::start(json!({}));
+    let uri = "untitled:MANY.MPF";
+    let found = client.open(uri, &("G1 F100 X1 X2\n".repeat(10_005) + "M30\n"));
+    assert_eq!(found.len(), 10_001);
+    assert!(found[..10_000].iter().all(|d| d["code"] == "N022"));
+    assert_eq!(found[9_999]["range"]["start"]["line"], 9_999);
+    let last = &found[10_000];
+    assert_eq!(last["severity"], 3, "{last}");
+    assert_eq!(
+        last["range"]["start"],
+        json!({ "line": 10_000, "character": 11 })
+    );
+    let message = last["message"].as_str().expect("a message");
+    assert!(
+        message.starts_with("10000 of the 10005 findings are shown")
+            && message.contains("sinuprep check"),
+        "{message}"
+    );
+    client.stop();
+}
+
 /// Past 200,000 lines the words are not coloured at once: the request is
 /// refused with the reason, and a range of them is still coloured.
 #[test]
