@@ -779,20 +779,21 @@ fn findings_past_the_most_shown_are_counted_not_sent() {
     client.stop();
 }
 
-/// Past 200,000 lines the words are not coloured at once: the request is
-/// refused with the reason, and a range of them is still coloured.
+/// Past 10 MB the words are not coloured at once: the request is refused
+/// with the reason, and a range of lines is still coloured; one long line
+/// counts by its bytes.
 #[test]
 fn semantic_tokens_of_a_huge_program_are_refused_with_the_reason() {
     let (mut client, _) = Client::start(json!({}));
     let uri = "untitled:HUGE.MPF";
-    client.open(uri, &"G1 X1\n".repeat(200_001));
+    client.open(uri, &"G1 X1 Y2 Z3\n".repeat(1_000_000));
     let full = client.request(
         "textDocument/semanticTokens/full",
         json!({ "textDocument": { "uri": uri } }),
     );
     let message = full["error"]["message"].as_str().expect("refused");
     assert!(
-        message.contains("at most 200000 lines") && message.contains("200001 lines"),
+        message.contains("at most 10 MB") && message.contains("12.0 MB were asked for"),
         "{message}"
     );
     let range = client.request(
@@ -800,7 +801,16 @@ fn semantic_tokens_of_a_huge_program_are_refused_with_the_reason() {
         json!({ "textDocument": { "uri": uri },
                 "range": { "start": { "line": 5, "character": 0 }, "end": { "line": 5, "character": 5 } } }),
     );
-    assert_eq!(range["data"].as_array().map(Vec::len), Some(15), "{range}");
+    assert_eq!(range["data"].as_array().map(Vec::len), Some(35), "{range}");
+    let long = "untitled:LONG.MPF";
+    client.open(long, &format!("{}\nM30\n", "X1 ".repeat(3_400_000)));
+    let line = client.request(
+        "textDocument/semanticTokens/range",
+        json!({ "textDocument": { "uri": long },
+                "range": { "start": { "line": 0, "character": 0 }, "end": { "line": 0, "character": 5 } } }),
+    );
+    let message = line["error"]["message"].as_str().expect("refused");
+    assert!(message.contains("10.2 MB were asked for"), "{message}");
     client.stop();
 }
 

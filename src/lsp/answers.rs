@@ -27,10 +27,10 @@ pub const FIX_ALL: &str = "source.fixAll.sinuprep";
 /// publish them (750 MB of JSON), for no editor to show.
 pub const MOST_SHOWN_FINDINGS: usize = 10_000;
 
-/// The most lines whose words are coloured in one answer: the words of a
-/// CAM program take about a second and 23 MB of JSON for 160,000 lines
-/// (10 MB), and an editor asks again after every change.
-pub const MOST_COLOURED_LINES: usize = 200_000;
+/// The most bytes of a program whose words are coloured in one answer: the
+/// words of a CAM program take about a second and 23 MB of JSON for 10 MB
+/// (160,000 lines), and an editor asks again after every change.
+pub const MOST_COLOURED_BYTES: usize = 10_000_000;
 
 pub struct Snapshot<'a, 't> {
     text: &'t Text,
@@ -664,7 +664,7 @@ impl Snapshot<'_, '_> {
 
     /// The class of each word, for the client to colour: of the lines
     /// `range` touches, or of the whole document; refused past
-    /// [`MOST_COLOURED_LINES`] lines, the editor's own colours staying.
+    /// [`MOST_COLOURED_BYTES`], the editor's own colours staying.
     pub fn semantic_tokens(
         &self,
         range: Option<lsp::Range>,
@@ -674,11 +674,18 @@ impl Snapshot<'_, '_> {
             Some(range) => range.start.line as usize..(range.end.line as usize + 1).min(lines),
             None => 0..lines,
         };
-        if rows.len() > MOST_COLOURED_LINES {
+        let bytes = match (rows.start, rows.end.checked_sub(1)) {
+            (first, Some(last)) if first <= last => {
+                self.model.lines.raw(last).full().end - self.model.lines.raw(first).content.start
+            }
+            _ => 0,
+        };
+        if bytes > MOST_COLOURED_BYTES {
             return Err(format!(
-                "sinuprep colours at most {MOST_COLOURED_LINES} lines at once; {} lines were asked for \
-                 (the editor's own highlighting stays; a range of them is coloured)",
-                rows.len()
+                "sinuprep colours at most {} MB of a program at once; {:.1} MB were asked for \
+                 (the editor's own highlighting stays; a range of lines is coloured)",
+                MOST_COLOURED_BYTES / 1_000_000,
+                bytes as f64 / 1e6
             ));
         }
         let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), rows);
