@@ -551,7 +551,7 @@ impl Server<'_> {
         &self,
         request: Request,
         target: impl FnOnce(P) -> (lsp::Uri, Option<lsp::Range>),
-    ) -> Result<serde_json::Value, (ErrorCode, String)> {
+    ) -> Answer {
         let params: P = serde_json::from_value(request.params)
             .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
         let (uri, range) = target(params);
@@ -597,7 +597,7 @@ impl Server<'_> {
 
     /// `work`'s answer: made here when `ready`, else on a thread of its
     /// own (`None` once it is on its way), so that a document still being
-    /// analysed, or a hover that walks a large program, holds up no other
+    /// analysed, or work through a whole large program, holds up no other
     /// request. Its answer may then come after later ones: the protocol
     /// allows it, and it is made from the version the request named.
     fn answer_when(
