@@ -4,7 +4,15 @@
 //! subprogram calls, a CYCLE600 in the middle). Prints, over 40 rounds each,
 //! the minimum, median and maximum of: an incremental change to its
 //! diagnostics published, a hover on the CYCLE600 answered, the document's
-//! symbols answered. `cargo bench --bench lsp`; nothing is asserted.
+//! symbols answered.
+//!
+//! Then the large programs an editor may be given (size in MB:
+//! `SINUPREP_BENCH_LSP_MB`, default 100): a CAM program opened while a
+//! hover on the small program is asked (how long the hover waits), its
+//! findings, its symbols and its semantic tokens (refused past 10 MB); and
+//! a program with a finding on each line (a twelfth of that size): how long
+//! its findings take and how large they are; the server's peak memory.
+//! `cargo bench --bench lsp`; nothing is asserted.
 
 use std::time::Instant;
 
@@ -126,5 +134,96 @@ fn main() {
         "document symbols",
         timed(&mut client, "textDocument/documentSymbol", document),
     );
+    large_programs(&mut client);
     client.stop();
+}
+
+/// What a large program costs the server and the editor's other requests.
+fn large_programs(client: &mut Client) {
+    let megabytes: usize = std::env::var("SINUPREP_BENCH_LSP_MB")
+        .ok()
+        .and_then(|m| m.parse().ok())
+        .unwrap_or(100);
+    let cam = cam_program(megabytes * 1_000_000);
+    let uri = "untitled:CAM.MPF";
+    let started = Instant::now();
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": uri, "languageId": "sinumerik", "version": 1, "text": cam } }),
+    );
+    let asked = Instant::now();
+    client.request(
+        "textDocument/hover",
+        json!({ "textDocument": { "uri": URI }, "position": { "line": 2, "character": 1 } }),
+    );
+    let hover = asked.elapsed().as_secs_f64();
+    let findings = client.diagnostics(uri).len();
+    let analysed = started.elapsed().as_secs_f64();
+    let document = json!({ "textDocument": { "uri": uri } });
+    let once = |client: &mut Client, method: &str| {
+        let asked = Instant::now();
+        let answer = client.request(method, document.clone());
+        (asked.elapsed().as_secs_f64(), answer.to_string().len())
+    };
+    let (symbols, symbols_size) = once(client, "textDocument/documentSymbol");
+    let (tokens, tokens_size) = once(client, "textDocument/semanticTokens/full");
+    let row = |what: String, figure: String| println!("  {what:<60} {figure:>12}");
+    println!(
+        "\n{megabytes} MB CAM program, {} lines:",
+        cam.lines().count()
+    );
+    row(
+        "a hover on the small program, asked as it opens".to_string(),
+        format!("{:.1} ms", hover * 1e3),
+    );
+    row(
+        format!("open to its findings ({findings})"),
+        format!("{analysed:.2} s"),
+    );
+    row(
+        format!("document symbols ({symbols_size} bytes)"),
+        format!("{:.1} ms", symbols * 1e3),
+    );
+    row(
+        format!("semantic tokens, whole ({tokens_size} bytes)"),
+        format!("{:.1} ms", tokens * 1e3),
+    );
+
+    let lines = megabytes * 1_000_000 / 12 / 14;
+    let many = "G1 F100 X1 X2\n".repeat(lines) + "M30\n";
+    let uri = "untitled:MANY.MPF";
+    let started = Instant::now();
+    let found = client.open(uri, &many);
+    let published = started.elapsed().as_secs_f64();
+    let size = serde_json::to_string(&found).map_or(0, |text| text.len());
+    println!("A finding on each of {lines} lines:");
+    row(
+        format!("open to its findings ({} given, {size} bytes)", found.len()),
+        format!("{published:.2} s"),
+    );
+    if let Some(peak) = client.peak_memory_kib() {
+        row(
+            "the server's peak memory".to_string(),
+            format!("{} MiB", peak / 1024),
+        );
+    }
+}
+
+/// A CAM program of about `size` bytes: numbered motion blocks, no finding.
+fn cam_program(size: usize) -> String {
+    let mut out =
+        String::from("; generated\nN10 G17 G54 G90 G71\nN20 T1 D1 M6\nN30 G0 X0 Y0 Z50\n");
+    let mut n = 30u64;
+    while out.len() < size {
+        n += 10;
+        let v = n as f64 * 0.001;
+        out.push_str(&format!(
+            "N{n} G1 X{:.3} Y{:.3} Z{:.3} F2500\n",
+            v.sin() * 200.0,
+            v.cos() * 200.0,
+            -(v % 5.0)
+        ));
+    }
+    out.push_str("M30\n");
+    out
 }

@@ -83,15 +83,18 @@ impl<'a, 't> Snapshot<'a, 't> {
             .collect();
         if let Some(first_unshown) = self.findings.get(MOST_SHOWN_FINDINGS) {
             let start = self.range(first_unshown.span).start;
+            let check = match convert::path(uri) {
+                Some(path) => format!("`sinuprep check {}`", path.display()),
+                None => "`sinuprep check` of the saved file".to_string(),
+            };
             shown.push(lsp::Diagnostic {
                 range: lsp::Range::new(start, start),
                 severity: Some(lsp::DiagnosticSeverity::INFORMATION),
                 source: Some("sinuprep".to_string()),
                 message: format!(
                     "{MOST_SHOWN_FINDINGS} of the {} findings are shown, those before here; \
-                     `sinuprep check {}` lists every one",
+                     {check} lists every one",
                     self.findings.len(),
-                    self.name
                 ),
                 ..lsp::Diagnostic::default()
             });

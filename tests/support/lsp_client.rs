@@ -130,6 +130,14 @@ impl Client {
         self.diagnostics(uri)
     }
 
+    /// The server's peak resident memory so far, where the system says
+    /// (Linux's `/proc`).
+    pub fn peak_memory_kib(&self) -> Option<u64> {
+        let status = std::fs::read_to_string(format!("/proc/{}/status", self.child.id())).ok()?;
+        let line = status.lines().find(|line| line.starts_with("VmHWM:"))?;
+        line.split_whitespace().nth(1)?.parse().ok()
+    }
+
     /// Shuts the server down as the protocol says; its exit status and stderr.
     pub fn stop(mut self) -> (Option<i32>, String) {
         assert_eq!(self.request("shutdown", Value::Null), Value::Null);
