@@ -950,13 +950,9 @@ fn workspace_symbols_search_every_open_document() {
     client.stop();
 }
 
-/// A large program is analysed off the main loop: a request about another
-/// document is answered while its findings are still being made, even when
-/// a request about the large one came first; its findings come after.
-#[test]
-fn a_large_program_is_analysed_while_other_requests_are_answered() {
-    let (mut client, _) = Client::start(json!({}));
-    client.open(URI, PART);
+/// A hand-written program of 75,000 lines, 15,000 labels: seconds to
+/// analyse in a test build.
+fn large_program() -> String {
     let mut large = String::new();
     for n in 0..15_000 {
         large.push_str(&format!(
@@ -964,6 +960,17 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
         ));
     }
     large.push_str("M30\n");
+    large
+}
+
+/// A large program is analysed off the main loop: a request about another
+/// document is answered while its findings are still being made, even when
+/// a request about the large one came first; its findings come after.
+#[test]
+fn a_large_program_is_analysed_while_other_requests_are_answered() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, PART);
+    let large = large_program();
     client.notify(
         "textDocument/didOpen",
         json!({ "textDocument": { "uri": "untitled:LARGE.MPF", "languageId": "sinumerik",
@@ -997,13 +1004,7 @@ fn a_large_program_is_analysed_while_other_requests_are_answered() {
 fn a_version_changed_while_analysed_is_not_published() {
     let (mut client, _) = Client::start(json!({}));
     let uri = "untitled:CHANGED.MPF";
-    let mut large = String::new();
-    for n in 0..15_000 {
-        large.push_str(&format!(
-            "LOOP{n}:\nIF R1>{n}\nR2=R2+SIN({n})*COS(R1)\nG1 X=R2 Y{n} F500\nENDIF\n"
-        ));
-    }
-    large.push_str("M30\n");
+    let large = large_program();
     client.notify(
         "textDocument/didOpen",
         json!({ "textDocument": { "uri": uri, "languageId": "sinumerik",
