@@ -81,7 +81,7 @@ pub struct LineIndex<'a> {
     /// counting the line ends of at most one block. Counted up to the block
     /// asked about, when asked (a file without findings never asks, and a
     /// large file is read in step with its report) with `memchr`'s vectorised
-    /// count: a search per line end cost 80 instructions a line.
+    /// count, not a search per line end.
     rows_before_block: RefCell<Vec<usize>>,
     utf8: OnceCell<bool>,
 }

@@ -182,10 +182,11 @@ pub static TOO_LONG_TO_READ: RuleInfo = RuleInfo {
 Reports a block of more than 64 KiB, whatever it holds.
 
 ## Why it matters
-The control takes at most 512 characters a block (Siemens, Programming Manual Fundamentals:
-block length), so such a line can never run. sinuprep does not read it into a tree, which would
-cost about 50 bytes of memory a byte of the line: its bytes stay as they are, no rule sees its
-statements, and the next line is read as usual. (N008 warns from 512 characters on.)
+512 characters is the block length commonly quoted for the control (not confirmed in a Siemens
+manual available here, as N008 says); a block of more than 64 KiB is far past it and can never
+run. sinuprep does not read it into a tree, which would cost about 50 bytes of memory a byte of
+the line: its bytes stay as they are, no rule sees its statements, and the next line is read as
+usual. (N008 warns from 512 characters on.)
 
 ## Example
 ```

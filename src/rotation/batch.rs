@@ -3,9 +3,9 @@
 //!
 //! The lane code is plain array arithmetic; what the compiler makes of it
 //! depends on the instruction set it may use. The x86-64 baseline (SSE2) has
-//! two-lane vectors and two-operand instructions, so a third of a conversion's
-//! instructions were register copies; with AVX2 the same source runs four
-//! lanes wide with three-operand instructions, about twice as fast. Both
+//! two-lane vectors and two-operand instructions, so many of a conversion's
+//! instructions are register copies; with AVX2 the same source runs four
+//! lanes wide with three-operand instructions. Both
 //! builds compute the same IEEE operations in the same order (no fused
 //! multiply-add: Rust never contracts `a * b + c`), so the results are the
 //! same bit for bit on every machine.

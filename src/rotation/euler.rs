@@ -64,8 +64,8 @@ pub(crate) fn rotation_of_lane<const N: usize>(
 }
 
 /// [`matrix`] of every lane, written over every entry of `rows`: a matrix
-/// reused from chunk to chunk needs no clearing (a fresh one per chunk cost
-/// a 576-byte fill and a copy, 7% of a conversion).
+/// reused from chunk to chunk needs no clearing (a fresh one per chunk would
+/// cost a 576-byte fill and a copy).
 #[inline(always)]
 pub(crate) fn matrix_lanes<const N: usize>(
     sequence: Sequence,

@@ -1,9 +1,9 @@
 //! Sine, cosine and atan2 in degrees, written for the rotation engine.
 //!
 //! Working in degrees makes the range reduction exact (90 is a binary number,
-//! π/2 is not), so every multiple of 90° gives exact 0 and ±1, and the libm
-//! calls that took 80% of a conversion become a few dozen multiplications
-//! without branches that depend on the angle. The polynomial kernels are
+//! π/2 is not), so every multiple of 90° gives exact 0 and ±1, and each call
+//! is a few dozen multiplications without branches that depend on the angle
+//! (libm's calls would be most of a conversion's time). The polynomial kernels are
 //! fdlibm's (`k_sin.c`, `k_cos.c`, `s_atan.c`; "Copyright (C) 1993 by Sun
 //! Microsystems, Inc. All rights reserved. Permission to use, copy, modify, and
 //! distribute this software is freely granted, provided that this notice is

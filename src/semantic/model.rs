@@ -261,8 +261,8 @@ fn macro_redefines_keyword(source: &[u8], name: Span) -> Diagnostic {
 }
 
 /// One line as the rules and the model see it, with what each statement
-/// reads collected once: five rules need it, and walking every statement's
-/// expressions once per rule cost a tenth of `check`'s time.
+/// reads collected once: five rules need it, and none walks every
+/// statement's expressions again.
 pub struct LineView<'l> {
     pub raw: RawLine,
     /// The block, when the line is one.
@@ -701,9 +701,9 @@ mod tests {
         }
     }
 
-    /// A file of short lines keeps no more trees than the bound allows (by
-    /// source bytes alone, 1 MiB of `IF R1>0` kept 130,000 trees, a
-    /// kilobyte each); the lines past it are parsed again when asked.
+    /// A file of short lines keeps no more trees than the bound allows (a
+    /// bound on source bytes alone would let 1 MiB of `IF R1>0` keep 130,000
+    /// trees, a kilobyte each); the lines past it are parsed again when asked.
     #[test]
     fn short_lines_keep_trees_within_the_bound() {
         let text = "IF R1>0\n".repeat(150_000);

@@ -67,8 +67,8 @@ pub(crate) fn parse_block_gathered(
 
 /// The statements gathered in `scratch`, in a vector of their number (left
 /// empty): a statement is large (about 150 bytes), and room for a CAM
-/// block's eight, reserved on every block, took the allocator's slow path,
-/// 500 instructions a block of code.
+/// block's eight, reserved on every block, would take the allocator's slow
+/// path (about 500 instructions a block of code).
 #[inline]
 pub(crate) fn take_gathered(scratch: &mut Vec<Statement>) -> Vec<Statement> {
     if scratch.len() <= MANY_STATEMENTS {

@@ -5,8 +5,8 @@
 //! one-line definitions (`DEF REAL START_CC=10`): what setup files and
 //! hand-written cycles are mostly made of. A line without an error yields
 //! nothing in the syntax pass ([`super::diagnostics`]), which steps over
-//! these as over plain lines: parsing one cost about 2,000 instructions (its
-//! tree built and dropped), telling it a few hundred.
+//! these as over plain lines: telling one takes a fraction of parsing it (its
+//! tree built and dropped).
 //!
 //! Strict and conservative, as [`super::plain::is_plain`] is: `false` means
 //! "parse it to know". Each statement is one the parser reads the same way

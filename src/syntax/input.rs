@@ -1,10 +1,9 @@
 //! The parser's input: a slice of one line's bytes and the file offset where
 //! it starts, so every token gets a file span without allocating.
 //!
-//! `nom_locate` does the same and also counts newlines on every slice, which
-//! cost 8% of all instructions of `check` (callgrind) although a line never
-//! contains one: line numbers come from offsets, only when a diagnostic needs
-//! them.
+//! `nom_locate` does the same and also counts newlines on every slice, work
+//! for nothing here since a line never contains one: line numbers come from
+//! offsets, only when a diagnostic needs them.
 
 use std::iter::{Copied, Enumerate};
 use std::slice::Iter;

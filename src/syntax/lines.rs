@@ -76,10 +76,9 @@ pub fn line_from(source: &[u8], start: usize) -> RawLine {
 
 /// Where the line from `start` ends (at a CR, an LF or the end of `source`).
 /// Most lines that are not plain are short (setup files, hand-written
-/// cycles: 20-30 bytes), and starting a vector search cost them about 130
-/// instructions: the first 64 bytes are looked at eight at a time. Not
-/// inlined: inlined into the plain-line scan's loop, it cost each CAM block
-/// 20 instructions there.
+/// cycles: 20-30 bytes), and starting a vector search costs more than such a
+/// line: the first 64 bytes are looked at eight at a time. Not inlined, so
+/// that the plain-line scan's loop, which calls it rarely, stays small.
 #[inline(never)]
 fn short_line_end(source: &[u8], start: usize) -> usize {
     const ONES: u64 = u64::from_ne_bytes([0x01; 8]);

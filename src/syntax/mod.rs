@@ -194,8 +194,7 @@ impl LineParser {
 
     /// The line's kind, a block's statements left in `self.statements`, and
     /// its diagnostic. Inlined into both readers, so that its result (about
-    /// 300 bytes) is built where it is used, not copied there: out of line
-    /// the copy cost a CAM block parsed into its tree 2.5% more.
+    /// 300 bytes) is built where it is used, not copied there.
     #[inline(always)]
     fn read_line(&mut self, source: &[u8], raw: RawLine) -> (LineKind, Option<Diagnostic>) {
         self.row += 1;
