@@ -2804,6 +2804,38 @@ fn probe_refuses_points_that_give_no_face_naming_the_argument() {
     insta::assert_snapshot!(all);
 }
 
+/// A point 1 mm from the plane normal to the axis, 800 mm out: both exact
+/// roots (0.2° apart), said to be inseparable within the default tolerance,
+/// and separable within a finer one.
+#[test]
+fn axis_of_a_turn_gives_close_roots_both_and_says_so() {
+    let measured = [
+        "axis",
+        "--angle",
+        "90",
+        "--before",
+        "799.9993749997559,0,1",
+        "--after",
+        "0,799.999374999756,1",
+    ];
+    let output = run(&measured, b"");
+    assert_exit(&output, 0);
+    let text = stdout(&output);
+    assert!(text.contains("cannot tell apart"), "{text}");
+    assert!(text.contains("  1  0 0 1   residual 0\n"), "{text}");
+    assert_eq!(text.matches("residual 0\n").count(), 2, "{text}");
+    let json = run(&[&measured[..], &["--json"]].concat(), b"");
+    let value: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+    assert_eq!(value["axes"].as_array().map(Vec::len), Some(2));
+    assert_eq!(value["separable"], false);
+    let fine = run(
+        &[&measured[..], &["--json", "--tolerance", "0.0001"]].concat(),
+        b"",
+    );
+    let value: serde_json::Value = serde_json::from_slice(&fine.stdout).expect("json");
+    assert_eq!(value["separable"], true);
+}
+
 #[test]
 fn axis_of_a_turn_gives_both_solutions() {
     let output = run(

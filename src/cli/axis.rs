@@ -21,7 +21,7 @@ pub fn run(args: &AxisArgs) -> Result<ExitStatus, CliError> {
             let axes = turn::axes(before, after, angle, args.tolerance)
                 .map_err(|error| no_axis(error, args.tolerance))?;
             if args.json {
-                turn_json(args, angle, &axes)
+                turn_json(args, angle, before, &axes)
             } else {
                 turn_table(args, angle, before, after, &axes)
             }
@@ -128,9 +128,16 @@ fn triple(v: &Vector3<f64>) -> [f64; 3] {
     [v.x + 0.0, v.y + 0.0, v.z + 0.0]
 }
 
-fn turn_json(args: &AxisArgs, angle: f64, axes: &[turn::Axis]) -> String {
+/// Two roots the measurements cannot tell apart within the tolerance.
+fn inseparable(args: &AxisArgs, before: Vector3<f64>, axes: &[turn::Axis]) -> bool {
+    matches!(axes, [a, b] if a.direction.dot(&b.direction) > 0.0
+        && turn::near_normal_plane(before, a.direction, args.tolerance))
+}
+
+fn turn_json(args: &AxisArgs, angle: f64, before: Vector3<f64>, axes: &[turn::Axis]) -> String {
     let value = serde_json::json!({
         "angle": angle,
+        "separable": !inseparable(args, before, axes),
         "axes": axes.iter().map(|a| triple(&a.direction)).collect::<Vec<_>>(),
         "residuals": axes.iter().map(|a| a.residual).collect::<Vec<_>>(),
         "tc_carr": axes.iter().map(|a| tc_carr(args, &a.direction)).collect::<Vec<_>>(),
@@ -156,6 +163,10 @@ fn turn_table(
         [_] => "axes        one: the point lies in the plane normal to the axis through the axis point\n",
         [a, b] if a.direction.dot(&b.direction) < -0.999_999_999 => {
             "axes        one, either way round: the point lies on it, or the turn is a half turn\n"
+        }
+        _ if inseparable(args, before, axes) => {
+            "axes        two, which the measurements cannot tell apart within --tolerance: the point lies \
+             that near the plane normal to the axis through the axis point; measure one farther from it\n"
         }
         _ => "axes        two: the axis at an acute or an obtuse angle to the point (the seed's two roots)\n",
     });

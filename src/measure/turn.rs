@@ -118,9 +118,11 @@ pub fn axes(
     if p2 < 0.0 && chord - reach > tolerance {
         return Err(NoAxis::TooFar { chord, reach });
     }
-    // A length off by δ moves p² by about 2|ρ|δ: within the tolerance of 0,
-    // the point lies in the plane normal to the axis, and the roots are one.
-    if p2 <= radius * tolerance {
+    // Below 0 within the tolerance, or above it by what rounding leaves of
+    // a point exactly there: the point lies in the plane normal to the axis,
+    // and the roots are one. Farther above they are two, however close:
+    // their midpoint fits neither (see [`near_normal_plane`]).
+    if p2 <= ROUNDING * radius * radius {
         p2 = 0.0;
     }
     // w: the part of ρ normal to r; the axis's component along it is p / |w|.
@@ -141,13 +143,26 @@ pub fn axes(
     let t = t2.max(0.0).sqrt() * if sin_chi < 0.0 { -1.0 } else { 1.0 };
     let first = (along * p + d * t).normalize();
     let second = (-along * p + d * t).normalize();
-    if p == 0.0 {
+    if p2 == 0.0 {
         return Ok(vec![axis(first, before, after, chi)]);
     }
     Ok(vec![
         axis(first, before, after, chi),
         axis(second, before, after, chi),
     ])
+}
+
+/// What rounding leaves in p² of a point exactly in the plane normal to the
+/// axis, as a share of |ρ|²: a few units in the last place.
+const ROUNDING: f64 = 64.0 * f64::EPSILON;
+
+/// Whether `before` lies so near the plane normal to `direction` through the
+/// axis point that measurements within `tolerance` cannot tell the two roots
+/// apart: a length off by δ moves p² = (ρ · e)² by about 2|ρ|δ, so within
+/// |ρ| × tolerance of 0 the other root fits the data as well as this one.
+pub fn near_normal_plane(before: Vector3<f64>, direction: Vector3<f64>, tolerance: f64) -> bool {
+    let p = before.dot(&direction);
+    p * p <= before.norm() * tolerance
 }
 
 fn axis(direction: Vector3<f64>, before: Vector3<f64>, after: Vector3<f64>, chi: f64) -> Axis {
@@ -271,6 +286,26 @@ mod tests {
         let found = axes(rho, after, 40.0, 1e-9).expect("a turn");
         assert_eq!(found.len(), 1);
         assert!((found[0].direction - Vector3::z()).norm() < 1e-9);
+    }
+
+    /// Near the plane normal to the axis the two roots are both given, exact,
+    /// not merged into a midpoint that fits neither.
+    #[test]
+    fn roots_near_the_normal_plane_stay_two() {
+        let before = Vector3::new(799.999_374_999_755_9, 0.0, 1.0);
+        let after = Vector3::new(0.0, 799.999_374_999_756, 1.0);
+        let found = axes(before, after, 90.0, 0.01).expect("a turn");
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(found
+            .iter()
+            .any(|a| (a.direction - Vector3::z()).norm() < 1e-12));
+        assert!(found.iter().all(|a| a.residual < 1e-9), "{found:?}");
+        assert!(found
+            .iter()
+            .all(|a| near_normal_plane(before, a.direction, 0.01)));
+        assert!(!near_normal_plane(before, Vector3::z(), 1e-4));
+        let numerical = solve_numerically(before, after, 90.0);
+        assert!(same_set(&found, &numerical), "{found:?} {numerical:?}");
     }
 
     #[test]
