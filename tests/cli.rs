@@ -2726,11 +2726,11 @@ fn probe_centre_is_the_point_that_stays() {
         "e:XYZ".parse().expect("valid"),
         [angles[0], angles[1], angles[2]],
     );
-    let frame =
-        sinuprep::rotation::Frame::new(Vector3::new(90.0, 50.0, 5.25), rotation, Vector3::zeros());
+    let centre = Vector3::new(90.0, 50.0, 5.25);
     let normal = Vector3::from_vec(numbers(&value["normal"]));
     for local in [Point3::new(30.0, -20.0, 0.0), Point3::new(-5.0, 60.0, 0.0)] {
-        let machine = frame.apply(local);
+        // The frame CYCLE800 makes: turned, then shifted to the centre.
+        let machine = Point3::from(centre + rotation * local.coords);
         assert!(normal.dot(&(machine - Point3::new(40.0, 10.0, 5.0))).abs() < 1e-12);
     }
     // A centre off the face: the face lies below the new zero.

@@ -55,17 +55,13 @@ impl<'src> Document<'src> {
         }
     }
 
-    /// Everything `check` reports, in source order.
-    pub fn check(&self, settings: &Settings) -> Vec<Diagnostic> {
-        lint::check(self.source, self.name, self.kind, settings)
-    }
-
-    /// [`Self::check`], with what could not be checked.
+    /// Everything `check` reports, in source order, with what could not be
+    /// checked.
     pub fn check_outcome(&self, settings: &Settings) -> lint::Outcome {
         lint::check_outcome(self.source, self.name, self.kind, settings)
     }
 
-    /// [`Self::check`], keeping what the analysis built: the model, the
+    /// [`Self::check_outcome`], keeping what the analysis built: the model, the
     /// CYCLE600 walk's results and the findings with their fixes, for the
     /// questions an editor asks after the findings.
     pub fn analyze(&self, settings: &Settings) -> Analyzed<'src> {

@@ -18,7 +18,6 @@ pub mod trig;
 
 pub use batch::convert_all;
 pub use euler::{decompose, matrix, Angles, Decomposition};
-pub use frame::Frame;
 pub use sequence::{Axis, Kind, Sequence, SequenceError};
 
 use nalgebra::Rotation3;

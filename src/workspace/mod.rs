@@ -7,7 +7,7 @@
 //!
 //! ```text
 //! Given + sinuprep.toml + files they name -> Resolved { lint::Settings (with the emit Options) }
-//!                                         -> Document::check / Document::rewrite
+//!                                         -> Document::check_outcome / Document::rewrite
 //! ```
 
 mod config;
