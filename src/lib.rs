@@ -4,8 +4,12 @@
 //! The pipeline runs one way:
 //!
 //! ```text
-//! bytes -> syntax (lossless lines and spans) -> semantic (values, CYCLE600 model)
-//!       -> rotation (pure math) -> emit (text edits) -> lint / cli (diagnostics, output)
+//! bytes -> syntax (lossless lines, spans, trees)
+//!       -> semantic (the model: names, labels, blocks, modal state; the CYCLE600 walk)
+//!       -> rotation, kinematics, measure (pure math: no spans, no syntax)
+//!       -> emit, format (text edits) and lint (findings with their fixes)
+//!       -> document (one program's analysis, over the settings `workspace` resolved)
+//!       -> cli, lsp (the command line prints it, the server answers from it)
 //! ```
 //!
 //! Modules:
@@ -16,7 +20,7 @@
 //! - [`registry`]: every rule's code, name, severity and docs below the linter; diagnostics are
 //!   built from them.
 //! - [`syntax`]: the lossless nom parser (`grammar/sinumerik.ebnf` is its grammar).
-//! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles and frames on nalgebra, and
+//! - [`rotation`]: rotation sequences, Euler/Tait-Bryan angles, additive rotations on nalgebra, and
 //!   the other forms of a rotation (quaternion, axis-angle, Gibbs vector, a post-processor's
 //!   ROT_MAT, the tool-to-piece chain); knows nothing of syntax.
 //! - [`kinematics`]: swivel data records and the rotary axis positions they give a frame
@@ -24,7 +28,9 @@
 //!   beside `rotation`.
 //! - [`measure`]: from measurements to rotations: a probed face's angles, the axis of a known
 //!   turn (the Rodrigues inverse problem), an axis from measured positions; pure math.
-//! - [`semantic`]: values, the walk through the program, CYCLE600 binding and HEAD_DEF.
+//! - [`semantic`]: the model every reader shares (what each line holds, names and where
+//!   they are defined, labels and jumps, control blocks, modal state), values, the walk through
+//!   the program, CYCLE600 binding, HEAD_DEF and the machine's swivel data records.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes; and a
 //!   swivel split over a table and a head in words (what the machine is told), shared by `axes`,
 //!   `eval` and the rewrite's refusal.
