@@ -236,6 +236,46 @@ fn the_backup_is_never_written_through_a_planted_link() {
     let _ = fs::remove_dir_all(&dir);
 }
 
+/// `rewrite -o DIR` of several programs writes nothing through a link
+/// planted inside DIR, at a file's name or on its way, and says which; the
+/// other programs are written.
+#[test]
+#[cfg(unix)] // symbolic links: see the module's comment
+fn an_output_folder_is_never_written_through_a_link_inside_it() {
+    let dir = scratch("files-output-links");
+    for folder in ["in/sub", "in/ok", "out", "elsewhere"] {
+        fs::create_dir_all(dir.join(folder)).expect("folder");
+    }
+    for program in ["in/P.MPF", "in/sub/NEW.MPF", "in/ok/FINE.MPF"] {
+        fs::write(dir.join(program), PROGRAM).expect("write");
+    }
+    fs::write(dir.join("victim"), b"precious").expect("write");
+    symlink("../victim", dir.join("out/P.MPF")).expect("symlink");
+    symlink("../elsewhere", dir.join("out/sub")).expect("symlink");
+    let heads = heads();
+    let output = run_in(&dir, &["rewrite", "--heads", &heads, "-o", "out", "in"]);
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("out/P.MPF is not written: it is a symbolic link"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("out/sub/NEW.MPF is not written: the folder out/sub on its way"),
+        "{stderr}"
+    );
+    assert_eq!(fs::read(dir.join("victim")).expect("victim"), b"precious");
+    assert!(names(&dir.join("elsewhere")).is_empty());
+    let fine = fs::read(dir.join("out/ok/FINE.MPF")).expect("written");
+    assert!(fine.windows(8).any(|w| w == b"CYCLE800"));
+    // The output folder itself may be a link: the user named it.
+    symlink("elsewhere", dir.join("linked")).expect("symlink");
+    let output = run_in(&dir, &["rewrite", "--heads", &heads, "-o", "linked", "in"]);
+    assert_exit(&output, 0);
+    assert!(dir.join("elsewhere/sub/NEW.MPF").is_file());
+    let _ = fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn leftover_temporary_files_of_killed_runs_are_removed_and_live_ones_kept() {
     let dir = scratch("files-leftovers");

@@ -146,6 +146,13 @@ pub enum CliError {
     )]
     NotInPlace { path: PathBuf, why: String },
 
+    #[error("{path} is not written: {why}")]
+    #[diagnostic(
+        code(sinuprep::output_link),
+        help("an output folder's files are written only into folders of its own: remove the link, or give another folder to -o")
+    )]
+    OutputThroughLink { path: PathBuf, why: String },
+
     #[error("cannot write {path}")]
     #[diagnostic(code(sinuprep::write), help("check that the directory is writable and the disk not full; the original file is unchanged"))]
     WriteFile {

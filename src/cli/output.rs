@@ -102,6 +102,95 @@ pub fn write_atomically(
     replace(&target, write, existing.as_ref()).map_err(fail)
 }
 
+/// Writes `relative` under the output folder `dir` (`rewrite -o DIR` of
+/// several programs), as [`write_atomically`] writes a file, but never
+/// through a link: a symbolic link on the way, or at the file's own name, is
+/// refused, so that a link planted inside the output folder cannot send a
+/// file outside it. The folders on the way are made where missing. `dir`
+/// itself may be a link: the user named it.
+pub fn write_inside(
+    dir: &Path,
+    relative: &Path,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), CliError> {
+    use std::path::Component;
+    let mut path = dir.to_path_buf();
+    let refuse = |path: &Path, why: String| CliError::OutputThroughLink {
+        path: path.to_path_buf(),
+        why,
+    };
+    let fail = |path: &Path, source: std::io::Error| CliError::WriteFile {
+        path: path.to_path_buf(),
+        source,
+    };
+    fs::create_dir_all(dir).map_err(|source| fail(dir, source))?;
+    let names: Vec<_> = relative.components().collect();
+    for (i, component) in names.iter().enumerate() {
+        let Component::Normal(name) = component else {
+            return Err(refuse(
+                &dir.join(relative),
+                "it does not lie inside the output folder".into(),
+            ));
+        };
+        path.push(name);
+        let last = i + 1 == names.len();
+        match fs::symlink_metadata(&path) {
+            Ok(metadata) if metadata.file_type().is_symlink() => {
+                let why = if last {
+                    "it is a symbolic link".to_string()
+                } else {
+                    format!(
+                        "the folder {} on its way is a symbolic link",
+                        path.display()
+                    )
+                };
+                return Err(refuse(&dir.join(relative), why));
+            }
+            Ok(metadata) if !last && !metadata.is_dir() => {
+                return Err(fail(
+                    &dir.join(relative),
+                    std::io::Error::other(format!("{} is not a folder", path.display())),
+                ))
+            }
+            Ok(_) => {}
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound && !last => {
+                match fs::create_dir(&path) {
+                    Ok(()) => {}
+                    // Made meanwhile by another program's write: looked at again.
+                    Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                        if !fs::symlink_metadata(&path).is_ok_and(|m| m.is_dir()) {
+                            return Err(fail(&path, e));
+                        }
+                    }
+                    Err(e) => return Err(fail(&path, e)),
+                }
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+            Err(e) => return Err(fail(&path, e)),
+        }
+    }
+    let existing = fs::symlink_metadata(&path).ok();
+    if let Some(metadata) = existing.as_ref().filter(|m| !m.is_file()) {
+        return Err(fail(
+            &path,
+            std::io::Error::other(format!("it is {}, not a regular file", kind(metadata))),
+        ));
+    }
+    if existing
+        .as_ref()
+        .is_some_and(|m| m.permissions().readonly())
+    {
+        return Err(fail(
+            &path,
+            std::io::Error::new(
+                std::io::ErrorKind::PermissionDenied,
+                "the file is read-only",
+            ),
+        ));
+    }
+    replace(&path, write, existing.as_ref()).map_err(|source| fail(&path, source))
+}
+
 /// Writes a temporary file beside `target` and renames it over `target`,
 /// with the owner, group and mode of `like` (the file replaced).
 fn replace(

@@ -13,7 +13,7 @@ use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
 use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
-use crate::cli::output::{in_place_target, same_file, write_atomically};
+use crate::cli::output::{in_place_target, same_file, write_atomically, write_inside};
 use crate::cli::parallel;
 use crate::cli::render::printable;
 use crate::cli::walk::files;
@@ -26,8 +26,11 @@ use crate::workspace::{Given, Workspace};
 /// Where a program's rewrite goes.
 enum Target {
     Stdout,
-    /// A file named by `-o`, or the mirror of the program under `-o DIR`.
+    /// The file `-o` names for one program.
     File(PathBuf),
+    /// The program's mirror under the folder `-o DIR` names for several:
+    /// the folder and the path inside it, written through no link.
+    Inside(PathBuf, PathBuf),
     /// The program itself (canonical path).
     InPlace(PathBuf),
 }
@@ -111,23 +114,22 @@ fn target(path: &Path, args: &RewriteArgs, several: bool) -> Result<Target, CliE
         return Ok(Target::InPlace(in_place_target(path)?));
     }
     Ok(match &args.output {
-        Some(dir) if several => Target::File(mirror(dir, &args.paths, path)),
+        Some(dir) if several => Target::Inside(dir.clone(), mirror(&args.paths, path)),
         Some(file) => Target::File(file.clone()),
         None => Target::Stdout,
     })
 }
 
-/// `path` under `dir` as it lies under the directory given for it (a file
-/// given by itself lands directly in `dir`).
-fn mirror(dir: &Path, given: &[PathBuf], path: &Path) -> PathBuf {
-    let relative = given
+/// Where `path` lies under the output folder: as it lies under the
+/// directory given for it (a file given by itself lands directly in it).
+fn mirror(given: &[PathBuf], path: &Path) -> PathBuf {
+    given
         .iter()
         .filter(|root| root.is_dir())
         .find_map(|root| path.strip_prefix(root).ok())
         .map(Path::to_path_buf)
         .or_else(|| path.file_name().map(PathBuf::from))
-        .unwrap_or_else(|| PathBuf::from("-"));
-    dir.join(relative)
+        .unwrap_or_else(|| PathBuf::from("-"))
 }
 
 fn rewrite_file(
@@ -235,6 +237,7 @@ fn rewrite_file(
                 write_atomically(&target, output, backup)?;
             }
         }
+        Target::Inside(dir, relative) => write_inside(&dir, &relative, output)?,
         Target::File(path) => {
             if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
                 std::fs::create_dir_all(parent).map_err(|source| CliError::WriteFile {
