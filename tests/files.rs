@@ -178,15 +178,23 @@ fn in_place_keeps_the_mode_and_the_owner() {
         let _ = fs::remove_dir_all(&dir);
         return;
     }
-    // Root rewriting a user's file leaves it the user's, setgid bit and all.
+    // Root rewriting or formatting a user's file leaves it the user's,
+    // setuid and setgid bits and all (the owner is given before the mode:
+    // a change of owner clears them).
     let users = dir.join("USERS.MPF");
     fs::write(&users, PROGRAM).expect("write");
     std::os::unix::fs::chown(&users, Some(4321), Some(4322)).expect("chown");
-    fs::set_permissions(&users, fs::Permissions::from_mode(0o2640)).expect("chmod");
+    fs::set_permissions(&users, fs::Permissions::from_mode(0o6750)).expect("chmod");
     assert_exit(&rewrite_in_place(&dir, &users), 0);
     let metadata = fs::metadata(&users).expect("metadata");
     assert_eq!((metadata.uid(), metadata.gid()), (4321, 4322));
-    assert_eq!(metadata.mode() & 0o7777, 0o2640);
+    assert_eq!(metadata.mode() & 0o7777, 0o6750);
+    fs::write(&users, b"N10  G1 X1 F100\n").expect("write");
+    assert_exit(&run_in(&dir, &["fmt", "USERS.MPF"]), 0);
+    assert_eq!(fs::read(&users).expect("formatted"), b"N10 G1 X1 F100\n");
+    let metadata = fs::metadata(&users).expect("metadata");
+    assert_eq!((metadata.uid(), metadata.gid()), (4321, 4322));
+    assert_eq!(metadata.mode() & 0o7777, 0o6750);
     // A user who cannot keep the owner gets the file, without setuid/setgid.
     let shared = dir.join("shared");
     fs::create_dir_all(&shared).expect("dir");
