@@ -611,8 +611,12 @@ fn files_the_settings_name_must_be_regular_files_of_a_sane_size() {
     // Sparse: 64 MiB and one byte, no disk taken.
     let big = fs::File::create(dir.join("BIG.DEF")).expect("create");
     big.set_len((64 << 20) + 1).expect("sparse");
-    let mut cases = vec![vec!["check", "--definitions", "BIG.DEF", "A.MPF"]];
+    let mut cases = vec![
+        vec!["check", "--definitions", "BIG.DEF", "A.MPF"],
+        vec!["axes", "--from-a3200", "BIG.DEF"],
+    ];
     if fifo(&dir.join("PIPE")) {
+        cases.push(vec!["axes", "--from-a3200", "PIPE"]);
         for option in [
             "--definitions",
             "--machine",

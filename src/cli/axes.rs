@@ -159,7 +159,7 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
 /// control's `$TC_CARRn[m]=value` assignments (record `--record` when it is
 /// a number, else 1, named by `--record` when it is a name).
 fn from_a3200(path: &Path, record: Option<&str>) -> Result<ExitStatus, CliError> {
-    let text = std::fs::read(path).map_err(|source| CliError::Read {
+    let text = crate::workspace::file::read(path).map_err(|source| CliError::Read {
         path: path.to_path_buf(),
         source,
     })?;

@@ -138,7 +138,16 @@ pub fn named_or_stdin(paths: &[PathBuf], command: &'static str) -> Result<Vec<Pa
 /// file. The file is removed from its directory as soon as it is
 /// made, so nothing is left behind, whatever ends the run. A file
 /// redirected to stdin is mapped as it is.
-fn read_stream<R: Read + platform::Stream>(mut stream: R) -> std::io::Result<Bytes> {
+fn read_stream<R: Read + platform::Stream>(stream: R) -> std::io::Result<Bytes> {
+    read_stream_within(stream, SPOOLED_AT_MOST)
+}
+
+/// [`read_stream`], spooling at most `limit` bytes after the first
+/// [`MAPPED_FROM`].
+fn read_stream_within<R: Read + platform::Stream>(
+    mut stream: R,
+    limit: u64,
+) -> std::io::Result<Bytes> {
     // A file redirected to stdin (`< PART.MPF`), unread so far: map it.
     let mut file = platform::file_behind(&stream)?;
     if let (Ok(metadata), Ok(0)) = (file.metadata(), file.stream_position()) {
@@ -154,9 +163,24 @@ fn read_stream<R: Read + platform::Stream>(mut stream: R) -> std::io::Result<Byt
     let mut spool = unnamed_file()?;
     spool.write_all(&head)?;
     drop(head);
-    std::io::copy(&mut stream, &mut spool)?;
+    let spooled = std::io::copy(&mut (&mut stream).take(limit), &mut spool)?;
+    if spooled == limit && stream.read(&mut [0])? > 0 {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::FileTooLarge,
+            format!(
+                "more than {} MiB came, all a stream is read to (a device such as /dev/zero \
+                 never ends); give the program as a file, which is read at any size",
+                (MAPPED_FROM + limit) >> 20
+            ),
+        ));
+    }
     Ok(Bytes::Mapped(Mapped::new(&spool)?))
 }
+
+/// The most of a stream spooled to the temporary directory after its
+/// first [`MAPPED_FROM`] bytes: a stream that never ends (a device, a
+/// runaway pipe) must not fill the disk. Files are mapped at any size.
+const SPOOLED_AT_MOST: u64 = 4 << 30;
 
 /// A new file in the temporary directory, already removed from it.
 fn unnamed_file() -> std::io::Result<std::fs::File> {
@@ -237,4 +261,39 @@ fn not_regular() -> std::io::Error {
         std::io::ErrorKind::InvalidInput,
         "no longer the regular file the directory walk found",
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::{Seek, SeekFrom};
+
+    /// A stream is spooled up to its bound, and one that goes on past it is
+    /// refused with what to do instead.
+    #[test]
+    fn a_stream_is_spooled_up_to_its_bound() {
+        let path = std::env::temp_dir().join(format!(
+            "sinuprep-spool-{:016x}",
+            crate::cli::output::random()
+        ));
+        let length = MAPPED_FROM + (3 << 20);
+        std::fs::write(&path, vec![b'\n'; length as usize]).expect("written");
+        let open = || {
+            let mut file = std::fs::File::open(&path).expect("opened");
+            // Not at its start: read as a stream, not mapped.
+            file.seek(SeekFrom::Start(1)).expect("seek");
+            file
+        };
+        let spooled = read_stream_within(open(), 3 << 20).expect("within the bound");
+        assert_eq!(spooled.len() as u64, length - 1);
+        let Err(error) = read_stream_within(open(), 1 << 20) else {
+            panic!("a stream past the bound was read");
+        };
+        assert_eq!(error.kind(), std::io::ErrorKind::FileTooLarge);
+        assert!(
+            error.to_string().contains("more than 5 MiB came"),
+            "{error}"
+        );
+        let _ = std::fs::remove_file(&path);
+    }
 }

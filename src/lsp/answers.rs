@@ -342,7 +342,7 @@ impl<'a, 't> Snapshot<'a, 't> {
             Some(definition) => Some(lsp::Location::new(uri.clone(), self.range(definition.span))),
             None => {
                 let (file, span) = self.defined_elsewhere(found)?;
-                let text = Text::new(std::fs::read(file).ok()?);
+                let text = Text::new(crate::workspace::file::read(file).ok()?);
                 let uri = crate::cli::render::file_uri(file)?.parse().ok()?;
                 Some(lsp::Location::new(
                     uri,

@@ -1,9 +1,8 @@
-//! Reading the files the settings name (definition files, the machine's
-//! records, HEAD_DEF, measured values, `sinuprep.toml`, a cycle directory's
-//! subprograms): each must be a regular file of at most [`LIMIT`] bytes.
-//! A FIFO would hang the run and a device never ends (`--definitions
-//! /dev/zero` once took 4 GB); no control holds a settings file near the
-//! limit. Programs are not read here: they are mapped, at any size. Also
+//! Reading the files the settings and the options name (definition files,
+//! the machine's records, HEAD_DEF, measured values, `sinuprep.toml`, a
+//! cycle directory's subprograms, an A3200 setup): each must be a regular
+//! file of at most [`LIMIT`] bytes. A FIFO would hang the run and a device
+//! never ends; no control holds a settings file near the limit. Programs are not read here: they are mapped, at any size. Also
 //! the canonical path of a file, as people are shown it.
 
 use std::io::Read;
