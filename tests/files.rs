@@ -284,6 +284,39 @@ fn an_output_folder_is_never_written_through_a_link_inside_it() {
     let _ = fs::remove_dir_all(&dir);
 }
 
+/// A file whose name takes all the 255 bytes a file system allows is
+/// rewritten and formatted in place: the temporary name beside it is
+/// shorter. Its backup's name cannot be: that is said, the file untouched.
+#[test]
+fn a_name_of_255_bytes_is_rewritten_in_place() {
+    let dir = scratch("files-long-name");
+    let name = format!("{}.MPF", "P".repeat(251));
+    let path = dir.join(&name);
+    fs::write(&path, PROGRAM).expect("a name of 255 bytes");
+    let output = rewrite_in_place(&dir, Path::new(&name));
+    assert_exit(&output, 2);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("--no-backup"), "{stderr}");
+    assert_eq!(fs::read(&path).expect("untouched"), PROGRAM);
+    let heads = heads();
+    let args = [
+        "rewrite",
+        "--in-place",
+        "--no-backup",
+        "--heads",
+        &heads,
+        &name,
+    ];
+    assert_exit(&run_in(&dir, &args), 0);
+    let rewritten = fs::read(&path).expect("rewritten");
+    assert!(rewritten.windows(8).any(|w| w == b"CYCLE800"));
+    fs::write(&path, b"N10  G1 X1 F100\n").expect("write");
+    assert_exit(&run_in(&dir, &["fmt", &name]), 0);
+    assert_eq!(fs::read(&path).expect("formatted"), b"N10 G1 X1 F100\n");
+    assert_eq!(names(&dir), [name]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn leftover_temporary_files_of_killed_runs_are_removed_and_live_ones_kept() {
     let dir = scratch("files-leftovers");

@@ -146,6 +146,13 @@ pub enum CliError {
     )]
     NotInPlace { path: PathBuf, why: String },
 
+    #[error("{path} is not rewritten: its backup's name, with `.bak`, is longer than the file system allows")]
+    #[diagnostic(
+        code(sinuprep::backup_name),
+        help("give --no-backup, or give the program a shorter name")
+    )]
+    BackupNameTooLong { path: PathBuf },
+
     #[error("{path} is not written: {why}")]
     #[diagnostic(
         code(sinuprep::output_link),

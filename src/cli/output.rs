@@ -93,9 +93,15 @@ pub fn write_atomically(
         bak.push(".bak");
         let bak = PathBuf::from(bak);
         replace(&bak, |out| out.write_all(original), existing.as_ref()).map_err(|source| {
-            CliError::WriteFile {
-                path: bak.clone(),
-                source,
+            if source.kind() == std::io::ErrorKind::InvalidFilename {
+                CliError::BackupNameTooLong {
+                    path: path.to_path_buf(),
+                }
+            } else {
+                CliError::WriteFile {
+                    path: bak.clone(),
+                    source,
+                }
             }
         })?;
     }
@@ -363,10 +369,21 @@ fn write_buffered(
     buffered.flush()
 }
 
-/// What the temporary files for `name` are called: `.NAME.sinuprep-*.tmp`.
+/// What the temporary files for `name` are called: `.NAME.sinuprep-*.tmp`,
+/// the name cut to its first [`NAME_IN_TEMPORARY`] bytes, so that a
+/// temporary name stays within the 255 bytes file systems allow a name
+/// however long the target's is.
 fn temporary_prefix(name: &str) -> String {
-    format!(".{name}.sinuprep-")
+    let mut end = name.len().min(NAME_IN_TEMPORARY);
+    while !name.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!(".{}.sinuprep-", &name[..end])
 }
+
+/// How much of the target's name a temporary name repeats (bytes): with
+/// the dot, `.sinuprep-`, 16 hex digits and `.tmp`, at most 128.
+const NAME_IN_TEMPORARY: usize = 96;
 
 const TEMPORARY_SUFFIX: &str = ".tmp";
 
