@@ -368,3 +368,45 @@ fn user_names_take_the_case_only_when_asked() {
         "DEF REAL _DEPTH=1 ; _depth\nPROC_A:\n_DEPTH=_DEPTH+1\nIF _DEPTH<3 GOTOB PROC_A\nMY_SUB(\"_depth\")\nM30\n"
     );
 }
+
+/// Indentation is bounded: 20,000 nested IFs come out about as large as
+/// they went in, every line indented at most 16 levels.
+#[test]
+fn indentation_is_capped() {
+    let depth = 20_000;
+    let mut source = String::new();
+    for _ in 0..depth {
+        source.push_str("IF R1>0\n");
+    }
+    source.push_str("R2=1\n");
+    for _ in 0..depth {
+        source.push_str("ENDIF\n");
+    }
+    source.push_str("M30\n");
+    let settings = Settings::default();
+    let (out, _) = formatted("DEEP.MPF", source.as_bytes(), &settings);
+    let widest = settings.indent.len() * 16;
+    for line in out.split(|&b| b == b'\n') {
+        let indent = line.iter().take_while(|&&b| b == b' ').count();
+        assert!(indent <= widest, "{indent} blanks");
+    }
+    assert!(out.len() <= source.len() + (2 * depth + 2) * widest);
+    let (twice, _) = formatted("DEEP.MPF", &out, &settings);
+    assert_eq!(twice, out, "not idempotent");
+}
+
+/// A block the control takes (at most 512 characters) is never indented
+/// past that: it is indented less, or left as it is.
+#[test]
+fn no_block_is_indented_past_the_control_s_length() {
+    for length in [500, 508, 510, 512] {
+        let start = if length % 2 == 1 { "R1=11" } else { "R1=1" };
+        let long = format!("{start}{}", "+1".repeat((length - start.len()) / 2));
+        assert_eq!(long.len(), length);
+        let source = format!("IF R2>0\nIF R3>0\n{long}\nENDIF\nENDIF\nM30\n");
+        let (out, _) = formatted("LONG.MPF", source.as_bytes(), &Settings::default());
+        for line in String::from_utf8(out).expect("utf-8").lines() {
+            assert!(line.chars().count() <= 512, "{} characters", line.len());
+        }
+    }
+}

@@ -172,7 +172,7 @@ fn lay_out(
     let mut emitted_run = false;
     for (row, raw) in raw_lines(source).enumerate() {
         let content = raw.content;
-        let depth = depths.at(row);
+        let depth = depths.at(row).min(MAX_INDENT_LEVELS);
         let first = next_replacement;
         while replacements
             .get(next_replacement)
@@ -287,6 +287,24 @@ fn lay_out(
             settings.case,
             &mut out,
         );
+        if too_long(&out, content.of(source)) {
+            // Indented less, down to none, rather than past the limit.
+            let fits = (0..depth).rev().find(|&less| {
+                write(
+                    source,
+                    &parts,
+                    less,
+                    &settings.indent,
+                    settings.case,
+                    &mut out,
+                );
+                !too_long(&out, content.of(source))
+            });
+            if fits.is_none() {
+                blank_run = 0;
+                continue;
+            }
+        }
         if out.is_empty() {
             blank_run += 1;
             if blank_run > settings.max_blank_lines {
@@ -304,6 +322,23 @@ fn lay_out(
         }
     }
     Ok(Laid { edits, unread })
+}
+
+/// The deepest level a line is indented to: deeper lines stand at it, so
+/// that indentation grows no program without bound (20,000 nested IFs
+/// would be indented 40,000 blanks). Sixteen levels are more than
+/// hand-written cycles nest.
+const MAX_INDENT_LEVELS: usize = 16;
+
+/// Whether the laid-out line `out` is a block the control would refuse for
+/// its length where the `original` was not: such a line is indented less,
+/// or left as it is.
+fn too_long(out: &[u8], original: &[u8]) -> bool {
+    use crate::syntax::{block_characters, BLOCK_CHARACTERS};
+    out.len() > BLOCK_CHARACTERS
+        && out.len() > original.len()
+        && block_characters(out) > BLOCK_CHARACTERS
+        && block_characters(original) <= BLOCK_CHARACTERS
 }
 
 /// Adds the edit `span` -> `text`; with `merge`, into the last edit when

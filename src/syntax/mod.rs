@@ -252,6 +252,22 @@ impl LineParser {
     }
 }
 
+/// The longest block the control takes, in characters, comment included:
+/// the length commonly quoted (N008 says what it rests on).
+pub const BLOCK_CHARACTERS: usize = 512;
+
+/// A block's length in characters, as [`BLOCK_CHARACTERS`] counts them: a
+/// UTF-8 sequence is one, and in a line that is no UTF-8 every byte is one
+/// (Latin-1).
+/// Never more than the line's bytes: a line of at most
+/// [`BLOCK_CHARACTERS`] bytes needs no count.
+pub fn block_characters(bytes: &[u8]) -> usize {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => text.chars().count(),
+        Err(_) => bytes.len(),
+    }
+}
+
 /// Lines longer than this (in bytes) are not read into a tree, whatever they
 /// hold: a tree costs about 50 bytes a byte of source (a line of address
 /// words alone, 80 bytes a word), and the control takes 512 characters a

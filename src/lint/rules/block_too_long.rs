@@ -25,8 +25,7 @@ Split the block: several assignments on separate blocks, shorter comments."#,
 #[derive(Default)]
 pub struct Checker;
 
-/// Characters, not bytes: a Latin-1 byte and a UTF-8 sequence are one each.
-const LIMIT: usize = 512;
+const LIMIT: usize = crate::syntax::BLOCK_CHARACTERS;
 
 impl Check for Checker {
     fn line(
@@ -54,10 +53,7 @@ fn check_length(file: &FileContext, content: Span, out: &mut Vec<Diagnostic>) {
     if content.len() <= LIMIT {
         return;
     }
-    let characters = match std::str::from_utf8(content.of(file.source)) {
-        Ok(text) => text.chars().count(),
-        Err(_) => content.len(),
-    };
+    let characters = crate::syntax::block_characters(content.of(file.source));
     if characters > LIMIT {
         out.push(
             RULE.at(Span::new(content.start, content.end))
