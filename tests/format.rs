@@ -410,3 +410,44 @@ fn no_block_is_indented_past_the_control_s_length() {
         }
     }
 }
+
+/// `--renumber` counts the numbers it changes, not the numbered blocks:
+/// numbering a program as it is numbered changes nothing and says so.
+#[test]
+fn renumbering_counts_only_the_numbers_it_changes() {
+    let source = b"N10 G1 X1 F100\nN20 GOTOB N10\nN30 M30\n";
+    let settings = Settings {
+        renumber: Some((10, 10)),
+        ..Settings::default()
+    };
+    let kind = program_kind(Some("SAME.MPF"), source);
+    let result = format("SAME.MPF", source, kind, &settings);
+    assert!(result.edits.is_empty(), "{:?}", result.edits);
+    assert_eq!(result.renumbered, 0);
+    assert!(result.notes.is_empty(), "{:?}", result.notes);
+    let settings = Settings {
+        renumber: Some((10, 5)),
+        ..settings
+    };
+    let result = format("SAME.MPF", source, kind, &settings);
+    assert_eq!(result.renumbered, 2, "N20 and N30 change, N10 stays");
+}
+
+/// A block too long to read (S009) after the program's end keeps its
+/// bytes: renumbering the others would leave its number out of order, so
+/// the file is not renumbered, and says why.
+#[test]
+fn a_block_too_long_to_read_stops_renumbering() {
+    let long = format!("N92581 R1={}1", "1+".repeat(40_000));
+    let source = format!("N10 G1 X1 F100\nN20 M30\n{long}\n");
+    let settings = Settings {
+        renumber: Some((100, 10)),
+        ..Settings::default()
+    };
+    let (out, notes) = formatted("LONG.MPF", source.as_bytes(), &settings);
+    assert_eq!(out, source.as_bytes());
+    assert!(
+        notes.iter().any(|n| n.contains("too long to read (S009)")),
+        "{notes:?}"
+    );
+}

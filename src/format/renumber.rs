@@ -21,11 +21,12 @@ use crate::syntax::lexer::find_ignoring_case;
 use crate::syntax::plain::digits_value;
 use crate::syntax::tree::{GotoKind, GotoTarget, StatementKind};
 use crate::syntax::visit::gotos;
+use crate::syntax::MAX_PARSED_LINE;
 
 /// The replacements a renumbering makes, sorted by where they stand.
 pub struct Plan {
     pub replacements: Vec<(Span, Vec<u8>)>,
-    /// How many blocks were numbered again.
+    /// How many block numbers changed.
     pub blocks: usize,
 }
 
@@ -42,8 +43,19 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
     // Every numbered block, in order: (row, old number, its digits).
     let mut numbered: Vec<(usize, u64, Span)> = Vec::new();
     for row in 0..model.lines.len() {
+        let content = model.lines.raw(row).content;
         let digits = if model.lines.is_plain(row) {
-            plain_prefix(source, model.lines.raw(row).content).1
+            plain_prefix(source, content).1
+        } else if content.len() > MAX_PARSED_LINE {
+            // Not read (S009), so left as it is: its number would stand out
+            // of order among the new ones.
+            if let Some(digits) = plain_prefix(source, content).1 {
+                return Err(Refusal {
+                    span: digits,
+                    message: "this block is too long to read (S009): its number would keep its old value among the new ones; split the block first".to_string(),
+                });
+            }
+            None
         } else {
             model
                 .lines
@@ -63,9 +75,15 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
     let mut new_of_row = HashMap::with_capacity(numbered.len());
     let mut replacements = Vec::with_capacity(numbered.len());
     let mut next = start;
+    let mut blocks = 0;
     for &(row, _, digits) in &numbered {
         new_of_row.insert(row, next);
-        replacements.push((digits, next.to_string().into_bytes()));
+        let new = next.to_string().into_bytes();
+        // A number that stays as it is (`N10` numbered 10 again) is no change.
+        if digits.of(source) != new.as_slice() {
+            replacements.push((digits, new));
+            blocks += 1;
+        }
         next = next.checked_add(step).ok_or_else(|| Refusal {
             span: digits,
             message: "the new block numbers would overflow".to_string(),
@@ -104,7 +122,10 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
             }
             let landing = model.landing(target, goto.kind, row);
             let span = number_digits(target);
-            replacements.push((span, new_text(landing, span, "this jump")?));
+            let text = new_text(landing, span, "this jump")?;
+            if span.of(source) != text.as_slice() {
+                replacements.push((span, text));
+            }
         }
         for statement in &block.statements {
             if let StatementKind::IndirectCall {
@@ -123,7 +144,10 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
                                 .find(|&r| r > row)
                                 .or_else(|| rows.iter().copied().rev().find(|&r| r <= row))
                         });
-                        replacements.push((span, new_text(landing, span, "this CALL BLOCK")?));
+                        let text = new_text(landing, span, "this CALL BLOCK")?;
+                        if span.of(source) != text.as_slice() {
+                            replacements.push((span, text));
+                        }
                     }
                 }
             }
@@ -132,7 +156,7 @@ pub fn plan(model: &Model, start: u64, step: u64) -> Result<Plan, Refusal> {
     replacements.sort_unstable_by_key(|(span, _)| (span.start, span.end));
     Ok(Plan {
         replacements,
-        blocks: numbered.len(),
+        blocks,
     })
 }
 
