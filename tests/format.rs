@@ -451,3 +451,12 @@ fn a_block_too_long_to_read_stops_renumbering() {
         "{notes:?}"
     );
 }
+
+/// Trailing comments aligned in a column stay aligned: the blanks before a
+/// comment are kept as they were.
+#[test]
+fn aligned_trailing_comments_stay_aligned() {
+    let source = b"G0 SUPA Z0        ; retract\nG0 X0 Y0          ; home\nM30\n";
+    let (out, _) = formatted("ALIGNED.MPF", source, &Settings::default());
+    assert_eq!(out, source);
+}

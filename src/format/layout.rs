@@ -1,10 +1,10 @@
 //! A line laid out: the skip level and block number at its start, one
 //! indent step per level of the control blocks around it, one blank where
 //! the source had blanks between words (none added where it had none), no
-//! trailing blanks; strings and the comment copied byte for byte. The case
-//! of the language's words ([`super::case`]) and the renumbering's
-//! replacements ([`super::renumber`]) are applied on the way, so a line is
-//! written once.
+//! trailing blanks; strings, the comment and the blanks before it copied
+//! byte for byte. The case of the language's words ([`super::case`]) and
+//! the renumbering's replacements ([`super::renumber`]) are applied on the
+//! way, so a line is written once.
 //!
 //! Which level a line stands at is the block structure's: the model's
 //! matching of IF/ELSE/ENDIF and the loops ([`Depths`]), the one the walk
@@ -217,9 +217,11 @@ pub fn write(
     }
     copier.copy(rest, code_end, out);
     if has_comment {
-        let written_code = code_end > code_start;
-        if written_code && line.code_end > code_end {
-            out.push(b' ');
+        // The blanks before a trailing comment stay as they were: comments
+        // aligned in a column over several lines stay aligned where the
+        // code before them keeps its length.
+        if code_end > code_start {
+            out.extend_from_slice(&source[code_end..line.code_end]);
         }
         out.extend_from_slice(&source[line.code_end..content.end]);
     }
@@ -403,7 +405,7 @@ mod tests {
         };
         let mut out = Vec::new();
         write(text.as_bytes(), &line, 0, "  ", Case::Upper, &mut out);
-        assert_eq!(out, b"MSG(\"a  b\") ; x  y  ");
+        assert_eq!(out, b"MSG(\"a  b\")   ; x  y  ");
         assert_eq!(laid_out("    ; only  ", None, 4, 1), "  ; only  ");
         assert_eq!(laid_out("   \t", None, 4, 3), "");
     }
