@@ -108,9 +108,10 @@ fn notations() -> Vec<Notation> {
     all
 }
 
-/// The frame written in `notation` and read back from that text.
+/// The frame written in `notation` (all 15 decimals) and read back from
+/// that text.
 fn through(notation: Notation, frame: &Pose, whole: bool) -> Result<Pose, String> {
-    let written = write(notation, frame, whole)?;
+    let written = write(notation, frame, whole, 15)?;
     read(notation, &[written.text], whole)
 }
 

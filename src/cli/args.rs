@@ -518,8 +518,8 @@ pub struct ProbeArgs {
     /// The head: CYCLE600's `_MIHEAD` and CYCLE800's `_TC`.
     #[arg(long, default_value = "", value_name = "NAME")]
     pub head: String,
-    /// Decimals of the numbers in the calls.
-    #[arg(long, default_value_t = 6)]
+    /// Decimals of the numbers in the calls (0 to 15).
+    #[arg(long, default_value_t = 6, value_parser = decimals)]
     pub precision: usize,
     /// Print one JSON object instead of the table.
     #[arg(long)]
@@ -556,8 +556,8 @@ pub struct AxisArgs {
     /// How far (a length, in the points' unit) the measurements may be from fitting.
     #[arg(long, default_value_t = 0.01, value_parser = length)]
     pub tolerance: f64,
-    /// Decimals of the numbers printed (JSON: full precision).
-    #[arg(long, default_value_t = 6)]
+    /// Decimals of the numbers printed, 0 to 15 (JSON: full precision).
+    #[arg(long, default_value_t = 6, value_parser = decimals)]
     pub precision: usize,
     /// Print one JSON object instead of the table.
     #[arg(long)]
@@ -618,10 +618,19 @@ pub struct ConvertArgs {
     /// Output form, same forms as --from.
     #[arg(long)]
     pub to: Notation,
+    /// Decimals of the numbers in a form's text and of the angles read from
+    /// stdin, 0 to 15, trailing zeros trimmed (the table: 6; JSON: full precision).
+    #[arg(long, default_value_t = EXACT_DECIMALS, value_parser = decimals)]
+    pub precision: usize,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
 }
+
+/// The decimals `convert` and `frame` print by default: the conversions
+/// hold angles and matrix entries to about 1e-13, so twelve decimals are
+/// exact (`45`, not `44.99999999999999`).
+pub const EXACT_DECIMALS: usize = 12;
 
 #[derive(Debug, clap::Args)]
 pub struct FrameArgs {
@@ -640,11 +649,25 @@ pub struct FrameArgs {
     /// A link of the tool's chain in the fixed system (T_SO), in the --from form;
     /// repeated, the links are chained in order. With --piece, the output is the
     /// tool seen from the piece, T_SP = T_PO^-1 · T_SO.
-    #[arg(long, value_name = "FRAME", requires = "piece")]
+    #[arg(
+        long,
+        value_name = "FRAME",
+        requires = "piece",
+        allow_hyphen_values = true
+    )]
     pub tool: Vec<String>,
     /// A link of the piece's chain in the fixed system (T_PO), as --tool.
-    #[arg(long, value_name = "FRAME", requires = "tool")]
+    #[arg(
+        long,
+        value_name = "FRAME",
+        requires = "tool",
+        allow_hyphen_values = true
+    )]
     pub piece: Vec<String>,
+    /// Decimals of the numbers in the form's text, 0 to 15, trailing zeros
+    /// trimmed (JSON: full precision).
+    #[arg(long, default_value_t = EXACT_DECIMALS, value_parser = decimals)]
+    pub precision: usize,
     /// Print one JSON object instead of the form's text.
     #[arg(long)]
     pub json: bool,
@@ -667,9 +690,20 @@ fn direction(text: &str) -> Result<i8, String> {
     }
 }
 
+/// A count of decimals: 0 to 15, as many as a double's digits hold (as
+/// `rewrite --precision`).
+fn decimals(text: &str) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(count) if count <= 15 => Ok(count),
+        _ => Err(format!(
+            "`{text}` is no count of decimals from 0 to 15 (a double holds about 15 digits)"
+        )),
+    }
+}
+
 fn finite_angle(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
-        Ok(value) if value.is_finite() => Ok(value),
+        Ok(value) if value.is_finite() => crate::cli::notation::angle(value),
         Ok(_) => Err(format!(
             "`{text}` is not a finite angle; give degrees such as -16.28"
         )),

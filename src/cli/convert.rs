@@ -8,6 +8,7 @@ use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
 use crate::cli::notation::{self, Notation};
 use crate::cli::{write_stdout, ExitStatus};
+use crate::emit::number::format as fixed;
 use crate::rotation::forms::Pose;
 use crate::rotation::{convert, convert_all, decompose, Angles, Conversion, Sequence};
 
@@ -31,6 +32,9 @@ fn single(args: &ConvertArgs, values: &[String]) -> Result<String, CliError> {
                 numbers.len()
             )));
         };
+        for value in [a1, a2, a3] {
+            notation::angle(value).map_err(CliError::Form)?;
+        }
         let conversion = convert(from, [a1, a2, a3], to);
         return Ok(if args.json {
             json(to, &conversion)
@@ -55,7 +59,7 @@ fn output(args: &ConvertArgs, pose: &Pose) -> Result<String, CliError> {
             table(&args.from.to_string(), to, &conversion)
         });
     }
-    let written = notation::write(args.to, pose, false).map_err(CliError::Form)?;
+    let written = notation::write(args.to, pose, false, args.precision).map_err(CliError::Form)?;
     if let Some(warning) = &written.warning {
         tellln!("{warning}");
     }
@@ -99,8 +103,7 @@ fn batch(args: &ConvertArgs) -> Result<String, CliError> {
         if args.json {
             text.push_str(&json(to, &conversion));
         } else {
-            // Shortest text that reads back as the same f64.
-            let [a, b, c] = conversion.output.angles;
+            let [a, b, c] = conversion.output.angles.map(|v| fixed(v, args.precision));
             let lock = if conversion.output.gimbal_lock {
                 " gimbal-lock"
             } else {
@@ -131,7 +134,8 @@ fn read_triples(text: &str) -> Result<Vec<Angles>, CliError> {
                 continue;
             }
             match field.parse::<f64>() {
-                Ok(value) if value.is_finite() => numbers.push(value),
+                Ok(value) if value.is_finite() => numbers
+                    .push(crate::cli::notation::angle(value).map_err(|why| error(column, why))?),
                 _ => return Err(error(column, format!("`{field}` is not a finite angle"))),
             }
         }

@@ -24,7 +24,7 @@ pub fn run(args: &FrameArgs) -> Result<ExitStatus, CliError> {
         let piece = chain(args.from, &args.piece, "--piece")?;
         tool_to_piece(&tool, &piece)
     };
-    let written = notation::write(args.to, &pose, true).map_err(CliError::Form)?;
+    let written = notation::write(args.to, &pose, true, args.precision).map_err(CliError::Form)?;
     if let Some(warning) = &written.warning {
         tellln!("{warning}");
     }

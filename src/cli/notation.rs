@@ -3,8 +3,8 @@
 //! axis and angle, Gibbs vector, Sinumerik frame statements, a
 //! post-processor's `ROT_MAT` / `TRANS_MAT` assignments, and the seed's
 //! tool-to-piece chain order. Each form's text is what its input takes, so
-//! an output reads back in; numbers in full (the shortest text that reads
-//! back as the same double).
+//! an output reads back in; numbers to the decimals asked for (by default
+//! as many as the conversions hold exactly), in JSON in full.
 
 use std::fmt;
 use std::str::FromStr;
@@ -12,6 +12,7 @@ use std::str::FromStr;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde_json::{json, Value};
 
+use crate::emit::number::format as fixed;
 use crate::rotation::forms::{
     axis_angle, chain_angles, chain_sequence, from_axis_angle, from_chain, from_gibbs,
     from_quaternion, gibbs, matrix_of_pose, pose, pose_of_matrix, quaternion, rotation_of_matrix,
@@ -123,6 +124,22 @@ pub fn read(notation: Notation, values: &[String], frame: bool) -> Result<Pose, 
     Ok(pose)
 }
 
+/// The largest angle taken, in degrees (either sign): past it a double
+/// holds an angle no closer than a few millionths of a degree, so its turn
+/// is not known to the digits printed. As coordinates past ±1e9 are refused.
+pub const LARGEST_ANGLE: f64 = 1e9;
+
+/// `value` as an angle, refused past [`LARGEST_ANGLE`] with the reason.
+pub fn angle(value: f64) -> Result<f64, String> {
+    if value.abs() > LARGEST_ANGLE {
+        return Err(format!(
+            "{value:e} degrees is beyond ±1e9, where a double holds an angle only to about {:.0e}°: its turn is not known to the digits printed; give the angle within one turn",
+            f64::EPSILON * value.abs()
+        ));
+    }
+    Ok(value)
+}
+
 /// The numbers of a text, blanks or commas between them.
 pub fn numbers(text: &str) -> Result<Vec<f64>, String> {
     text.split(|c: char| c.is_whitespace() || c == ',')
@@ -164,6 +181,17 @@ pub fn read_numbers(notation: Notation, numbers: &[f64], frame: bool) -> Result<
         _ => (Vector3::zeros(), numbers),
     };
     let three = |at: usize| [rest[at], rest[at + 1], rest[at + 2]];
+    match notation {
+        Notation::Angles(_) | Notation::Chain => {
+            for &value in rest {
+                angle(value)?;
+            }
+        }
+        Notation::AxisAngle => {
+            angle(rest[3])?;
+        }
+        _ => {}
+    }
     let rotation = match notation {
         Notation::Angles(sequence) => matrix(sequence, three(0)),
         Notation::Chain => return Ok(from_chain(translation, three(0))),
@@ -263,8 +291,13 @@ pub fn n(value: f64) -> String {
     format!("{}", value + 0.0)
 }
 
-fn line(values: &[f64]) -> String {
-    values.iter().map(|v| n(*v)).collect::<Vec<_>>().join(" ")
+/// `values` to `precision` decimals, blanks between them.
+fn line(values: &[f64], precision: usize) -> String {
+    values
+        .iter()
+        .map(|v| fixed(*v, precision))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 fn rows3(rotation: &Rotation3<f64>) -> [[f64; 3]; 3] {
@@ -283,8 +316,16 @@ pub fn gimbal_warning(sequence: Sequence, decomposition: &Decomposition) -> Opti
     })
 }
 
-/// `frame` in `notation`; `frame` false writes the rotation alone.
-pub fn write(notation: Notation, frame_pose: &Pose, frame: bool) -> Result<Written, String> {
+/// `frame` in `notation`, the text's numbers to `precision` decimals;
+/// `frame` false writes the rotation alone.
+pub fn write(
+    notation: Notation,
+    frame_pose: &Pose,
+    frame: bool,
+    precision: usize,
+) -> Result<Written, String> {
+    let line = |values: &[f64]| line(values, precision);
+    let n = |value: f64| fixed(value, precision);
     let rotation = frame_pose.rotation;
     let t = frame_pose.translation.vector;
     let prefix = |values: &[f64]| {
@@ -425,14 +466,15 @@ mod tests {
             false,
         )
         .expect("a rotation");
-        let written = write(Notation::Gpp, &pose, false).expect("written");
+        let written = write(Notation::Gpp, &pose, false, 12).expect("written");
         let lines: Vec<&str> = written.text.lines().collect();
         assert_eq!(lines.len(), 12);
         assert_eq!(lines[0], "ROT_MAT1=1;");
-        assert_eq!(lines[5], "ROT_MAT6=0.49999999999999994;");
+        assert_eq!(lines[5], "ROT_MAT6=0.5;");
         assert_eq!(lines[11], "TRANS_MATZ=0;");
         let back = read(Notation::Gpp, &[written.text], false).expect("read back");
-        assert_eq!(back, pose);
+        let error = (back.rotation.matrix() - pose.rotation.matrix()).abs().max();
+        assert!(error < 1e-12, "{error}");
     }
 
     #[test]
