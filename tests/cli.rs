@@ -2433,7 +2433,12 @@ fn numbers(value: &serde_json::Value) -> Vec<f64> {
 }
 
 fn probe_json(args: &[&str]) -> serde_json::Value {
+    // A head of the sample machine, unless one is given: without one no call
+    // is written.
     let mut all = vec!["probe", "--json"];
+    if !args.contains(&"--head") {
+        all.extend_from_slice(&["--head", "HEAD_CA"]);
+    }
     all.extend_from_slice(args);
     let output = run(&all, b"");
     assert_exit(&output, 0);
@@ -2525,7 +2530,7 @@ fn probe_json_has_the_sequence_and_exact_angles_in_every_form() {
     assert!(zxy["cycle800"]
         .as_str()
         .expect("text")
-        .starts_with("CYCLE800(0,\"\",0,39,"));
+        .starts_with("CYCLE800(0,\"HEAD_CA\",0,39,"));
     let output = run(&["probe", "--normal", &normal, "--to", "i:ZXZ"], b"");
     assert_exit(&output, 2);
     assert!(String::from_utf8_lossy(&output.stderr)
@@ -2607,6 +2612,7 @@ fn probe_in_a_rotated_frame_composes_with_it() {
     // The table says what the angles are relative to.
     let mut args = vec!["probe", "--along-x", &p1, &p2, "--along-y", &p3, &p4];
     args.extend_from_slice(&in_frame);
+    args.extend_from_slice(&["--head", "HEAD_CA"]);
     let output = run(&args, b"");
     assert_exit(&output, 0);
     insta::assert_snapshot!(stdout(&output));
@@ -3769,4 +3775,40 @@ fn convert_and_frame_print_exact_digits() {
     );
     assert_exit(&output, 0);
     assert_eq!(stdout(&output), "-1 0 0 0 0 0\n");
+}
+
+/// `probe` writes calls that `check` passes, or none: no call without a
+/// head, a head that an NC string cannot carry refused.
+#[test]
+fn probe_writes_only_calls_check_passes() {
+    let output = run(&["probe", "--normal", "0.1,0,1"], b"");
+    assert_exit(&output, 0);
+    let text = stdout(&output);
+    assert!(!text.contains("CYCLE600(") && !text.contains("CYCLE800("), "{text}");
+    assert!(text.contains("give --head NAME"), "{text}");
+    let value = probe_json(&["--normal", "0.1,0,1", "--head", "HEAD_CA"]);
+    let program = format!(
+        "N10 {}\nN20 {}\nN30 M30\n",
+        value["cycle600"].as_str().expect("text"),
+        value["cycle800"].as_str().expect("text")
+    );
+    let check = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--machine",
+            "samples/MACHINE.SPF",
+            "--select",
+            "S,C6,K",
+            "-",
+        ],
+        program.as_bytes(),
+    );
+    assert!(!stdout(&check).contains("error"), "{}", stdout(&check));
+    for head in ["A\"B", "A\nB", "", &"H".repeat(33)] {
+        let output = run(&["probe", "--normal", "0.1,0,1", "--head", head], b"");
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty(), "{head:?}");
+    }
 }

@@ -515,9 +515,11 @@ pub struct ProbeArgs {
     /// The sequence CYCLE600 writes and CYCLE800 swivels in (`_BIN_OUT`, `_MODE`).
     #[arg(long, default_value = "i:ZYX", value_name = "SEQUENCE")]
     pub to: Sequence,
-    /// The head: CYCLE600's `_MIHEAD` and CYCLE800's `_TC`.
-    #[arg(long, default_value = "", value_name = "NAME")]
-    pub head: String,
+    /// The head: CYCLE600's `_MIHEAD` and CYCLE800's `_TC`, the machine's
+    /// swivel data record (`$TC_CARR34`, at most 32 characters). Without it
+    /// the angles are printed and no call.
+    #[arg(long, value_name = "NAME", value_parser = record_name)]
+    pub head: Option<String>,
     /// Decimals of the numbers in the calls (0 to 15).
     #[arg(long, default_value_t = 6, value_parser = decimals)]
     pub precision: usize,
@@ -688,6 +690,25 @@ fn direction(text: &str) -> Result<i8, String> {
             "`{text}` is no _DIR: give -1 (the lower position) or 1 (the higher)"
         )),
     }
+}
+
+/// The name of a swivel data record as the control holds it (`$TC_CARR34`,
+/// a string of at most 32 characters) and as an NC string can carry it: no
+/// `"`, which would end the string, and no control character (a line end
+/// would end the block).
+fn record_name(text: &str) -> Result<String, String> {
+    let count = text.chars().count();
+    if count == 0 || count > 32 {
+        return Err(format!(
+            "a swivel data record's name has 1 to 32 characters ($TC_CARR34), this one {count}"
+        ));
+    }
+    if let Some(bad) = text.chars().find(|c| *c == '"' || c.is_control()) {
+        return Err(format!(
+            "{bad:?} cannot stand in an NC string: give the record's name as the machine holds it"
+        ));
+    }
+    Ok(text.to_string())
 }
 
 /// A count of decimals: 0 to 15, as many as a double's digits hold (as

@@ -473,7 +473,9 @@ mod tests {
         assert_eq!(lines[5], "ROT_MAT6=0.5;");
         assert_eq!(lines[11], "TRANS_MATZ=0;");
         let back = read(Notation::Gpp, &[written.text], false).expect("read back");
-        let error = (back.rotation.matrix() - pose.rotation.matrix()).abs().max();
+        let error = (back.rotation.matrix() - pose.rotation.matrix())
+            .abs()
+            .max();
         assert!(error < 1e-12, "{error}");
     }
 

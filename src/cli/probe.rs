@@ -39,6 +39,12 @@ struct Probed {
     in_frame: Option<Rotation3<f64>>,
 }
 
+/// The two calls that swivel to the face, CYCLE600 and CYCLE800.
+struct Calls {
+    cycle600: String,
+    cycle800: String,
+}
+
 pub fn run(args: &ProbeArgs) -> Result<ExitStatus, CliError> {
     let probed = probe(args)?;
     let cycle800 =
@@ -51,11 +57,16 @@ pub fn run(args: &ProbeArgs) -> Result<ExitStatus, CliError> {
             help: "give a sequence of three different axes, as i:ZYX (`_MODE` 27) or i:ZXY (39)"
                 .into(),
         })?;
-    let cycle600 = cycle600(&probed.evaluation.parameters, args.precision);
+    // Only with the head they name: an empty name is no record the
+    // control (or a HEAD_DEF) knows.
+    let calls = args.head.is_some().then(|| Calls {
+        cycle600: cycle600(&probed.evaluation.parameters, args.precision),
+        cycle800,
+    });
     let text = if args.json {
-        json(args, &probed, &cycle600, &cycle800)
+        json(args, &probed, calls.as_ref())
     } else {
-        table(args, &probed, &cycle600, &cycle800)
+        table(args, &probed, calls.as_ref())
     };
     write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
@@ -100,7 +111,7 @@ fn probe(args: &ProbeArgs) -> Result<Probed, CliError> {
     let rotation = active * face::rotation(measured);
     let input = face::sequence();
     let parameters = Parameters {
-        head: args.head.clone(),
+        head: args.head.clone().unwrap_or_default(),
         recalculate_only: false,
         input,
         before: centre.coords,
@@ -217,7 +228,7 @@ fn g_function(units: Units) -> &'static str {
     }
 }
 
-fn json(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> String {
+fn json(args: &ProbeArgs, probed: &Probed, calls: Option<&Calls>) -> String {
     let p = &probed.evaluation.parameters;
     let triple = |v: Vector3<f64>| [v.x + 0.0, v.y + 0.0, v.z + 0.0];
     let value = serde_json::json!({
@@ -244,8 +255,8 @@ fn json(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> St
             "angles": probed.evaluation.output.angles,
             "gimbal_lock": probed.evaluation.output.gimbal_lock,
         },
-        "cycle600": cycle600,
-        "cycle800": cycle800,
+        "cycle600": calls.map(|c| &c.cycle600),
+        "cycle800": calls.map(|c| &c.cycle800),
     });
     format!("{value}\n")
 }
@@ -255,7 +266,7 @@ fn tilt(normal: &Vector3<f64>) -> f64 {
     crate::rotation::trig::atan2_degrees(normal.x.hypot(normal.y), normal.z)
 }
 
-fn table(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> String {
+fn table(args: &ProbeArgs, probed: &Probed, calls: Option<&Calls>) -> String {
     let p = &probed.evaluation.parameters;
     let n = |v: f64| format(v, args.precision);
     let unit = unit(args.units);
@@ -326,7 +337,7 @@ fn table(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> S
         g_function(args.units)
     ));
     text.push_str(&format!(
-        "output      {} {}{}\n\n{cycle600}\n{cycle800}\n",
+        "output      {} {}{}\n",
         sequence(p.output),
         probed.evaluation.output.angles.map(n).join(" "),
         if probed.evaluation.output.gimbal_lock {
@@ -335,5 +346,11 @@ fn table(args: &ProbeArgs, probed: &Probed, cycle600: &str, cycle800: &str) -> S
             ""
         }
     ));
+    match calls {
+        Some(calls) => text.push_str(&format!("\n{}\n{}\n", calls.cycle600, calls.cycle800)),
+        None => text.push_str(
+            "calls       give --head NAME, the machine's swivel data record ($TC_CARR34), for the CYCLE600 and CYCLE800 calls\n",
+        ),
+    }
     text
 }
