@@ -3784,7 +3784,10 @@ fn probe_writes_only_calls_check_passes() {
     let output = run(&["probe", "--normal", "0.1,0,1"], b"");
     assert_exit(&output, 0);
     let text = stdout(&output);
-    assert!(!text.contains("CYCLE600(") && !text.contains("CYCLE800("), "{text}");
+    assert!(
+        !text.contains("CYCLE600(") && !text.contains("CYCLE800("),
+        "{text}"
+    );
     assert!(text.contains("give --head NAME"), "{text}");
     let value = probe_json(&["--normal", "0.1,0,1", "--head", "HEAD_CA"]);
     let program = format!(
@@ -3810,5 +3813,42 @@ fn probe_writes_only_calls_check_passes() {
         let output = run(&["probe", "--normal", "0.1,0,1", "--head", head], b"");
         assert_exit(&output, 2);
         assert!(output.stdout.is_empty(), "{head:?}");
+    }
+}
+
+/// `axes --export a3200` writes a setup only for a record that makes one:
+/// parallel axes, or a name an ANGLE cannot carry, are refused (exit 2)
+/// with nothing on stdout.
+#[test]
+fn a3200_export_writes_nothing_for_a_record_that_makes_no_setup() {
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("A3200_BAD.SPF");
+    std::fs::write(
+        &path,
+        "$TC_CARR23[1]=\"P\" $TC_CARR34[1]=\"PAR\" $TC_CARR35[1]=\"A\" $TC_CARR36[1]=\"C\"\n\
+         $TC_CARR7[1]=-1 $TC_CARR8[1]=0 $TC_CARR9[1]=0\n\
+         $TC_CARR10[1]=-1 $TC_CARR11[1]=0 $TC_CARR12[1]=0\n\
+         $TC_CARR23[2]=\"P\" $TC_CARR34[2]=\"NAMED\" $TC_CARR35[2]=\"A X\" $TC_CARR36[2]=\"C\"\n\
+         $TC_CARR7[2]=-1 $TC_CARR8[2]=0 $TC_CARR9[2]=0\n\
+         $TC_CARR10[2]=0 $TC_CARR11[2]=0 $TC_CARR12[2]=-1\nM17\n",
+    )
+    .expect("machine file");
+    let machine = path.to_str().expect("UTF-8 path");
+    for (record, why) in [("PAR", "parallel"), ("NAMED", "letters, digits")] {
+        let output = run(
+            &[
+                "axes",
+                "--machine",
+                machine,
+                "--record",
+                record,
+                "--export",
+                "a3200",
+            ],
+            b"",
+        );
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty(), "{record}: {}", stdout(&output));
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains(why), "{record}: {stderr}");
     }
 }

@@ -73,6 +73,12 @@ pub enum A3200Error {
     TooMany(usize),
     #[error("no ROTATION command")]
     Empty,
+    #[error(transparent)]
+    Record(#[from] crate::kinematics::record::RecordError),
+    #[error("{axis}: a number of the record is not finite")]
+    NotFinite { axis: String },
+    #[error("{axis} is named {name:?}: an ANGLE names its axis with letters, digits and `_`, starting with a letter")]
+    Name { axis: String, name: String },
 }
 
 /// The setup of a table record.
@@ -82,10 +88,25 @@ pub fn setup_of(record: &Record) -> Result<Setup, A3200Error> {
         Kinematics::Mixed => return Err(A3200Error::Mixed),
         Kinematics::Table => {}
     }
+    record.check()?;
     let [_, _, l3, l4] = record.offsets;
     let rotation = |index: usize, displacement: Vector3<f64>| {
         let axis = &record.axes[index];
         let label = axis.label(index);
+        let finite = |v: &Vector3<f64>| v.iter().all(|c| c.is_finite());
+        if !(finite(&axis.vector) && finite(&displacement) && axis.offset.is_finite()) {
+            return Err(A3200Error::NotFinite { axis: label });
+        }
+        let identifier = |name: &str| {
+            name.starts_with(|c: char| c.is_ascii_alphabetic())
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        };
+        if !axis.name.is_empty() && !identifier(&axis.name) {
+            return Err(A3200Error::Name {
+                axis: format!("rotary axis {}", index + 1),
+                name: axis.name.clone(),
+            });
+        }
         if axis.offset != 0.0 {
             return Err(A3200Error::Offset {
                 axis: label,
