@@ -99,6 +99,16 @@ impl Machine {
                         continue;
                     }
                 };
+                if let Some(written) = c_exponent_after(source, assign.value.span) {
+                    let text = String::from_utf8_lossy(written.of(source));
+                    diagnostics.push(
+                        RULE.at(written)
+                            .message(format!("`$TC_CARR{parameter}[{record}]` is written `{text}`: the control reads the number before the `E` and the rest as another word"))
+                            .label("no power of ten in this language")
+                            .help("write a power of ten with EX, as 1EX-7, or the number in full, as 0.0000001"),
+                    );
+                    continue;
+                }
                 match value(source, parameter, &assign.value, &scope) {
                     Ok(field) => {
                         fields
@@ -157,6 +167,26 @@ impl Machine {
 }
 
 /// Parameters 1 to 65 but the undefined 47-54 and 61-63.
+/// The span of a number written as C writes a power of ten (`1e-7`,
+/// `2.5E3`) where `value` ends at its mantissa, from the mantissa's start:
+/// the language writes `1EX-7`, and reads `1e-7` as 1 and a word `E-7`.
+fn c_exponent_after(source: &[u8], value: Span) -> Option<Span> {
+    let mantissa = value.of(source);
+    if mantissa.is_empty() || !mantissa.iter().all(|b| b.is_ascii_digit() || *b == b'.') {
+        return None;
+    }
+    let rest = &source[value.end..];
+    let mut at = match rest.first() {
+        Some(b'e' | b'E') => 1,
+        _ => return None,
+    };
+    if matches!(rest.get(at), Some(b'+' | b'-')) {
+        at += 1;
+    }
+    let digits = rest[at..].iter().take_while(|b| b.is_ascii_digit()).count();
+    (digits > 0).then(|| Span::new(value.start, value.end + at + digits))
+}
+
 fn is_parameter(n: u32) -> bool {
     matches!(n, 1..=46 | 55..=60 | 64 | 65)
 }
@@ -344,6 +374,21 @@ mod tests {
             machine.diagnostics.is_empty(),
             "the bound itself is allowed"
         );
+    }
+
+    /// `1e-7` is no number of the language: told, not read as 1.
+    #[test]
+    fn a_power_of_ten_written_as_in_c_is_told() {
+        let source = b"$TC_CARR23[1]=\"T\" $TC_CARR34[1]=\"H\"\n$TC_CARR7[1]=0 $TC_CARR8[1]=0 $TC_CARR9[1]=1\n$TC_CARR13[1]=1e-7\n$TC_CARR14[1]=1EX-7\n";
+        let machine = Machine::read(source, Reading::default());
+        let told: Vec<_> = machine
+            .diagnostics
+            .iter()
+            .filter(|d| d.message.contains("`1e-7`"))
+            .collect();
+        assert_eq!(told.len(), 1, "{:?}", machine.diagnostics);
+        assert_eq!(told[0].span.of(source), b"1e-7");
+        assert_eq!(machine.records[0].axes[0].angle, 0.0);
     }
 
     #[test]
