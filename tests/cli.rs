@@ -1613,16 +1613,29 @@ fn rewrite_refuses_a_swivel_over_a_table_with_the_splits_numbers() {
         "{}",
         stdout(&frames)
     );
-    // Without the table, the head takes the whole swivel as CYCLE800.
+    // Without the table, the head takes the whole swivel as CYCLE800,
+    // which it cannot reach within its limits: said (K002), exit 1.
     let plain = run(
-        &["rewrite", "--machine", "samples/MACHINE.SPF", TABLE_PROGRAM],
+        &[
+            "rewrite",
+            "--machine",
+            "samples/MACHINE.SPF",
+            "--message-format",
+            "short",
+            TABLE_PROGRAM,
+        ],
         b"",
     );
-    assert_exit(&plain, 0);
+    assert_exit(&plain, 1);
     assert!(
         stdout(&plain).contains("N40 CYCLE800(0,\"HEAD_H\",0,57,"),
         "{}",
         stdout(&plain)
+    );
+    let stderr = String::from_utf8_lossy(&plain.stderr);
+    assert!(
+        stderr.contains(&format!("{TABLE_PROGRAM}:8:5: error[K002] record `HEAD_H` reaches this orientation only outside its axis limits")),
+        "{stderr}"
     );
     assert_ne!(stdout(&plain), program);
     // The refusal as a person reads it.

@@ -8,10 +8,11 @@ pub mod held;
 pub mod text;
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::emit::cycle600::{rewrite_on, Rewrite};
+use crate::emit::cycle600::{rewrite_on, Form, Rewrite};
 pub use crate::lint::Analyzed;
 use crate::lint::{self, Settings};
-use crate::semantic::{analyze, Analysis, Model};
+use crate::semantic::swivels;
+use crate::semantic::{analyze, Analysis, CallSite, Model};
 use crate::syntax::{program_kind, ProgramKind};
 
 /// A program: its name (a path, `<stdin>`, an editor's URI) and its bytes.
@@ -112,6 +113,26 @@ impl<'src> Document<'src> {
             diagnostics.push(crate::semantic::head_def::not_found());
         }
         diagnostics.extend(rewrite.diagnostics.iter().cloned());
+        if let Some(on) = settings
+            .machine
+            .as_deref()
+            .filter(|_| settings.emit.form == Form::Cycle800)
+        {
+            // What the machine makes of each CYCLE800 written, as `check
+            // --machine` says it of the call: a rewrite does not hand the
+            // control a swivel its record cannot reach without saying so.
+            let written = |site: &&CallSite| {
+                rewrite.edits.iter().any(|edit| {
+                    edit.span.start <= site.statement.start && site.statement.end <= edit.span.end
+                })
+            };
+            let asked = analysis
+                .calls
+                .iter()
+                .filter(written)
+                .filter_map(swivels::of_cycle600);
+            diagnostics.extend(asked.flat_map(|asked| swivels::findings(&asked, on)));
+        }
         diagnostics.sort_by_key(|d| (d.span.start, d.code));
         let diagnostics = annotated(diagnostics, &model.macro_uses, self.source);
         Rewritten {
