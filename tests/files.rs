@@ -882,9 +882,10 @@ fn a_binary_file_is_skipped_by_a_walk_and_not_linted_when_named() {
     let files = reported(&output);
     assert_eq!(files, ["programs/A.MPF", "programs/C.MPF"]);
 
-    // Named, it is not linted either, and the note says so.
+    // Named, it is no program to check: an error (exit 2), as in every
+    // command. A UTF-16 text is named as such, with what to do.
     let output = run_in(&dir, &["check", "--format", "short", "programs/B.MPF"]);
-    assert_exit(&output, 0);
+    assert_exit(&output, 2);
     let stderr = String::from_utf8_lossy(&output.stderr).replace('\\', "/");
     assert!(
         output.stdout.is_empty(),
@@ -892,9 +893,23 @@ fn a_binary_file_is_skipped_by_a_walk_and_not_linted_when_named() {
         String::from_utf8_lossy(&output.stdout)
     );
     assert!(
-        stderr.contains("note: programs/B.MPF: not checked: a binary file"),
+        stderr.contains("programs/B.MPF: a binary file (NUL bytes), not a program"),
         "{stderr}"
     );
+    let utf16: Vec<u8> = [0xFF, 0xFE]
+        .into_iter()
+        .chain("N10 X1\r\nM30\r\n".bytes().flat_map(|b| [b, 0]))
+        .collect();
+    fs::write(dir.join("WIDE.MPF"), &utf16).expect("write");
+    for command in ["check", "fmt", "rewrite", "eval"] {
+        let output = run_in(&dir, &[command, "WIDE.MPF"]);
+        assert_exit(&output, 2);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("a UTF-16 text") && stderr.contains("iconv"),
+            "{command}: {stderr}"
+        );
+    }
 
     // rewrite and eval skip it in a walk; named, it is no program to
     // rewrite or evaluate: an error, and the file untouched.

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use crate::cli::analysis;
 use crate::cli::args::{CheckArgs, Format};
 use crate::cli::error::CliError;
-use crate::cli::input::{binary, read, Bytes, Found};
+use crate::cli::input::{binary, read, skip_binary, Bytes, Found};
 use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
@@ -42,17 +42,10 @@ struct Checked {
 }
 
 impl Checked {
-    /// A binary file: not linted, and not counted as a program checked. A
-    /// walk skips it, as it skips a link; one named is not checked either
-    /// (ripgrep searches a binary file named and says so; a linter's
-    /// findings in one would be noise), and the note says why.
-    fn binary(found: &Found, name: &str) -> Self {
-        let name = printable(name);
-        let notes = if found.was_walked() {
-            format!("note: skipped {name}: a binary file (NUL bytes), not a program\n")
-        } else {
-            format!("note: {name}: not checked: a binary file (NUL bytes), not a program\n")
-        };
+    /// A binary file a walk found: not linted, and not counted as a
+    /// program checked, as a link is skipped; the note says why. One named
+    /// is an error, as in every command ([`skip_binary`]).
+    fn skipped(notes: String) -> Self {
         Self {
             report: Report::Text(String::new()),
             fails: false,
@@ -367,7 +360,11 @@ fn check_file(
         _ => path.to_path_buf(),
     };
     if binary(&file.bytes) {
-        return Ok(Checked::binary(found, &file.name));
+        return Ok(Checked::skipped(skip_binary(
+            found,
+            &file.name,
+            &file.bytes,
+        )?));
     }
     let resolved = workspace.for_check(&named)?;
     let deny_warnings = resolved.deny_warnings;

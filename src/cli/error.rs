@@ -39,6 +39,13 @@ pub enum CliError {
     )]
     Binary { path: PathBuf },
 
+    #[error("{}: a UTF-16 text (its first bytes are a UTF-16 byte order mark), which the control does not read", shown(path))]
+    #[diagnostic(
+        code(sinuprep::utf16),
+        help("save it as 8-bit text (ISO 8859-1 or UTF-8), as `iconv -f UTF-16 -t ISO-8859-1 PART.MPF > PART_8BIT.MPF`")
+    )]
+    Utf16 { path: PathBuf },
+
     #[error("the language server stopped: {0}")]
     #[diagnostic(
         code(sinuprep::lsp),

@@ -177,7 +177,7 @@ fn eval_file(found: &Found, args: &EvalArgs, workspace: &Workspace) -> Result<Ev
             } else {
                 Output::Text(String::new())
             },
-            diagnostics: skip_binary(found, &file.name)?,
+            diagnostics: skip_binary(found, &file.name, &file.bytes)?,
             failed: false,
             machine: None,
         });

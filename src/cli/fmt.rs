@@ -83,7 +83,7 @@ fn format_file(found: &Found, args: &FmtArgs, workspace: &Workspace) -> Result<O
         stderr: String::new(),
     };
     if binary(&file.bytes) {
-        outcome.stderr = skip_binary(found, &file.name)?;
+        outcome.stderr = skip_binary(found, &file.name, &file.bytes)?;
         return Ok(outcome);
     }
     let mut settings = workspace.for_format(path)?;

@@ -74,15 +74,29 @@ pub fn binary(bytes: &[u8]) -> bool {
     memchr::memchr(0, head).is_some() && !crate::archive::binary::is_binary(bytes)
 }
 
-/// A binary file met by `rewrite` or `eval`: a walk skips it, with the note
-/// `check` gives (`Ok`); one named on the command line is an error, since
-/// the program asked for is none.
-pub fn skip_binary(found: &Found, name: &str) -> Result<String, CliError> {
+/// Whether `bytes` begin with a UTF-16 byte order mark (FF FE or FE FF):
+/// a program an editor saved as UTF-16, whose every other byte is NUL.
+pub fn utf16(bytes: &[u8]) -> bool {
+    bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF])
+}
+
+/// A binary file met by any command: a walk skips it, with a note (`Ok`);
+/// one named on the command line is an error, since the program asked for
+/// is none. A UTF-16 text is named as such, with what to do.
+pub fn skip_binary(found: &Found, name: &str, bytes: &[u8]) -> Result<String, CliError> {
+    let utf16 = utf16(bytes);
     if found.was_walked() {
         let name = crate::cli::render::printable(name);
-        Ok(format!(
-            "note: skipped {name}: a binary file (NUL bytes), not a program\n"
-        ))
+        let what = if utf16 {
+            "a UTF-16 text, which the control does not read (save it as 8-bit text)"
+        } else {
+            "a binary file (NUL bytes), not a program"
+        };
+        Ok(format!("note: skipped {name}: {what}\n"))
+    } else if utf16 {
+        Err(CliError::Utf16 {
+            path: found.path.clone(),
+        })
     } else {
         Err(CliError::Binary {
             path: found.path.clone(),

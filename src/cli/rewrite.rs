@@ -145,7 +145,7 @@ fn rewrite_file(
         return Ok(Outcome {
             status: ExitStatus::Success,
             stdout: Vec::new(),
-            stderr: skip_binary(found, &file.name)?,
+            stderr: skip_binary(found, &file.name, &file.bytes)?,
             machine: None,
         });
     }
