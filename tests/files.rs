@@ -1179,3 +1179,28 @@ fn findings_come_while_the_walk_goes_on() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// With no path, `fmt` and `rewrite --check` take the current folder, as
+/// `check` does, whatever stdin is (in CI it is no terminal): a folder with
+/// a file that fails fails, and stdin is read only when `-` is named.
+#[test]
+fn no_path_means_the_current_folder() {
+    let dir = scratch("files-no-path");
+    fs::write(dir.join("SPACED.MPF"), b"N10  X1\nM30\n").expect("write");
+    fs::write(dir.join("P.MPF"), PROGRAM).expect("write");
+    let heads = heads();
+    for args in [
+        &["fmt", "--check"][..],
+        &["rewrite", "--check", "--heads", &heads],
+    ] {
+        let output = run_in(&dir, args);
+        assert_exit(&output, 1);
+    }
+    let output = run_in(&dir, &["fmt"]);
+    assert_exit(&output, 0);
+    assert_eq!(
+        fs::read(dir.join("SPACED.MPF")).expect("read"),
+        b"N10 X1\nM30\n"
+    );
+    let _ = fs::remove_dir_all(&dir);
+}

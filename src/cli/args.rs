@@ -378,7 +378,7 @@ pub enum MessageFormat {
 
 #[derive(Debug, clap::Args)]
 pub struct RewriteArgs {
-    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin (also when none is named and stdin is no terminal).
+    /// Programs or directories (walked for .mpf/.spf/.arc files, or what `include` takes, leaving out hidden names and what .gitignore ignores); an archive is read as its programs; `-` reads stdin. None: the current directory with --check, --in-place, -o or --diff; stdin otherwise (when it is no terminal).
     /// Several programs need --in-place, -o DIR, --check or --diff.
     pub paths: Vec<PathBuf>,
     #[command(flatten)]
@@ -424,7 +424,7 @@ pub struct RewriteArgs {
 
 #[derive(Debug, clap::Args)]
 pub struct FmtArgs {
-    /// Programs or directories (walked as `check` walks them); an archive's programs are formatted in it; `-` reads stdin and writes stdout.
+    /// Programs or directories (walked as `check` walks them); an archive's programs are formatted in it; `-` reads stdin and writes stdout. None: the current directory.
     pub paths: Vec<PathBuf>,
     #[command(flatten)]
     pub walk: WalkArgs,

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use crate::archive::Form;
 use crate::cli::args::FmtArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
+use crate::cli::input::{binary, named_or_here, read, skip_binary, Found};
 use crate::cli::output::{in_place_target, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{human, printable, FileReport};
@@ -33,7 +33,7 @@ struct Outcome {
 }
 
 pub fn run(args: &FmtArgs) -> Result<ExitStatus, CliError> {
-    let named = named_or_stdin(&args.paths, "fmt")?;
+    let named = named_or_here(&args.paths);
     let workspace = Workspace::new(Given {
         config: args.config.clone(),
         follow_links: args.walk.follow_links,

@@ -111,9 +111,6 @@ pub enum Links {
     Follow,
 }
 
-/// The paths `command` reads: those named, else standard input, unless it
-/// is a terminal, where waiting for a program to be typed would look like a
-/// hang.
 /// Standard input read whole as text (bytes that are no UTF-8 replaced);
 /// `at_terminal` when it is a terminal, where waiting for typed input would
 /// look like a hang.
@@ -133,6 +130,21 @@ pub fn stdin_text(at_terminal: CliError) -> Result<String, CliError> {
     Ok(String::from_utf8_lossy(&input).into_owned())
 }
 
+/// The paths named, or the current folder when none is: what a command
+/// that writes files or only checks them (`fmt`, `rewrite --check`,
+/// `--in-place`, `-o`, `--diff`) takes, as `check` does. Stdin is read
+/// only when `-` is named: in CI stdin is no terminal, and reading it empty
+/// would pass while the folder holds a file that fails.
+pub fn named_or_here(paths: &[PathBuf]) -> Vec<PathBuf> {
+    if paths.is_empty() {
+        vec![PathBuf::from(".")]
+    } else {
+        paths.to_vec()
+    }
+}
+
+/// The paths named, or else stdin for a filter (`rewrite` and `eval` to
+/// stdout), unless stdin is a terminal, where waiting would look like a hang.
 pub fn named_or_stdin(paths: &[PathBuf], command: &'static str) -> Result<Vec<PathBuf>, CliError> {
     use std::io::IsTerminal;
     if !paths.is_empty() {

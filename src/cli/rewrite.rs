@@ -12,7 +12,7 @@ use crate::archive::Form;
 use crate::cli::analysis;
 use crate::cli::args::RewriteArgs;
 use crate::cli::error::CliError;
-use crate::cli::input::{binary, named_or_stdin, read, skip_binary, Found};
+use crate::cli::input::{binary, named_or_here, named_or_stdin, read, skip_binary, Found};
 use crate::cli::output::{in_place_target, same_file, write_atomically, write_inside};
 use crate::cli::parallel;
 use crate::cli::render::printable;
@@ -47,7 +47,13 @@ struct Outcome {
 }
 
 pub fn run(args: &RewriteArgs) -> Result<ExitStatus, CliError> {
-    let named = named_or_stdin(&args.paths, "rewrite")?;
+    // Writing files or checking them takes the current folder; to stdout,
+    // a filter reads stdin.
+    let named = if args.check || args.in_place || args.diff || args.output.is_some() {
+        named_or_here(&args.paths)
+    } else {
+        named_or_stdin(&args.paths, "rewrite")?
+    };
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
         table: args.table.clone(),
