@@ -3,7 +3,9 @@
 //! subprograms in folders of 100 (each folder's subprograms are read for the
 //! calls; what is kept of them must not grow with n), with
 //! the time to the first finding printed (findings come as files finish, in
-//! their order, not after the last) and the peak resident memory.
+//! their order, not after the last) and the peak resident memory; and one
+//! program under 250, 500 and 1,000 folders one in the other (linear in the
+//! depth).
 //!
 //! `cargo bench --bench folders` (counts: `SINUPREP_BENCH_FOLDERS`, default
 //! `2000 8000 50000`; another build to compare: `SINUPREP_BENCH_BINARY`).
@@ -62,6 +64,20 @@ fn main() {
                 peak as f64 / 1024.0
             );
         }
+    }
+    // One program at the bottom of folders one in the other: each folder's
+    // settings lookup must not list every folder above it again.
+    println!("\nshape  depth      total s");
+    for depth in [250, 500, 1000] {
+        let _ = std::fs::remove_dir_all(&dir);
+        let mut deep = dir.join("deep");
+        for _ in 0..depth {
+            deep.push("d");
+        }
+        std::fs::create_dir_all(&deep).expect("bench directory");
+        std::fs::write(deep.join("P.MPF"), "GOTOF NOWHERE\nM30\n").expect("write");
+        let (total, _, _) = measure(&binary, &dir.join("deep"));
+        println!("deep   {depth:>5} {total:>12.3}");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1204,3 +1204,39 @@ fn no_path_means_the_current_folder() {
     );
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// The settings of a folder hold for a program 300 folders below it, and
+/// a settings file on the way holds below it (each folder is looked at
+/// once, after its parent).
+#[test]
+fn settings_hold_far_down_a_deep_tree() {
+    let dir = scratch("files-deep-settings");
+    fs::write(dir.join("sinuprep.toml"), "ignore = [\"N001\"]\n").expect("write");
+    let mut deep = dir.clone();
+    for level in 0..300 {
+        deep.push("d");
+        if level == 200 {
+            fs::create_dir_all(&deep).expect("dir");
+            fs::write(deep.join("P.MPF"), b"GOTOF NOWHERE\nM30\n").expect("write");
+        }
+    }
+    fs::create_dir_all(&deep).expect("dir");
+    fs::write(deep.join("P.MPF"), b"GOTOF NOWHERE\nM30\n").expect("write");
+    let output = run_in(&dir, &["check", "--format", "short", "."]);
+    assert_exit(&output, 0);
+    // A settings file half way down selects what the top one ignores.
+    let half = (0..250).fold(dir.clone(), |path, _| path.join("d"));
+    fs::write(half.join("sinuprep.toml"), "select = [\"N001\"]\n").expect("write");
+    let output = run_in(&dir, &["check", "--format", "short", "."]);
+    assert_exit(&output, 1);
+    let found = stdout_lines(&output);
+    assert_eq!(found.len(), 1, "{found:?}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+fn stdout_lines(output: &Output) -> Vec<String> {
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(str::to_string)
+        .collect()
+}

@@ -307,13 +307,7 @@ impl Workspace {
                 } else {
                     start.parent().unwrap_or(Path::new(""))
                 };
-                let key = dir.to_path_buf();
-                self.nearest.get_or_make(&key, || {
-                    config::nearest(start, |dir| match self.listing(dir) {
-                        Ok(listing) => listing.settings(),
-                        Err(_) => folder::settings_in(dir),
-                    })
-                })?
+                self.nearest_settings(dir)?
             }
         };
         match path {
@@ -322,6 +316,43 @@ impl Workspace {
             }),
             None => Ok(Config::default()),
         }
+    }
+
+    /// The nearest `sinuprep.toml` from `dir` upward. A walk asks for a
+    /// folder after its parent, so each folder is looked at once: the
+    /// folders up to the first one already known (or holding the file) are
+    /// listed, and each is kept with the answer. Linear in a tree's depth.
+    fn nearest_settings(&self, dir: &Path) -> Result<Option<PathBuf>, SettingsError> {
+        let settings_in = |dir: &Path| match self.listing(dir) {
+            Ok(listing) => listing.settings(),
+            Err(_) => folder::settings_in(dir),
+        };
+        let mut looked_at = Vec::new();
+        let mut at = if dir.as_os_str().is_empty() {
+            PathBuf::from(".")
+        } else {
+            dir.to_path_buf()
+        };
+        let found = loop {
+            if let Some(known) = self.nearest.get(&at) {
+                break known;
+            }
+            if let Some(found) = settings_in(&at)? {
+                looked_at.push(at);
+                break Some(found);
+            }
+            looked_at.push(at.clone());
+            match at.parent() {
+                Some(parent) if !parent.as_os_str().is_empty() => at = parent.to_path_buf(),
+                // Above a relative path's first folder, or at the root:
+                // the folders around the path as the file system has them.
+                _ => break config::nearest(&at, settings_in)?,
+            }
+        };
+        for dir in looked_at {
+            self.nearest.insert(&dir, found.clone());
+        }
+        Ok(found)
     }
 
     /// The patterns that say which files a walk takes in `dir`: those of

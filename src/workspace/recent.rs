@@ -68,7 +68,12 @@ impl<K: Hash + Eq + Clone, V: Clone> Recent<K, V> {
         Ok(made)
     }
 
-    fn get(&self, key: &K) -> Option<V> {
+    /// Keeps `value` for `key`, as [`Self::get_or_make`] keeps what it made.
+    pub(crate) fn insert(&self, key: &K, value: V) {
+        let _ = self.get_or_make(key, || Ok::<V, ()>(value));
+    }
+
+    pub(crate) fn get(&self, key: &K) -> Option<V> {
         let mut inner = self.inner.lock().ok()?;
         inner.clock += 1;
         let now = inner.clock;
