@@ -289,6 +289,15 @@ fn no_message_breaks_the_server() {
     client.open(URI, "G1 X1\nM30\n");
     let far = client.request("textDocument/hover", at(URI, 999, 999));
     assert_eq!(far, Value::Null);
+    // Half a UTF-16 pair, as an editor sends one: read as U+FFFD, the
+    // session goes on.
+    let lone = "untitled:LONE.MPF";
+    client.write(
+        format!(r#"{{"jsonrpc":"2.0","method":"textDocument/didOpen","params":{{"textDocument":{{"uri":"{lone}","languageId":"sinumerik","version":1,"text":"; \ud800\nGOTOF NOWHERE\nM30\n"}}}}}}"#)
+            .as_bytes(),
+    );
+    let found = client.diagnostics(lone);
+    assert_eq!(codes(&found), ["N001"], "{found:?}");
     let (status, stderr) = client.stop();
     assert_eq!(status, Some(0));
     assert!(stderr.contains("not open"), "{stderr}");

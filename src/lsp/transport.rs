@@ -111,9 +111,59 @@ pub fn read(input: &mut impl BufRead) -> io::Result<Option<Message>> {
             body.len()
         )));
     }
-    serde_json::from_slice(&body)
+    let parsed = serde_json::from_slice(&body).or_else(|error| {
+        // A lone UTF-16 surrogate (`\ud800`) is valid JSON text that no
+        // Rust string holds: an editor sends one when a buffer holds half
+        // a pair. It becomes U+FFFD, as undecodable bytes do elsewhere.
+        match replace_lone_surrogates(&body) {
+            Some(mended) => serde_json::from_slice(&mended),
+            None => Err(error),
+        }
+    });
+    parsed
         .map(Some)
         .map_err(|e| invalid(format!("a message that is not JSON-RPC: {e}")))
+}
+
+/// `body` with every `\uXXXX` escape of a surrogate that is not half of a
+/// pair written `\ufffd`; `None` when there is none.
+fn replace_lone_surrogates(body: &[u8]) -> Option<Vec<u8>> {
+    let escape_at = |at: usize| -> Option<u16> {
+        let hex = body.get(at..at + 6)?;
+        if hex[0] != b'\\' || hex[1] != b'u' {
+            return None;
+        }
+        u16::from_str_radix(std::str::from_utf8(&hex[2..]).ok()?, 16).ok()
+    };
+    let mut out = Vec::with_capacity(body.len());
+    let mut replaced = false;
+    let mut at = 0;
+    while at < body.len() {
+        if body[at] != b'\\' {
+            out.push(body[at]);
+            at += 1;
+            continue;
+        }
+        match escape_at(at) {
+            Some(0xD800..=0xDBFF)
+                if escape_at(at + 6).is_some_and(|low| (0xDC00..=0xDFFF).contains(&low)) =>
+            {
+                out.extend_from_slice(&body[at..at + 12]);
+                at += 12;
+            }
+            Some(0xD800..=0xDFFF) => {
+                out.extend_from_slice(b"\\ufffd");
+                replaced = true;
+                at += 6;
+            }
+            // Any other escape, `\\` among them, is copied whole.
+            _ => {
+                out.extend_from_slice(&body[at..(at + 2).min(body.len())]);
+                at += 2;
+            }
+        }
+    }
+    replaced.then_some(out)
 }
 
 #[cfg(test)]
@@ -122,6 +172,21 @@ mod tests {
 
     fn read_text(text: &[u8]) -> io::Result<Option<Message>> {
         read(&mut io::Cursor::new(text))
+    }
+
+    #[test]
+    fn a_lone_surrogate_becomes_the_replacement_character() {
+        let body = br#"{"jsonrpc":"2.0","method":"m","params":{"text":"a\ud800b \ud83d\ude00 \\ud800 \udc00"}}"#;
+        let framed = [
+            format!("Content-Length: {}\r\n\r\n", body.len()).as_bytes(),
+            body,
+        ]
+        .concat();
+        let message = read_text(&framed).expect("read").expect("a message");
+        let Message::Notification(n) = message else {
+            panic!("a notification");
+        };
+        assert_eq!(n.params["text"], "a\u{fffd}b \u{1f600} \\ud800 \u{fffd}");
     }
 
     #[test]
