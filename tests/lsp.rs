@@ -339,6 +339,15 @@ fn a_rename_changes_every_use_or_says_why_not() {
     for (line, character, name, why) in [
         (1, 6, "_FEED", "already a name"),
         (1, 6, "1X", "not a name the control takes"),
+        (1, 6, "IF", "a word of the language"),
+        (1, 6, "gotof", "a word of the language"),
+        (1, 6, "DEF", "a word of the language"),
+        (1, 6, "REAL", "a word of the language"),
+        (1, 6, "SIN", "a word of the language"),
+        (1, 6, "TRUE", "a word of the language"),
+        (1, 6, "CYCLE800", "a word of the language"),
+        (1, 6, "AX1", "a word of the language"),
+        (1, 6, "STOPRE", "a word of the language"),
         (3, 7, "N20", "renumbered"),
         (4, 1, "_X", "no name"),
     ] {

@@ -11,22 +11,11 @@
 //! recognised by spelling, outside strings.
 
 use crate::semantic::addresses;
-use crate::semantic::calls::BUILTINS;
+use crate::semantic::words::is_language_word;
 use crate::span::Span;
-use crate::syntax::lexer::{is_name_char, is_one_of, RESERVED};
+use crate::syntax::lexer::is_name_char;
 use crate::syntax::tree::{Block, GotoTarget, StatementKind};
 use crate::syntax::visit::gotos;
-
-/// The control's functions (Siemens, Programming Manual Job Planning,
-/// "Arithmetic functions", "Frame calculation", "String functions") and the
-/// modifiers of a coordinate (`AC`, `IC`, ...).
-const FUNCTIONS: &[&str] = &[
-    "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN2", "SQRT", "ABS", "POT", "TRUNC", "ROUND", "LN",
-    "EXP", "MINVAL", "MAXVAL", "BOUND", "CTRANS", "CROT", "CSCALE", "CMIRROR", "CFINE", "AC", "IC",
-    "DC", "ACP", "ACN", "CAC", "CIC", "CACP", "CACN", "AXSTRING", "SPRINT", "SUBSTR", "TOLOWER",
-    "TOUPPER", "STRLEN", "INDEX", "RINDEX", "MATCH", "NUMBER", "ISNUMBER", "AXNAME", "ISAXIS",
-    "ISVAR", "ISFILE", "TRUE", "FALSE", "GOTOS", "M17", "MSG", "SETAL",
-];
 
 /// The spans of the language's words in `block`'s code (before
 /// `code_end`), sorted.
@@ -99,22 +88,6 @@ fn lexical_words(source: &[u8], start: usize, end: usize, out: &mut Vec<Span>) {
             at += 1;
         }
     }
-}
-
-/// A word whose spelling makes it the language's.
-fn is_language_word(name: &[u8]) -> bool {
-    if name.first() == Some(&b'$') {
-        return name.len() > 1;
-    }
-    if let [b'R' | b'r', digits @ ..] = name {
-        if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) {
-            return true;
-        }
-    }
-    if name.len() > 5 && name[..5].eq_ignore_ascii_case(b"CYCLE") {
-        return name[5..].iter().all(u8::is_ascii_digit);
-    }
-    is_one_of(name, RESERVED) || is_one_of(name, FUNCTIONS) || is_one_of(name, BUILTINS)
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@ use crate::lint::Settings;
 use crate::semantic::cycle800;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
 use crate::semantic::walk;
+use crate::semantic::words::{is_language_word, is_machine_axis};
 use crate::semantic::{Analysis, Model};
 use crate::span::{ColumnUnit, Span};
 use crate::syntax::tree::StatementKind;
@@ -625,6 +626,12 @@ impl Snapshot<'_, '_> {
             return Err(format!(
                 "`{new_name}` is not a name the control takes: up to 31 letters, digits and \
                  underscores, the first two letters or underscores"
+            ));
+        }
+        if is_language_word(new_name.as_bytes()) || is_machine_axis(new_name.as_bytes()) {
+            return Err(format!(
+                "`{new_name}` is a word of the language (a keyword, function, command, cycle \
+                 or machine axis), not a name the control takes for a user's"
             ));
         }
         let upper = new_name.to_ascii_uppercase();

@@ -30,6 +30,7 @@ pub mod swivels;
 pub mod uses;
 pub mod value;
 pub mod walk;
+pub mod words;
 
 pub use env::Supplied;
 pub use environment::Environment;
