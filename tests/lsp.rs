@@ -981,6 +981,48 @@ fn large_program() -> String {
     large
 }
 
+/// Many hovers asked while a large program is analysed take no thread
+/// each: the request threads are few; a hover superseded by a newer one on
+/// the same document, or cancelled, is answered `RequestCancelled` (-32800)
+/// without its work, and the newest gets its answer.
+#[test]
+fn hovers_are_bounded_superseded_and_cancelled() {
+    let (mut client, _) = Client::start(json!({}));
+    let large = large_program();
+    let uri = "untitled:LARGE.MPF";
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": uri, "languageId": "sinumerik",
+                                  "version": 1, "text": large } }),
+    );
+    let hovers = 200;
+    for id in 0..hovers {
+        client.send(
+            json!({ "jsonrpc": "2.0", "id": id, "method": "textDocument/hover",
+            "params": { "textDocument": { "uri": uri },
+                        "position": { "line": 2, "character": 1 } } }),
+        );
+    }
+    // The last but one cancelled as well: superseded already, it stays so.
+    client.notify("$/cancelRequest", json!({ "id": hovers - 2 }));
+    if let Some(threads) = client.threads() {
+        assert!(threads < 16, "{threads} threads for {hovers} hovers");
+    }
+    let mut cancelled = 0;
+    let mut answered = Vec::new();
+    for _ in 0..hovers {
+        let answer = client.next(|message| message.get("id").is_some());
+        if answer["error"]["code"] == -32800 {
+            cancelled += 1;
+        } else {
+            answered.push(answer["id"].clone());
+        }
+    }
+    assert!(answered.contains(&json!(hovers - 1)), "{answered:?}");
+    assert!(cancelled >= hovers - 8, "{cancelled} of {hovers} cancelled");
+    client.stop();
+}
+
 /// A large program is analysed off the main loop: a request about another
 /// document is answered while its findings are still being made, even when
 /// a request about the large one came first; its findings come after.

@@ -16,6 +16,7 @@
 mod answers;
 mod convert;
 mod formatting;
+mod requests;
 mod rule_pages;
 mod transport;
 mod worker;
@@ -126,6 +127,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         unit,
         pull,
         worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),
+        requests: requests::Requests::start(connection.sender.clone()),
     };
     let served = serve_messages(&mut server);
     // What is queued is published before the connection closes.
@@ -217,6 +219,8 @@ struct Server<'c> {
     /// Publishes the findings of the documents that change (none for a
     /// client that pulls them).
     worker: Option<worker::Worker>,
+    /// Answers the requests that wait for an analysis or work of their own.
+    requests: requests::Requests,
 }
 
 impl Server<'_> {
@@ -228,6 +232,15 @@ impl Server<'_> {
     fn notification(&mut self, notification: Notification) {
         use lsp::notification as n;
         match notification.method.as_str() {
+            n::Cancel::METHOD => {
+                if let Some(params) = extract::<lsp::CancelParams>(notification) {
+                    let id = match params.id {
+                        lsp::NumberOrString::Number(n) => lsp_server::RequestId::from(n),
+                        lsp::NumberOrString::String(s) => lsp_server::RequestId::from(s),
+                    };
+                    self.requests.cancel(id);
+                }
+            }
             n::DidOpenTextDocument::METHOD => {
                 if let Some(params) = extract::<lsp::DidOpenTextDocumentParams>(notification) {
                     let document = params.text_document;
@@ -521,7 +534,7 @@ impl Server<'_> {
         documents.sort_by(|(a, _), (b, _)| a.as_str().cmp(b.as_str()));
         let ready = documents.iter().all(|(_, open)| open.held.is_analysed());
         let unit = self.unit;
-        self.answer_when(id, ready, move || {
+        self.answer_when(id, None, ready, move || {
             let query = params.query.to_uppercase();
             let mut out = Vec::new();
             for (uri, open) in documents {
@@ -586,48 +599,41 @@ impl Server<'_> {
         R: serde::Serialize,
     {
         let id = request.id.clone();
-        let (open, params) = match self.about(request) {
+        let method = request.method.clone();
+        let (open, params) = match self.about::<P>(request) {
             Ok(about) => about,
             Err(refused) => return Some(Err(refused)),
         };
         let ready = waits == Waits::Analysis && open.held.is_analysed();
         let unit = self.unit;
-        self.answer_when(id, ready, move || answer_from(&open, unit, params, answer))
+        let about = Some((params.document().clone(), method));
+        self.answer_when(id, about, ready, move || {
+            answer_from(&open, unit, params, answer)
+        })
     }
 
-    /// `work`'s answer: made here when `ready`, else on a thread of its
-    /// own (`None` once it is on its way), so that a document still being
-    /// analysed, or work through a whole large program, holds up no other
-    /// request. Its answer may then come after later ones: the protocol
-    /// allows it, and it is made from the version the request named.
+    /// `work`'s answer: made here when `ready`, else by the request threads
+    /// (`None` once it is queued), so that a document still being analysed,
+    /// or work through a whole large program, holds up no other request.
+    /// Its answer may then come after later ones: the protocol allows it,
+    /// and it is made from the version the request named. What is ready is
+    /// answered here: handing it to a thread costs more than the answer.
     fn answer_when(
         &self,
         id: lsp_server::RequestId,
+        about: Option<(lsp::Uri, String)>,
         ready: bool,
         work: impl FnOnce() -> Answer + Send + 'static,
     ) -> Option<Answer> {
-        // On a thread of its own, the symbols of 10,000 lines took a few
-        // milliseconds more (`cargo bench --bench lsp`): what is ready is
-        // answered here.
         if ready {
             return Some(work());
         }
-        let sender = self.connection.sender.clone();
-        let spawned = std::thread::Builder::new()
-            .name("sinuprep-request".to_string())
-            .spawn(move || {
-                let answer = std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
-                    .unwrap_or_else(|_| Err(failed()));
-                // A client gone away ends the main loop through the receiver.
-                let _ = sender.send(response(id, answer));
-            });
-        match spawned {
-            Ok(_) => None,
-            Err(error) => Some(Err((
-                ErrorCode::InternalError,
-                format!("no thread for this request: {error}"),
-            ))),
-        }
+        self.requests.answer(requests::Job {
+            id,
+            about,
+            work: Box::new(work),
+        });
+        None
     }
 
     /// The open document a request is about, and its parameters.

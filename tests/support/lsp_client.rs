@@ -138,6 +138,13 @@ impl Client {
         line.split_whitespace().nth(1)?.parse().ok()
     }
 
+    /// How many threads the server runs now, where the system says
+    /// (Linux's `/proc`).
+    pub fn threads(&self) -> Option<usize> {
+        let tasks = std::fs::read_dir(format!("/proc/{}/task", self.child.id())).ok()?;
+        Some(tasks.count())
+    }
+
     /// Shuts the server down as the protocol says; its exit status and stderr.
     pub fn stop(mut self) -> (Option<i32>, String) {
         assert_eq!(self.request("shutdown", Value::Null), Value::Null);
