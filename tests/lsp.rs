@@ -1023,6 +1023,36 @@ fn hovers_are_bounded_superseded_and_cancelled() {
     client.stop();
 }
 
+/// Formatting a large document holds up no request about another: asked
+/// first, it is answered after a hover on a small one.
+#[test]
+fn formatting_a_large_document_holds_up_no_other() {
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, PART);
+    let large = "IF R1>0\nG1  X1 Y2 F500\nENDIF\n".repeat(60_000) + "M30\n";
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": "untitled:LARGE.MPF", "languageId": "sinumerik",
+                                  "version": 1, "text": large } }),
+    );
+    client.send(
+        json!({ "jsonrpc": "2.0", "id": 80, "method": "textDocument/formatting",
+        "params": { "textDocument": { "uri": "untitled:LARGE.MPF" },
+                    "options": { "tabSize": 2, "insertSpaces": true } } }),
+    );
+    client.send(
+        json!({ "jsonrpc": "2.0", "id": 81, "method": "textDocument/hover",
+        "params": { "textDocument": { "uri": URI }, "position": { "line": 3, "character": 1 } } }),
+    );
+    let first = client.next(|message| message.get("id").is_some());
+    assert_eq!(first["id"], 81, "the hover is answered first: {first}");
+    let formatted = client.next(|message| message["id"] == 80);
+    assert!(formatted["result"]
+        .as_array()
+        .is_some_and(|edits| !edits.is_empty()));
+    client.stop();
+}
+
 /// A large program is analysed off the main loop: a request about another
 /// document is answered while its findings are still being made, even when
 /// a request about the large one came first; its findings come after.

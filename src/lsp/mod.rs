@@ -500,16 +500,13 @@ impl Server<'_> {
                     s.rename(&at.text_document.uri, at.position, &p.new_name)
                 })
             }
-            r::Formatting::METHOD => {
-                Some(self.format(request, |p: lsp::DocumentFormattingParams| {
-                    (p.text_document.uri, None)
-                }))
-            }
-            r::RangeFormatting::METHOD => Some(
-                self.format(request, |p: lsp::DocumentRangeFormattingParams| {
+            r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
+                (p.text_document.uri, None)
+            }),
+            r::RangeFormatting::METHOD => self
+                .format(request, |p: lsp::DocumentRangeFormattingParams| {
                     (p.text_document.uri, Some(p.range))
                 }),
-            ),
             method => Some(Err((
                 ErrorCode::MethodNotFound,
                 format!("sinuprep does not answer `{method}`"),
@@ -559,30 +556,38 @@ impl Server<'_> {
     }
 
     /// The edits `sinuprep fmt` would make to a document (or the lines of a
-    /// range), with the `[format]` settings of its `sinuprep.toml`.
+    /// range), with the `[format]` settings of its `sinuprep.toml`: made
+    /// here for a small document, by the request threads for a large one,
+    /// so that formatting it holds up no other document.
     fn format<P: serde::de::DeserializeOwned>(
         &self,
         request: Request,
         target: impl FnOnce(P) -> (lsp::Uri, Option<lsp::Range>),
-    ) -> Answer {
-        let params: P = serde_json::from_value(request.params)
-            .map_err(|e| (ErrorCode::InvalidParams, e.to_string()))?;
+    ) -> Option<Answer> {
+        let id = request.id.clone();
+        let method = request.method.clone();
+        let params: P = match serde_json::from_value(request.params) {
+            Ok(params) => params,
+            Err(error) => return Some(Err((ErrorCode::InvalidParams, error.to_string()))),
+        };
         let (uri, range) = target(params);
-        let open = self.documents.get(&uri).ok_or_else(|| {
-            (
-                ErrorCode::InvalidParams,
-                format!("{} is not open", uri.as_str()),
-            )
-        })?;
+        let Some(open) = self.documents.get(&uri).cloned() else {
+            let why = format!("{} is not open", uri.as_str());
+            return Some(Err((ErrorCode::InvalidParams, why)));
+        };
         let settings = match convert::path(&uri) {
-            Some(path) => self
-                .workspace
-                .for_format(&path)
-                .map_err(|e| (ErrorCode::RequestFailed, e.to_string()))?,
+            Some(path) => match self.workspace.for_format(&path) {
+                Ok(settings) => settings,
+                Err(error) => return Some(Err((ErrorCode::RequestFailed, error.to_string()))),
+            },
             None => crate::format::Settings::default(),
         };
-        let edits = formatting::edits(open.held.text(), &open.name, &settings, range, self.unit);
-        serde_json::to_value(edits).map_err(|e| (ErrorCode::InternalError, e.to_string()))
+        let unit = self.unit;
+        let ready = open.held.text().bytes().len() < FORMATTED_HERE;
+        self.answer_when(id, Some((uri, method)), ready, move || {
+            let edits = formatting::edits(open.held.text(), &open.name, &settings, range, unit);
+            serde_json::to_value(edits).map_err(|e| (ErrorCode::InternalError, e.to_string()))
+        })
     }
 
     /// The answer to a request about one open document, made from its
@@ -652,6 +657,10 @@ impl Server<'_> {
         }
     }
 }
+
+/// Documents up to this size (bytes) are formatted on the main loop, in a
+/// few milliseconds; larger ones by the request threads.
+const FORMATTED_HERE: usize = 1 << 20;
 
 /// What answering a request may wait for.
 #[derive(Clone, Copy, PartialEq, Eq)]

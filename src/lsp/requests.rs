@@ -17,10 +17,11 @@ use lsp_types as lsp;
 
 use super::{failed, response, Answer};
 
-/// How many requests are worked on at once: the machine's cores, at most
-/// four (the findings have a thread of their own).
+/// How many requests are worked on at once: the machine's cores, at least
+/// two (one long request leaves another thread free) and at most four (the
+/// findings have a thread of their own).
 fn threads() -> usize {
-    std::thread::available_parallelism().map_or(2, |n| n.get().clamp(1, 4))
+    std::thread::available_parallelism().map_or(2, |n| n.get().clamp(2, 4))
 }
 
 /// A request to be answered, the document and method it is about (a newer
