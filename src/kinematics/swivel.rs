@@ -185,7 +185,13 @@ fn place(record: &Record, f: &Vector3<f64>, angles: [f64; 2], current: [f64; 2])
         let axis = &record.axes[i];
         let position = angles[i] + axis.offset;
         match axis.limits {
-            Some((min, max)) => inside(position, min, max, current[i]).unwrap_or(position),
+            // Within the tolerance of a limit counts as at it, and is put
+            // there: a position printed never lies beyond a limit it is
+            // said to keep.
+            Some((min, max)) => match inside(position, min, max, current[i]) {
+                Some(placed) => placed.clamp(min, max),
+                None => position,
+            },
             None => wrap_near(position, current[i]),
         }
     });
@@ -440,6 +446,35 @@ mod tests {
         let mut found = positions(&swivel);
         found.sort_by(|a, b| a[0].total_cmp(&b[0]));
         assert_eq!(found, [[-10.0, -90.0], [10.0, 90.0]]);
+    }
+
+    /// A position a rounding beyond a limit counts as at it, and is put
+    /// there: never printed beyond a limit it is said to keep.
+    #[test]
+    fn a_position_at_a_limit_is_never_beyond_it() {
+        let mut head = record(
+            Kinematics::Head,
+            RotaryAxis::along("C", [0.0, 0.0, 1.0]),
+            RotaryAxis::along("A", [1.0, 0.0, 0.0]),
+        );
+        let (s, c) = (40f64.to_radians().sin(), 40f64.to_radians().cos());
+        for max in [40.0 - 5e-10, 40.0, 40.0 + 5e-10] {
+            head.axes[1].limits = Some((-30.0, max));
+            let swivel = solve(&head, &request(toward([0.0, -s, c]))).expect("valid");
+            let inside: Vec<_> = swivel
+                .solutions
+                .iter()
+                .filter(|s| s.within_limits)
+                .collect();
+            assert!(!inside.is_empty(), "{max}: {:?}", swivel.solutions);
+            for solution in inside {
+                assert!(
+                    solution.positions[1] <= max,
+                    "{max}: {:?}",
+                    solution.positions
+                );
+            }
+        }
     }
 
     #[test]
