@@ -534,7 +534,7 @@ pub fn collision(model: &Model, names: &Names) -> Option<Diagnostic> {
     }
 }
 
-/// The threshold as NC text: `1EX-10`.
+/// The threshold as NC text: `1EX-12`.
 fn gimbal_literal() -> String {
     format!("1EX{}", GIMBAL_TOLERANCE.log10().round() as i32)
 }
@@ -575,7 +575,7 @@ mod tests {
         );
         assert_eq!(r.r_range(), Some(100..102));
         assert!(r.locals().is_empty());
-        assert_eq!(gimbal_literal(), "1EX-10");
+        assert_eq!(gimbal_literal(), "1EX-12");
     }
 
     #[test]
