@@ -444,6 +444,11 @@ fn what_an_archive_holds_unchecked_is_named() {
         );
         let after = format!("from byte {} on, after the block of NULs", 3 * 1024 + 512);
         assert!(stderr.contains(&after), "{args:?}: {stderr}");
+        // The member there is named.
+        assert!(
+            stderr.contains("the member there, HIDDEN_MPF, is not checked"),
+            "{args:?}: {stderr}"
+        );
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

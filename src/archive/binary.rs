@@ -104,6 +104,30 @@ pub fn read(bytes: &[u8]) -> Result<(Vec<Member>, Option<usize>), ArchiveError> 
     Ok((members, None))
 }
 
+/// The names of the members whose headers stand from `at` on, past the
+/// block of NULs that ends the archive: every block there whose checksum
+/// makes it a header (its member's bytes stepped over). What a report
+/// names, since the archive's end leaves them unread.
+pub fn names_past_the_end(bytes: &[u8], at: usize) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut at = at - at % BLOCK;
+    while at + BLOCK <= bytes.len() {
+        let header = &bytes[at..at + BLOCK];
+        let size = decimal(&header[SIZE]).and_then(|s| usize::try_from(s).ok());
+        match size {
+            Some(size)
+                if header.iter().any(|&b| b != 0)
+                    && decimal(&header[CHECKSUM]) == Some(checksum(header)) =>
+            {
+                names.push(name(header));
+                at = at.saturating_add(BLOCK).saturating_add(padded(size));
+            }
+            _ => at += BLOCK,
+        }
+    }
+    names
+}
+
 /// A member's name for reports: the last part of its NC path without
 /// `_N_` (`PART_MPF`), else the name field as written.
 fn name(header: &[u8]) -> String {

@@ -130,8 +130,17 @@ impl Opened {
             ));
         }
         if let Some(offset) = archive.unread {
+            let hidden = archive::binary::names_past_the_end(bytes, offset);
+            let members = match hidden.len() {
+                0 => "a member there is not checked".to_string(),
+                1 => format!("the member there, {}, is not checked", hidden[0]),
+                n => format!(
+                    "the {n} members there, {}, are not checked",
+                    hidden.join(", ")
+                ),
+            };
             notes.push_str(&format!(
-                "note: {name}: the bytes from byte {offset} on, after the block of NULs that ends the archive, are not read: a member there is not checked\n"
+                "note: {name}: the bytes from byte {offset} on, after the block of NULs that ends the archive, are not read: {members}\n"
             ));
         }
         (!notes.is_empty()).then_some(notes)
