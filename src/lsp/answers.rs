@@ -18,21 +18,22 @@ use crate::syntax::tree::StatementKind;
 
 use super::convert;
 
-/// One version of a document, analysed, for the requests about it.
 /// The kind of the action that makes every safe fix at once, as ruff names
 /// its own (`source.fixAll.ruff`).
 pub const FIX_ALL: &str = "source.fixAll.sinuprep";
 
-/// The most findings an editor is given for one document: a program with a
-/// finding on each of its 2 million lines took the server 78 s and 10 GB to
-/// publish them (750 MB of JSON), for no editor to show.
+/// The most findings an editor is given for one document: the rest are
+/// counted, not sent. A finding costs a few hundred bytes of JSON, so a
+/// program with one on each of its millions of lines would cost gigabytes
+/// for no editor to show.
 pub const MOST_SHOWN_FINDINGS: usize = 10_000;
 
 /// The most bytes of a program whose words are coloured in one answer: the
-/// words of a CAM program take about a second and 23 MB of JSON for 10 MB
-/// (160,000 lines), and an editor asks again after every change.
+/// words of 10 MB of CAM program are megabytes of JSON, asked for again
+/// after every change.
 pub const MOST_COLOURED_BYTES: usize = 10_000_000;
 
+/// One version of a document, analysed, for the requests about it.
 pub struct Snapshot<'a, 't> {
     text: &'t Text,
     name: &'a str,
