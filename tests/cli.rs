@@ -3734,60 +3734,29 @@ fn numeric_options_out_of_range_are_refused_with_the_reason() {
 /// of a chain may start with a minus sign.
 #[test]
 fn convert_and_frame_print_exact_digits() {
-    let output = run(
-        &["convert", "--from", "e:XYZ", "--to", "e:ZYX"],
-        b"0 45 0\n",
-    );
-    assert_eq!(stdout(&output), "0 45 0\n");
-    let output = run(
-        &[
-            "frame",
-            "1",
-            "2",
-            "3",
-            "30",
-            "45",
-            "60",
-            "--from",
-            "e:XYZ",
-            "--to",
-            "sinumerik",
-        ],
-        b"",
-    );
-    assert_eq!(stdout(&output), "TRANS X=1 Y=2 Z=3\nAROT X=30 Y=45 Z=60\n");
-    let output = run(
-        &[
-            "convert",
-            "30",
-            "45",
-            "60",
-            "--from",
-            "e:XYZ",
-            "--to",
-            "quaternion",
-            "--precision",
-            "3",
-        ],
-        b"",
-    );
-    assert_eq!(stdout(&output), "0.822 0.022 0.44 0.36\n");
-    let output = run(
-        &[
-            "frame",
-            "--from",
-            "e:XYZ",
-            "--to",
-            "e:XYZ",
-            "--tool",
-            "-1,0,0,0,0,0",
-            "--piece",
-            "0,0,0,0,0,0",
-        ],
-        b"",
-    );
-    assert_exit(&output, 0);
-    assert_eq!(stdout(&output), "-1 0 0 0 0 0\n");
+    for (command, stdin, expected) in [
+        ("convert --from e:XYZ --to e:ZYX", "0 45 0\n", "0 45 0\n"),
+        (
+            "frame 1 2 3 30 45 60 --from e:XYZ --to sinumerik",
+            "",
+            "TRANS X=1 Y=2 Z=3\nAROT X=30 Y=45 Z=60\n",
+        ),
+        (
+            "convert 30 45 60 --from e:XYZ --to quaternion --precision 3",
+            "",
+            "0.822 0.022 0.44 0.36\n",
+        ),
+        (
+            "frame --from e:XYZ --to e:XYZ --tool -1,0,0,0,0,0 --piece 0,0,0,0,0,0",
+            "",
+            "-1 0 0 0 0 0\n",
+        ),
+    ] {
+        let args: Vec<&str> = command.split(' ').collect();
+        let output = run(&args, stdin.as_bytes());
+        assert_exit(&output, 0);
+        assert_eq!(stdout(&output), expected, "{command}");
+    }
 }
 
 /// `probe` writes calls that `check` passes, or none: no call without a
