@@ -1718,10 +1718,11 @@ fn eval_shows_a_swivels_split_over_a_table() {
     let mut expected: serde_json::Value = serde_json::from_slice(&axes.stdout).expect("JSON");
     // `axes` alone tells where a work zero goes. Its frame is made again from
     // the angles, eval's is the call's matrix: the last bits may differ.
-    expected
-        .as_object_mut()
-        .expect("object")
-        .remove("work_zero");
+    // And the `_DIR` it took, which in eval is the call's own.
+    let object = expected.as_object_mut().expect("object");
+    for key in ["work_zero", "dir", "dir_chosen"] {
+        object.remove(key);
+    }
     assert_close(split, &expected, "axes");
     assert_eq!(split["table"]["block"], "G0 B=50.3607");
     assert_eq!(split["head_frame"]["mode"], 57);
@@ -3833,4 +3834,59 @@ fn a3200_export_writes_nothing_for_a_record_that_makes_no_setup() {
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert!(stderr.contains(why), "{record}: {stderr}");
     }
+}
+
+/// `axes --table --prefer nearest` without `--dir` takes the head solution
+/// that travels least of both, and says which `_DIR` selects it; `--dir`
+/// fixes it.
+#[test]
+fn the_nearest_split_chooses_dir_unless_given() {
+    let ask = |dir: &[&str]| {
+        let output = run(
+            &[
+                &[
+                    "axes",
+                    "--machine",
+                    "samples/MACHINE.SPF",
+                    "--record",
+                    "HEAD_H",
+                    "--table",
+                    "TABLE_B",
+                    "--prefer",
+                    "nearest",
+                    "--mode",
+                    "57",
+                    "--json",
+                ][..],
+                dir,
+                &["--", "30", "45", "60"],
+            ]
+            .concat(),
+            b"",
+        );
+        assert_exit(&output, 0);
+        serde_json::from_slice::<serde_json::Value>(&output.stdout).expect("JSON")
+    };
+    let travel = |value: &serde_json::Value| {
+        let chosen = value["chosen"].as_u64().expect("taken") as usize;
+        let axes = value["solutions"][chosen]["axes"]
+            .as_object()
+            .expect("axes");
+        let table = value["table"]["position"].as_f64().expect("table");
+        axes.values()
+            .map(|p| p.as_f64().expect("position").abs())
+            .fold(table.abs(), f64::max)
+    };
+    let open = ask(&[]);
+    assert_eq!(open["dir"], 1);
+    assert_eq!(open["dir_chosen"], true);
+    let minus = ask(&["--dir", "-1"]);
+    assert_eq!(minus["dir"], -1);
+    assert_eq!(minus["dir_chosen"], false);
+    assert!(
+        travel(&open) < travel(&minus),
+        "{} against {}",
+        travel(&open),
+        travel(&minus)
+    );
 }

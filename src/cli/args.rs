@@ -155,9 +155,10 @@ pub struct AxesArgs {
     #[arg(long, value_name = "FILE", conflicts_with_all = ["angles", "table", "export", "machine"])]
     pub from_a3200: Option<PathBuf>,
     /// CYCLE800's `_DIR`: -1 takes the lower position of the direction-reference
-    /// axis, 1 the higher (the other solution when the asked one is outside the limits).
-    #[arg(long, default_value_t = -1, value_parser = direction)]
-    pub dir: i8,
+    /// axis, 1 the higher (the other solution when the asked one is outside the limits)
+    /// [default: -1; with --table and --prefer nearest, whichever travels least].
+    #[arg(long, value_parser = direction)]
+    pub dir: Option<i8>,
     /// The direction-reference axis of `_DIR` (1 or 2) [default: the axis that tilts the tool].
     #[arg(long, value_name = "1|2", value_parser = clap::value_parser!(u8).range(1..=2))]
     pub reference_axis: Option<u8>,

@@ -20,8 +20,8 @@ use crate::emit::split::{
     table_line,
 };
 use crate::kinematics::{
-    a3200, solve, split, Direction, Preference, Record, Request, Split, Swivel, TableAngle,
-    TableAsk,
+    a3200, solve, split, split_nearest_either_way, Direction, Preference, Record, Request, Split,
+    Swivel, TableAngle, TableAsk,
 };
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
@@ -74,9 +74,9 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
             None => table_current = value,
         }
     }
-    let request = Request {
+    let mut request = Request {
         rotation: matrix(sequence, angles),
-        direction: if args.dir > 0 {
+        direction: if args.dir.unwrap_or(-1) > 0 {
             Direction::Plus
         } else {
             Direction::Minus
@@ -87,6 +87,8 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
         path: path.clone(),
         why: format!("record {}: {error}", describe(record)),
     };
+    // Whether `_DIR` was chosen over both head solutions.
+    let mut either_way = false;
     let (swivel, split) = match table {
         None => (
             solve(&record, &request).map_err(|error| refused(&record, &error))?,
@@ -106,15 +108,32 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
                     Prefer::Nearest => Preference::Nearest,
                 },
             };
-            let split =
-                split(table, &record, &request, &ask).map_err(|error| refused(table, &error))?;
+            either_way = args.dir.is_none() && args.prefer == Prefer::Nearest && fixed.is_none();
+            let split = match (args.dir, args.prefer, fixed) {
+                // `_DIR` left open: the nearer of both head solutions.
+                (None, Prefer::Nearest, None) => {
+                    let (split, direction) =
+                        split_nearest_either_way(table, &record, &request, table_current)
+                            .map_err(|error| refused(table, &error))?;
+                    request.direction = direction;
+                    split
+                }
+                _ => {
+                    split(table, &record, &request, &ask).map_err(|error| refused(table, &error))?
+                }
+            };
             (split.together(), Some((table, split)))
         }
+    };
+    // The `_DIR` taken: as given, or the one the nearest split chose.
+    let dir: i8 = match request.direction {
+        Direction::Plus => 1,
+        Direction::Minus => -1,
     };
     let work_zero = Vector3::from(args.work_zero.unwrap_or([0.0; 3]));
     let text = match (&split, args.json) {
         (None, true) => json(&record, &swivel),
-        (None, false) => table_text(&record, sequence, angles, args.dir, &swivel),
+        (None, false) => table_text(&record, sequence, angles, dir, &swivel),
         (Some((table_record, split)), true) => {
             let mut document = document(&record, &swivel);
             document["table"] = table_document(table_record, split);
@@ -124,13 +143,20 @@ pub fn run(args: &AxesArgs) -> Result<ExitStatus, CliError> {
                 "moves": vector(&split.work_zero_moves(&work_zero)),
                 "chain_end_moves": vector(&split.shift),
             });
+            document["dir"] = serde_json::json!(dir);
+            document["dir_chosen"] = serde_json::json!(either_way);
             format!(
                 "{}\n",
                 serde_json::to_string_pretty(&document).unwrap_or_default()
             )
         }
         (Some((table_record, split)), false) => {
-            let mut text = table_text(&record, sequence, angles, args.dir, &swivel);
+            let mut text = table_text(&record, sequence, angles, dir, &swivel);
+            if either_way {
+                text.push_str(&format!(
+                    "_DIR={dir:+} chosen: its head solution travels least of both (--dir fixes _DIR)\n"
+                ));
+            }
             let mut lines = table_lines(table_record, split);
             lines.push_str(&head_frame_line(sequence, split));
             lines.push('\n');

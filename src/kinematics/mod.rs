@@ -14,5 +14,7 @@ pub(crate) mod subproblem;
 pub mod swivel;
 
 pub use record::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
-pub use split::{split, Preference, Split, SplitError, TableAngle, TableAsk};
+pub use split::{
+    split, split_nearest_either_way, Preference, Split, SplitError, TableAngle, TableAsk,
+};
 pub use swivel::{orientation, solve, Direction, Request, Solution, Swivel};

@@ -189,6 +189,56 @@ pub fn split(
     })
 }
 
+/// [`split`] `--prefer nearest` with `_DIR` left open: the split under each
+/// `_DIR`, and of the two the one whose axes travel least (the largest
+/// travel of the table's and the head's axes, the head's taken solution
+/// inside its limits; a tie to `_DIR` -1). The other head solution may be
+/// nearer than the one `_DIR` -1 takes: CAM systems choose over both. The
+/// `_DIR` taken comes with it, for the CYCLE800 that is to select it.
+pub fn split_nearest_either_way(
+    table: &Record,
+    head: &Record,
+    request: &Request,
+    current_table: f64,
+) -> Result<(Split, Direction), SplitError> {
+    let ask = TableAsk {
+        current: current_table,
+        fixed: None,
+        prefer: Preference::Nearest,
+    };
+    let travel = |split: &Split| {
+        let chosen = split
+            .head
+            .chosen
+            .map(|i| split.head.solutions[i].positions)?;
+        let head = (0..head.axis_count())
+            .map(|i| (chosen[i] - request.current[i]).abs())
+            .fold(0.0, f64::max);
+        Some(head.max((split.table - current_table).abs()))
+    };
+    let under = |direction| {
+        split(
+            table,
+            head,
+            &Request {
+                direction,
+                ..*request
+            },
+            &ask,
+        )
+    };
+    let (minus, plus) = (under(Direction::Minus)?, under(Direction::Plus)?);
+    let plus_is_nearer = match (travel(&minus), travel(&plus)) {
+        (Some(minus), Some(plus)) => plus < minus - 1e-9,
+        (None, Some(_)) => true,
+        _ => false,
+    };
+    Ok(match plus_is_nearer {
+        true => (plus, Direction::Plus),
+        false => (minus, Direction::Minus),
+    })
+}
+
 /// What is made as small as it can be.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Goal {
@@ -823,6 +873,60 @@ mod tests {
             fixed,
             prefer: Preference::Middle,
         }
+    }
+
+    /// With `_DIR` left open, the nearest split travels no more than the
+    /// nearer of the two `_DIR`s, reaches the orientation, and names the
+    /// `_DIR` that selects its head solution.
+    #[test]
+    fn the_nearest_split_over_both_head_solutions_travels_least() {
+        let (table, head) = machine();
+        let nearest = TableAsk {
+            current: 0.0,
+            fixed: None,
+            prefer: Preference::Nearest,
+        };
+        // No travel where the head has no solution inside its limits.
+        let travel = |split: &Split, asked: &Request| {
+            let p = split.head.solutions[split.head.chosen?].positions;
+            Some(
+                (0..2)
+                    .map(|i| (p[i] - asked.current[i]).abs())
+                    .fold(split.table.abs(), f64::max),
+            )
+        };
+        let mut chose_plus = false;
+        for k in 0..24 {
+            let turn = from_axis_angle(Vector3::new(1.0, 0.5, 0.2), 7.5 * f64::from(k))
+                * from_axis_angle(Vector3::z(), 40.0);
+            let asked = Request {
+                current: [30.0, -10.0],
+                ..request(turn)
+            };
+            let (found, direction) =
+                split_nearest_either_way(&table, &head, &asked, 0.0).expect("valid");
+            let each = [Direction::Minus, Direction::Plus].map(|direction| {
+                split(&table, &head, &Request { direction, ..asked }, &nearest).expect("valid")
+            });
+            let Some(travelled) = travel(&found, &asked) else {
+                assert!(each.iter().all(|s| s.head.chosen.is_none()), "{k}");
+                continue;
+            };
+            let f = asked.rotation * Vector3::z();
+            assert!((reached(&table, &head, &found) - f).norm() < 1e-9, "{k}");
+            let least = each
+                .iter()
+                .filter_map(|s| travel(s, &asked))
+                .fold(f64::INFINITY, f64::min);
+            assert!(travelled <= least + 1e-9, "{k}");
+            let taken = &each[usize::from(direction == Direction::Plus)];
+            assert_eq!(taken.head.chosen, found.head.chosen, "{k}");
+            chose_plus |= direction == Direction::Plus;
+        }
+        assert!(
+            chose_plus,
+            "no case where the other head solution is nearer"
+        );
     }
 
     #[test]
