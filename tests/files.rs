@@ -287,7 +287,10 @@ fn an_output_folder_is_never_written_through_a_link_inside_it() {
 /// A file whose name takes all the 255 bytes a file system allows is
 /// rewritten and formatted in place: the temporary name beside it is
 /// shorter. Its backup's name cannot be: that is said, the file untouched.
+/// Unix only: on Windows such a name puts the path past MAX_PATH, another
+/// limit (Wine fails to read it back, "More data available").
 #[test]
+#[cfg(unix)]
 fn a_name_of_255_bytes_is_rewritten_in_place() {
     let dir = scratch("files-long-name");
     let name = format!("{}.MPF", "P".repeat(251));
