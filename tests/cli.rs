@@ -3730,6 +3730,93 @@ fn numeric_options_out_of_range_are_refused_with_the_reason() {
     assert_exit(&output, 0);
 }
 
+/// The counts an emitted text is built from are bounded where they are
+/// given, on the command line and in sinuprep.toml, with the reason: an R
+/// parameter's number for the run-time code (past the end of `u32` it
+/// panicked), a record's number (`$TC_CARR7[0]` is no record a machine
+/// file reads), the decimals and a tolerance of the settings file.
+#[test]
+fn counts_of_emitted_text_are_bounded_on_the_command_line_and_in_settings() {
+    let runtime = "tests/fixtures/rewrite/runtime_r_parameters.mpf";
+    for (args, why) in [
+        (
+            &[
+                "rewrite",
+                "--emit-runtime",
+                "--runtime-r",
+                "4294967290",
+                runtime,
+            ][..],
+            "0..=99999",
+        ),
+        (
+            &[
+                "axis", "--angle", "90", "--before", "1,0,0", "--after", "0,1,0", "--record", "0",
+            ],
+            "1..=999999",
+        ),
+    ] {
+        let output = run(args, b"");
+        assert_exit(&output, 2);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains(why), "{args:?}: {stderr}");
+        assert!(output.stdout.is_empty(), "{args:?}");
+    }
+    // At the bounds the text is written, and a machine file reads it back.
+    let output = run(
+        &["rewrite", "--emit-runtime", "--runtime-r", "99999", runtime],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert!(stdout(&output).contains("R99999="), "{}", stdout(&output));
+    let output = run(
+        &[
+            "axis", "--angle", "90", "--before", "1,0,0", "--after", "0,1,0", "--record", "999999",
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    assert!(
+        stdout(&output).contains("$TC_CARR9[999999]=1"),
+        "{}",
+        stdout(&output)
+    );
+
+    let dir = scratch("bounded-settings");
+    let program = dir.join("P.MPF");
+    std::fs::copy(runtime, &program).expect("copy");
+    let name = program.to_str().expect("utf-8");
+    for (settings, why) in [
+        (
+            "precision = 200\n",
+            "precision 200 is no count of decimals from 0 to 15",
+        ),
+        (
+            "emit-runtime = true\nruntime-r = 4294967295\n",
+            "runtime-r 4294967295 is no R parameter's number from 0 to 99999",
+        ),
+        (
+            "hirth-tolerance = nan\n",
+            "hirth-tolerance NaN is no angle from 0 to 180 degrees",
+        ),
+        ("hirth-tolerance = -1\n", "hirth-tolerance -1 is no angle"),
+    ] {
+        std::fs::write(dir.join("sinuprep.toml"), settings).expect("settings");
+        let output = run(&["rewrite", name], b"");
+        assert_exit(&output, 2);
+        // The message as one line, the report's wrapping undone.
+        let stderr = String::from_utf8_lossy(&output.stderr)
+            .split_whitespace()
+            .filter(|word| *word != "│")
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(stderr.contains(why), "{settings}: {stderr}");
+        assert!(stderr.contains("sinuprep.toml:"), "{settings}: {stderr}");
+        assert!(output.stdout.is_empty(), "{settings}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `convert` and `frame` print as many decimals as the conversion holds
 /// exactly (`45`, not `44.99999999999999`), or as many as asked; a link
 /// of a chain may start with a minus sign.

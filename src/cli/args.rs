@@ -361,8 +361,8 @@ pub struct AnalysisArgs {
     #[arg(long)]
     pub emit_runtime: bool,
     /// With --emit-runtime, keep the intermediate values in R parameters from R N upward
-    /// (instead of local variables declared with DEF).
-    #[arg(long, value_name = "N")]
+    /// (instead of local variables declared with DEF), N from 0 to 99999.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=i64::from(crate::emit::runtime::MAX_R_BASE)))]
     pub runtime_r: Option<u32>,
     /// How diagnostics are printed on stderr (`--output-format`, as `check` names it).
     #[arg(long = "output-format", visible_alias = "message-format", value_enum, default_value_t = MessageFormat::Human)]
@@ -550,8 +550,9 @@ pub struct AxisArgs {
     /// The axis's nominal direction, for two positions (the record's `$TC_CARR` vector).
     #[arg(long, value_name = "X,Y,Z", value_parser = point, allow_hyphen_values = true)]
     pub direction: Option<[f64; 3]>,
-    /// The swivel data record `m` of `$TC_CARRn[m]` the axis vector is written for.
-    #[arg(long, default_value_t = 1, value_name = "M")]
+    /// The swivel data record `m` of `$TC_CARRn[m]` the axis vector is written for
+    /// (1 to 999999, as a machine file's records are read).
+    #[arg(long, default_value_t = 1, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::semantic::machine::MAX_RECORD)))]
     pub record: u32,
     /// Which of the record's rotary axes: 1 (`$TC_CARR7..9`) or 2 (`$TC_CARR10..12`).
     #[arg(long, default_value_t = 1, value_name = "1|2", value_parser = clap::value_parser!(u8).range(1..=2))]

@@ -35,6 +35,12 @@ pub struct Names {
     allocated: Vec<String>,
 }
 
+/// The highest `--runtime-r` base taken: a control has R0 to R(n-1), n set
+/// by MD28050 (hundreds or a few thousand), so a base past it is a typo;
+/// it keeps the numbers the run-time code counts up from it far from
+/// `u32`'s end.
+pub const MAX_R_BASE: u32 = 99_999;
+
 /// The prefix of the local variables (two letters first, as identifiers need).
 pub const PREFIX: &str = "SNP_";
 

@@ -12,7 +12,7 @@ pub static RULE: RuleInfo = RuleInfo {
 Reports what in a machine file (`--machine`, `machine = "..."` in sinuprep.toml) cannot be the
 swivel data records the control holds: an assignment to `$TC_CARRn[m]` whose `n` names no
 parameter (1 to 65 less 47-54 and 61-63: the control raises an alarm for them), a record number
-that is not a whole number from 1 on, a value that is not a constant or not of the parameter's
+that is not a whole number from 1 to 999999, a value that is not a constant or not of the parameter's
 type, a kinematic type other than T, P or M (`$TC_CARR23`, alarm 14153), and a record with a
 name or axes whose data cannot describe a machine: rotary axis 1 without a direction vector,
 mixed kinematics with one axis, two parallel axes, a position limit (`$TC_CARR30..33`) beyond

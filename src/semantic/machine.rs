@@ -26,6 +26,11 @@ pub struct Machine {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+/// The highest record number read: a control holds as many swivel data
+/// records as a machine datum sets (a handful on most machines), so a number
+/// past it is a typo; a `u32`, exact in a double.
+pub const MAX_RECORD: u32 = 999_999;
+
 /// Options of reading.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Reading {
@@ -77,17 +82,23 @@ impl Machine {
                 }
                 let scope = env.scope(&supplied, 0);
                 let record = match assign.target.indices.as_slice() {
-                    [index] => match evaluate(source, index, &scope) {
-                        Ok(Value::Number(n)) if n >= 1.0 && n.fract() == 0.0 && n < 1e6 => n as u32,
-                        _ => {
-                            diagnostics.push(
+                    [index] => {
+                        match evaluate(source, index, &scope) {
+                            Ok(Value::Number(n))
+                                if n >= 1.0 && n.fract() == 0.0 && n <= f64::from(MAX_RECORD) =>
+                            {
+                                n as u32
+                            }
+                            _ => {
+                                diagnostics.push(
                                 RULE.at(index.span)
-                                    .message("a record number is a whole number from 1 on")
+                                    .message(format!("a record number is a whole number from 1 to {MAX_RECORD}"))
                                     .label("not a record number"),
                             );
-                            continue;
+                                continue;
+                            }
                         }
-                    },
+                    }
                     _ => {
                         diagnostics.push(
                             RULE.at(assign.target.span)
@@ -408,7 +419,7 @@ mod tests {
             .contains("`$TC_CARR50` is no swivel data parameter"));
         assert_eq!(
             (found[1].0, found[1].1.as_str()),
-            (2, "a record number is a whole number from 1 on")
+            (2, "a record number is a whole number from 1 to 999999")
         );
         assert!(found[2].1.contains("kinematic type `X`"), "{found:?}");
         assert!(

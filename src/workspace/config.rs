@@ -21,12 +21,16 @@ pub struct Config {
     pub deny_warnings: Option<bool>,
     /// Default `--emit` form of `rewrite`.
     pub emit: Option<Form>,
+    /// Decimals of emitted numbers, 0 to 15 (`--precision`).
+    #[serde(default, deserialize_with = "decimals")]
     pub precision: Option<u8>,
     /// HEAD_DEF path, relative to the configuration file.
     pub heads: Option<PathBuf>,
     /// Measured values file, relative to the configuration file.
     pub values: Option<PathBuf>,
     pub emit_runtime: Option<bool>,
+    /// The first R parameter of the run-time code (`--runtime-r`).
+    #[serde(default, deserialize_with = "r_base")]
     pub runtime_r: Option<u32>,
     /// The machine's axis names (channel and machine axes: `["X", "XC", "AX1"]`),
     /// which a program may use where a variable could stand.
@@ -48,6 +52,7 @@ pub struct Config {
     pub table: Option<String>,
     /// The orientation error (degrees) a Hirth grid's rounding may make
     /// before `check` reports it (K004).
+    #[serde(default, deserialize_with = "tolerance_degrees")]
     pub hirth_tolerance: Option<f64>,
     /// The files a directory walk takes, as patterns (`.gitignore` lines,
     /// relative to this file, any case) [default: `*.mpf`, `*.spf`, `*.arc`].
@@ -156,6 +161,43 @@ impl Config {
             Some(dir) if path.is_relative() => dir.join(path),
             _ => path.to_path_buf(),
         }
+    }
+}
+
+/// `precision`: as many decimals as `--precision` takes, the digits a
+/// double holds.
+fn decimals<'de, D: serde::Deserializer<'de>>(from: D) -> Result<Option<u8>, D::Error> {
+    let count = <i64 as serde::Deserialize>::deserialize(from)?;
+    match u8::try_from(count) {
+        Ok(count) if count <= 15 => Ok(Some(count)),
+        _ => Err(serde::de::Error::custom(format!(
+            "precision {count} is no count of decimals from 0 to 15 (a double holds about 15 digits)"
+        ))),
+    }
+}
+
+/// `runtime-r`: an R parameter's number, as `--runtime-r` takes it.
+fn r_base<'de, D: serde::Deserializer<'de>>(from: D) -> Result<Option<u32>, D::Error> {
+    use crate::emit::runtime::MAX_R_BASE;
+    let base = <i64 as serde::Deserialize>::deserialize(from)?;
+    match u32::try_from(base) {
+        Ok(base) if base <= MAX_R_BASE => Ok(Some(base)),
+        _ => Err(serde::de::Error::custom(format!(
+            "runtime-r {base} is no R parameter's number from 0 to {MAX_R_BASE}"
+        ))),
+    }
+}
+
+/// `hirth-tolerance`: an orientation error, 0 to 180 degrees (NaN would
+/// let every rounding pass unseen, a negative number report every one).
+fn tolerance_degrees<'de, D: serde::Deserializer<'de>>(from: D) -> Result<Option<f64>, D::Error> {
+    let degrees = <f64 as serde::Deserialize>::deserialize(from)?;
+    if (0.0..=180.0).contains(&degrees) {
+        Ok(Some(degrees))
+    } else {
+        Err(serde::de::Error::custom(format!(
+            "hirth-tolerance {degrees} is no angle from 0 to 180 degrees"
+        )))
     }
 }
 
