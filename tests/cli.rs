@@ -3434,6 +3434,44 @@ fn axes_refuses_an_a3200_export_it_cannot_write() {
     );
     assert_exit(&output, 2);
     assert!(flat(&output.stderr).contains("right-handed"));
+    // The record read from a setup is written only as a machine file reads
+    // it back: an axis name an NC string cannot carry (`"` ended it), a
+    // displacement no machine has, a record name beyond $TC_CARR34's.
+    let table = "ROTATION 1 InputAxes x y z OutputAxes X Y Z\n";
+    for (text, record, why) in [
+        (
+            format!("{table}ROTATION 1 ANGLE C\"Q 1, 0\nROTATION 1 Displacement 0, 0, 0\n"),
+            None,
+            "the ANGLE's axis `C\"Q`: an axis is named with letters",
+        ),
+        (
+            format!("{table}ROTATION 1 ANGLE C 1, 0\nROTATION 1 Displacement 1e300, 0, 0\n"),
+            None,
+            "beyond ±1e9",
+        ),
+        (
+            format!("{table}ROTATION 1 ANGLE C 1, 0\nROTATION 1 Displacement 0, 0, 0\n"),
+            Some("TABLE\"1"),
+            "cannot stand in an NC string",
+        ),
+        (
+            format!("{table}ROTATION 1 ANGLE C 1, 0\nROTATION 1 Displacement 0, 0, 0\n"),
+            Some(&*"T".repeat(33)),
+            "1 to 32 characters",
+        ),
+    ] {
+        std::fs::write(&setup, &text).expect("setup");
+        let mut args = vec!["axes", "--from-a3200", setup.to_str().expect("utf-8")];
+        args.extend(record.iter().flat_map(|name| ["--record", name]));
+        let output = run(&args, b"");
+        assert_exit(&output, 2);
+        assert!(output.stdout.is_empty(), "{text}");
+        assert!(
+            flat(&output.stderr).contains(why),
+            "{text}: {}",
+            flat(&output.stderr)
+        );
+    }
 }
 
 /// Numbers at the ends of the doubles, in every numeric form of `convert`
@@ -3804,12 +3842,7 @@ fn counts_of_emitted_text_are_bounded_on_the_command_line_and_in_settings() {
         std::fs::write(dir.join("sinuprep.toml"), settings).expect("settings");
         let output = run(&["rewrite", name], b"");
         assert_exit(&output, 2);
-        // The message as one line, the report's wrapping undone.
-        let stderr = String::from_utf8_lossy(&output.stderr)
-            .split_whitespace()
-            .filter(|word| *word != "│")
-            .collect::<Vec<_>>()
-            .join(" ");
+        let stderr = flat(&output.stderr);
         assert!(stderr.contains(why), "{settings}: {stderr}");
         assert!(stderr.contains("sinuprep.toml:"), "{settings}: {stderr}");
         assert!(output.stdout.is_empty(), "{settings}");

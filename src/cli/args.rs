@@ -698,7 +698,7 @@ fn direction(text: &str) -> Result<i8, String> {
 /// a string of at most 32 characters) and as an NC string can carry it: no
 /// `"`, which would end the string, and no control character (a line end
 /// would end the block).
-fn record_name(text: &str) -> Result<String, String> {
+pub(crate) fn record_name(text: &str) -> Result<String, String> {
     let count = text.chars().count();
     if count == 0 || count > 32 {
         return Err(format!(

@@ -199,10 +199,25 @@ fn from_a3200(path: &Path, record: Option<&str>) -> Result<ExitStatus, CliError>
         Some(number) if number.parse::<u32>().is_ok_and(|n| n > 0) => {
             found.number = number.parse().unwrap_or(1);
         }
-        Some(name) => found.name = name.to_string(),
+        Some(name) => {
+            found.name = crate::cli::args::record_name(name).map_err(|why| CliError::A3200 {
+                path: path.to_path_buf(),
+                why: format!("--record {name:?}: {why}"),
+            })?;
+        }
         None => {}
     }
-    write_stdout(assignments(&found).as_bytes())?;
+    let text = assignments(&found);
+    // What is written is what a machine file reads: the record read back
+    // with the reader `check --machine` uses, anything it says refused.
+    let read = crate::semantic::machine::Machine::read(text.as_bytes(), Default::default());
+    if let Some(said) = read.diagnostics.first() {
+        return Err(CliError::A3200 {
+            path: path.to_path_buf(),
+            why: format!("the record it gives would not read back: {}", said.message),
+        });
+    }
+    write_stdout(text.as_bytes())?;
     Ok(ExitStatus::Success)
 }
 

@@ -81,6 +81,13 @@ pub enum A3200Error {
     Name { axis: String, name: String },
 }
 
+/// Whether `name` can name an axis in an ANGLE, and so in `$TC_CARR35/36`:
+/// letters, digits and `_`, starting with a letter.
+fn axis_name(name: &str) -> bool {
+    name.starts_with(|c: char| c.is_ascii_alphabetic())
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
 /// The setup of a table record.
 pub fn setup_of(record: &Record) -> Result<Setup, A3200Error> {
     match record.kinematics {
@@ -97,11 +104,7 @@ pub fn setup_of(record: &Record) -> Result<Setup, A3200Error> {
         if !(finite(&axis.vector) && finite(&displacement) && axis.offset.is_finite()) {
             return Err(A3200Error::NotFinite { axis: label });
         }
-        let identifier = |name: &str| {
-            name.starts_with(|c: char| c.is_ascii_alphabetic())
-                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        };
-        if !axis.name.is_empty() && !identifier(&axis.name) {
+        if !axis.name.is_empty() && !axis_name(&axis.name) {
             return Err(A3200Error::Name {
                 axis: format!("rotary axis {}", index + 1),
                 name: axis.name.clone(),
@@ -294,6 +297,11 @@ impl Setup {
                             "the ANGLE offset `{offset}`: how it enters the angle is not documented, so only 0 is read"
                         )));
                     }
+                    if !axis_name(name) {
+                        return Err(fail(format!(
+                            "the ANGLE's axis `{name}`: an axis is named with letters, digits and `_`, starting with a letter"
+                        )));
+                    }
                     entry.angle = Some((name.to_string(), sign));
                 }
                 "displacement" => {
@@ -307,6 +315,13 @@ impl Setup {
                     let [a, b, c] = values[..] else {
                         return Err(fail("a displacement is three numbers".into()));
                     };
+                    // As a point on the command line: past ±1e9 (1000 km
+                    // in mm) a coordinate is a typo.
+                    if [a, b, c].iter().any(|v| v.abs() > 1e9) {
+                        return Err(fail(format!(
+                            "the displacement {a}, {b}, {c} has a number beyond ±1e9, which no machine's coordinate is"
+                        )));
+                    }
                     entry.displacement = Some([a, b, c]);
                 }
                 "on" | "off" => {}
