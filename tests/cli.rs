@@ -3678,7 +3678,42 @@ fn fmt_reads_its_settings_and_renumbers() {
 /// panic: decimals from 0 to 15, angles within ±1e9 degrees.
 #[test]
 fn numeric_options_out_of_range_are_refused_with_the_reason() {
-    let cases: [(&[&str], &str); 7] = [
+    let split = [
+        "axes",
+        "--machine",
+        "samples/MACHINE.SPF",
+        "--record",
+        "HEAD_H",
+        "--table",
+        "TABLE_B",
+    ];
+    let fixed = [&split[..], &["--fix", "B=1e300", "30", "45", "60"]].concat();
+    let from = [
+        &split[..],
+        &["--prefer", "nearest", "--from", "B=1e300", "30", "45", "60"],
+    ]
+    .concat();
+    let cases: [(&[&str], &str); 11] = [
+        (&fixed, "`--fix B=1e300`: 1e300 degrees is beyond ±1e9"),
+        (&from, "`--from B=1e300`: 1e300 degrees is beyond ±1e9"),
+        (
+            &["probe", "--normal", "0,0,1", "--tolerance", "1e300"],
+            "at most 1e9",
+        ),
+        (
+            &[
+                "axis",
+                "--angle",
+                "90",
+                "--before",
+                "1,0,0",
+                "--after",
+                "0,1,0",
+                "--tolerance",
+                "1e300",
+            ],
+            "at most 1e9",
+        ),
         (
             &["probe", "--precision", "65536", "--normal", "0,0,1"],
             "from 0 to 15",
@@ -3748,7 +3783,7 @@ fn numeric_options_out_of_range_are_refused_with_the_reason() {
     for (args, why) in cases {
         let output = run(args, b"");
         assert_exit(&output, 2);
-        let stderr = String::from_utf8_lossy(&output.stderr);
+        let stderr = flat(&output.stderr);
         assert!(stderr.contains(why), "{args:?}: {stderr}");
         assert!(output.stdout.is_empty(), "{args:?}");
     }

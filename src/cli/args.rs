@@ -595,11 +595,13 @@ fn point(text: &str) -> Result<[f64; 3], String> {
     }
 }
 
-/// A length above zero.
+/// A length above zero, at most 1e9 as a point's coordinates.
 fn length(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
-        Ok(value) if value.is_finite() && value > 0.0 => Ok(value),
-        _ => Err(format!("`{text}` is not a length above 0")),
+        Ok(value) if value.is_finite() && value > 0.0 && value <= 1e9 => Ok(value),
+        _ => Err(format!(
+            "`{text}` is not a length above 0 and at most 1e9, which no machine's length exceeds"
+        )),
     }
 }
 

@@ -294,12 +294,7 @@ fn from_position(
                 name.trim()
             ))
         })?;
-    let value = degrees(value).ok_or_else(|| {
-        refused(format!(
-            "`--from {given}`: `{}` is no number of degrees",
-            value.trim()
-        ))
-    })?;
+    let value = degrees(value).map_err(|why| refused(format!("`--from {given}`: {why}")))?;
     Ok((index, value))
 }
 
@@ -321,17 +316,15 @@ fn fixed_position(fix: &str, table: &Record, path: &Path) -> Result<f64, CliErro
             describe(table)
         )));
     }
-    degrees(value).ok_or_else(|| {
-        refused(format!(
-            "`--fix {fix}`: `{}` is no number of degrees",
-            value.trim()
-        ))
-    })
+    degrees(value).map_err(|why| refused(format!("`--fix {fix}`: {why}")))
 }
 
-/// `value` as a finite number of degrees.
-fn degrees(value: &str) -> Option<f64> {
-    value.trim().parse::<f64>().ok().filter(|v| v.is_finite())
+/// `value` as a number of degrees, within ±1e9 as every angle given.
+fn degrees(value: &str) -> Result<f64, String> {
+    match value.trim().parse::<f64>() {
+        Ok(degrees) if degrees.is_finite() => crate::cli::notation::angle(degrees),
+        _ => Err(format!("`{}` is no number of degrees", value.trim())),
+    }
 }
 
 /// The table's part of a split: its position and how it was found, and
