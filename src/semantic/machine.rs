@@ -177,13 +177,19 @@ impl Machine {
     }
 }
 
-/// Parameters 1 to 65 but the undefined 47-54 and 61-63.
-/// The span of a number written as C writes a power of ten (`1e-7`,
-/// `2.5E3`) where `value` ends at its mantissa, from the mantissa's start:
+/// The span of a value whose last number is written as C writes a power of
+/// ten (`1e-7`, `-2.5E3`, `2*1e3`), the value's text to the exponent's end:
 /// the language writes `1EX-7`, and reads `1e-7` as 1 and a word `E-7`.
 fn c_exponent_after(source: &[u8], value: Span) -> Option<Span> {
-    let mantissa = value.of(source);
-    if mantissa.is_empty() || !mantissa.iter().all(|b| b.is_ascii_digit() || *b == b'.') {
+    let text = value.of(source);
+    let literal = text
+        .iter()
+        .rev()
+        .take_while(|b| b.is_ascii_digit() || **b == b'.')
+        .count();
+    // A number ends the value, not a name's digits (`R1` then `E3`).
+    let before = text.len().checked_sub(literal + 1).map(|at| text[at]);
+    if literal == 0 || before.is_some_and(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'$') {
         return None;
     }
     let rest = &source[value.end..];
@@ -198,6 +204,7 @@ fn c_exponent_after(source: &[u8], value: Span) -> Option<Span> {
     (digits > 0).then(|| Span::new(value.start, value.end + at + digits))
 }
 
+/// Parameters 1 to 65 but the undefined 47-54 and 61-63.
 fn is_parameter(n: u32) -> bool {
     matches!(n, 1..=46 | 55..=60 | 64 | 65)
 }
@@ -400,6 +407,28 @@ mod tests {
         assert_eq!(told.len(), 1, "{:?}", machine.diagnostics);
         assert_eq!(told[0].span.of(source), b"1e-7");
         assert_eq!(machine.records[0].axes[0].angle, 0.0);
+        // Signed, in an expression, any case: told; a name's digits and
+        // the language's EX are not.
+        for (value, told) in [
+            ("-1e-7", Some("-1e-7")),
+            ("-2.5E+3", Some("-2.5E+3")),
+            ("2*1e3", Some("2*1e3")),
+            (".5e2", Some(".5e2")),
+            ("-1EX-7", None),
+            ("R1 E3=1", None),
+        ] {
+            let source = format!("$TC_CARR23[1]=\"P\" $TC_CARR9[1]=1 $TC_CARR13[1]={value}\n");
+            let machine = Machine::read(source.as_bytes(), Reading::default());
+            let said = machine.diagnostics.iter().find(|d| {
+                d.message.contains("no power of ten") || d.message.contains("is written")
+            });
+            assert_eq!(
+                said.map(|d| String::from_utf8_lossy(d.span.of(source.as_bytes())).into_owned()),
+                told.map(str::to_string),
+                "{value}: {:?}",
+                machine.diagnostics
+            );
+        }
     }
 
     #[test]
