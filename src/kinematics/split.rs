@@ -356,8 +356,18 @@ impl<'a> Problem<'a> {
     /// [`Self::measure`] measures there, so that it takes the solution
     /// measured, however near a limit.
     fn split(&self, t: f64, found: TableAngle) -> Split {
-        let gamma = self.position(t);
         let axis = &self.table.axes[0];
+        let mut gamma = self.position(t);
+        let table_within_limits = axis
+            .limits
+            .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma));
+        // Within the tolerance of a limit counts as at it, and is put there
+        // (as the head's positions are): a position printed never lies
+        // beyond a limit it is said to keep.
+        if let Some((min, max)) = axis.limits.filter(|_| table_within_limits) {
+            gamma = gamma.clamp(min, max);
+        }
+        let t = gamma - self.low;
         // The table turns the workpiece by R(u, x)⁻¹: the head makes R(u, x) · R_req.
         let turned = from_axis_angle(self.u, self.x0 + t) * self.request.rotation;
         let head = solve_toward(
@@ -381,9 +391,7 @@ impl<'a> Problem<'a> {
         };
         Split {
             table: gamma,
-            table_within_limits: axis
-                .limits
-                .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma)),
+            table_within_limits,
             found,
             head,
             head_frame: turned,
@@ -975,6 +983,24 @@ mod tests {
         assert!((reached(&table, &head, &split) - f).norm() < 1e-9);
         let too_far = split_at(&table, &head, &asked, 0.0);
         assert_eq!(too_far.head.chosen, None);
+    }
+
+    /// A table position a rounding beyond a limit counts as at it, and is
+    /// put there, as the head's are: never printed beyond a limit it is
+    /// said to keep.
+    #[test]
+    fn a_table_position_at_a_limit_is_never_beyond_it() {
+        let (mut table, head) = machine();
+        table.axes[0].limits = Some((-90.0, 90.0));
+        let asked = request(from_axis_angle(Vector3::y(), 60.0));
+        for (gamma, at) in [(90.0 + 5e-10, 90.0), (-90.0 - 5e-10, -90.0)] {
+            let split = split_at(&table, &head, &asked, gamma);
+            assert!(split.table_within_limits, "{gamma}");
+            assert_eq!(split.table, at, "{gamma}");
+        }
+        let beyond = split_at(&table, &head, &asked, 90.0 + 1e-6);
+        assert!(!beyond.table_within_limits);
+        assert_eq!(beyond.table, 90.0 + 1e-6);
     }
 
     fn split_at(table: &Record, head: &Record, asked: &Request, gamma: f64) -> Split {

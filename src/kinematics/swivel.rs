@@ -246,8 +246,9 @@ fn place(record: &Record, f: &Vector3<f64>, angles: [f64; 2], current: [f64; 2])
 /// near, the lower), in constant time whatever the limits: the turns are
 /// counted, not stepped through.
 fn inside(position: f64, min: f64, max: f64, current: f64) -> Option<f64> {
-    // The candidates are `position + 360 k` for whole k in [lowest, highest].
-    let lowest = ((min - position) / 360.0).ceil();
+    // The candidates are `position + 360 k` for whole k in [lowest, highest],
+    // within the tolerance of either limit.
+    let lowest = ((min - 1e-9 - position) / 360.0).ceil();
     let highest = ((max + 1e-9 - position) / 360.0).floor();
     if lowest.is_nan() || highest.is_nan() || lowest > highest {
         return None;
@@ -475,6 +476,24 @@ mod tests {
                 );
             }
         }
+        // The same at the lower limit.
+        for min in [-40.0 - 5e-10, -40.0, -40.0 + 5e-10] {
+            head.axes[1].limits = Some((min, 30.0));
+            let swivel = solve(&head, &request(toward([0.0, -s, c]))).expect("valid");
+            let inside: Vec<_> = swivel
+                .solutions
+                .iter()
+                .filter(|s| s.within_limits)
+                .collect();
+            assert!(!inside.is_empty(), "{min}: {:?}", swivel.solutions);
+            for solution in inside {
+                assert!(
+                    solution.positions[1] >= min,
+                    "{min}: {:?}",
+                    solution.positions
+                );
+            }
+        }
     }
 
     #[test]
@@ -530,7 +549,7 @@ mod tests {
 
     /// The stepping search `inside` replaced, as the reference.
     fn inside_by_steps(position: f64, min: f64, max: f64, current: f64) -> Option<f64> {
-        let lowest = position - 360.0 * ((position - min) / 360.0).floor();
+        let lowest = position - 360.0 * ((position - (min - 1e-9)) / 360.0).floor();
         let mut best: Option<f64> = None;
         let mut candidate = lowest;
         while candidate <= max + 1e-9 {
