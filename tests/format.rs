@@ -488,11 +488,7 @@ fn hmi_rows(lines: &[&[u8]]) -> Vec<bool> {
         .collect();
     let mut row = 0;
     while row < lines.len() {
-        let sections: [(&[u8], &[u8]); 3] = [
-            (b";#7__DlgK", b";#End"),
-            (b"contour definition begin", b"contour definition end"),
-            (b";NCG#", b";#END#"),
-        ];
+        let sections: [(&[u8], &[u8]); 2] = [(b";#7__DlgK", b";#End"), (b";NCG#", b";#END#")];
         let Some(&(_, end)) = sections.iter().find(|(begin, _)| has(lines[row], begin)) else {
             row += 1;
             continue;

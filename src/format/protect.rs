@@ -126,7 +126,7 @@ pub fn hmi_rows(source: &[u8]) -> Vec<Range<usize>> {
         if is_label(content, CONTOUR_START_LABEL) {
             start_label = Some(row);
         }
-        if memchr::memchr(b';', content).is_none() {
+        if !may_hold_marker(content) {
             continue;
         }
         if CONTOUR_BEGIN.iter().any(|begin| contains(content, begin)) {
@@ -143,6 +143,15 @@ pub fn hmi_rows(source: &[u8]) -> Vec<Range<usize>> {
         }
     }
     rows
+}
+
+/// Whether the line `content` may hold a marker: a comment with one of
+/// the bytes every marker holds. Most commented lines (CAM output's) have
+/// none, and then no marker is searched for.
+fn may_hold_marker(content: &[u8]) -> bool {
+    memchr::memchr(b';', content).is_some()
+        && (memchr::memchr3(b'*', b'#', b'\'', content).is_some()
+            || (memchr::memchr(b',', content).is_some() && contains(content, b";CON,")))
 }
 
 /// Whether the line `content` starts (after blanks) with a label whose
