@@ -460,3 +460,107 @@ fn aligned_trailing_comments_stay_aligned() {
     let (out, _) = formatted("ALIGNED.MPF", source, &Settings::default());
     assert_eq!(out, source);
 }
+
+/// The rows the HMI writes and reads back, as the Siemens HMI marks them:
+/// a line holding one of its markers; a contour section from its dialog
+/// tag `;#7__DlgK` to its `;#End` line, with the `E_LAB_A_`/`E_LAB_E_`
+/// labels around it; a screen's generated code from `;NCG#` to `;#END#`
+/// (either section running to the file's end when its last line is
+/// missing).
+fn hmi_rows(lines: &[&[u8]]) -> Vec<bool> {
+    let has = |line: &[u8], marker: &[u8]| line.windows(marker.len()).any(|w| w == marker);
+    let markers: [&[u8]; 7] = [
+        b"*RO*",
+        b"*GP*",
+        b"*HD*",
+        b";#SM",
+        b";NCG#",
+        b";CON,",
+        b"Don't change",
+    ];
+    let label = |line: &[u8], prefix: &[u8]| {
+        let line = line.trim_ascii();
+        line.starts_with(prefix) && line.ends_with(b":")
+    };
+    let mut owned: Vec<bool> = lines
+        .iter()
+        .map(|line| line.contains(&b';') && markers.iter().any(|m| has(line, m)))
+        .collect();
+    let mut row = 0;
+    while row < lines.len() {
+        let sections: [(&[u8], &[u8]); 2] = [(b";#7__DlgK", b";#End"), (b";NCG#", b";#END#")];
+        let Some(&(_, end)) = sections.iter().find(|(begin, _)| has(lines[row], begin)) else {
+            row += 1;
+            continue;
+        };
+        let contour = end != b";#END#";
+        if contour && row > 0 && label(lines[row - 1], b"E_LAB_A_") {
+            owned[row - 1] = true;
+        }
+        let last = (row + 1..lines.len())
+            .find(|&r| has(lines[r], end))
+            .unwrap_or(lines.len() - 1);
+        owned[row..=last].fill(true);
+        if contour && lines.get(last + 1).is_some_and(|l| label(l, b"E_LAB_E_")) {
+            owned[last + 1] = true;
+        }
+        row = last + 1;
+    }
+    owned
+}
+
+/// No byte of a region the HMI generated and reads back changes, under any
+/// settings, in any sample, fixture or program of the outside corpus: no
+/// edit touches a line of one.
+#[test]
+fn no_byte_of_an_hmi_region_changes() {
+    let settings = [
+        Settings::default(),
+        Settings {
+            indent: "\t".to_string(),
+            case: Case::Lower,
+            case_names: true,
+            max_blank_lines: 0,
+            ..Settings::default()
+        },
+        Settings {
+            renumber: Some((10, 10)),
+            ..Settings::default()
+        },
+    ];
+    let mut region_rows = 0;
+    let mut changed_beside_regions = 0;
+    for (name, source) in every_program() {
+        let lines: Vec<_> = sinuprep::syntax::lines::raw_lines(&source).collect();
+        let contents: Vec<&[u8]> = lines.iter().map(|l| l.content.of(&source)).collect();
+        let owned = hmi_rows(&contents);
+        let rows_owned = owned.iter().filter(|&&o| o).count();
+        if rows_owned == 0 {
+            continue;
+        }
+        region_rows += rows_owned;
+        let starts: Vec<usize> = lines.iter().map(|l| l.content.start).collect();
+        let row_of = |at: usize| starts.partition_point(|&s| s <= at).saturating_sub(1);
+        let kind = program_kind(Some(&name), &source);
+        for settings in &settings {
+            let result = format(&name, &source, kind, settings);
+            for edit in &result.edits {
+                let last = edit.span.end.max(edit.span.start + 1) - 1;
+                for row in row_of(edit.span.start)..=row_of(last) {
+                    assert!(
+                        !owned[row],
+                        "{name}: line {} of an HMI region changed: {:?} -> {:?}",
+                        row + 1,
+                        String::from_utf8_lossy(contents[row]),
+                        String::from_utf8_lossy(&edit.text)
+                    );
+                }
+            }
+            changed_beside_regions += usize::from(!result.edits.is_empty());
+        }
+    }
+    // Worth something only where there are regions and lines beside them
+    // that do change.
+    assert!(region_rows > 20, "{region_rows} rows in HMI regions");
+    assert!(changed_beside_regions > 3, "{changed_beside_regions}");
+}

@@ -12,7 +12,7 @@ use crate::format::case::language_words;
 use crate::format::layout::{
     is_tidy_plain, plain_prefix, prefix_end, write, Depths, LineParts, Words,
 };
-use crate::format::protect::{is_data_file, mentions_hmi, Hmi};
+use crate::format::protect::{hmi_rows, is_data_file, mentions_hmi};
 use crate::format::renumber::{self, Plan};
 use crate::format::{Case, Settings};
 use crate::semantic::addresses::{self, is_end_word};
@@ -156,7 +156,12 @@ fn lay_out(
     let source = model.source;
     let structure = model.structure();
     let mut depths = Depths::new(model);
-    let mut hmi = mentions_hmi(source).then(Hmi::default);
+    let hmi = if mentions_hmi(source) {
+        hmi_rows(source)
+    } else {
+        Vec::new()
+    };
+    let mut next_hmi = 0;
     let macro_lines: Vec<Span> = model.macro_uses.iter().map(|u| u.span).collect();
     let mut next_macro = 0;
     let replacements = plan.map_or(&[][..], |p| &p.replacements[..]);
@@ -190,10 +195,10 @@ fn lay_out(
         let uses_macro = macro_lines
             .get(next_macro)
             .is_some_and(|s| s.start < content.end);
-        let hmi_owns = match &mut hmi {
-            Some(hmi) => hmi.owns(content.of(source)),
-            None => false,
-        };
+        while hmi.get(next_hmi).is_some_and(|rows| rows.end <= row) {
+            next_hmi += 1;
+        }
+        let hmi_owns = hmi.get(next_hmi).is_some_and(|rows| rows.start <= row);
         // The `; sinuprep:` line, the frames or CYCLE800 the block
         // structure knows sinuprep emitted under it, and the assignments of
         // its results (`_CYC600_1=...`) the GUD form writes there.
@@ -326,8 +331,9 @@ fn lay_out(
 
 /// The deepest level a line is indented to: deeper lines stand at it, so
 /// that indentation grows no program without bound (20,000 nested IFs
-/// would be indented 40,000 blanks). Sixteen levels are more than
-/// hand-written cycles nest.
+/// would be indented 40,000 blanks). No Siemens text found gives the
+/// control's nesting limit for IF and the loops; sixteen is the number of
+/// program levels it nests calls to, more than hand-written cycles nest.
 const MAX_INDENT_LEVELS: usize = 16;
 
 /// Whether the laid-out line `out` is a block the control would refuse for
