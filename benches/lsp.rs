@@ -3,7 +3,9 @@
 //! (DEF, IF/ELSE/ENDIF, WHILE, R-parameter arithmetic, labels and jumps,
 //! subprogram calls, a CYCLE600 in the middle). Prints, over 40 rounds each,
 //! the minimum, median and maximum of: an incremental change to its
-//! diagnostics published, a hover on the CYCLE600 answered, the document's
+//! diagnostics published, then a hover on a variable (whose values at its
+//! uses the first hover on it in a version walks the program for) and one
+//! on another use of it, a hover on the CYCLE600 answered, the document's
 //! symbols answered.
 //!
 //! Then the large programs an editor may be given (size in MB:
@@ -90,6 +92,12 @@ fn main() {
     );
     figures("open to diagnostics", vec![opened]);
     let mut changes = Vec::new();
+    let mut first_hovers = Vec::new();
+    let mut next_hovers = Vec::new();
+    // `_Z=_Z-_STEP` in the first pocket: the variable read, then written.
+    let variable = |character: u32| {
+        json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": character } })
+    };
     for round in 0..ROUNDS {
         // Type a digit into a feed rate near the end, then take it out.
         let line = text.lines().count() as u32 - 10;
@@ -112,8 +120,16 @@ fn main() {
         );
         client.diagnostics(URI);
         changes.push(started.elapsed().as_secs_f64());
+        let asked = Instant::now();
+        client.request("textDocument/hover", variable(4));
+        first_hovers.push(asked.elapsed().as_secs_f64());
+        let asked = Instant::now();
+        client.request("textDocument/hover", variable(0));
+        next_hovers.push(asked.elapsed().as_secs_f64());
     }
     figures("change to diagnostics", changes);
+    figures("variable hover, first of the version", first_hovers);
+    figures("variable hover, another use of it", next_hovers);
     let timed = |client: &mut Client, method: &str, params: Value| {
         (0..ROUNDS)
             .map(|_| {

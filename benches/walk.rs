@@ -107,3 +107,42 @@ fn nested_unknown_ifs(bencher: Bencher, depth: usize) {
         analyze(&model, &Supplied::default(), None)
     });
 }
+
+/// A hand-written program of `pockets` sections (DEF variables, WHILE, IF
+/// with unknown conditions, jumps back): the walk alone, the walk that also
+/// finds one variable's value at each of its uses (what an editor's hover
+/// on `_Z` reads), and every variable's.
+fn pockets(pockets: usize) -> String {
+    let mut program = String::from("DEF REAL _DEPTH=5, _STEP=0.5, _Z\nDEF INT _COUNT=0\n");
+    for section in 0..pockets {
+        program.push_str(&format!(
+            "POCKET{section}:\n_Z=0\nWHILE _Z>-_DEPTH\n_Z=_Z-_STEP\nIF R{r}>_Z*2\n\
+             G1 X=R{r}+10 Y=R{r}*0.5 Z=_Z F800\nELSE\nG1 X=10 Y20 Z=_Z F400\nENDIF\n\
+             ENDWHILE\n_COUNT=_COUNT+1\nIF _COUNT<3 GOTOB POCKET{section}\n",
+            r = section % 99 + 1,
+        ));
+    }
+    program.push_str("M30\n");
+    program
+}
+
+#[divan::bench(args = ["none", "_Z", "every"])]
+fn values_at_uses_in_800_pockets(bencher: Bencher, looked_at: &str) {
+    use sinuprep::semantic::uses::{Namespace, Role, Uses};
+    use sinuprep::semantic::walk::{values_at, Probe};
+    let program = pockets(800);
+    let model = Model::of(program.as_bytes());
+    let uses = Uses::of(&model);
+    let probes: Vec<Probe> = uses
+        .all()
+        .iter()
+        .filter(|u| u.namespace == Namespace::Variable)
+        .filter(|u| looked_at == "every" || u.name == looked_at)
+        .map(|u| Probe {
+            row: u.row,
+            name: u.span,
+            after: matches!(u.role, Role::Writes | Role::Defines),
+        })
+        .collect();
+    bencher.bench(|| values_at(&model, &Supplied::default(), None, black_box(&probes), None));
+}

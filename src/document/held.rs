@@ -4,15 +4,18 @@
 //! be shared across threads: the analysis is made by whichever asks first
 //! (a thread of its own for a large program), and the others wait for it.
 
+use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 use self_cell::self_cell;
 
 use super::text::Text;
 use super::Analyzed;
 use crate::lint::Settings;
-use crate::semantic::uses::Uses;
+use crate::semantic::uses::{Namespace, Role, Uses};
+use crate::semantic::walk::{self, Probe, Seen};
+use crate::span::Span;
 
 /// The analysis of one version of the text, made when first asked for;
 /// `None` if it was stopped because the version went stale.
@@ -20,9 +23,14 @@ use crate::semantic::uses::Uses;
 struct Lazy<'t> {
     analyzed: OnceLock<Option<Analyzed<'t>>>,
     uses: OnceLock<Uses>,
+    values: Mutex<HashMap<String, Walked>>,
     /// The text or the settings changed since: an analysis under way stops.
     stale: AtomicBool,
 }
+
+/// The values of one variable's uses, made by the first request that asks
+/// (the others wait for it); `None` if the version went stale meanwhile.
+type Walked = Arc<OnceLock<Option<Arc<Values>>>>;
 
 self_cell!(
     /// An open document: its text, and the analysis that borrows it.
@@ -38,12 +46,68 @@ pub struct Analysis<'a, 't> {
     pub text: &'t Text,
     pub analyzed: &'a Analyzed<'t>,
     uses: &'a OnceLock<Uses>,
+    values: &'a Mutex<HashMap<String, Walked>>,
+    stale: &'a AtomicBool,
+}
+
+/// What the walk finds in a variable at each use of it.
+pub struct Values {
+    /// By the name's place, in source order.
+    seen: Vec<(Span, Seen)>,
+}
+
+impl Values {
+    /// What the walk finds in the variable named at `name`.
+    pub fn at(&self, name: Span) -> Option<&Seen> {
+        let index = self.seen.binary_search_by_key(&name, |(span, _)| *span).ok()?;
+        Some(&self.seen[index].1)
+    }
 }
 
 impl Analysis<'_, '_> {
     /// The table of uses, built by the first request that reads names.
     pub fn uses(&self) -> &Uses {
         self.uses.get_or_init(|| Uses::of(&self.analyzed.model))
+    }
+
+    /// What the variable `name` (as the table of uses spells it) holds at
+    /// each use, from one walk made by the first request that asks for it
+    /// (a hover): the next hovers on it read that walk until the text
+    /// changes. `None` if the version went stale while it was made.
+    ///
+    /// A walk per name, not one for every variable at once: looking at
+    /// every use costs about three walks, one variable's uses at most two
+    /// (`cargo bench --bench walk -- values_at`), and the first hover after
+    /// each edit waits for it.
+    pub fn values(&self, name: &str, settings: &Settings) -> Option<Arc<Values>> {
+        let walked = {
+            let mut walks = self.values.lock().unwrap_or_else(PoisonError::into_inner);
+            Arc::clone(walks.entry(name.to_string()).or_default())
+        };
+        let values = walked.get_or_init(|| {
+            let uses = self.uses().all().iter();
+            let probes: Vec<Probe> = uses
+                .filter(|u| u.namespace == Namespace::Variable && u.name == name)
+                .map(|found| Probe {
+                    row: found.row,
+                    name: found.span,
+                    after: matches!(found.role, Role::Writes | Role::Defines),
+                })
+                .collect();
+            let stale = || self.stale.load(Ordering::Relaxed);
+            let seen = walk::values_at(
+                &self.analyzed.model,
+                &settings.supplied,
+                settings.heads.as_ref(),
+                &probes,
+                Some(&stale),
+            )?;
+            let at = probes.iter().map(|probe| probe.name);
+            Some(Arc::new(Values {
+                seen: at.zip(seen).collect(),
+            }))
+        });
+        values.clone()
     }
 }
 
@@ -111,6 +175,8 @@ impl Held {
                 text,
                 analyzed: analyzed.as_ref()?,
                 uses: &lazy.uses,
+                values: &lazy.values,
+                stale: &lazy.stale,
             }))
         })
     }

@@ -179,19 +179,14 @@ impl<'a, 't> Snapshot<'a, 't> {
                 return text;
             }
         }
-        let probe = walk::Probe {
-            row: found.row,
-            name: found.span,
-            after: matches!(found.role, Role::Writes | Role::Defines),
+        // Gone stale while the walk was made: no one reads this answer.
+        let Some(values) = self.analysis.values(&found.name, self.settings) else {
+            return text;
         };
-        let settings = self.settings;
-        let seen = walk::value_at(
-            self.model,
-            &settings.supplied,
-            settings.heads.as_ref(),
-            &probe,
-        );
-        let value = match seen {
+        let Some(seen) = values.at(found.span) else {
+            return text;
+        };
+        let value = match seen.clone() {
             walk::Seen::Value {
                 value: Ok(value),
                 origin,
@@ -213,7 +208,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 "not known offline: it depends on the way the program comes here".to_string()
             }
         };
-        let when = if probe.after {
+        let when = if matches!(found.role, Role::Writes | Role::Defines) {
             "Value after this line"
         } else {
             "Value here"

@@ -89,7 +89,7 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
     let (analysis, env, _) =
-        run_probed(model, supplied, heads, None, None).expect("only a stop ends a walk early");
+        run_probed(model, supplied, heads, &[], None).expect("only a stop ends a walk early");
     (analysis, env)
 }
 
@@ -107,7 +107,7 @@ pub fn analyze_until(
     heads: Option<&Heads>,
     stop: Stop,
 ) -> Option<Analysis> {
-    Some(run_probed(model, supplied, heads, None, Some(stop))?.0)
+    Some(run_probed(model, supplied, heads, &[], Some(stop))?.0)
 }
 
 /// Where a value is looked at on the walk: the variable named at `name` (a
@@ -137,31 +137,29 @@ pub enum Seen {
     Differs,
 }
 
-/// What the variable at `probe` holds there, as the walk that evaluates the
-/// CYCLE600 calls finds it.
-pub fn value_at(model: &Model, supplied: &Supplied, heads: Option<&Heads>, probe: &Probe) -> Seen {
-    let Some((_, _, seen)) = run_probed(model, supplied, heads, Some(probe), None) else {
-        return Seen::NotReached;
-    };
-    let mut seen = seen.into_iter();
-    match (seen.next(), seen.next()) {
-        (None, _) => Seen::NotReached,
-        (Some(first), None) => first,
-        (Some(first), Some(second)) if first == second && seen.all(|s| s == first) => first,
-        _ => Seen::Differs,
-    }
+/// What the variable at each of `probes` holds there, as the walk that
+/// evaluates the CYCLE600 calls finds it: one walk answers them all (an
+/// editor asks for every use it hovers). `None` if `stop` stopped it.
+pub fn values_at(
+    model: &Model,
+    supplied: &Supplied,
+    heads: Option<&Heads>,
+    probes: &[Probe],
+    stop: Option<Stop>,
+) -> Option<Vec<Seen>> {
+    Some(run_probed(model, supplied, heads, probes, stop)?.2)
 }
 
 fn run_probed(
     model: &Model,
     supplied: &Supplied,
     heads: Option<&Heads>,
-    probe: Option<&Probe>,
+    probes: &[Probe],
     stop: Option<Stop>,
 ) -> Option<(Analysis, Env, Vec<Seen>)> {
     let mut modes = HashMap::new();
     loop {
-        let (walker, env) = walk_once(model, supplied, heads, &modes, probe, stop);
+        let (walker, env) = walk_once(model, supplied, heads, &modes, probes, stop);
         if walker.stopped {
             return None;
         }
@@ -177,7 +175,8 @@ fn run_probed(
         if learned.is_empty() {
             let mut analysis = walker.analysis;
             analysis.calls.sort_by_key(|c| (c.line, c.statement.start));
-            return Some((analysis, env, walker.seen));
+            let seen = walker.looks.tallies.into_iter().map(Tally::seen);
+            return Some((analysis, env, seen.collect()));
         }
         modes.extend(learned);
     }
@@ -189,7 +188,7 @@ fn walk_once<'a>(
     supplied: &'a Supplied,
     heads: Option<&'a Heads>,
     modes: &'a HashMap<usize, Mode>,
-    probe: Option<&'a Probe>,
+    probes: &'a [Probe],
     stop: Option<Stop<'a>>,
 ) -> (Walker<'a>, Env) {
     let structure = model.structure();
@@ -218,8 +217,7 @@ fn walk_once<'a>(
         forgotten: Vec::new(),
         replayed: Vec::new(),
         too_deep: HashSet::new(),
-        probe,
-        seen: Vec::new(),
+        looks: Looks::new(probes),
         stop,
         lines_walked: 0,
         stopped: false,
@@ -227,6 +225,60 @@ fn walk_once<'a>(
     let mut env = Env::of_program(Arc::clone(&structure.writers));
     walker.walk(0, model.lines.len(), &mut env);
     (walker, env)
+}
+
+/// The uses a walk is asked about, by line, and what it found at each.
+struct Looks<'a> {
+    probes: &'a [Probe],
+    /// Line -> the indices of its probes.
+    on_line: HashMap<usize, Vec<usize>>,
+    tallies: Vec<Tally>,
+}
+
+impl<'a> Looks<'a> {
+    fn new(probes: &'a [Probe]) -> Self {
+        let mut on_line: HashMap<usize, Vec<usize>> = HashMap::new();
+        for (index, probe) in probes.iter().enumerate() {
+            on_line.entry(probe.row).or_default().push(index);
+        }
+        Self {
+            probes,
+            on_line,
+            tallies: vec![Tally::default(); probes.len()],
+        }
+    }
+}
+
+/// What the arrivals of a walk at one probe found: the first arrival's
+/// value, the latest's (a closer look at its statement replaces it), and
+/// whether any two differ.
+#[derive(Clone, Default)]
+struct Tally {
+    first: Option<Seen>,
+    latest: Option<Seen>,
+    differs: bool,
+}
+
+impl Tally {
+    /// Compares the latest arrival's value with the first, before another.
+    fn settle(&mut self) {
+        let Some(latest) = self.latest.take() else {
+            return;
+        };
+        match &self.first {
+            None => self.first = Some(latest),
+            Some(first) => self.differs |= *first != latest,
+        }
+    }
+
+    fn seen(mut self) -> Seen {
+        self.settle();
+        match self.first {
+            None => Seen::NotReached,
+            Some(_) if self.differs => Seen::Differs,
+            Some(first) => first,
+        }
+    }
 }
 
 /// The key of the variable `statement` names at `name`, with its indices
@@ -305,9 +357,8 @@ struct Walker<'a> {
     replayed: Vec<CallSite>,
     /// Lines of calls reported as nested too deep.
     too_deep: HashSet<usize>,
-    /// A use whose value is asked for, and what each arrival at it found.
-    probe: Option<&'a Probe>,
-    seen: Vec<Seen>,
+    /// The uses whose values are asked for, and what the walk found there.
+    looks: Looks<'a>,
     /// Asked every [`LINES_BETWEEN_STOPS`] lines whether to stop; once it
     /// says so, every region ends where it is.
     stop: Option<Stop<'a>>,
@@ -373,13 +424,13 @@ impl<'a> Walker<'a> {
                 return;
             }
             self.enter(pc, env);
-            if self.probe.is_some_and(|probe| probe.row == pc) {
-                self.look(pc, env, true);
-            }
-            if let Some(statement) = self.structure.marked_call(pc) {
+            let marked = self.structure.marked_call(pc);
+            if let Some(statement) = marked {
+                self.look(pc, None, env, true, |_| true);
                 self.replay(pc, statement, env);
             }
-            // Motion blocks change nothing the walk tracks: no need to parse them.
+            // Motion blocks change nothing the walk tracks: no need to parse
+            // them (and they name no variable to look at).
             if self.model.lines.is_plain(pc) {
                 pc += 1;
                 continue;
@@ -388,6 +439,9 @@ impl<'a> Walker<'a> {
                 pc += 1;
                 continue;
             };
+            if marked.is_none() {
+                self.look(pc, Some(&block), env, true, |_| true);
+            }
             match control(&block) {
                 Control::IfBlock(condition) => {
                     if let Some(pair) = self.model.blocks.opened_on(pc) {
@@ -625,49 +679,80 @@ impl<'a> Walker<'a> {
             }
         }
         for statement in &block.statements {
-            let probed = self.probe.filter(|probe| {
-                probe.row == pc
-                    && statement.span.start <= probe.name.start
-                    && probe.name.end <= statement.span.end
-            });
-            if probed.is_some_and(|probe| !probe.after) {
-                self.look(pc, env, false);
-            }
+            let held = |probe: &Probe| {
+                statement.span.start <= probe.name.start && probe.name.end <= statement.span.end
+            };
+            self.look(pc, Some(block), env, false, |p| held(p) && !p.after);
             self.record_result_reads(statement, env);
             self.step(pc, statement, env);
-            if probed.is_some_and(|probe| probe.after) {
-                self.look(pc, env, false);
-            }
+            self.look(pc, Some(block), env, false, |p| held(p) && p.after);
         }
     }
 
-    /// What the probed variable holds here: a new arrival at its line
-    /// (`arriving`), or a closer look at the statement that holds it.
-    fn look(&mut self, pc: usize, env: &Env, arriving: bool) {
-        let Some(probe) = self.probe else { return };
-        let Some(block) = self.block(pc) else { return };
-        let scope = env.scope(self.supplied, pc + 1);
-        let key = block
-            .statements
-            .iter()
-            .find_map(|statement| probe_key(self.source, statement, probe.name, &scope));
-        let seen = match key {
-            Some(Ok(key)) => Seen::Value {
-                value: crate::semantic::eval::Lookup::variable(&scope, &key),
-                origin: scope.origin(&key),
-                key,
-            },
-            // An index unknown here: which element is read is unknown.
-            Some(Err(why)) => Seen::Value {
-                key: upper(probe.name.of(self.source)),
-                value: Err(why),
-                origin: None,
-            },
-            None => return,
+    /// What the probed variables of line `pc` (its `block`, parsed here if
+    /// not given) that are `wanted` hold here: a new arrival at their line
+    /// (`arriving`), or a closer look at the statement that holds them.
+    fn look(
+        &mut self,
+        pc: usize,
+        block: Option<&Block>,
+        env: &Env,
+        arriving: bool,
+        wanted: impl Fn(&Probe) -> bool,
+    ) {
+        let Looks {
+            probes,
+            on_line,
+            tallies,
+        } = &mut self.looks;
+        let Some(on_line) = on_line.get(&pc) else {
+            return;
         };
-        match self.seen.last_mut() {
-            Some(last) if !arriving => *last = seen,
-            _ => self.seen.push(seen),
+        if !on_line.iter().any(|&index| wanted(&probes[index])) {
+            return;
+        }
+        let parsed;
+        let block = match block {
+            Some(block) => block,
+            None => match self.model.lines.block(pc) {
+                Some(block) => {
+                    parsed = block;
+                    &*parsed
+                }
+                None => return,
+            },
+        };
+        let scope = env.scope(self.supplied, pc + 1);
+        for &index in on_line {
+            let probe = &probes[index];
+            if !wanted(probe) {
+                continue;
+            }
+            let name = probe.name;
+            let key = block
+                .statements
+                .iter()
+                .filter(|s| s.span.start <= name.start && name.end <= s.span.end)
+                .find_map(|statement| probe_key(self.source, statement, name, &scope));
+            let seen = match key {
+                Some(Ok(key)) => Seen::Value {
+                    value: crate::semantic::eval::Lookup::variable(&scope, &key),
+                    origin: scope.origin(&key),
+                    key,
+                },
+                // An index unknown here: which element is read is unknown.
+                Some(Err(why)) => Seen::Value {
+                    key: upper(name.of(self.source)),
+                    value: Err(why),
+                    origin: None,
+                },
+                None => continue,
+            };
+            let tally = &mut tallies[index];
+            if arriving {
+                tally.settle();
+            }
+            tally.latest = Some(seen);
         }
     }
 
@@ -1148,6 +1233,74 @@ mod tests {
             assert!(stopped.is_none(), "told at question {stop_at}");
             assert_eq!(asked.get(), stop_at, "no question after the stop");
         }
+    }
+
+    /// One walk asked about every variable's uses at once finds at each
+    /// what a walk asked about that use alone finds, on programs with
+    /// branches, loops, a skipped region and CYCLE600 calls.
+    #[test]
+    fn one_walk_answers_every_use_as_a_walk_for_each_would() {
+        let programs = [
+            "DEF REAL _DEPTH=5\nDEF INT _N\nR1=_DEPTH*2\nIF R5>0\n_N=1\nENDIF\n\
+             G1 Z=-_DEPTH X=R1 Y=_N\nR1=R1+1 R2=R1\nGOTOF END\nR3=R1\nEND:\n\
+             FOR R4=0 TO 2\nR6=R1+R4\nENDFOR\nR7=R6 R1=3\nM30\n"
+                .to_string(),
+            nested_loops(2, 30),
+            std::fs::read_to_string(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/samples/PROBE_ALIGN.MPF"
+            ))
+            .expect("sample"),
+        ];
+        for program in &programs {
+            let model = Model::of(program.as_bytes());
+            let uses = crate::semantic::uses::Uses::of(&model);
+            let probes: Vec<Probe> = uses
+                .all()
+                .iter()
+                .filter(|u| u.namespace == crate::semantic::uses::Namespace::Variable)
+                .map(|u| Probe {
+                    row: u.row,
+                    name: u.span,
+                    after: matches!(
+                        u.role,
+                        crate::semantic::uses::Role::Writes | crate::semantic::uses::Role::Defines
+                    ),
+                })
+                .collect();
+            assert!(probes.len() > 10, "{}", probes.len());
+            let supplied = Supplied::default();
+            let all = values_at(&model, &supplied, None, &probes, None).expect("not stopped");
+            for (probe, together) in probes.iter().zip(&all) {
+                let alone = values_at(&model, &supplied, None, std::slice::from_ref(probe), None)
+                    .expect("not stopped");
+                assert_eq!(&alone[0], together, "{probe:?}");
+            }
+        }
+        // The first program's skipped line is not reached; what a use
+        // reads is there with its value.
+        let model = Model::of(programs[0].as_bytes());
+        let probe = |row, column: usize, length: usize, after| {
+            let start = model.lines.raw(row).content.start + column;
+            Probe {
+                row,
+                name: Span::new(start, start + length),
+                after,
+            }
+        };
+        let probes = [
+            probe(9, 3, 2, false),
+            probe(7, 11, 2, false),
+            probe(7, 0, 2, true),
+        ];
+        let seen = values_at(&model, &Supplied::default(), None, &probes, None).expect("walked");
+        assert_eq!(seen[0], Seen::NotReached);
+        let value = |seen: &Seen| match seen {
+            Seen::Value { value, .. } => value.clone().ok(),
+            _ => None,
+        };
+        assert_eq!(value(&seen[1]), Some(Value::Number(11.0)), "{:?}", seen[1]);
+        assert_eq!(value(&seen[2]), Some(Value::Number(11.0)), "{:?}", seen[2]);
     }
 
     /// Forgetting what nested loops write costs the program's length times
