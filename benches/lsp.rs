@@ -95,9 +95,7 @@ fn main() {
     let mut first_hovers = Vec::new();
     let mut next_hovers = Vec::new();
     // `_Z=_Z-_STEP` in the first pocket: the variable read, then written.
-    let variable = |character: u32| {
-        json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": character } })
-    };
+    let variable = |character: u32| json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": character } });
     for round in 0..ROUNDS {
         // Type a digit into a feed rate near the end, then take it out.
         let line = text.lines().count() as u32 - 10;

@@ -1,6 +1,7 @@
 //! In-process costs of the parts, measured with divan: a motion block
 //! scanned, a block of code parsed, an expression parsed and evaluated, one
-//! rotation conversion. `cargo bench --bench parts`; whole programs are
+//! rotation conversion; a hand-written program formatted whole and in a
+//! range of five lines (an editor's). `cargo bench --bench parts`; whole programs are
 //! `throughput`'s job, many conversions `rotation`'s.
 
 use divan::{black_box, Bencher};
@@ -72,4 +73,39 @@ fn convert_one_rotation(bencher: Bencher) {
     let from: Sequence = "extrinsic:XYZ".parse().expect("a sequence");
     let to: Sequence = "intrinsic:ZXY".parse().expect("a sequence");
     bencher.bench(|| convert(from, black_box([30.0, 45.0, 60.0]), to));
+}
+
+/// 100,000 lines of hand-written code every line of which `fmt` changes
+/// (lower case, blanks, nesting to indent).
+fn untidy_program() -> Vec<u8> {
+    let section =
+        "if r1>5\ng1  x=r1*2   y2 f100 ; c\nr1=r1+1\nendif\nwhile r2<3\nr2=r2+1\nendwhile\n";
+    let mut program = section.repeat(100_000 / 7);
+    program.push_str("m30\n");
+    program.into_bytes()
+}
+
+#[divan::bench(args = ["whole", "five lines"])]
+fn format_untidy_program(bencher: Bencher, range: &str) {
+    use sinuprep::format::{format, format_rows, Settings};
+    use sinuprep::syntax::ProgramKind;
+    let program = untidy_program();
+    let settings = Settings::default();
+    bencher.bench(|| {
+        let source = black_box(&program[..]);
+        let edits = match range {
+            "whole" => format("P.MPF", source, ProgramKind::Main, &settings).edits,
+            _ => {
+                format_rows(
+                    "P.MPF",
+                    source,
+                    ProgramKind::Main,
+                    &settings,
+                    50_000..50_005,
+                )
+                .edits
+            }
+        };
+        edits.len()
+    });
 }

@@ -11,7 +11,7 @@ mod support;
 use support::{assert_exit, run};
 
 use sinuprep::edit::apply;
-use sinuprep::format::{format, Case, Settings};
+use sinuprep::format::{format, format_rows, Case, Settings};
 use sinuprep::semantic::uses::{Role, Uses};
 use sinuprep::semantic::Model;
 use sinuprep::syntax::tree::{Block, LineKind};
@@ -563,4 +563,53 @@ fn no_byte_of_an_hmi_region_changes() {
     // that do change.
     assert!(region_rows > 20, "{region_rows} rows in HMI regions");
     assert!(changed_beside_regions > 3, "{changed_beside_regions}");
+}
+
+/// Formatting a range of lines gives exactly the edits formatting the whole
+/// program gives on those lines, under several settings, for ranges of one
+/// line and of a third of the program in every sample, fixture and corpus
+/// program: the lines before a range carry their levels, the program's end
+/// and the blank lines in a row over to it.
+#[test]
+fn a_range_is_formatted_as_the_whole_program_formats_it() {
+    let settings = [
+        Settings::default(),
+        Settings {
+            indent: "\t".to_string(),
+            case: Case::Lower,
+            case_names: true,
+            max_blank_lines: 0,
+            ..Settings::default()
+        },
+    ];
+    let mut compared = 0;
+    for (name, source) in every_program() {
+        let starts: Vec<usize> = sinuprep::syntax::lines::raw_lines(&source)
+            .map(|l| l.content.start)
+            .collect();
+        let row_of = |at: usize| starts.partition_point(|&s| s <= at).saturating_sub(1);
+        let kind = program_kind(Some(&name), &source);
+        let count = starts.len();
+        for settings in &settings {
+            let whole = format(&name, &source, kind, settings).edits;
+            let step = (count / 40).max(1);
+            let mut ranges: Vec<std::ops::Range<usize>> =
+                (0..count).step_by(step).map(|row| row..row + 1).collect();
+            ranges.push(count / 3..2 * count / 3);
+            for rows in ranges {
+                let expected: Vec<_> = whole
+                    .iter()
+                    .filter(|edit| rows.contains(&row_of(edit.span.start)))
+                    .collect();
+                let ranged = format_rows(&name, &source, kind, settings, rows.clone()).edits;
+                assert_eq!(
+                    ranged.iter().collect::<Vec<_>>(),
+                    expected,
+                    "{name}, lines {rows:?}"
+                );
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared > 1000, "{compared}");
 }

@@ -59,7 +59,10 @@ pub struct Values {
 impl Values {
     /// What the walk finds in the variable named at `name`.
     pub fn at(&self, name: Span) -> Option<&Seen> {
-        let index = self.seen.binary_search_by_key(&name, |(span, _)| *span).ok()?;
+        let index = self
+            .seen
+            .binary_search_by_key(&name, |(span, _)| *span)
+            .ok()?;
         Some(&self.seen[index].1)
     }
 }

@@ -5,6 +5,7 @@
 //! archive's member is formatted like any file and a diff names lines.
 
 use std::collections::HashSet;
+use std::ops::Range;
 
 use crate::diagnostic::Diagnostic;
 use crate::edit::Edit;
@@ -49,7 +50,20 @@ pub struct Formatted {
 /// Formats `source`, the program `name` (a path or an archive's member
 /// name, whose suffix tells a definition file).
 pub fn format(name: &str, source: &[u8], kind: ProgramKind, settings: &Settings) -> Formatted {
-    format_with(name, source, kind, settings, false)
+    format_with(name, source, kind, settings, false, None)
+}
+
+/// [`format`], laying out only the lines `rows` (0-based): an editor's
+/// range. The lines before them are read for what carries over (the
+/// levels, the program's end, blank lines in a row), not laid out.
+pub fn format_rows(
+    name: &str,
+    source: &[u8],
+    kind: ProgramKind,
+    settings: &Settings,
+    rows: Range<usize>,
+) -> Formatted {
+    format_with(name, source, kind, settings, false, Some(rows))
 }
 
 /// [`format`], the edits of neighbouring lines merged into one (with the
@@ -63,7 +77,7 @@ pub fn format_merged(
     kind: ProgramKind,
     settings: &Settings,
 ) -> Formatted {
-    format_with(name, source, kind, settings, true)
+    format_with(name, source, kind, settings, true, None)
 }
 
 fn format_with(
@@ -72,6 +86,7 @@ fn format_with(
     kind: ProgramKind,
     settings: &Settings,
     merge: bool,
+    rows: Option<Range<usize>>,
 ) -> Formatted {
     let mut formatted = Formatted::default();
     if is_data_file(name) {
@@ -97,7 +112,8 @@ fn format_with(
         },
         None => None,
     };
-    let laid = match lay_out(&model, settings, plan.as_ref(), merge) {
+    let rows = rows.unwrap_or(0..usize::MAX);
+    let laid = match lay_out(&model, settings, plan.as_ref(), merge, &rows) {
         Ok(laid) => {
             if let Some(plan) = plan.filter(|p| p.blocks > 0) {
                 formatted.renumbered = plan.blocks;
@@ -118,7 +134,7 @@ fn format_with(
                 message: "not renumbered: this block number or reference stands in a line left as it is (HMI region, emitted code, a macro, after the program's end)".to_string(),
                 refused: true,
             });
-            lay_out(&model, settings, None, merge).unwrap_or_default()
+            lay_out(&model, settings, None, merge, &rows).unwrap_or_default()
         }
     };
     // An error in what the control never reads (after the end) stops
@@ -145,13 +161,14 @@ struct Laid {
     unread: Vec<Span>,
 }
 
-/// The edits of every line; `Err` with the span of a renumbering's
-/// replacement that falls in a line left as it is.
+/// The edits of the lines `rows` (every line read); `Err` with the span of
+/// a renumbering's replacement that falls in a line left as it is.
 fn lay_out(
     model: &Model,
     settings: &Settings,
     plan: Option<&Plan>,
     merge: bool,
+    rows: &Range<usize>,
 ) -> Result<Laid, Span> {
     let source = model.source;
     let structure = model.structure();
@@ -239,6 +256,16 @@ fn lay_out(
                 return Err(*span);
             }
             blank_run = 0;
+            continue;
+        }
+        if !rows.contains(&row) {
+            // Read for what carries over to the lines laid out, as laying
+            // it out would leave it: blank (written as nothing) or not.
+            let blank = content.of(source).iter().all(|&b| b == b' ' || b == b'\t');
+            blank_run = if blank { blank_run + 1 } else { 0 };
+            if block.is_some_and(opens_proc) {
+                depths.set_proc_body(settings.indent_proc_body);
+            }
             continue;
         }
         let parts = match block {

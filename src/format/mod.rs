@@ -26,7 +26,7 @@ pub mod layout;
 pub mod protect;
 pub mod renumber;
 
-pub use driver::{format, format_merged, Formatted, Note};
+pub use driver::{format, format_merged, format_rows, Formatted, Note};
 
 /// How the language's own words are written.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize)]

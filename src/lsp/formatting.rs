@@ -1,11 +1,13 @@
 //! Document and range formatting: the edits `sinuprep fmt` makes, as the
 //! protocol's text edits. A program with syntax errors gets none, as on
-//! the command line; a range gets the edits of the lines it touches.
+//! the command line; a range gets the edits of the lines it touches, and
+//! only those lines are laid out (the protocol's lines are the program's:
+//! CR, LF and CRLF end one in both).
 
 use lsp_types as lsp;
 
 use crate::document::text::Text;
-use crate::format::{format, Settings};
+use crate::format::{format, format_rows, Settings};
 use crate::lsp::convert;
 use crate::span::{ColumnUnit, Span};
 use crate::syntax::program_kind;
@@ -24,7 +26,14 @@ pub fn edits(
     let touches = |span: Span| {
         within.is_none_or(|within| span.start <= within.end && within.start <= span.end)
     };
-    format(name, source, kind, settings)
+    let formatted = match range {
+        Some(range) => {
+            let rows = range.start.line as usize..range.end.line as usize + 1;
+            format_rows(name, source, kind, settings, rows)
+        }
+        None => format(name, source, kind, settings),
+    };
+    formatted
         .edits
         .into_iter()
         .filter(|edit| touches(edit.span))
