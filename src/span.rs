@@ -130,27 +130,6 @@ impl<'a> LineIndex<'a> {
         }
     }
 
-    /// The byte offset of `position` (its column in `unit`): the inverse of
-    /// [`Self::position_in`]. A column past the end of its line is the
-    /// line's end; a row past the last line is the end of the file; a column
-    /// inside a UTF-8 sequence or a UTF-16 pair is the character's start.
-    pub fn offset_of(&self, position: Position, unit: ColumnUnit) -> usize {
-        let start = self.row_start(position.row.saturating_sub(1));
-        let end = line_end(self.source, start);
-        let wanted = position.column.saturating_sub(1);
-        let mut at = start;
-        let mut column = 0;
-        while at < end {
-            let width = self.width(&self.source[at..at + self.char_len(at)], unit);
-            if column + width > wanted {
-                break;
-            }
-            column += width;
-            at += self.char_len(at);
-        }
-        at
-    }
-
     /// The columns `bytes` (a part of one line) take in `unit`.
     fn width(&self, bytes: &[u8], unit: ColumnUnit) -> usize {
         // Only a line with other bytes than ASCII asks how the file is
@@ -159,35 +138,6 @@ impl<'a> LineIndex<'a> {
             return bytes.len();
         }
         width(bytes, unit, self.is_utf8())
-    }
-
-    /// The length in bytes of the character at `at`.
-    fn char_len(&self, at: usize) -> usize {
-        if self.source[at] < 0x80 {
-            return 1;
-        }
-        char_len(self.source[at], self.is_utf8())
-    }
-
-    /// Where 0-based line `row` starts (the end of the file past the last).
-    fn row_start(&self, row: usize) -> usize {
-        if row == 0 {
-            return 0;
-        }
-        let blocks = self.source.len().div_ceil(BLOCK);
-        self.rows_before(blocks);
-        // The block holding the end of line `row - 1`.
-        let rows = self.rows_before_block.borrow();
-        let block = rows[..=blocks]
-            .partition_point(|&before| before < row)
-            .saturating_sub(1);
-        let (mut at, mut seen) = (block * BLOCK, rows[block]);
-        drop(rows);
-        while seen < row && at < self.source.len() {
-            at = next_line_start(self.source, line_end(self.source, at));
-            seen += 1;
-        }
-        at.min(self.source.len())
     }
 }
 
@@ -347,7 +297,7 @@ mod tests {
     }
 
     #[test]
-    fn columns_in_every_unit_and_back() {
+    fn columns_in_every_unit() {
         // `ä` is 2 bytes, one UTF-16 unit; `𝛼` 4 bytes, two units.
         let source = "X=1\näY=\"𝛼\" Z\r\nW".as_bytes();
         let index = LineIndex::new(source);
@@ -356,56 +306,8 @@ mod tests {
         assert_eq!(at(ColumnUnit::CodePoints), Position { row: 2, column: 8 });
         assert_eq!(at(ColumnUnit::Utf16), Position { row: 2, column: 9 });
         assert_eq!(at(ColumnUnit::Bytes), Position { row: 2, column: 12 });
-        for unit in [ColumnUnit::CodePoints, ColumnUnit::Utf16, ColumnUnit::Bytes] {
-            assert_eq!(index.offset_of(at(unit), unit), z, "{unit:?}");
-        }
-        // Past the line's end, past the last line, inside a pair.
-        assert_eq!(
-            index.offset_of(Position { row: 1, column: 40 }, ColumnUnit::Utf16),
-            3
-        );
-        assert_eq!(
-            index.offset_of(Position { row: 9, column: 1 }, ColumnUnit::Utf16),
-            source.len()
-        );
-        let alpha = z - 6;
-        assert_eq!(
-            index.offset_of(Position { row: 2, column: 6 }, ColumnUnit::Utf16),
-            alpha
-        );
         let latin1 = LineIndex::new(b"\xe4\xe4=1");
         assert_eq!(latin1.position_in(2, ColumnUnit::Utf16).column, 3);
-        assert_eq!(
-            latin1.offset_of(Position { row: 1, column: 3 }, ColumnUnit::Utf16),
-            2
-        );
-    }
-
-    proptest::proptest! {
-        /// Every character start maps to a position and back, in every
-        /// unit, over texts across several blocks.
-        #[test]
-        fn offsets_and_positions_are_inverse(
-            text in "([aä𝛼 ]{0,30}(\r\n|\n|\r)){0,400}",
-            picks in proptest::collection::vec(0usize..20_000, 1..20),
-        ) {
-            let source = text.as_bytes();
-            let index = LineIndex::new(source);
-            for pick in picks {
-                let mut offset = pick.min(source.len());
-                while offset < source.len() && source[offset] & 0xC0 == 0x80 {
-                    offset += 1;
-                }
-                // A CRLF's LF is not a character start of its own line's text.
-                if offset > 0 && source.get(offset) == Some(&b'\n') && source[offset - 1] == b'\r' {
-                    offset -= 1;
-                }
-                for unit in [ColumnUnit::CodePoints, ColumnUnit::Utf16, ColumnUnit::Bytes] {
-                    let position = index.position_in(offset, unit);
-                    proptest::prop_assert_eq!(index.offset_of(position, unit), offset);
-                }
-            }
-        }
     }
 
     #[test]

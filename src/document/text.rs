@@ -209,6 +209,26 @@ mod tests {
             }
         }
 
+        /// Positions agree with the command line's line index over texts
+        /// several of its 4,096-byte blocks long, in every unit.
+        #[test]
+        fn positions_agree_across_blocks(
+            text in "([aä𝛼 ]{0,30}(\r\n|\n|\r)){0,400}",
+            picks in proptest::collection::vec(0usize..20_000, 1..20),
+        ) {
+            let document = Text::new(text.clone().into_bytes());
+            let index = LineIndex::new(text.as_bytes());
+            for pick in picks {
+                let mut offset = pick.min(text.len());
+                while !text.is_char_boundary(offset) {
+                    offset += 1;
+                }
+                for unit in [ColumnUnit::Bytes, ColumnUnit::CodePoints, ColumnUnit::Utf16] {
+                    prop_assert_eq!(document.position(offset, unit), index.position_in(offset, unit));
+                }
+            }
+        }
+
         /// An edit leaves the text as if it had been read anew.
         #[test]
         fn an_edit_is_a_text_read_anew(text in texts(), with in texts(), a in 0usize..200, b in 0usize..200) {
