@@ -209,11 +209,10 @@ fn every_program() -> Vec<(String, Vec<u8>)> {
         .collect()
 }
 
-#[test]
-fn every_program_formats_idempotently_and_means_what_it_meant() {
-    let programs = every_program();
-    assert!(programs.len() > 100, "{} programs", programs.len());
-    let settings = [
+/// The settings every program is formatted under: the defaults, every
+/// other layout and case, and renumbering with two steps.
+fn settings_to_try() -> [Settings; 4] {
+    [
         Settings::default(),
         Settings {
             indent: "\t".to_string(),
@@ -232,7 +231,14 @@ fn every_program_formats_idempotently_and_means_what_it_meant() {
             case: Case::Keep,
             ..Settings::default()
         },
-    ];
+    ]
+}
+
+#[test]
+fn every_program_formats_idempotently_and_means_what_it_meant() {
+    let programs = every_program();
+    assert!(programs.len() > 100, "{} programs", programs.len());
+    let settings = settings_to_try();
     let mut changed = 0;
     for (name, source) in &programs {
         for settings in &settings {
@@ -514,20 +520,7 @@ fn hmi_rows(lines: &[&[u8]]) -> Vec<bool> {
 /// edit touches a line of one.
 #[test]
 fn no_byte_of_an_hmi_region_changes() {
-    let settings = [
-        Settings::default(),
-        Settings {
-            indent: "\t".to_string(),
-            case: Case::Lower,
-            case_names: true,
-            max_blank_lines: 0,
-            ..Settings::default()
-        },
-        Settings {
-            renumber: Some((10, 10)),
-            ..Settings::default()
-        },
-    ];
+    let settings = settings_to_try();
     let mut region_rows = 0;
     let mut changed_beside_regions = 0;
     for (name, source) in every_program() {
@@ -572,16 +565,7 @@ fn no_byte_of_an_hmi_region_changes() {
 /// and the blank lines in a row over to it.
 #[test]
 fn a_range_is_formatted_as_the_whole_program_formats_it() {
-    let settings = [
-        Settings::default(),
-        Settings {
-            indent: "\t".to_string(),
-            case: Case::Lower,
-            case_names: true,
-            max_blank_lines: 0,
-            ..Settings::default()
-        },
-    ];
+    let settings = settings_to_try();
     let mut compared = 0;
     for (name, source) in every_program() {
         let starts: Vec<usize> = sinuprep::syntax::lines::raw_lines(&source)

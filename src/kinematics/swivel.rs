@@ -459,37 +459,24 @@ mod tests {
             RotaryAxis::along("A", [1.0, 0.0, 0.0]),
         );
         let (s, c) = (40f64.to_radians().sin(), 40f64.to_radians().cos());
-        for max in [40.0 - 5e-10, 40.0, 40.0 + 5e-10] {
-            head.axes[1].limits = Some((-30.0, max));
+        // A limit of 40° on either side, a rounding inside, at and beyond it.
+        let near = |at: f64| [at - 5e-10, at, at + 5e-10];
+        let upper = near(40.0).map(|max| (-30.0, max));
+        let lower = near(-40.0).map(|min| (min, 30.0));
+        for (min, max) in upper.into_iter().chain(lower) {
+            head.axes[1].limits = Some((min, max));
             let swivel = solve(&head, &request(toward([0.0, -s, c]))).expect("valid");
             let inside: Vec<_> = swivel
                 .solutions
                 .iter()
                 .filter(|s| s.within_limits)
                 .collect();
-            assert!(!inside.is_empty(), "{max}: {:?}", swivel.solutions);
+            assert!(!inside.is_empty(), "{min}..{max}: {:?}", swivel.solutions);
             for solution in inside {
+                let a = solution.positions[1];
                 assert!(
-                    solution.positions[1] <= max,
-                    "{max}: {:?}",
-                    solution.positions
-                );
-            }
-        }
-        // The same at the lower limit.
-        for min in [-40.0 - 5e-10, -40.0, -40.0 + 5e-10] {
-            head.axes[1].limits = Some((min, 30.0));
-            let swivel = solve(&head, &request(toward([0.0, -s, c]))).expect("valid");
-            let inside: Vec<_> = swivel
-                .solutions
-                .iter()
-                .filter(|s| s.within_limits)
-                .collect();
-            assert!(!inside.is_empty(), "{min}: {:?}", swivel.solutions);
-            for solution in inside {
-                assert!(
-                    solution.positions[1] >= min,
-                    "{min}: {:?}",
+                    (min..=max).contains(&a),
+                    "{min}..{max}: {:?}",
                     solution.positions
                 );
             }

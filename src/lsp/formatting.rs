@@ -9,7 +9,7 @@ use lsp_types as lsp;
 use crate::document::text::Text;
 use crate::format::{format, format_rows, Settings};
 use crate::lsp::convert;
-use crate::span::{ColumnUnit, Span};
+use crate::span::ColumnUnit;
 use crate::syntax::program_kind;
 
 /// The edits that format `text` (or the lines `range` touches).
@@ -22,10 +22,6 @@ pub fn edits(
 ) -> Vec<lsp::TextEdit> {
     let source = text.bytes();
     let kind = program_kind(Some(name), source);
-    let within = range.map(|range| convert::span(text, range, unit));
-    let touches = |span: Span| {
-        within.is_none_or(|within| span.start <= within.end && within.start <= span.end)
-    };
     let formatted = match range {
         Some(range) => {
             let rows = range.start.line as usize..range.end.line as usize + 1;
@@ -36,7 +32,6 @@ pub fn edits(
     formatted
         .edits
         .into_iter()
-        .filter(|edit| touches(edit.span))
         .map(|edit| lsp::TextEdit {
             range: convert::range(text, edit.span, unit),
             new_text: String::from_utf8_lossy(&edit.text).into_owned(),
