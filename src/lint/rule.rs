@@ -140,11 +140,18 @@ pub trait BlockWords {
 /// The checker of a [`BlockWords`] rule: a tree line's words as the line
 /// view read them once for every rule, a plain line's from its bytes when
 /// its facts allow a finding.
-pub struct EachBlock<R>(std::marker::PhantomData<R>);
+pub struct EachBlock<R> {
+    /// A plain line's words, the buffer kept from line to line.
+    words: Vec<Address>,
+    rule: std::marker::PhantomData<R>,
+}
 
 impl<R> Default for EachBlock<R> {
     fn default() -> Self {
-        Self(std::marker::PhantomData)
+        Self {
+            words: Vec::new(),
+            rule: std::marker::PhantomData,
+        }
     }
 }
 
@@ -167,8 +174,8 @@ impl<R: BlockWords> Check for EachBlock<R> {
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
         for line in lines.iter().filter(|line| R::may_find(&line.facts)) {
-            let addresses = addresses::of_plain(file.source, line.raw.content);
-            R::check(file, None, &addresses, out);
+            addresses::of_plain_into(file.source, line.raw.content, &mut self.words);
+            R::check(file, None, &self.words, out);
         }
     }
 }
@@ -204,6 +211,8 @@ pub trait FromProgramStart: Default {
 pub struct FromStart<R> {
     rule: R,
     done: bool,
+    /// A plain line's words, the buffer kept from line to line.
+    words: Vec<Address>,
 }
 
 impl<R: FromProgramStart> FromStart<R> {
@@ -225,6 +234,7 @@ impl<R: FromProgramStart> Check for FromStart<R> {
             *self = Self {
                 rule: R::default(),
                 done: !starts_main_program(file.source, name),
+                words: std::mem::take(&mut self.words),
             };
             return;
         }
@@ -250,10 +260,13 @@ impl<R: FromProgramStart> Check for FromStart<R> {
             if self.done {
                 return;
             }
-            let addresses = addresses::of_plain(file.source, line.raw.content);
             // `L10`: a subprogram call.
-            self.done = addresses.iter().any(|a| a.is(file.source, "L"))
-                || self.rule.block(file, &addresses, false, out);
+            if line.facts.letters.contains(b'L') {
+                self.done = true;
+                return;
+            }
+            addresses::of_plain_into(file.source, line.raw.content, &mut self.words);
+            self.done = self.rule.block(file, &self.words, false, out);
         }
     }
 }
@@ -311,6 +324,8 @@ pub struct InLineOrder<R> {
     /// The 0-based line of the compensation in force.
     compensated_since: usize,
     rule: R,
+    /// A plain line's words, the buffer kept from line to line.
+    words: Vec<Address>,
 }
 
 impl<R: ModalRule> InLineOrder<R> {
@@ -365,6 +380,7 @@ impl<R: ModalRule> Check for InLineOrder<R> {
                 // Another program of the file.
                 *self = Self {
                     header_main: Some(starts_main_program(file.source, name)),
+                    words: std::mem::take(&mut self.words),
                     ..Self::default()
                 };
             }
@@ -400,9 +416,11 @@ impl<R: ModalRule> Check for InLineOrder<R> {
             if !R::may_matter(facts) {
                 continue;
             }
-            let addresses = addresses::of_plain(source, line.raw.content);
+            let mut words = std::mem::take(&mut self.words);
+            addresses::of_plain_into(source, line.raw.content, &mut words);
             // A skippable block (`/N10 ...`) is never a plain line.
-            self.step(file, line.row, None, &addresses, false, out);
+            self.step(file, line.row, None, &words, false, out);
+            self.words = words;
         }
     }
 }

@@ -4,7 +4,6 @@
 //! millions of plain lines of a CAM program.
 
 use crate::span::Span;
-use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::{Block, Expr, ExprKind, StatementKind, WordValue};
 
 /// One address word of a block.
@@ -108,39 +107,23 @@ fn literal(expr: &Expr) -> Option<Span> {
 /// line is words of a letter and a number only, so they are read without a
 /// parser.
 pub fn of_plain(source: &[u8], content: Span) -> Vec<Address> {
-    let bytes = content.of(source);
-    let words_end = memchr::memchr(b';', bytes).unwrap_or(bytes.len());
     let mut addresses = Vec::with_capacity(8);
-    let mut at = 0;
-    let mut first = true;
-    while at < words_end {
-        if is_blank(bytes[at]) {
-            at += 1;
-            continue;
-        }
-        let letter = at;
-        at += 1;
-        let value = at;
-        while at < words_end && !bytes[at].is_ascii_alphabetic() && !is_blank(bytes[at]) {
-            at += 1;
-        }
-        let number = &bytes[value..at];
-        // The parser's block number: a first word N with digits alone.
-        let is_block_number = first
-            && bytes[letter].eq_ignore_ascii_case(&b'N')
-            && number.iter().all(u8::is_ascii_digit);
-        first = false;
-        if !is_block_number {
-            let offset = content.start;
-            addresses.push(Address {
-                span: Span::new(offset + letter, offset + at),
-                name: Span::new(offset + letter, offset + value),
-                extension: None,
-                number: Some(Span::new(offset + value, offset + at)),
-            });
-        }
-    }
+    of_plain_into(source, content, &mut addresses);
     addresses
+}
+
+/// [`of_plain`] into `addresses`, emptied first: a reader of millions of
+/// lines keeps one buffer rather than one a line.
+pub fn of_plain_into(source: &[u8], content: Span, addresses: &mut Vec<Address>) {
+    addresses.clear();
+    crate::syntax::plain::words(source, content.start, |letter, end| {
+        addresses.push(Address {
+            span: Span::new(letter, end),
+            name: Span::new(letter, letter + 1),
+            extension: None,
+            number: Some(Span::new(letter + 1, end)),
+        });
+    });
 }
 
 /// Where the program ends in this block: its M2, M17 or M30 word (M02 and

@@ -380,6 +380,47 @@ fn scan_words_bytewise(bytes: &[u8]) -> Option<Words> {
     }
 }
 
+/// The address words of the plain line that starts at `start` (see
+/// [`is_plain`]), the block number left out: where each word's letter
+/// stands and where its number ends, as offsets into `source`, in order.
+/// The words stop at the comment.
+pub fn words(source: &[u8], start: usize, mut each: impl FnMut(usize, usize)) {
+    let line = &source[start..];
+    #[cfg(target_arch = "x86_64")]
+    if let Some(window) = line.first_chunk() {
+        if wide::words(window, |letter, end| each(start + letter, start + end)).is_some() {
+            return;
+        }
+    }
+    for (letter, end) in words_bytewise(line) {
+        each(start + letter, start + end);
+    }
+}
+
+/// [`words`] a byte at a time, by the scan's own steps; offsets into `content`.
+fn words_bytewise(content: &[u8]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    let mut at = 0;
+    let mut first = true;
+    std::iter::from_fn(move || loop {
+        let Step::Word {
+            letter,
+            end,
+            digits_only,
+        } = next_word(content, at)?
+        else {
+            return None;
+        };
+        at = end;
+        // The parser's block number: a first word N with digits alone.
+        let is_number = std::mem::take(&mut first)
+            && digits_only
+            && content[letter].eq_ignore_ascii_case(&b'N');
+        if !is_number {
+            return Some((letter, end));
+        }
+    })
+}
+
 enum Step {
     /// At a `;`, a line end or the end of the bytes.
     Stop(usize),

@@ -115,13 +115,8 @@ fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Wor
     let Some(first) = lowest_bit(letters) else {
         return Some(Words::new(stop, None, LetterCount::default()));
     };
-    // The block number: a first word N with digits alone.
-    let digits_from = first + 1;
-    let digits_end = digits_from + (!(numbers >> digits_from)).trailing_zeros() as usize;
-    let digits = ((1u64 << digits_end) - 1) & !((1u64 << digits_from) - 1);
-    let signed = signs & (1u64 << digits_from) != 0;
-    let is_number = window[first].eq_ignore_ascii_case(&b'N') && !signed && points & digits == 0;
-    let words = if is_number {
+    let number = block_number(window, first, numbers, signs, points);
+    let words = if number.is_some() {
         letters & (letters - 1)
     } else {
         letters
@@ -142,11 +137,74 @@ fn words_before(window: &[u8; 64], classes: &Classes, stop: usize) -> Option<Wor
         count.motions |= motion_bit(window, g_words.trailing_zeros() as usize);
         g_words &= g_words - 1;
     }
-    Some(Words::new(
-        stop,
-        is_number.then_some((first, digits_end)),
-        count,
-    ))
+    Some(Words::new(stop, number, count))
+}
+
+/// The block number, as the parser reads one: the first word (its letter at
+/// `first`) when it is N with digits alone; where its letter is and where
+/// its digits end.
+fn block_number(
+    window: &[u8; 64],
+    first: usize,
+    numbers: u64,
+    signs: u64,
+    points: u64,
+) -> Option<(usize, usize)> {
+    let digits_from = first + 1;
+    let digits_end = digits_from + (!(numbers >> digits_from)).trailing_zeros() as usize;
+    let digits = ((1u64 << digits_end) - 1) & !((1u64 << digits_from) - 1);
+    let signed = signs & (1u64 << digits_from) != 0;
+    let is_number = window[first].eq_ignore_ascii_case(&b'N') && !signed && points & digits == 0;
+    is_number.then_some((first, digits_end))
+}
+
+/// The words of a plain line whose first 64 bytes are `window`, the block
+/// number left out: where each word's letter stands and where its number
+/// ends, by the offsets of `window`; `None` when its words do not stop
+/// within the window or the CPU lacks AVX2 (the caller then reads byte by
+/// byte). The line must be plain: the grammar is not checked again.
+pub(super) fn words(window: &[u8; 64], each: impl FnMut(usize, usize)) -> Option<()> {
+    if !*HAS_FEATURES {
+        return None;
+    }
+    // SAFETY: the CPU has AVX2 (HAS_FEATURES, checked above).
+    #[allow(unsafe_code)]
+    unsafe {
+        words_avx2(window, each)
+    }
+}
+
+/// [`words`] compiled for AVX2, so that [`classify`] is inlined.
+///
+/// # Safety
+///
+/// The CPU must have AVX2.
+#[allow(unsafe_code)]
+#[target_feature(enable = "avx2,bmi1,popcnt")]
+unsafe fn words_avx2(window: &[u8; 64], mut each: impl FnMut(usize, usize)) -> Option<()> {
+    let classes = classify(window);
+    let stop = lowest_bit(classes.stops)?;
+    let before_stop = (1u64 << stop) - 1;
+    let letters = classes.letters & before_stop;
+    let numbers = classes.numbers & before_stop;
+    let signs = classes.signs & before_stop;
+    let Some(first) = lowest_bit(letters) else {
+        return Some(());
+    };
+    let mut words = letters;
+    if block_number(window, first, numbers, signs, classes.points).is_some() {
+        words &= words - 1;
+    }
+    // A word is its letter and the sign and number bytes after it; the
+    // stop is neither, so every word ends before it (below 64).
+    let value = numbers | signs;
+    while words != 0 {
+        let letter = words.trailing_zeros() as usize;
+        let end = letter + 1 + (!(value >> (letter + 1))).trailing_zeros() as usize;
+        each(letter, end);
+        words &= words - 1;
+    }
+    Some(())
 }
 
 fn lowest_bit(mask: u64) -> Option<usize> {
@@ -246,6 +304,31 @@ mod tests {
             let window = bytes.first_chunk().expect("64 bytes at least");
             if let Some(words) = scan_words(window) {
                 prop_assert_eq!(words, scan_words_bytewise(&bytes));
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(20_000))]
+
+        /// The words of a plain line read on the window are those read
+        /// byte by byte.
+        #[test]
+        fn words_agree_with_the_bytewise_reading(
+            line in r"([ \t&]{0,2}[NnGXYZBCFm][-+]?([0-9]{1,12}|[0-9]{0,6}\.[0-9]{1,6})){0,9}[ ]?(;[A-Z ]{0,8})?",
+            tail in r"[X0-9 \n]{64}",
+        ) {
+            let mut bytes = line.into_bytes();
+            if !crate::syntax::plain::is_plain(&bytes) {
+                return Ok(()); // a number longer than a position's
+            }
+            let bytewise: Vec<_> = crate::syntax::plain::words_bytewise(&bytes).collect();
+            bytes.push(b'\n');
+            bytes.extend_from_slice(tail.as_bytes());
+            let mut wide = Vec::new();
+            let window = bytes.first_chunk().expect("64 bytes at least");
+            if words(window, |letter, end| wide.push((letter, end))).is_some() {
+                prop_assert_eq!(wide, bytewise);
             }
         }
     }
