@@ -19,7 +19,7 @@ pub(crate) mod suppression;
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{Checkers, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
 use crate::registry::{cycle600_rewritable, invalid_swivel_data};
 use crate::semantic::machine::{Machine, Reading};
@@ -246,16 +246,15 @@ fn analyze_stopping<'src>(
         ..
     } = settings;
     let file = FileContext::new(source, name, kind, environment);
-    let mut checkers: Vec<_> = rules::all()
-        .into_iter()
-        .filter(|r| selection.enables(r.info.code))
-        .filter_map(|r| r.checker.map(|make| make()))
-        .collect();
+    let mut checkers = Checkers::new(
+        rules::all()
+            .into_iter()
+            .filter(|r| selection.enables(r.info.code))
+            .filter_map(|r| r.checker.map(|make| make()))
+            .collect(),
+    );
     let mut plain_run = PlainRun {
         lines: Vec::with_capacity(PlainRun::LINES),
-        watchers: (0..checkers.len())
-            .filter(|&n| checkers[n].sees_plain_lines())
-            .collect(),
     };
     let mut found = Vec::new();
     let mut suppressions = Suppressions::default();
@@ -307,20 +306,15 @@ fn analyze_stopping<'src>(
         let view = LineView::new(&tree);
         model.learn(&view);
         macros_reach_plain_lines = model.macros_reach_plain_lines();
-        for checker in &mut checkers {
-            checker.line(&file, row, &view, &mut found);
-        }
+        checkers.line(&file, row, &view, &mut found);
         model.keep(tree);
     }
     plain_run.give(&file, &mut model, &mut checkers, &mut found);
     file.complete(model.finish(kind));
     let model = file.model();
     found.extend(model.syntax.iter().cloned());
-    for checker in &mut checkers {
-        if stopped() {
-            return None;
-        }
-        checker.finish(&file, &mut found);
+    if !checkers.finish(&file, &mut found, &stopped) {
+        return None;
     }
     let analysis = match (walk, stop) {
         (false, _) => None,
@@ -437,7 +431,6 @@ fn one_finding_per_cause(kept: &mut Vec<Diagnostic>, labels: &crate::semantic::l
 /// work on a CAM program).
 struct PlainRun {
     lines: Vec<PlainLine>,
-    watchers: Vec<usize>,
 }
 
 impl PlainRun {
@@ -448,16 +441,14 @@ impl PlainRun {
         &mut self,
         file: &FileContext,
         model: &mut ModelBuilder,
-        checkers: &mut [Box<dyn Check>],
+        checkers: &mut Checkers,
         found: &mut Vec<Diagnostic>,
     ) {
         if self.lines.is_empty() {
             return;
         }
         model.plain_lines(&self.lines);
-        for &n in &self.watchers {
-            checkers[n].plain_lines(file, &self.lines, found);
-        }
+        checkers.plain_lines(file, &self.lines, found);
         self.lines.clear();
     }
 }

@@ -6,13 +6,14 @@ use std::collections::BTreeSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
 use crate::semantic::addresses::{self, Address};
+use crate::semantic::jumps::Target;
 use crate::semantic::labels::Labels;
 use crate::semantic::modal::Modal;
 pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::{Environment, Model};
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
+use crate::syntax::tree::{Block, Goto, Statement, StatementKind, Variable};
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at: its source lives for `'src`, what the
@@ -92,23 +93,90 @@ impl<'a, 'src> FileContext<'a, 'src> {
     }
 }
 
-/// A checker: fed every line in order, then told the file is over. Rules
-/// keep only what they must remember (labels, names, one state flag).
+/// What a checker is handed, beside the end of the file: each rule
+/// declares the kinds it reads, and the line pass gives it those alone,
+/// already unpacked.
+#[derive(Clone, Copy, Default, PartialEq, Eq)]
+pub struct Sees(u8);
+
+impl Sees {
+    /// Program headers ([`Check::header`]).
+    pub const HEADERS: Sees = Sees(1);
+    /// Blocks read into a tree ([`Check::block`]).
+    pub const BLOCKS: Sees = Sees(2);
+    /// The statements of blocks read into a tree ([`Check::statement`]).
+    pub const STATEMENTS: Sees = Sees(4);
+    /// Jumps, their targets read ([`Check::jump`]).
+    pub const JUMPS: Sees = Sees(8);
+    /// Plain lines, read by the scan alone ([`Check::plain_lines`]).
+    pub const PLAIN_LINES: Sees = Sees(16);
+    /// The file's end only ([`Check::finish`]).
+    pub const NOTHING: Sees = Sees(0);
+
+    fn has(self, kind: Sees) -> bool {
+        self.0 & kind.0 != 0
+    }
+}
+
+impl std::ops::BitOr for Sees {
+    type Output = Sees;
+    fn bitor(self, other: Sees) -> Sees {
+        Sees(self.0 | other.0)
+    }
+}
+
+/// A block read into a tree, as a rule sees it.
+pub struct BlockAt<'a, 'l> {
+    /// Its 0-based line.
+    pub row: usize,
+    pub block: &'l Block,
+    /// Its line, with what the line pass read of it once for every rule.
+    pub line: &'a LineView<'l>,
+}
+
+/// One statement of a block read into a tree.
+pub struct StatementAt<'a, 'l> {
+    /// Its 0-based line.
+    pub row: usize,
+    pub block: &'l Block,
+    /// Its place among the block's statements.
+    pub index: usize,
+    pub statement: &'l Statement,
+    line: &'a LineView<'l>,
+}
+
+impl<'l> StatementAt<'_, 'l> {
+    /// The variables it reads (DEF initialisers and indices included).
+    pub fn reads(&self) -> impl Iterator<Item = &'l Variable> + '_ {
+        self.line.reads(self.index)
+    }
+}
+
+/// One jump: a GOTO, GOTOF, GOTOB or GOTOC statement, or a CASE's branch.
+pub struct JumpAt<'l> {
+    /// Its 0-based line.
+    pub row: usize,
+    pub goto: &'l Goto,
+    /// Where it goes, and the span that names it; `None` for a computed
+    /// target.
+    pub target: Option<(Target, Span)>,
+}
+
+/// A checker: handed in line order what it [`Check::sees`], then told the
+/// file is over. Rules keep only what they must remember (labels, names,
+/// one state flag).
 pub trait Check {
-    fn line(
-        &mut self,
-        _file: &FileContext,
-        _row: usize,
-        _line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-    }
-    /// Whether the rule learns anything from plain lines. Most do not, and
-    /// `check` then gives them neither [`Check::plain_lines`] nor
-    /// [`Check::line`] for those lines: the parser never builds their tree.
-    fn sees_plain_lines(&self) -> bool {
-        false
-    }
+    /// The kinds of things the rule reads.
+    fn sees(&self) -> Sees;
+    /// A program header (`%_N_PART_MPF`): another program of the file starts.
+    fn header(&mut self, _file: &FileContext, _row: usize, _name: Span) {}
+    /// A block read into a tree, after its statements and jumps: every block
+    /// that is not a plain line, and plain lines where a macro may stand.
+    fn block(&mut self, _file: &FileContext, _at: &BlockAt, _out: &mut Vec<Diagnostic>) {}
+    /// Each statement of a block read into a tree, in order.
+    fn statement(&mut self, _file: &FileContext, _at: &StatementAt, _out: &mut Vec<Diagnostic>) {}
+    /// Each jump, after the statement that holds it.
+    fn jump(&mut self, _file: &FileContext, _at: &JumpAt, _out: &mut Vec<Diagnostic>) {}
     /// Plain lines in order, each run of them between other lines in
     /// slices: a call per slice rather than per line, because a CAM program
     /// is millions of them.
@@ -120,6 +188,130 @@ pub trait Check {
     ) {
     }
     fn finish(&mut self, _file: &FileContext, _out: &mut Vec<Diagnostic>) {}
+}
+
+/// The selected rules' checkers, and which of them read each kind of thing:
+/// a kind no rule reads costs nothing.
+pub(crate) struct Checkers {
+    all: Vec<Box<dyn Check>>,
+    headers: Vec<usize>,
+    blocks: Vec<usize>,
+    statements: Vec<usize>,
+    jumps: Vec<usize>,
+    plain_lines: Vec<usize>,
+}
+
+impl Checkers {
+    pub(crate) fn new(all: Vec<Box<dyn Check>>) -> Self {
+        let seeing = |kind: Sees| -> Vec<usize> {
+            (0..all.len())
+                .filter(|&n| all[n].sees().has(kind))
+                .collect()
+        };
+        Self {
+            headers: seeing(Sees::HEADERS),
+            blocks: seeing(Sees::BLOCKS),
+            statements: seeing(Sees::STATEMENTS),
+            jumps: seeing(Sees::JUMPS),
+            plain_lines: seeing(Sees::PLAIN_LINES),
+            all,
+        }
+    }
+
+    /// One line read into a tree, handed out by kind.
+    pub(crate) fn line(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        if let Some(name) = line.header {
+            for &n in &self.headers {
+                self.all[n].header(file, row, name);
+            }
+        }
+        let Some(block) = line.block else {
+            return;
+        };
+        self.statements(file, row, block, line, out);
+        let at = BlockAt { row, block, line };
+        for &n in &self.blocks {
+            self.all[n].block(file, &at, out);
+        }
+    }
+
+    fn statements(
+        &mut self,
+        file: &FileContext,
+        row: usize,
+        block: &Block,
+        line: &LineView,
+        out: &mut Vec<Diagnostic>,
+    ) {
+        for (index, statement) in block.statements.iter().enumerate() {
+            let at = StatementAt {
+                row,
+                block,
+                index,
+                statement,
+                line,
+            };
+            for &n in &self.statements {
+                self.all[n].statement(file, &at, out);
+            }
+            if self.jumps.is_empty() {
+                continue;
+            }
+            let mut hand = |goto: &Goto| {
+                let at = JumpAt {
+                    row,
+                    goto,
+                    target: crate::lint::rules::support::target(file, goto),
+                };
+                for &n in &self.jumps {
+                    self.all[n].jump(file, &at, out);
+                }
+            };
+            match &statement.kind {
+                StatementKind::Goto(goto) => hand(goto),
+                StatementKind::Case(case) => {
+                    let branches = case.branches.iter().map(|(_, goto)| goto);
+                    branches.chain(&case.default).for_each(hand);
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// A run of plain lines, to the rules that read them.
+    pub(crate) fn plain_lines(
+        &mut self,
+        file: &FileContext,
+        lines: &[PlainLine],
+        out: &mut Vec<Diagnostic>,
+    ) {
+        for &n in &self.plain_lines {
+            self.all[n].plain_lines(file, lines, out);
+        }
+    }
+
+    /// Every rule's last step, once the file is over; `false` when `stopped`
+    /// said so before one of them.
+    pub(crate) fn finish(
+        &mut self,
+        file: &FileContext,
+        out: &mut Vec<Diagnostic>,
+        stopped: impl Fn() -> bool,
+    ) -> bool {
+        for checker in &mut self.all {
+            if stopped() {
+                return false;
+            }
+            checker.finish(file, out);
+        }
+        true
+    }
 }
 
 /// A rule that looks at each block's address words alone, whatever came
@@ -156,20 +348,12 @@ impl<R> Default for EachBlock<R> {
 }
 
 impl<R: BlockWords> Check for EachBlock<R> {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if let Some(block) = line.block {
-            R::check(file, Some(block), line.addresses(file.source), out);
-        }
+    fn sees(&self) -> Sees {
+        Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        R::check(file, Some(at.block), at.line.addresses(file.source), out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
@@ -222,34 +406,27 @@ impl<R: FromProgramStart> FromStart<R> {
 }
 
 impl<R: FromProgramStart> Check for FromStart<R> {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        use crate::lint::rules::support::moves_a_named_axis;
-        if let Some(name) = line.header {
-            *self = Self {
-                rule: R::default(),
-                done: !starts_main_program(file.source, name),
-                words: std::mem::take(&mut self.words),
-            };
-            return;
-        }
-        let Some(block) = line.block.filter(|_| self.reads(file)) else {
-            return;
-        };
-        let addresses = line.addresses(file.source);
-        self.done = line.leaves_line_order(file.source)
-            || self
-                .rule
-                .block(file, addresses, moves_a_named_axis(file, block), out);
+    fn sees(&self) -> Sees {
+        Sees::HEADERS | Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn header(&mut self, file: &FileContext, _row: usize, name: Span) {
+        *self = Self {
+            rule: R::default(),
+            done: !starts_main_program(file.source, name),
+            words: std::mem::take(&mut self.words),
+        };
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        use crate::lint::rules::support::moves_a_named_axis;
+        if !self.reads(file) {
+            return;
+        }
+        let (line, source) = (at.line, file.source);
+        let named = moves_a_named_axis(file, at.block);
+        self.done = line.leaves_line_order(source)
+            || self.rule.block(file, line.addresses(source), named, out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
@@ -373,33 +550,32 @@ impl<R: ModalRule> InLineOrder<R> {
 }
 
 impl<R: ModalRule> Check for InLineOrder<R> {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        use crate::semantic::line_order::is_block_structure;
-        let Some(block) = line.block else {
-            if let Some(name) = line.header {
-                // Another program of the file.
-                *self = Self {
-                    header_main: Some(starts_main_program(file.source, name)),
-                    words: std::mem::take(&mut self.words),
-                    ..Self::default()
-                };
-            }
-            return;
+    fn sees(&self) -> Sees {
+        Sees::HEADERS | Sees::BLOCKS | Sees::PLAIN_LINES
+    }
+
+    /// Another program of the file.
+    fn header(&mut self, file: &FileContext, _row: usize, name: Span) {
+        *self = Self {
+            header_main: Some(starts_main_program(file.source, name)),
+            words: std::mem::take(&mut self.words),
+            ..Self::default()
         };
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        use crate::semantic::line_order::is_block_structure;
         if !self.reads(file) {
             return;
         }
+        let (line, block) = (at.line, at.block);
         let addresses = line.addresses(file.source);
         if is_block_structure(block) || line.leaves_line_order(file.source) {
             self.modal = Modal::default();
             return;
         }
         let frames = (!line.plain).then_some(block);
-        self.step(file, row, frames, addresses, block.skip.is_some(), out);
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
+        self.step(file, at.row, frames, addresses, block.skip.is_some(), out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {

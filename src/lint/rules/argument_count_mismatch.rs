@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::span::Span;
@@ -40,35 +40,28 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
-        for statement in &block.statements {
-            match &statement.kind {
-                StatementKind::Proc(proc) => {
-                    self.declared
-                        .insert(upper(file.source, proc.name.span), proc.parameters.len());
-                }
-                StatementKind::Extern { name, parameters } => {
-                    let count = parameters.map_or(0, |p| parameter_count(p.of(file.source)));
-                    self.declared.insert(upper(file.source, name.span), count);
-                }
-                StatementKind::Call(call) => {
-                    self.calls.push((
-                        upper(file.source, call.name.span),
-                        call.arguments.items.len(),
-                        call.arguments.span,
-                    ));
-                }
-                _ => {}
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+        let source = file.source;
+        match &at.statement.kind {
+            StatementKind::Proc(proc) => {
+                let name = upper(source, proc.name.span);
+                self.declared.insert(name, proc.parameters.len());
             }
+            StatementKind::Extern { name, parameters } => {
+                let count = parameters.map_or(0, |p| parameter_count(p.of(source)));
+                self.declared.insert(upper(source, name.span), count);
+            }
+            StatementKind::Call(call) => {
+                let name = upper(source, call.name.span);
+                let arguments = &call.arguments;
+                self.calls
+                    .push((name, arguments.items.len(), arguments.span));
+            }
+            _ => {}
         }
     }
 

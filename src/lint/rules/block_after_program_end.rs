@@ -3,8 +3,8 @@
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
-use crate::lint::rules::support::{self, gotos, target, Target};
+use crate::lint::rule::{BlockAt, Check, FileContext, JumpAt, LineView, PlainLine, Sees};
+use crate::lint::rules::support::{self, Target};
 use crate::semantic::addresses::{self, is_end_word};
 use crate::semantic::blocks::opener;
 use crate::span::Span;
@@ -51,30 +51,27 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        if line.header.is_some() {
-            self.end = None;
-            self.depth = 0;
-            return;
-        }
-        let Some(block) = line.block else {
-            return;
-        };
-        for goto in gotos(block) {
-            match target(file, goto) {
-                Some((Target::Number(number), _)) => {
-                    self.jumped_to.insert(number);
-                }
-                Some(_) => {}
-                None => self.computed_jump = true,
+    fn sees(&self) -> Sees {
+        Sees::HEADERS | Sees::JUMPS | Sees::BLOCKS | Sees::PLAIN_LINES
+    }
+
+    fn header(&mut self, _file: &FileContext, _row: usize, _name: Span) {
+        self.end = None;
+        self.depth = 0;
+    }
+
+    fn jump(&mut self, _file: &FileContext, at: &JumpAt, _out: &mut Vec<Diagnostic>) {
+        match &at.target {
+            Some((Target::Number(number), _)) => {
+                self.jumped_to.insert(*number);
             }
+            Some(_) => {}
+            None => self.computed_jump = true,
         }
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, _out: &mut Vec<Diagnostic>) {
+        let (block, line) = (at.block, at.line);
         if block
             .statements
             .iter()
@@ -108,10 +105,6 @@ impl Check for Checker {
                 self.end = Some(end);
             }
         }
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], _out: &mut Vec<Diagnostic>) {

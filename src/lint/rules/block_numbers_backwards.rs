@@ -1,7 +1,7 @@
 //! N014 `block-numbers-backwards`: Finds a block number lower than the one before it.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{BlockAt, Check, FileContext, PlainLine, Sees};
 use crate::semantic::environment::holds_machine_data;
 use crate::syntax::plain::digits_value;
 use crate::syntax::tree::{Block, BlockNumber, StatementKind};
@@ -44,22 +44,14 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if let Some(block) = line.block {
-            if !is_machine_data(file.source, block) {
-                self.number(file, block.number, out);
-            }
-        }
+    fn sees(&self) -> Sees {
+        Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        if !is_machine_data(file.source, at.block) {
+            self.number(file, at.block.number, out);
+        }
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {

@@ -1,7 +1,7 @@
 //! N008 `block-too-long`: Finds blocks longer than 512 characters (comment included).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{BlockAt, Check, FileContext, PlainLine, Sees};
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -28,18 +28,12 @@ pub struct Checker;
 const LIMIT: usize = crate::syntax::BLOCK_CHARACTERS;
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        check_length(file, line.raw.content, out);
+    fn sees(&self) -> Sees {
+        Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        check_length(file, at.line.raw.content, out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {

@@ -3,7 +3,7 @@
 use std::collections::HashSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{BlockAt, Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::semantic::model::is_stopre;
 use crate::syntax::tree::{Call, Statement, StatementKind, Word};
@@ -50,29 +50,27 @@ fn beside_a_call(source: &[u8], statement: &Statement) -> bool {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
-        };
-        let source = file.source;
-        for statement in &block.statements {
-            match &statement.kind {
-                StatementKind::Extern { name, .. } => {
-                    self.declared.insert(upper(source, name.span));
-                }
-                StatementKind::Proc(proc) => {
-                    self.declared.insert(upper(source, proc.name.span));
-                }
-                _ => {}
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS | Sees::BLOCKS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+        match &at.statement.kind {
+            StatementKind::Extern { name, .. } => {
+                self.declared.insert(upper(file.source, name.span));
             }
+            StatementKind::Proc(proc) => {
+                self.declared.insert(upper(file.source, proc.name.span));
+            }
+            _ => {}
         }
-        if block.statements.len() < 2 {
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        let (source, block) = (file.source, at.block);
+        // A plain line (read into a tree where a macro may stand) is address
+        // words alone.
+        if at.line.plain || block.statements.len() < 2 {
             return;
         }
         // `SETINT(1) PRIO=4 CYCLE_T LIFTFAST`: the routine an interrupt

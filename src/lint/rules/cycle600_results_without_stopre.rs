@@ -1,7 +1,7 @@
 //! C614 `cycle600-results-without-stopre`: Finds a read of `_CYC600_1` .. `_CYC600_6` after a CYCLE600 call with no STOPRE between them.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::semantic::model::is_stopre;
 use crate::syntax::tree::StatementKind;
@@ -34,32 +34,35 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
-        };
-        for (index, statement) in block.statements.iter().enumerate() {
-            match &statement.kind {
-                _ if is_stopre(file.source, statement) => self.pending = None,
-                StatementKind::Call(call) if call.name.is(file.source, "CYCLE600") => {
-                    self.pending = Some(row)
-                }
-                _ => {
-                    let Some(call_row) = self.pending else {
-                        continue;
-                    };
-                    for variable in line.reads(index) {
-                        if upper(file.source, variable.name.span).starts_with("_CYC600_") {
-                            out.push(
-                                RULE.at(variable.span)
-                                    .message(format!("CYCLE600 results read without STOPRE after the call on line {}", call_row + 1))
-                                    .label("may still hold the previous results")
-                                    .help("write STOPRE in its own block after the CYCLE600 call"),
-                            );
-                            self.pending = None;
-                            break;
-                        }
-                    }
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let (source, statement) = (file.source, at.statement);
+        match &statement.kind {
+            _ if is_stopre(source, statement) => self.pending = None,
+            StatementKind::Call(call) if call.name.is(source, "CYCLE600") => {
+                self.pending = Some(at.row)
+            }
+            _ => {
+                let Some(call_row) = self.pending else {
+                    return;
+                };
+                let mut reads = at.reads();
+                if let Some(variable) =
+                    reads.find(|v| upper(source, v.name.span).starts_with("_CYC600_"))
+                {
+                    out.push(
+                        RULE.at(variable.span)
+                            .message(format!(
+                                "CYCLE600 results read without STOPRE after the call on line {}",
+                                call_row + 1
+                            ))
+                            .label("may still hold the previous results")
+                            .help("write STOPRE in its own block after the CYCLE600 call"),
+                    );
+                    self.pending = None;
                 }
             }
         }

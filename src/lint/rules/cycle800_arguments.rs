@@ -1,7 +1,7 @@
 //! N009 `cycle800-arguments`: Checks CYCLE800 calls: at most 16 arguments, and a literal `_MODE`
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::rotation::{Kind, Sequence};
 use crate::syntax::tree::{ExprKind, StatementKind};
 
@@ -32,53 +32,50 @@ Write the 14 classic (or 16 extended) parameters; for axis by axis use 57, 45, 5
 pub struct Checker;
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let StatementKind::Call(call) = &at.statement.kind else {
             return;
         };
-        for statement in &block.statements {
-            let StatementKind::Call(call) = &statement.kind else {
-                continue;
-            };
-            if !call.name.is(file.source, "CYCLE800") {
-                continue;
-            }
-            let count = call.arguments.items.len();
-            if count > 16 {
-                out.push(
+        if !call.name.is(file.source, "CYCLE800") {
+            return;
+        }
+        let count = call.arguments.items.len();
+        if count > 16 {
+            out.push(
                     RULE.at(call.arguments.span)
                         .message(format!("CYCLE800 takes at most 16 arguments (14 classic, 2 more extended), this call has {count}"))
                         .label(format!("{count} arguments"))
                         .help("write _FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR (then _FR_I, _DMODE)"),
                 );
-                continue;
-            }
-            let Some(mode) = call.arguments.items.get(3) else {
-                continue;
-            };
-            let Some(ExprKind::Number(number)) = mode.value.as_ref().map(|v| &v.kind) else {
-                continue;
-            };
-            let code = number.value as i64;
-            let axis_by_axis = (code >> 6) & 0b11 == 0;
-            if axis_by_axis
-                && code & 0b111111 != 0
-                && Sequence::from_code(code & 0b111111, Kind::Intrinsic)
-                    .map_or(true, |s| s.is_proper_euler())
-            {
-                out.push(
-                    RULE.at(mode.span)
-                        .message(format!("_MODE {code} is not an axis-by-axis order CYCLE800 knows"))
-                        .label("invalid _MODE")
-                        .help("axis by axis: 57 (XYZ), 45 (XZY), 54 (YXZ), 30 (YZX), 39 (ZXY), 27 (ZYX)"),
-                );
-            }
+            return;
+        }
+        let Some(mode) = call.arguments.items.get(3) else {
+            return;
+        };
+        let Some(ExprKind::Number(number)) = mode.value.as_ref().map(|v| &v.kind) else {
+            return;
+        };
+        let code = number.value as i64;
+        let axis_by_axis = (code >> 6) & 0b11 == 0;
+        if axis_by_axis
+            && code & 0b111111 != 0
+            && Sequence::from_code(code & 0b111111, Kind::Intrinsic)
+                .map_or(true, |s| s.is_proper_euler())
+        {
+            out.push(
+                RULE.at(mode.span)
+                    .message(format!(
+                        "_MODE {code} is not an axis-by-axis order CYCLE800 knows"
+                    ))
+                    .label("invalid _MODE")
+                    .help(
+                        "axis by axis: 57 (XYZ), 45 (XZY), 54 (YXZ), 30 (YZX), 39 (ZXY), 27 (ZYX)",
+                    ),
+            );
         }
     }
 }

@@ -1,7 +1,7 @@
 //! C615 `cycle800-fed-extrinsic`: Finds a CYCLE800 whose angles are `_CYC600_2` .. `_CYC600_4` from a CYCLE600 that computed
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::syntax::tree::{ExprKind, StatementKind};
 
@@ -48,38 +48,37 @@ fn literal_inexout(call: &crate::syntax::tree::Call) -> Option<f64> {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block else {
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let StatementKind::Call(call) = &at.statement.kind else {
             return;
         };
-        for statement in &block.statements {
-            let StatementKind::Call(call) = &statement.kind else {
+        if call.name.is(file.source, "CYCLE600") {
+            self.extrinsic_from = (literal_inexout(call) == Some(0.0)).then_some(at.row);
+            return;
+        }
+        let Some(from) = self.extrinsic_from else {
+            return;
+        };
+        if !call.name.is(file.source, "CYCLE800") {
+            return;
+        }
+        for argument in call.arguments.items.iter().skip(7).take(3) {
+            let Some(expr) = &argument.value else {
                 continue;
             };
-            if call.name.is(file.source, "CYCLE600") {
-                self.extrinsic_from = (literal_inexout(call) == Some(0.0)).then_some(row);
-                continue;
-            }
-            let Some(from) = self.extrinsic_from else {
-                continue;
-            };
-            if !call.name.is(file.source, "CYCLE800") {
-                continue;
-            }
-            for argument in call.arguments.items.iter().skip(7).take(3) {
-                let Some(expr) = &argument.value else {
-                    continue;
-                };
-                let text = upper(file.source, expr.span);
-                if matches!(text.as_str(), "_CYC600_2" | "_CYC600_3" | "_CYC600_4") {
-                    out.push(
+            let text = upper(file.source, expr.span);
+            if matches!(text.as_str(), "_CYC600_2" | "_CYC600_3" | "_CYC600_4") {
+                out.push(
                         RULE.at(expr.span)
                             .message(format!("CYCLE800 gets {text}, an extrinsic angle from the CYCLE600 on line {}", from + 1))
                             .label("extrinsic angle")
                             .help("CYCLE800 takes intrinsic angles only: set _INEXOUT=1 in the CYCLE600 call, or let sinuprep rewrite emit the CYCLE800"),
                     );
-                    break;
-                }
+                break;
             }
         }
     }

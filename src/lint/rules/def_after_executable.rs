@@ -1,7 +1,7 @@
 //! N006 `def-after-executable`: Finds a DEF after the first executable block of a program or subprogram.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{Check, FileContext, PlainLine, Sees, StatementAt};
 use crate::semantic::model::is_declaration;
 use crate::syntax::tree::StatementKind;
 
@@ -32,8 +32,8 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS | Sees::PLAIN_LINES
     }
 
     /// Address words are executable.
@@ -48,35 +48,25 @@ impl Check for Checker {
         }
     }
 
-    fn line(
-        &mut self,
-        _file: &FileContext,
-        row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
-        for statement in &block.statements {
-            match &statement.kind {
-                StatementKind::Def(_) => {
-                    if let Some(first) = self.first_executable {
-                        out.push(
-                            RULE.at(statement.span)
-                                .message(format!(
-                                    "DEF after the first executable block (line {})",
-                                    first + 1
-                                ))
-                                .label("too late")
-                                .help(format!("move this DEF above line {}", first + 1)),
-                        );
-                    }
+    fn statement(&mut self, _file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let statement = at.statement;
+        match &statement.kind {
+            StatementKind::Def(_) => {
+                if let Some(first) = self.first_executable {
+                    out.push(
+                        RULE.at(statement.span)
+                            .message(format!(
+                                "DEF after the first executable block (line {})",
+                                first + 1
+                            ))
+                            .label("too late")
+                            .help(format!("move this DEF above line {}", first + 1)),
+                    );
                 }
-                _ if is_declaration(statement) => {}
-                _ => {
-                    self.first_executable.get_or_insert(row);
-                }
+            }
+            _ if is_declaration(statement) => {}
+            _ => {
+                self.first_executable.get_or_insert(at.row);
             }
         }
     }

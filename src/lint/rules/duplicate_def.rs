@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext};
+use crate::lint::rule::{Check, FileContext, Sees};
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -31,6 +31,10 @@ Remove one definition or rename one variable."#,
 pub struct Checker;
 
 impl Check for Checker {
+    fn sees(&self) -> Sees {
+        Sees::NOTHING
+    }
+
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         let mut first: HashMap<&str, (usize, Span)> = HashMap::new();
         for symbol in &file.model().symbols {

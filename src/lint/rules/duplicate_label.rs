@@ -1,7 +1,7 @@
 //! N003 `duplicate-label`: Finds a GOTO or GOTOC whose label is written both after it and before it.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, JumpAt, Sees};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::syntax::tree::GotoKind;
@@ -60,30 +60,23 @@ struct Jump {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
+    fn sees(&self) -> Sees {
+        Sees::JUMPS
+    }
+
+    fn jump(&mut self, _file: &FileContext, at: &JumpAt, _out: &mut Vec<Diagnostic>) {
+        let keyword = match at.goto.kind {
+            GotoKind::Both => "GOTO",
+            GotoKind::Conditional => "GOTOC",
+            _ => return,
         };
-        for goto in gotos(block) {
-            let keyword = match goto.kind {
-                GotoKind::Both => "GOTO",
-                GotoKind::Conditional => "GOTOC",
-                _ => continue,
-            };
-            if let Some((Target::Label(name), span)) = target(file, goto) {
-                self.jumps.push(Jump {
-                    name,
-                    span,
-                    row,
-                    keyword,
-                });
-            }
+        if let Some((Target::Label(name), span)) = &at.target {
+            self.jumps.push(Jump {
+                name: name.clone(),
+                span: *span,
+                row: at.row,
+                keyword,
+            });
         }
     }
 

@@ -1,7 +1,7 @@
 //! N020 `empty-program`: Finds a program without a single block that executes anything.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext};
+use crate::lint::rule::{Check, FileContext, Sees};
 use crate::lint::rules::support::is_definition_file;
 use crate::span::Span;
 
@@ -33,6 +33,10 @@ Write the program, or remove the file."#,
 pub struct Checker;
 
 impl Check for Checker {
+    fn sees(&self) -> Sees {
+        Sees::NOTHING
+    }
+
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         if file.model().first_executable.is_some() || is_definition_file(file.name) {
             return;

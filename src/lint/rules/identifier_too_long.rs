@@ -1,7 +1,7 @@
 //! N011 `identifier-too-long`: Finds variable, label and procedure names longer than 31 characters.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{BlockAt, Check, FileContext, Sees, StatementAt};
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 
@@ -31,37 +31,38 @@ pub struct Checker;
 const LIMIT: usize = 31;
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        _file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
-        let mut names: Vec<Span> = block.label.iter().map(|l| l.span).collect();
-        for statement in &block.statements {
-            match &statement.kind {
-                StatementKind::Def(def) => names.extend(def.variables.iter().map(|d| d.name.span)),
-                StatementKind::Proc(proc) => {
-                    names.push(proc.name.span);
-                    names.extend(proc.parameters.iter().map(|p| p.declarator.name.span));
-                }
-                _ => {}
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS | Sees::BLOCKS
+    }
+
+    /// A label is its block's.
+    fn block(&mut self, _file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        check(at.block.label.iter().map(|l| l.span), out);
+    }
+
+    fn statement(&mut self, _file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        match &at.statement.kind {
+            StatementKind::Def(def) => check(def.variables.iter().map(|d| d.name.span), out),
+            StatementKind::Proc(proc) => {
+                let parameters = proc.parameters.iter().map(|p| p.declarator.name.span);
+                check(std::iter::once(proc.name.span).chain(parameters), out);
             }
+            _ => {}
         }
-        for span in names.into_iter().filter(|s| s.len() > LIMIT) {
-            out.push(
-                RULE.at(span)
-                    .message(format!(
-                        "name of {} characters; the control allows {LIMIT}",
-                        span.len()
-                    ))
-                    .label("too long")
-                    .help("shorten the name"),
-            );
-        }
+    }
+}
+
+/// A finding on each of `names` longer than the control allows.
+fn check(names: impl Iterator<Item = Span>, out: &mut Vec<Diagnostic>) {
+    for span in names.filter(|s| s.len() > LIMIT) {
+        out.push(
+            RULE.at(span)
+                .message(format!(
+                    "name of {} characters; the control allows {LIMIT}",
+                    span.len()
+                ))
+                .label("too long")
+                .help("shorten the name"),
+        );
     }
 }

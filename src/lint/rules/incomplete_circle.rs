@@ -1,7 +1,7 @@
 //! N025 `incomplete-circle`: Finds a circle (`G2`, `G3`) without its centre or radius, or with a radius and no end point.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{BlockAt, Check, FileContext, Sees};
 use crate::lint::rules::support::moves_a_named_axis;
 use crate::semantic::addresses;
 use crate::semantic::addresses::Address;
@@ -106,24 +106,20 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if line.header.is_some() {
-            self.circle = None;
-            return;
-        }
-        let Some(block) = line.block else {
-            return;
-        };
+    fn sees(&self) -> Sees {
+        Sees::HEADERS | Sees::BLOCKS | Sees::PLAIN_LINES
+    }
+
+    fn header(&mut self, _file: &FileContext, _row: usize, _name: Span) {
+        self.circle = None;
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        let block = at.block;
         if block.label.is_some() {
             self.circle = None;
         }
-        let addresses = line.addresses(file.source);
+        let addresses = at.line.addresses(file.source);
         let mut circle = Circle::of(file.source, addresses);
         circle.end |= moves_a_named_axis(file, block);
         let words_only = block
@@ -134,10 +130,6 @@ impl Check for Checker {
         if !words_only || (block.skip.is_some() && motion_of(file.source, addresses).is_some()) {
             self.circle = None;
         }
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {

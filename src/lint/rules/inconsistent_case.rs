@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -34,48 +34,42 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let statement = at.statement;
+        if let StatementKind::Def(def) = &statement.kind {
+            for d in &def.variables {
+                let text = String::from_utf8_lossy(d.name.span.of(file.source)).into_owned();
+                self.spelling
+                    .entry(text.to_ascii_uppercase())
+                    .or_insert(text);
+            }
             return;
-        };
-        for (index, statement) in block.statements.iter().enumerate() {
-            if let StatementKind::Def(def) = &statement.kind {
-                for d in &def.variables {
-                    let text = String::from_utf8_lossy(d.name.span.of(file.source)).into_owned();
-                    self.spelling
-                        .entry(text.to_ascii_uppercase())
-                        .or_insert(text);
-                }
-                continue;
-            }
-            let mut used: Vec<&crate::syntax::tree::Variable> = line.reads(index).collect();
-            if let StatementKind::Assign(assign) = &statement.kind {
-                used.push(&assign.target);
-            }
-            for variable in used {
-                let text = String::from_utf8_lossy(variable.name.span.of(file.source));
-                if let Some(defined) = self.spelling.get(&text.to_ascii_uppercase()) {
-                    if *defined != text {
-                        // The control ignores case: the fix changes nothing it runs.
-                        out.push(
-                            RULE.at(variable.name.span)
-                                .message(format!("`{text}` is defined as `{defined}`"))
-                                .label("other capitals")
-                                .help(format!("write `{defined}`"))
-                                .fix(Fix::replace(
-                                    format!("write `{defined}`"),
-                                    Applicability::Safe,
-                                    variable.name.span,
-                                    defined.as_bytes(),
-                                )),
-                        );
-                    }
+        }
+        let mut used: Vec<&crate::syntax::tree::Variable> = at.reads().collect();
+        if let StatementKind::Assign(assign) = &statement.kind {
+            used.push(&assign.target);
+        }
+        for variable in used {
+            let text = String::from_utf8_lossy(variable.name.span.of(file.source));
+            if let Some(defined) = self.spelling.get(&text.to_ascii_uppercase()) {
+                if *defined != text {
+                    // The control ignores case: the fix changes nothing it runs.
+                    out.push(
+                        RULE.at(variable.name.span)
+                            .message(format!("`{text}` is defined as `{defined}`"))
+                            .label("other capitals")
+                            .help(format!("write `{defined}`"))
+                            .fix(Fix::replace(
+                                format!("write `{defined}`"),
+                                Applicability::Safe,
+                                variable.name.span,
+                                defined.as_bytes(),
+                            )),
+                    );
                 }
             }
         }

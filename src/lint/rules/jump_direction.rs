@@ -1,7 +1,7 @@
 //! N002 `jump-direction`: Finds a GOTOF whose label exists only before the jump, and a GOTOB whose label exists only after it.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, JumpAt, Sees};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::syntax::tree::GotoKind;
@@ -34,23 +34,14 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
-        if line.plain {
-            return;
-        }
-        for goto in gotos(block) {
-            if let Some((target, span)) = target(file, goto) {
-                self.jumps.push((target, span, row, goto.kind));
-            }
+    fn sees(&self) -> Sees {
+        Sees::JUMPS
+    }
+
+    fn jump(&mut self, _file: &FileContext, at: &JumpAt, _out: &mut Vec<Diagnostic>) {
+        if let Some((target, span)) = &at.target {
+            self.jumps
+                .push((target.clone(), *span, at.row, at.goto.kind));
         }
     }
 

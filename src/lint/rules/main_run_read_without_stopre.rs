@@ -3,7 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use std::collections::HashMap;
 
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::semantic::eval::key;
 use crate::semantic::model::is_stopre;
@@ -48,38 +48,39 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(&mut self, file: &FileContext, row: usize, line: &LineView, out: &mut Vec<Diagnostic>) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let statement = at.statement;
+        if is_stopre(file.source, statement) {
+            self.written.clear();
             return;
-        };
-        for (index, statement) in block.statements.iter().enumerate() {
-            if is_stopre(file.source, statement) {
-                self.written.clear();
+        }
+        if let StatementKind::SyncAction(sync) = &statement.kind {
+            for name in sync_writes(file.source, sync) {
+                self.written.insert(name, at.row);
+            }
+            return;
+        }
+        if self.written.is_empty() {
+            return;
+        }
+        for variable in at.reads() {
+            let name = upper(file.source, variable.name.span);
+            if name.starts_with('$') {
                 continue;
             }
-            if let StatementKind::SyncAction(sync) = &statement.kind {
-                for name in sync_writes(file.source, sync) {
-                    self.written.insert(name, row);
-                }
+            let read = if variable.indices.is_empty() {
+                key(&name, &[])
+            } else {
+                name
+            };
+            let Some(action) = self.written.remove(&read) else {
                 continue;
-            }
-            if self.written.is_empty() {
-                continue;
-            }
-            for variable in line.reads(index) {
-                let name = upper(file.source, variable.name.span);
-                if name.starts_with('$') {
-                    continue;
-                }
-                let read = if variable.indices.is_empty() {
-                    key(&name, &[])
-                } else {
-                    name
-                };
-                let Some(action) = self.written.remove(&read) else {
-                    continue;
-                };
-                out.push(
+            };
+            out.push(
                     RULE.at(variable.span)
                         .message(format!(
                             "`{read}` is written in the main run by the synchronized action on line {}, and read here without STOPRE",
@@ -88,7 +89,6 @@ impl Check for Checker {
                         .label("may read the value before the action wrote it")
                         .help("write STOPRE in its own block before this one"),
                 );
-            }
         }
     }
 }

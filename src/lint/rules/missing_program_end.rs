@@ -1,7 +1,7 @@
 //! N010 `missing-program-end`: Finds a program whose last block neither ends it (M30, M2, M17, RET, a REPOS command) nor jumps unconditionally (GOTO, ENDLOOP).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{BlockAt, Check, FileContext, PlainLine, Sees};
 use crate::lint::rules::support::{command_name, is_definition_file, program_end};
 use crate::span::Span;
 use crate::syntax::tree::{StatementKind, WordValue};
@@ -49,23 +49,14 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        _file: &FileContext,
-        row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        if line
-            .block
-            .is_some_and(|block| !block.statements.is_empty() || block.unparsed.is_some())
-        {
-            self.last = Some(row);
-        }
+    fn sees(&self) -> Sees {
+        Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
-    fn sees_plain_lines(&self) -> bool {
-        true
+    fn block(&mut self, _file: &FileContext, at: &BlockAt, _out: &mut Vec<Diagnostic>) {
+        if !at.block.statements.is_empty() || at.block.unparsed.is_some() {
+            self.last = Some(at.row);
+        }
     }
 
     fn plain_lines(

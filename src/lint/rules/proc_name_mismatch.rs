@@ -1,8 +1,9 @@
 //! N017 `proc-name-mismatch`: Finds a PROC whose name differs from its file's name.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
+use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -50,64 +51,57 @@ fn program_name(text: &str) -> &str {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        if let Some(header) = line.header {
-            self.program = Some(program_name(&upper(file.source, header)).to_string());
-            self.proc_seen = false;
-            return;
-        }
-        let Some(block) = line.block else {
+    fn sees(&self) -> Sees {
+        Sees::HEADERS | Sees::STATEMENTS
+    }
+
+    fn header(&mut self, file: &FileContext, _row: usize, name: Span) {
+        self.program = Some(program_name(&upper(file.source, name)).to_string());
+        self.proc_seen = false;
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let StatementKind::Proc(proc) = &at.statement.kind else {
             return;
         };
-        for statement in &block.statements {
-            let StatementKind::Proc(proc) = &statement.kind else {
-                continue;
-            };
-            if std::mem::replace(&mut self.proc_seen, true) {
-                continue;
-            }
-            let stem = match &self.program {
-                Some(program) => program.clone(),
-                None => {
-                    let Some(stem) = std::path::Path::new(file.name)
-                        .file_stem()
-                        .and_then(|s| s.to_str())
-                    else {
-                        continue;
-                    };
-                    if file.name == "<stdin>" {
-                        continue;
-                    }
-                    program_name(&stem.to_ascii_uppercase()).to_string()
+        if std::mem::replace(&mut self.proc_seen, true) {
+            return;
+        }
+        let stem = match &self.program {
+            Some(program) => program.clone(),
+            None => {
+                let Some(stem) = std::path::Path::new(file.name)
+                    .file_stem()
+                    .and_then(|s| s.to_str())
+                else {
+                    return;
+                };
+                if file.name == "<stdin>" {
+                    return;
                 }
-            };
-            let stem = stem.as_str();
-            let name = upper(file.source, proc.name.span);
-            if name != stem {
-                // A file name that is no NC name (`3_KATUSHKA`) cannot be the PROC's.
-                let help = if is_nc_name(stem) {
-                    format!("rename the PROC to `{stem}`, or the file to `{name}.SPF`")
-                } else {
-                    format!("rename the file to `{name}.SPF` (`{stem}` is not a valid NC name: two letters or `_` first)")
-                };
-                let container = if self.program.is_some() {
-                    "program"
-                } else {
-                    "file"
-                };
-                out.push(
-                    RULE.at(proc.name.span)
-                        .message(format!("PROC `{name}` is in a {container} named `{stem}`"))
-                        .label("differs from the file name")
-                        .help(help),
-                );
+                program_name(&stem.to_ascii_uppercase()).to_string()
             }
+        };
+        let stem = stem.as_str();
+        let name = upper(file.source, proc.name.span);
+        if name != stem {
+            // A file name that is no NC name (`3_KATUSHKA`) cannot be the PROC's.
+            let help = if is_nc_name(stem) {
+                format!("rename the PROC to `{stem}`, or the file to `{name}.SPF`")
+            } else {
+                format!("rename the file to `{name}.SPF` (`{stem}` is not a valid NC name: two letters or `_` first)")
+            };
+            let container = if self.program.is_some() {
+                "program"
+            } else {
+                "file"
+            };
+            out.push(
+                RULE.at(proc.name.span)
+                    .message(format!("PROC `{name}` is in a {container} named `{stem}`"))
+                    .label("differs from the file name")
+                    .help(help),
+            );
         }
     }
 }

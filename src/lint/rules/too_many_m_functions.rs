@@ -1,7 +1,7 @@
 //! N021 `too-many-m-functions`: Finds a block with more than five M functions.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView, PlainLine};
+use crate::lint::rule::{BlockAt, Check, FileContext, PlainLine, Sees};
 use crate::span::Span;
 use crate::syntax::tree::{Statement, StatementKind, Word};
 
@@ -33,16 +33,12 @@ const MOST: usize = 5;
 pub struct Checker;
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
+    fn sees(&self) -> Sees {
+        Sees::BLOCKS | Sees::PLAIN_LINES
+    }
+
+    fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
+        let block = at.block;
         let is_m = |s: &&Statement| matches!(&s.kind, StatementKind::Word(Word { address, .. }) if address.is(file.source, "M"));
         // Counted first: most blocks have none, and then nothing is collected.
         if block.statements.iter().filter(is_m).count() > MOST {
@@ -54,10 +50,6 @@ impl Check for Checker {
                 .collect();
             report(&m_words, out);
         }
-    }
-
-    fn sees_plain_lines(&self) -> bool {
-        true
     }
 
     /// A run of plain lines is one stretch of the file: one search for `M`

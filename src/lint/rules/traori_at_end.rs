@@ -1,7 +1,7 @@
 //! N012 `traori-at-end`: Finds a main program that switches on TRAORI and ends with it still active.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::command_name;
 use crate::span::Span;
 use crate::syntax::ProgramKind;
@@ -39,25 +39,18 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+        let Some(name) = command_name(at.statement) else {
             return;
         };
-        for statement in &block.statements {
-            let Some(name) = command_name(statement) else {
-                continue;
-            };
-            if name.is(file.source, "TRAORI") {
-                self.active = Some(statement.span);
-            } else if name.is(file.source, "TRAFOOF") {
-                self.active = None;
-            }
+        if name.is(file.source, "TRAORI") {
+            self.active = Some(at.statement.span);
+        } else if name.is(file.source, "TRAFOOF") {
+            self.active = None;
         }
     }
 

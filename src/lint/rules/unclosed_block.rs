@@ -1,7 +1,7 @@
 //! N004 `unclosed-block`: Finds IF, WHILE, FOR, LOOP and REPEAT blocks that are not closed, closed by the wrong keyword, or
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext};
+use crate::lint::rule::{Check, FileContext, Sees};
 use crate::semantic::blocks::Fault;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -33,6 +33,10 @@ Add or correct the closing keyword."#,
 pub struct Checker;
 
 impl Check for Checker {
+    fn sees(&self) -> Sees {
+        Sees::NOTHING
+    }
+
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         out.extend(file.model().blocks.faults.iter().map(|fault| {
             match *fault {

@@ -1,7 +1,7 @@
 //! N001 `undefined-label`: Finds GOTOF, GOTOB, GOTO, GOTOC and CASE jumps to a label or block number that the program does not have, and REPEAT labels it does not have.
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, JumpAt, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::suggest::Nearest;
@@ -48,38 +48,30 @@ struct Jump {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block else {
-            return;
-        };
-        if line.plain {
-            return;
+    fn sees(&self) -> Sees {
+        Sees::JUMPS | Sees::STATEMENTS
+    }
+
+    fn jump(&mut self, _file: &FileContext, at: &JumpAt, _out: &mut Vec<Diagnostic>) {
+        if let Some((target, span)) = &at.target {
+            self.jumps.push(Jump {
+                target: target.clone(),
+                span: *span,
+                tolerant: at.goto.kind == GotoKind::Conditional,
+                repeat: false,
+            });
         }
-        for goto in gotos(block) {
-            if let Some((target, span)) = target(file, goto) {
-                self.jumps.push(Jump {
-                    target,
-                    span,
-                    tolerant: goto.kind == GotoKind::Conditional,
-                    repeat: false,
-                });
-            }
-        }
-        for statement in &block.statements {
-            if let StatementKind::Repeat { targets, .. } = &statement.kind {
-                self.jumps.extend(targets.iter().map(|name| Jump {
-                    target: Target::Label(upper(file.source, name.span)),
-                    span: name.span,
-                    tolerant: false,
-                    repeat: true,
-                }));
-            }
+    }
+
+    /// The labels a REPEAT names.
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+        if let StatementKind::Repeat { targets, .. } = &at.statement.kind {
+            self.jumps.extend(targets.iter().map(|name| Jump {
+                target: Target::Label(upper(file.source, name.span)),
+                span: name.span,
+                tolerant: false,
+                repeat: true,
+            }));
         }
     }
 

@@ -3,7 +3,7 @@
 use std::collections::{HashMap, HashSet};
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::suggest::Nearest;
@@ -111,54 +111,48 @@ fn is_axis_identifier(name: &str) -> bool {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
-        };
-        for (index, statement) in block.statements.iter().enumerate() {
-            let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
-            for variable in line.reads(index) {
-                if axes.contains(&variable.name.span) {
-                    continue;
-                }
-                let name = upper(file.source, variable.name.span);
-                if is_user_name(&name)
-                    && !self.defined.contains_key(&name)
-                    && !file.environment.defines(&name)
-                    && !PREDEFINED.contains(&name.as_str())
-                    && !is_global_r_parameter(&name)
-                    && !is_axis_identifier(&name)
-                    && self.reported.insert(name.clone())
-                {
-                    out.push(self.undefined(name, variable.name.span));
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+        let statement = at.statement;
+        let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
+        for variable in at.reads() {
+            if axes.contains(&variable.name.span) {
+                continue;
+            }
+            let name = upper(file.source, variable.name.span);
+            if is_user_name(&name)
+                && !self.defined.contains_key(&name)
+                && !file.environment.defines(&name)
+                && !PREDEFINED.contains(&name.as_str())
+                && !is_global_r_parameter(&name)
+                && !is_axis_identifier(&name)
+                && self.reported.insert(name.clone())
+            {
+                out.push(self.undefined(name, variable.name.span));
+            }
+        }
+        match &statement.kind {
+            StatementKind::Def(def) => {
+                for d in &def.variables {
+                    self.define(upper(file.source, d.name.span), Some(def.data_type.kind));
                 }
             }
-            match &statement.kind {
-                StatementKind::Def(def) => {
-                    for d in &def.variables {
-                        self.define(upper(file.source, d.name.span), Some(def.data_type.kind));
-                    }
+            StatementKind::Proc(proc) => {
+                for p in &proc.parameters {
+                    let name = upper(file.source, p.declarator.name.span);
+                    self.define(name, Some(p.data_type.kind));
                 }
-                StatementKind::Proc(proc) => {
-                    for p in &proc.parameters {
-                        let name = upper(file.source, p.declarator.name.span);
-                        self.define(name, Some(p.data_type.kind));
-                    }
-                }
-                StatementKind::Assign(assign) => {
-                    self.define(upper(file.source, assign.target.name.span), None)
-                }
-                StatementKind::For { variable, .. } => {
-                    self.define(upper(file.source, variable.span), None)
-                }
-                _ => {}
             }
+            StatementKind::Assign(assign) => {
+                self.define(upper(file.source, assign.target.name.span), None)
+            }
+            StatementKind::For { variable, .. } => {
+                self.define(upper(file.source, variable.span), None)
+            }
+            _ => {}
         }
     }
 }

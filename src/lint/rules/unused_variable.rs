@@ -3,7 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use std::collections::HashSet;
 
-use crate::lint::rule::{Check, FileContext, LineView};
+use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::syntax::tree::{upper, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -38,25 +38,19 @@ pub struct Checker {
 }
 
 impl Check for Checker {
-    fn line(
-        &mut self,
-        file: &FileContext,
-        _row: usize,
-        line: &LineView,
-        _out: &mut Vec<Diagnostic>,
-    ) {
-        let Some(block) = line.block.filter(|_| !line.plain) else {
-            return;
-        };
-        for statement in &block.statements {
-            if let StatementKind::IndirectCall {
-                target: Some(target),
-                ..
-            } = &statement.kind
-            {
-                self.called_through
-                    .extend(names_outside_strings(target.of(file.source)));
-            }
+    fn sees(&self) -> Sees {
+        Sees::STATEMENTS
+    }
+
+    /// The names an indirect call (`CALL "PART" << _SUFFIX`) reads.
+    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+        if let StatementKind::IndirectCall {
+            target: Some(target),
+            ..
+        } = &at.statement.kind
+        {
+            let names = names_outside_strings(target.of(file.source));
+            self.called_through.extend(names);
         }
     }
 
