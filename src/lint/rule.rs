@@ -13,7 +13,7 @@ pub use crate::semantic::model::{LineView, PlainLine};
 use crate::semantic::{Environment, Model};
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::{Block, Goto, Statement, StatementKind, Variable};
+use crate::syntax::tree::{Block, Call, Goto, Statement, StatementKind, Variable};
 use crate::syntax::ProgramKind;
 
 /// The file a rule is looking at: its source lives for `'src`, what the
@@ -110,6 +110,8 @@ impl Sees {
     pub const JUMPS: Sees = Sees(8);
     /// Plain lines, read by the scan alone ([`Check::plain_lines`]).
     pub const PLAIN_LINES: Sees = Sees(16);
+    /// Calls with arguments (`CYCLE800(...)`, [`Check::call`]).
+    pub const CALLS: Sees = Sees(32);
     /// The file's end only ([`Check::finish`]).
     pub const NOTHING: Sees = Sees(0);
 
@@ -152,6 +154,13 @@ impl<'l> StatementAt<'_, 'l> {
     }
 }
 
+/// One call with arguments (`CYCLE800(...)`).
+pub struct CallAt<'l> {
+    /// Its 0-based line.
+    pub row: usize,
+    pub call: &'l Call,
+}
+
 /// One jump: a GOTO, GOTOF, GOTOB or GOTOC statement, or a CASE's branch.
 pub struct JumpAt<'l> {
     /// Its 0-based line.
@@ -175,6 +184,8 @@ pub trait Check {
     fn block(&mut self, _file: &FileContext, _at: &BlockAt, _out: &mut Vec<Diagnostic>) {}
     /// Each statement of a block read into a tree, in order.
     fn statement(&mut self, _file: &FileContext, _at: &StatementAt, _out: &mut Vec<Diagnostic>) {}
+    /// Each call with arguments, after its statement.
+    fn call(&mut self, _file: &FileContext, _at: &CallAt, _out: &mut Vec<Diagnostic>) {}
     /// Each jump, after the statement that holds it.
     fn jump(&mut self, _file: &FileContext, _at: &JumpAt, _out: &mut Vec<Diagnostic>) {}
     /// Plain lines in order, each run of them between other lines in
@@ -197,6 +208,7 @@ pub(crate) struct Checkers {
     headers: Vec<usize>,
     blocks: Vec<usize>,
     statements: Vec<usize>,
+    calls: Vec<usize>,
     jumps: Vec<usize>,
     plain_lines: Vec<usize>,
 }
@@ -212,6 +224,7 @@ impl Checkers {
             headers: seeing(Sees::HEADERS),
             blocks: seeing(Sees::BLOCKS),
             statements: seeing(Sees::STATEMENTS),
+            calls: seeing(Sees::CALLS),
             jumps: seeing(Sees::JUMPS),
             plain_lines: seeing(Sees::PLAIN_LINES),
             all,
@@ -259,6 +272,12 @@ impl Checkers {
             };
             for &n in &self.statements {
                 self.all[n].statement(file, &at, out);
+            }
+            if let StatementKind::Call(call) = &statement.kind {
+                let at = CallAt { row, call };
+                for &n in &self.calls {
+                    self.all[n].call(file, &at, out);
+                }
             }
             if self.jumps.is_empty() {
                 continue;
@@ -314,19 +333,46 @@ impl Checkers {
     }
 }
 
+/// A rule that reads the finished model alone (N004, N007, N020):
+/// [`AtEnd`] is its checker.
+pub trait OnModel {
+    fn check(file: &FileContext, out: &mut Vec<Diagnostic>);
+}
+
+/// The checker of an [`OnModel`] rule.
+pub struct AtEnd<R>(std::marker::PhantomData<R>);
+
+impl<R> Default for AtEnd<R> {
+    fn default() -> Self {
+        Self(std::marker::PhantomData)
+    }
+}
+
+impl<R: OnModel> Check for AtEnd<R> {
+    fn sees(&self) -> Sees {
+        Sees::NOTHING
+    }
+
+    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+        R::check(file, out);
+    }
+}
+
 /// A rule that looks at each block's address words alone, whatever came
 /// before it (N022-N025): [`EachBlock`] is its checker.
 pub trait BlockWords {
     /// Whether a plain line with these scanned facts can hold a finding: the
     /// facts decide for most lines of a CAM program without reading a word.
     fn may_find(facts: &PlainFacts) -> bool;
-    /// The findings of one block; `block` is its tree, `None` for a plain line.
-    fn check(
-        file: &FileContext,
-        block: Option<&Block>,
-        addresses: &[Address],
-        out: &mut Vec<Diagnostic>,
-    );
+    /// The findings of one block.
+    fn check(file: &FileContext, words: &Words, out: &mut Vec<Diagnostic>);
+}
+
+/// A block's address words, as a [`BlockWords`] rule sees them.
+pub struct Words<'a> {
+    /// Its tree; `None` for a plain line.
+    pub block: Option<&'a Block>,
+    pub addresses: &'a [Address],
 }
 
 /// The checker of a [`BlockWords`] rule: a tree line's words as the line
@@ -353,13 +399,23 @@ impl<R: BlockWords> Check for EachBlock<R> {
     }
 
     fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
-        R::check(file, Some(at.block), at.line.addresses(file.source), out);
+        let addresses = at.line.addresses(file.source);
+        let block = Some(at.block);
+        R::check(file, &Words { block, addresses }, out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
         for line in lines.iter().filter(|line| R::may_find(&line.facts)) {
             addresses::of_plain_into(file.source, line.raw.content, &mut self.words);
-            R::check(file, None, &self.words, out);
+            let addresses = &self.words;
+            R::check(
+                file,
+                &Words {
+                    block: None,
+                    addresses,
+                },
+                out,
+            );
         }
     }
 }
@@ -376,15 +432,15 @@ pub struct Rule {
 /// its checker. Subprograms are not read (their caller's state holds in
 /// them), nor definition files.
 pub trait FromProgramStart: Default {
-    /// One more block; `named` says that it moves an axis the machine
-    /// names. Gives `true` once the rule has its answer.
-    fn block(
-        &mut self,
-        file: &FileContext,
-        addresses: &[Address],
-        named: bool,
-        out: &mut Vec<Diagnostic>,
-    ) -> bool;
+    /// One more block. Gives `true` once the rule has its answer.
+    fn block(&mut self, file: &FileContext, at: &Moves, out: &mut Vec<Diagnostic>) -> bool;
+}
+
+/// A block as a [`FromProgramStart`] rule sees it.
+pub struct Moves<'a> {
+    pub addresses: &'a [Address],
+    /// It moves an axis the machine names (`XC=10`).
+    pub named: bool,
 }
 
 /// The checker of a [`FromProgramStart`] rule: it stops at the first jump,
@@ -424,9 +480,13 @@ impl<R: FromProgramStart> Check for FromStart<R> {
             return;
         }
         let (line, source) = (at.line, file.source);
+        if line.leaves_line_order(source) {
+            self.done = true;
+            return;
+        }
+        let addresses = line.addresses(source);
         let named = moves_a_named_axis(file, at.block);
-        self.done = line.leaves_line_order(source)
-            || self.rule.block(file, line.addresses(source), named, out);
+        self.done = self.rule.block(file, &Moves { addresses, named }, out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
@@ -443,7 +503,15 @@ impl<R: FromProgramStart> Check for FromStart<R> {
                 return;
             }
             addresses::of_plain_into(file.source, line.raw.content, &mut self.words);
-            self.done = self.rule.block(file, &self.words, false, out);
+            let addresses = &self.words;
+            self.done = self.rule.block(
+                file,
+                &Moves {
+                    addresses,
+                    named: false,
+                },
+                out,
+            );
         }
     }
 }

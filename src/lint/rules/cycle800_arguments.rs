@@ -1,9 +1,9 @@
 //! N009 `cycle800-arguments`: Checks CYCLE800 calls: at most 16 arguments, and a literal `_MODE`
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
+use crate::lint::rule::{CallAt, Check, FileContext, Sees};
 use crate::rotation::{Kind, Sequence};
-use crate::syntax::tree::{ExprKind, StatementKind};
+use crate::syntax::tree::ExprKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N009",
@@ -33,13 +33,11 @@ pub struct Checker;
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::STATEMENTS
+        Sees::CALLS
     }
 
-    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
-        let StatementKind::Call(call) = &at.statement.kind else {
-            return;
-        };
+    fn call(&mut self, file: &FileContext, at: &CallAt, out: &mut Vec<Diagnostic>) {
+        let call = at.call;
         if !call.name.is(file.source, "CYCLE800") {
             return;
         }

@@ -1,9 +1,9 @@
 //! C615 `cycle800-fed-extrinsic`: Finds a CYCLE800 whose angles are `_CYC600_2` .. `_CYC600_4` from a CYCLE600 that computed
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
+use crate::lint::rule::{CallAt, Check, FileContext, Sees};
 use crate::lint::rules::support::*;
-use crate::syntax::tree::{ExprKind, StatementKind};
+use crate::syntax::tree::ExprKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C615",
@@ -49,13 +49,11 @@ fn literal_inexout(call: &crate::syntax::tree::Call) -> Option<f64> {
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::STATEMENTS
+        Sees::CALLS
     }
 
-    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
-        let StatementKind::Call(call) = &at.statement.kind else {
-            return;
-        };
+    fn call(&mut self, file: &FileContext, at: &CallAt, out: &mut Vec<Diagnostic>) {
+        let call = at.call;
         if call.name.is(file.source, "CYCLE600") {
             self.extrinsic_from = (literal_inexout(call) == Some(0.0)).then_some(at.row);
             return;

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees};
+use crate::lint::rule::{FileContext, OnModel};
 use crate::span::Span;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -27,15 +27,10 @@ Remove one definition or rename one variable."#,
 };
 
 /// The definitions are the model's ([`crate::semantic::Model::symbols`]).
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn sees(&self) -> Sees {
-        Sees::NOTHING
-    }
-
-    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+impl OnModel for Checker {
+    fn check(file: &FileContext, out: &mut Vec<Diagnostic>) {
         let mut first: HashMap<&str, (usize, Span)> = HashMap::new();
         for symbol in &file.model().symbols {
             match first.get(symbol.name.as_str()) {

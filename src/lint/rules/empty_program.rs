@@ -1,7 +1,7 @@
 //! N020 `empty-program`: Finds a program without a single block that executes anything.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees};
+use crate::lint::rule::{FileContext, OnModel};
 use crate::lint::rules::support::is_definition_file;
 use crate::span::Span;
 
@@ -29,15 +29,10 @@ Write the program, or remove the file."#,
 };
 
 /// Reads the model's first executable block once the pass is over.
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn sees(&self) -> Sees {
-        Sees::NOTHING
-    }
-
-    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+impl OnModel for Checker {
+    fn check(file: &FileContext, out: &mut Vec<Diagnostic>) {
         if file.model().first_executable.is_some() || is_definition_file(file.name) {
             return;
         }

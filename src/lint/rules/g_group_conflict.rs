@@ -1,13 +1,13 @@
 //! N023 `g-group-conflict`: Finds two G functions of one group in a block (`G0 G1`).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rule::{BlockWords, FileContext, Words};
 use crate::lint::rules::support::group_conflicts;
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::{g_group, is_syntax_defining, keyword_g_group};
 use crate::span::Span;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::{Block, StatementKind};
+use crate::syntax::tree::StatementKind;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N023",
@@ -52,12 +52,8 @@ impl BlockWords for Checker {
     }
 
     /// One finding per group, from its first function to the first other one.
-    fn check(
-        file: &FileContext,
-        block: Option<&Block>,
-        addresses: &[Address],
-        out: &mut Vec<Diagnostic>,
-    ) {
+    fn check(file: &FileContext, words: &Words, out: &mut Vec<Diagnostic>) {
+        let (block, addresses) = (words.block, words.addresses);
         let source = file.source;
         let mut functions: Vec<Function> = addresses
             .iter()

@@ -1,12 +1,11 @@
 //! N024 `m-group-conflict`: Finds two M functions of one group in a block (`M3 M4`).
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rule::{BlockWords, FileContext, Words};
 use crate::lint::rules::support::{both, group_conflicts};
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::m_group;
 use crate::syntax::plain::PlainFacts;
-use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N024",
@@ -43,12 +42,8 @@ impl BlockWords for Checker {
 
     /// One finding per group and extension, from its first function to the
     /// first other one.
-    fn check(
-        file: &FileContext,
-        _block: Option<&Block>,
-        addresses: &[Address],
-        out: &mut Vec<Diagnostic>,
-    ) {
+    fn check(file: &FileContext, words: &Words, out: &mut Vec<Diagnostic>) {
+        let addresses = words.addresses;
         let source = file.source;
         for ((group, _), first, second) in group_conflicts(addresses, |a| grouped(source, a)) {
             let (first_text, second_text) = both(source, first, second);

@@ -1,9 +1,8 @@
 //! N026 `missing-feed-rate`: Finds the first feed motion (`G1`, `G2`, `G3`) of a main program before any feed rate F.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{FileContext, FromProgramStart};
+use crate::lint::rule::{FileContext, FromProgramStart, Moves};
 use crate::lint::rules::support::feed_move;
-use crate::semantic::addresses::Address;
 use crate::semantic::modal::Modal;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -44,13 +43,8 @@ pub struct Checker {
 impl FromProgramStart for Checker {
     /// The state after one more block; the finding when it moves at a feed
     /// with none programmed. Answered once a feed rate is programmed.
-    fn block(
-        &mut self,
-        file: &FileContext,
-        addresses: &[Address],
-        moves: bool,
-        out: &mut Vec<Diagnostic>,
-    ) -> bool {
+    fn block(&mut self, file: &FileContext, at: &Moves, out: &mut Vec<Diagnostic>) -> bool {
+        let (addresses, moves) = (at.addresses, at.named);
         let source = file.source;
         self.modal.apply(source, addresses);
         if self.modal.feed {

@@ -36,151 +36,71 @@ pub mod undefined_variable;
 pub mod unused_suppression;
 pub mod unused_variable;
 
-use crate::lint::rule::{Check, EachBlock, FromStart, InLineOrder, Rule};
+use crate::lint::rule::{AtEnd, Check, EachBlock, FromStart, InLineOrder, Rule};
 
 fn checker<C: Check + Default + 'static>() -> Box<dyn Check> {
     Box::new(C::default())
 }
 
+/// The rules of the modules named, each module's `Checker` its checker:
+/// `in` names the checker that reads the program for it (`AtEnd`,
+/// `EachBlock`, `FromStart`, `InLineOrder`), `: none` says that its findings come from
+/// elsewhere (the suppressions).
+macro_rules! rules {
+    ($($module:ident $(in $reader:ident)? $(: $none:ident)?,)*) => {
+        vec![$(Rule {
+            info: &$module::RULE,
+            checker: rules!(@checker $module $($reader)? $(: $none)?),
+        },)*]
+    };
+    (@checker $module:ident : none) => {
+        None
+    };
+    (@checker $module:ident) => {
+        Some(checker::<$module::Checker>)
+    };
+    (@checker $module:ident $reader:ident) => {
+        Some(checker::<$reader<$module::Checker>>)
+    };
+}
+
 /// All rules, sorted by code: the linter's own and those of the [`crate::registry`].
 pub fn all() -> Vec<Rule> {
-    let mut rules = vec![
-        Rule {
-            info: &unused_suppression::RULE,
-            checker: None,
-        },
-        Rule {
-            info: &undefined_label::RULE,
-            checker: Some(checker::<undefined_label::Checker>),
-        },
-        Rule {
-            info: &jump_direction::RULE,
-            checker: Some(checker::<jump_direction::Checker>),
-        },
-        Rule {
-            info: &duplicate_label::RULE,
-            checker: Some(checker::<duplicate_label::Checker>),
-        },
-        Rule {
-            info: &unclosed_block::RULE,
-            checker: Some(checker::<unclosed_block::Checker>),
-        },
-        Rule {
-            info: &undefined_variable::RULE,
-            checker: Some(checker::<undefined_variable::Checker>),
-        },
-        Rule {
-            info: &def_after_executable::RULE,
-            checker: Some(checker::<def_after_executable::Checker>),
-        },
-        Rule {
-            info: &duplicate_def::RULE,
-            checker: Some(checker::<duplicate_def::Checker>),
-        },
-        Rule {
-            info: &block_too_long::RULE,
-            checker: Some(checker::<block_too_long::Checker>),
-        },
-        Rule {
-            info: &cycle800_arguments::RULE,
-            checker: Some(checker::<cycle800_arguments::Checker>),
-        },
-        Rule {
-            info: &missing_program_end::RULE,
-            checker: Some(checker::<missing_program_end::Checker>),
-        },
-        Rule {
-            info: &identifier_too_long::RULE,
-            checker: Some(checker::<identifier_too_long::Checker>),
-        },
-        Rule {
-            info: &traori_at_end::RULE,
-            checker: Some(checker::<traori_at_end::Checker>),
-        },
-        Rule {
-            info: &main_run_read_without_stopre::RULE,
-            checker: Some(checker::<main_run_read_without_stopre::Checker>),
-        },
-        Rule {
-            info: &block_numbers_backwards::RULE,
-            checker: Some(checker::<block_numbers_backwards::Checker>),
-        },
-        Rule {
-            info: &inconsistent_case::RULE,
-            checker: Some(checker::<inconsistent_case::Checker>),
-        },
-        Rule {
-            info: &unused_variable::RULE,
-            checker: Some(checker::<unused_variable::Checker>),
-        },
-        Rule {
-            info: &proc_name_mismatch::RULE,
-            checker: Some(checker::<proc_name_mismatch::Checker>),
-        },
-        Rule {
-            info: &argument_count_mismatch::RULE,
-            checker: Some(checker::<argument_count_mismatch::Checker>),
-        },
-        Rule {
-            info: &call_shares_block::RULE,
-            checker: Some(checker::<call_shares_block::Checker>),
-        },
-        Rule {
-            info: &empty_program::RULE,
-            checker: Some(checker::<empty_program::Checker>),
-        },
-        Rule {
-            info: &too_many_m_functions::RULE,
-            checker: Some(checker::<too_many_m_functions::Checker>),
-        },
-        Rule {
-            info: &repeated_address::RULE,
-            checker: Some(checker::<EachBlock<repeated_address::Checker>>),
-        },
-        Rule {
-            info: &g_group_conflict::RULE,
-            checker: Some(checker::<EachBlock<g_group_conflict::Checker>>),
-        },
-        Rule {
-            info: &m_group_conflict::RULE,
-            checker: Some(checker::<EachBlock<m_group_conflict::Checker>>),
-        },
-        Rule {
-            info: &incomplete_circle::RULE,
-            checker: Some(checker::<incomplete_circle::Checker>),
-        },
-        Rule {
-            info: &missing_feed_rate::RULE,
-            checker: Some(checker::<FromStart<missing_feed_rate::Checker>>),
-        },
-        Rule {
-            info: &block_after_program_end::RULE,
-            checker: Some(checker::<block_after_program_end::Checker>),
-        },
-        Rule {
-            info: &transformation_with_radius_compensation::RULE,
-            checker: Some(checker::<InLineOrder<transformation_with_radius_compensation::Checker>>),
-        },
-        Rule {
-            info: &plane_change_with_radius_compensation::RULE,
-            checker: Some(checker::<InLineOrder<plane_change_with_radius_compensation::Checker>>),
-        },
-        Rule {
-            info: &modal_state_at_end::RULE,
-            checker: Some(checker::<InLineOrder<modal_state_at_end::Checker>>),
-        },
-        Rule {
-            info: &spindle_not_started::RULE,
-            checker: Some(checker::<FromStart<spindle_not_started::Checker>>),
-        },
-        Rule {
-            info: &cycle600_results_without_stopre::RULE,
-            checker: Some(checker::<cycle600_results_without_stopre::Checker>),
-        },
-        Rule {
-            info: &cycle800_fed_extrinsic::RULE,
-            checker: Some(checker::<cycle800_fed_extrinsic::Checker>),
-        },
+    let mut rules = rules![
+        unused_suppression: none,
+        undefined_label,
+        jump_direction,
+        duplicate_label,
+        unclosed_block in AtEnd,
+        undefined_variable,
+        def_after_executable,
+        duplicate_def in AtEnd,
+        block_too_long,
+        cycle800_arguments,
+        missing_program_end,
+        identifier_too_long,
+        traori_at_end,
+        main_run_read_without_stopre,
+        block_numbers_backwards,
+        inconsistent_case,
+        unused_variable,
+        proc_name_mismatch,
+        argument_count_mismatch,
+        call_shares_block,
+        empty_program in AtEnd,
+        too_many_m_functions,
+        repeated_address in EachBlock,
+        g_group_conflict in EachBlock,
+        m_group_conflict in EachBlock,
+        incomplete_circle,
+        missing_feed_rate in FromStart,
+        block_after_program_end,
+        transformation_with_radius_compensation in InLineOrder,
+        plane_change_with_radius_compensation in InLineOrder,
+        modal_state_at_end in InLineOrder,
+        spindle_not_started in FromStart,
+        cycle600_results_without_stopre,
+        cycle800_fed_extrinsic,
     ];
     rules.extend(crate::registry::ALL.iter().map(|&info| Rule {
         info,

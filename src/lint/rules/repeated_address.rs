@@ -3,11 +3,10 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{BlockWords, FileContext};
+use crate::lint::rule::{BlockWords, FileContext, Words};
 use crate::lint::rules::support::both;
 use crate::semantic::addresses::Address;
 use crate::syntax::plain::{Letters, PlainFacts};
-use crate::syntax::tree::Block;
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N022",
@@ -52,12 +51,8 @@ impl BlockWords for Checker {
 
     /// One finding per repeated address, at its second word (a third one is the
     /// same mistake). Linear in the block's words: a block may hold thousands.
-    fn check(
-        file: &FileContext,
-        _block: Option<&Block>,
-        addresses: &[Address],
-        out: &mut Vec<Diagnostic>,
-    ) {
+    fn check(file: &FileContext, words: &Words, out: &mut Vec<Diagnostic>) {
+        let addresses = words.addresses;
         let source = file.source;
         if !may_repeat(source, addresses) {
             return;

@@ -1,7 +1,7 @@
 //! N029 `spindle-not-started`: Finds the first feed motion of a main program that sets a spindle speed but has not started the spindle.
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{FileContext, FromProgramStart};
+use crate::lint::rule::{FileContext, FromProgramStart, Moves};
 use crate::lint::rules::support::feed_move;
 use crate::semantic::addresses::Address;
 use crate::semantic::modal::Modal;
@@ -63,13 +63,8 @@ impl FromProgramStart for Checker {
     /// The state after one more block; the finding when it feeds with a
     /// speed set and the spindle not started. Answered once the spindle is
     /// started, stopped, positioned or may be (a machine's own M function).
-    fn block(
-        &mut self,
-        file: &FileContext,
-        addresses: &[Address],
-        moves: bool,
-        out: &mut Vec<Diagnostic>,
-    ) -> bool {
+    fn block(&mut self, file: &FileContext, at: &Moves, out: &mut Vec<Diagnostic>) -> bool {
+        let (addresses, moves) = (at.addresses, at.named);
         let source = file.source;
         for address in addresses {
             if address.is(source, "S") {

@@ -1,7 +1,7 @@
 //! N004 `unclosed-block`: Finds IF, WHILE, FOR, LOOP and REPEAT blocks that are not closed, closed by the wrong keyword, or
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees};
+use crate::lint::rule::{FileContext, OnModel};
 use crate::semantic::blocks::Fault;
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -29,15 +29,10 @@ Add or correct the closing keyword."#,
 
 /// The findings are the model's block matching's faults (`semantic::blocks`),
 /// the matching the walk and the formatter follow.
-#[derive(Default)]
 pub struct Checker;
 
-impl Check for Checker {
-    fn sees(&self) -> Sees {
-        Sees::NOTHING
-    }
-
-    fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
+impl OnModel for Checker {
+    fn check(file: &FileContext, out: &mut Vec<Diagnostic>) {
         out.extend(file.model().blocks.faults.iter().map(|fault| {
             match *fault {
                 Fault::LeftOpen { open, closer, row } => {
