@@ -30,8 +30,9 @@ impl Severity {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnostic {
-    pub code: &'static str,
-    pub name: &'static str,
+    /// The rule that found it: its code, name and documentation.
+    pub rule: &'static RuleInfo,
+    /// The rule's severity, or another where the finding says so (GOTOC).
     pub severity: Severity,
     pub message: String,
     pub span: Span,
@@ -95,11 +96,10 @@ impl Fix {
 impl Diagnostic {
     /// Diagnostics are made by their rule, [`RuleInfo::at`], so that every
     /// code raised is one `sinuprep rule` documents.
-    fn new(code: &'static str, name: &'static str, severity: Severity, span: Span) -> Self {
+    fn new(rule: &'static RuleInfo, span: Span) -> Self {
         Self {
-            code,
-            name,
-            severity,
+            rule,
+            severity: rule.severity,
             message: String::new(),
             span,
             label: Cow::Borrowed(""),
@@ -107,6 +107,21 @@ impl Diagnostic {
             fix: None,
             related: None,
         }
+    }
+
+    /// The rule's code (`N005`).
+    pub fn code(&self) -> &'static str {
+        self.rule.code
+    }
+
+    /// The rule's name (`undefined-variable`).
+    pub fn name(&self) -> &'static str {
+        self.rule.name
+    }
+
+    /// Whether `rule` found it.
+    pub fn is(&self, rule: &RuleInfo) -> bool {
+        std::ptr::eq(self.rule, rule) || self.rule.code == rule.code
     }
 
     pub fn related(mut self, span: Span, message: impl Into<String>) -> Self {
@@ -138,8 +153,9 @@ impl Diagnostic {
     }
 }
 
-/// A rule's identity and documentation.
-#[derive(Debug)]
+/// A rule's identity and documentation: one `static` a rule, which its
+/// findings point at.
+#[derive(Debug, PartialEq)]
 pub struct RuleInfo {
     /// Stable code: `S...` syntax, `C6..` CYCLE600, `N...` general NC.
     pub code: &'static str,
@@ -152,7 +168,7 @@ pub struct RuleInfo {
 
 impl RuleInfo {
     /// A diagnostic of this rule at `span`.
-    pub fn at(&self, span: Span) -> Diagnostic {
-        Diagnostic::new(self.code, self.name, self.severity, span)
+    pub fn at(&'static self, span: Span) -> Diagnostic {
+        Diagnostic::new(self, span)
     }
 }

@@ -27,7 +27,7 @@ fn survive(name: &str, source: &[u8]) -> Vec<&'static str> {
         assert!(
             finding.span.end <= source.len(),
             "{name}: {} outside the input",
-            finding.code
+            finding.code()
         );
     }
     let model = Model::of(source);
@@ -41,7 +41,7 @@ fn survive(name: &str, source: &[u8]) -> Vec<&'static str> {
         support::syntax_errors(source),
         "{name}: the rewrite changed the syntax errors"
     );
-    let mut codes: Vec<&'static str> = findings.iter().map(|d| d.code).collect();
+    let mut codes: Vec<&'static str> = findings.iter().map(|d| d.code()).collect();
     codes.sort_unstable();
     codes.dedup();
     codes

@@ -56,8 +56,11 @@ fn lint_fixture(path: &Path) {
         ..lint::Settings::default()
     };
     let diagnostics = lint::check(&source, name, program_kind(Some(name), &source), &settings);
-    let fired = diagnostics.iter().any(|d| d.code == code);
-    let diagnostics: Vec<_> = diagnostics.into_iter().filter(|d| d.code == code).collect();
+    let fired = diagnostics.iter().any(|d| d.code() == code);
+    let diagnostics: Vec<_> = diagnostics
+        .into_iter()
+        .filter(|d| d.code() == code)
+        .collect();
     assert_eq!(fired, triggers, "{name}: {diagnostics:#?}");
     let report = FileReport {
         name,
@@ -456,7 +459,7 @@ fn blocks_after_the_end_are_reported_once() {
             &lint::Settings::default(),
         )
         .iter()
-        .map(|d| d.code)
+        .map(|d| d.code())
         .filter(|c| ["N010", "N027"].contains(c))
         .collect()
     };
@@ -487,7 +490,7 @@ fn a_syntax_error_in_a_swivel_data_line_is_reported_once() {
             ..lint::Settings::default()
         };
         let found = lint::check(source, "P.MPF", ProgramKind::Main, &settings);
-        let s002 = found.iter().filter(|d| d.code == "S002").count();
+        let s002 = found.iter().filter(|d| d.code() == "S002").count();
         assert_eq!(s002, 1, "swivel data: {swivel_data}: {found:#?}");
     }
 }

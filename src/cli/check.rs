@@ -77,13 +77,13 @@ impl Unchecked {
         if settings.environment.given {
             return Self::default();
         }
-        let undefined = crate::lint::rules::undefined_variable::RULE.code;
+        let undefined = &crate::lint::rules::undefined_variable::RULE;
         Self {
             calls: outcome.unresolved_calls.iter().cloned().collect(),
             undefined_names: outcome
                 .diagnostics
                 .iter()
-                .filter(|d| d.code == undefined && d.fix.is_none())
+                .filter(|d| d.is(undefined) && d.fix.is_none())
                 .count(),
             names_as_operators: outcome.names_as_operators,
         }
@@ -391,11 +391,10 @@ fn check_file(
         notes: opened.unchecked(&file.bytes),
         machine: settings.machine.as_ref().map(|on| {
             let selection = &settings.selection;
-            let kept = on
-                .machine
-                .diagnostics
-                .iter()
-                .filter(|d| selection.enables(d.code) && d.severity >= selection.severity_min);
+            let kept =
+                on.machine.diagnostics.iter().filter(|d| {
+                    selection.enables(d.code()) && d.severity >= selection.severity_min
+                });
             (on.clone(), kept.cloned().collect())
         }),
     };

@@ -606,6 +606,6 @@ fn json(
         "call": String::from_utf8_lossy(site.statement.of(source)),
         "arguments": arguments,
         "evaluation": evaluation,
-        "diagnostics": site.diagnostics.iter().map(|d| serde_json::json!({ "code": d.code, "severity": d.severity, "message": d.message })).collect::<Vec<_>>(),
+        "diagnostics": site.diagnostics.iter().map(|d| serde_json::json!({ "code": d.code(), "severity": d.severity, "message": d.message })).collect::<Vec<_>>(),
     })
 }

@@ -43,7 +43,7 @@ pub fn short(report: &FileReport, out: &mut String) {
         out.push_str(&format!(
             "{name}:{row}:{column}: {}[{}] {}\n",
             diagnostic.severity.as_str(),
-            diagnostic.code,
+            diagnostic.code(),
             diagnostic.message
         ));
     }
@@ -210,7 +210,8 @@ impl miette::Diagnostic for Shown<'_> {
     fn code<'b>(&'b self) -> Option<Box<dyn fmt::Display + 'b>> {
         Some(Box::new(format!(
             "{}({})",
-            self.diagnostic.code, self.diagnostic.name
+            self.diagnostic.code(),
+            self.diagnostic.name()
         )))
     }
 
@@ -363,8 +364,8 @@ pub fn json_file(report: &Located) -> String {
     let diagnostics = report
         .each()
         .map(|(d, start, end)| JsonDiagnostic {
-            code: d.code,
-            name: d.name,
+            code: d.code(),
+            name: d.name(),
             severity: d.severity,
             message: &d.message,
             help: d.help.as_deref(),
@@ -441,7 +442,7 @@ pub fn github(report: &FileReport, out: &mut String) {
             start.column,
             end.row,
             end.column,
-            escape_property(&format!("{} {}", d.code, d.name)),
+            escape_property(&format!("{} {}", d.code(), d.name())),
             escape_data(&d.message)
         ));
     }
@@ -479,9 +480,9 @@ impl Sarif {
         let path = report.path.as_deref().map(crate::cli::platform::path_bytes);
         let location = artifact(path.as_deref().unwrap_or(report.name.as_bytes()));
         for (d, start, end) in report.each() {
-            self.codes.insert(d.code);
+            self.codes.insert(d.code());
             let mut result = serde_json::json!({
-                "ruleId": d.code,
+                "ruleId": d.code(),
                 "level": level(d.severity),
                 "message": { "text": match &d.help { Some(help) => format!("{} ({help})", d.message), None => d.message.clone() } },
                 "locations": [{
@@ -737,8 +738,8 @@ impl Statistics {
                 .fix
                 .as_deref()
                 .is_some_and(|fix| fix.applicability == Applicability::Safe || unsafe_fixes);
-            let entry = self.rules.entry(d.code).or_insert(Statistic {
-                name: d.name,
+            let entry = self.rules.entry(d.code()).or_insert(Statistic {
+                name: d.name(),
                 count: 0,
                 fixable: false,
             });

@@ -276,7 +276,7 @@ pub fn analyze<'src>(
         let member = program.member?;
         findings.extend(opened.in_archive(source, member, analyzed.findings));
     }
-    findings.sort_by_key(|found| (found.span.start, found.code));
+    findings.sort_by_key(|found| (found.span.start, found.code()));
     let (model, walk) = super::model_and_walk(source, ProgramKind::Main, &settings);
     Some(crate::lint::Analyzed {
         model,

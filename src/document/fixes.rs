@@ -57,7 +57,7 @@ impl Opened {
             if own.is_empty() {
                 continue;
             }
-            let (own, count) = match diagnostics.iter().any(|d| d.code.starts_with('S')) {
+            let (own, count) = match diagnostics.iter().any(|d| d.code().starts_with('S')) {
                 true => lint::fix::applicable(&syntax_fixes(diagnostics), false),
                 false => (own, count),
             };
@@ -88,7 +88,7 @@ impl Opened {
 fn syntax_fixes(diagnostics: &[Diagnostic]) -> Vec<Diagnostic> {
     diagnostics
         .iter()
-        .filter(|d| d.code.starts_with('S'))
+        .filter(|d| d.code().starts_with('S'))
         .filter(|d| {
             d.fix
                 .as_deref()

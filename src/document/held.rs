@@ -200,7 +200,12 @@ mod tests {
             let at = analysis.analyzed as *const Analyzed as usize;
             (
                 at,
-                analysis.analyzed.findings.iter().map(|f| f.code).collect(),
+                analysis
+                    .analyzed
+                    .findings
+                    .iter()
+                    .map(|f| f.code())
+                    .collect(),
             )
         })
         .expect("a version not stopped")

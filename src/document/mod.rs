@@ -133,7 +133,7 @@ impl<'src> Document<'src> {
                 .filter_map(swivels::of_cycle600);
             diagnostics.extend(asked.flat_map(|asked| swivels::findings(&asked, on)));
         }
-        diagnostics.sort_by_key(|d| (d.span.start, d.code));
+        diagnostics.sort_by_key(|d| (d.span.start, d.code()));
         let diagnostics = annotated(diagnostics, &model.macro_uses, self.source);
         Rewritten {
             model: Some(model),

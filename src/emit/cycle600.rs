@@ -119,8 +119,7 @@ pub fn rewrite_on(
         // What the run-time code answers is the unknown arguments (C605); any
         // other error still refuses the call.
         let refused_at_run_time = site.diagnostics.iter().any(|d| {
-            d.severity == Severity::Error
-                && d.code != registry::cycle600_unknown_argument::RULE.code
+            d.severity == Severity::Error && !d.is(&registry::cycle600_unknown_argument::RULE)
         });
         if let (Some(_), Some(parameters), false) =
             (options.runtime, &site.runtime, refused_at_run_time)
@@ -172,7 +171,7 @@ pub fn rewrite_on(
                     out.diagnostics.extend(
                         site.diagnostics
                             .iter()
-                            .filter(|d| d.code != registry::cycle600_unknown_argument::RULE.code)
+                            .filter(|d| !d.is(&registry::cycle600_unknown_argument::RULE))
                             .cloned(),
                     );
                     out.diagnostics.push(

@@ -55,11 +55,14 @@ impl Default for Selection {
 /// their code in full: N015, since the control ignores case and users of
 /// other Sinumerik tools do not want case findings unasked; C619, since a
 /// program that keeps CYCLE600 for the control is not wrong.
-pub const OFF_BY_DEFAULT: [&str; 2] = ["N015", "C619"];
+pub static OFF_BY_DEFAULT: [&RuleInfo; 2] =
+    [&rules::inconsistent_case::RULE, &cycle600_rewritable::RULE];
 
 /// Whether `code` is a rule that runs only when selected by its full code.
 pub fn off_by_default(code: &str) -> bool {
-    OFF_BY_DEFAULT.iter().any(|c| c.eq_ignore_ascii_case(code))
+    OFF_BY_DEFAULT
+        .iter()
+        .any(|rule| rule.code.eq_ignore_ascii_case(code))
 }
 
 impl Selection {
@@ -100,13 +103,13 @@ pub struct Settings {
 /// CYCLE600 argument known only on the machine is no error for the linter
 /// (the rewrite computes it on the control), and GOTOC goes on without an
 /// alarm where its label is missing.
-pub fn severity_in_check(code: &str) -> Option<&'static str> {
-    match code {
-        c if c == crate::registry::cycle600_unknown_argument::RULE.code => {
-            Some("info in check; rewrite refuses the call unless --emit-runtime")
-        }
-        c if c == rules::undefined_label::RULE.code => Some("a warning for GOTOC"),
-        _ => None,
+pub fn severity_in_check(rule: &RuleInfo) -> Option<&'static str> {
+    if rule == &crate::registry::cycle600_unknown_argument::RULE {
+        Some("info in check; rewrite refuses the call unless --emit-runtime")
+    } else if rule == &rules::undefined_label::RULE {
+        Some("a warning for GOTOC")
+    } else {
+        None
     }
 }
 
@@ -341,20 +344,20 @@ fn analyze_stopping<'src>(
         found.extend(
             records
                 .into_iter()
-                .filter(|d| d.code == invalid_swivel_data::RULE.code),
+                .filter(|d| d.is(&invalid_swivel_data::RULE)),
         );
     }
 
     let index = LineIndex::new(source);
     let mut kept: Vec<Diagnostic> = found
         .into_iter()
-        .filter(|d| selection.enables(d.code) && d.severity >= selection.severity_min)
+        .filter(|d| selection.enables(d.code()) && d.severity >= selection.severity_min)
         .filter(|d| !suppressions.covers(d, || index.position(d.span.start).row - 1))
         .collect();
     if selection.enables("N099") && Severity::Info >= selection.severity_min {
         kept.extend(suppressions.unused(source, |code| selection.enables(code)));
     }
-    kept.sort_by_key(|d| (d.span.start, d.code));
+    kept.sort_by_key(|d| (d.span.start, d.code()));
     one_finding_per_cause(&mut kept, &model.labels);
     if !model.macro_uses.is_empty() {
         for diagnostic in &mut kept {
@@ -382,7 +385,7 @@ fn syntax_error_lines<'s>(
     let mut last = None;
     found
         .iter()
-        .filter(|d| d.code.starts_with('S'))
+        .filter(|d| d.code().starts_with('S'))
         .filter_map(move |d| {
             let start = crate::span::line_start(source, d.span.start.min(source.len()));
             (last.replace(start) != Some(start)).then(|| {
@@ -411,18 +414,18 @@ fn swivel_findings(model: &Model, analysis: Option<&Analysis>, on: &OnMachine) -
 /// first of them. A label after N027's block starts code a jump may reach,
 /// whose missing end is N010's again.
 fn one_finding_per_cause(kept: &mut Vec<Diagnostic>, labels: &crate::semantic::labels::Labels) {
-    let after_end = crate::lint::rules::block_after_program_end::RULE.code;
-    let no_end = crate::lint::rules::missing_program_end::RULE.code;
+    let after_end = &crate::lint::rules::block_after_program_end::RULE;
+    let no_end = &crate::lint::rules::missing_program_end::RULE;
     let Some(first_after) = kept
         .iter()
         .rev()
-        .find(|d| d.code == after_end)
+        .find(|d| d.is(after_end))
         .map(|d| d.span.start)
     else {
         return;
     };
     kept.retain(|d| {
-        d.code != no_end || d.span.end <= first_after || labels.any_within(first_after..d.span.end)
+        !d.is(no_end) || d.span.end <= first_after || labels.any_within(first_after..d.span.end)
     });
 }
 
@@ -465,7 +468,7 @@ fn cycle600_findings(model: &Model, analysis: &Analysis, settings: &Settings) ->
         .flat_map(|site| site.diagnostics.iter().cloned())
         .collect();
     for diagnostic in &mut out {
-        if diagnostic.code == crate::registry::cycle600_unknown_argument::RULE.code {
+        if diagnostic.is(&crate::registry::cycle600_unknown_argument::RULE) {
             diagnostic.severity = Severity::Info;
         }
     }

@@ -12,7 +12,7 @@ pub fn severity_text(info: &RuleInfo) -> String {
     if off_by_default(info.code) {
         return format!("{severity}, off by default: --select {}", info.code);
     }
-    match severity_in_check(info.code) {
+    match severity_in_check(info) {
         Some(note) => format!("{severity}, {note}"),
         None => severity.to_string(),
     }

@@ -139,13 +139,13 @@ impl Suppressions {
     /// marks it used); the row is asked for only when a suppression names
     /// the code, since finding rows costs a pass over the file.
     pub fn covers(&mut self, diagnostic: &Diagnostic, row: impl FnOnce() -> usize) -> bool {
-        if !self.list.iter().any(|s| s.code == diagnostic.code) {
+        if !self.list.iter().any(|s| s.code == diagnostic.code()) {
             return false;
         }
         let row = row();
         let mut covered = false;
         for suppression in &mut self.list {
-            if suppression.code == diagnostic.code && suppression.row.is_none_or(|r| r == row) {
+            if suppression.code == diagnostic.code() && suppression.row.is_none_or(|r| r == row) {
                 suppression.used = true;
                 covered = true;
             }

@@ -485,7 +485,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 actions.push(lsp::CodeActionOrCommand::CodeAction(action));
             }
             if let Some(edit) = self.suppression(found) {
-                let title = format!("Ignore {} on this line", found.code);
+                let title = format!("Ignore {} on this line", found.code());
                 let mut action = self.action(uri, &title, &[edit], lsp::CodeActionKind::QUICKFIX);
                 action.diagnostics = Some(vec![diagnostic]);
                 actions.push(lsp::CodeActionOrCommand::CodeAction(action));
@@ -574,7 +574,7 @@ impl<'a, 't> Snapshot<'a, 't> {
         let source = self.text.bytes();
         let row = self.text.position(found.span.start, ColumnUnit::Bytes).row - 1;
         let content = self.model.lines.raw(row).content;
-        let directive = format!("sinuprep: ignore {}", found.code);
+        let directive = format!("sinuprep: ignore {}", found.code());
         let comment = self.model.lines.block(row).and_then(|block| block.comment);
         let (at, text) = match comment {
             Some(comment) => {

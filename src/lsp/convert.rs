@@ -80,8 +80,8 @@ pub fn diagnostic(
     lsp::Diagnostic {
         range: range(text, found.span, unit),
         severity: Some(severity),
-        code: Some(lsp::NumberOrString::String(found.code.to_string())),
-        code_description: super::rule_pages::link(found.code)
+        code: Some(lsp::NumberOrString::String(found.code().to_string())),
+        code_description: super::rule_pages::link(found.code())
             .map(|href| lsp::CodeDescription { href }),
         source: Some("sinuprep".to_string()),
         message,

@@ -141,7 +141,7 @@ pub fn syntax_errors(source: &[u8]) -> Vec<(&'static str, String, Vec<u8>)> {
                 })
                 .collect::<Vec<_>>()
                 .join("line _");
-            (d.code, message, source[start..end].to_vec())
+            (d.code(), message, source[start..end].to_vec())
         })
         .collect();
     errors.sort();
