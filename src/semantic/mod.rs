@@ -46,6 +46,45 @@ pub fn mentions_cycle600(bytes: &[u8]) -> bool {
 
 /// Whether `CYCLE<number>` (any case) occurs anywhere in the bytes.
 pub(crate) fn mentions_cycle(bytes: &[u8], number: &[u8]) -> bool {
-    memchr::memmem::find_iter(bytes, number)
-        .any(|at| at >= 5 && bytes[at - 5..at].eq_ignore_ascii_case(b"CYCLE"))
+    // Searched by its `L`, which a CAM program's lines of coordinates never
+    // hold: their digits would stop a search for the number on nearly
+    // every line.
+    memchr::memchr2_iter(b'L', b'l', bytes).any(|at| {
+        at >= 3
+            && bytes[at - 3..at].eq_ignore_ascii_case(b"CYC")
+            && bytes
+                .get(at + 1)
+                .is_some_and(|e| e.eq_ignore_ascii_case(&b'E'))
+            && bytes[at + 2..].starts_with(number)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A mention in any case and anywhere (the file's first bytes, a
+    /// comment) counts; the digits alone, or CYCLE with others, do not.
+    #[test]
+    fn finds_a_cycle_named_in_any_case() {
+        for text in [
+            "CYCLE600(0)",
+            "N10 cycle600",
+            "; CyClE600 below",
+            "X1 Y600 CYCLE600",
+        ] {
+            assert!(mentions_cycle600(text.as_bytes()), "{text}");
+        }
+        for text in [
+            "X600 Y-600.600",
+            "CYCLE800(1)",
+            "CYCL600",
+            "YCLE600",
+            "L600 CYCLE60",
+            "",
+        ] {
+            assert!(!mentions_cycle600(text.as_bytes()), "{text}");
+        }
+        assert!(mentions_cycle(b"G1 cycle800()", b"800"));
+    }
 }
