@@ -549,3 +549,42 @@ fn a_macro_definition_file_reads_the_program_as_the_control_does() {
     assert_exit(&output, 0);
     assert_eq!(stdout(&output), "");
 }
+
+/// What the machine's definitions would answer is not told as the
+/// program's fault: the control's own procedures are no subprograms to
+/// look for, and a name read without the machine's definitions may be
+/// theirs (no advice to DEF it, which would break a macro's use); given
+/// the definitions, a name they lack is the program's own slip.
+#[test]
+fn what_the_machine_defines_is_not_the_programs_fault() {
+    let source = b"N10 SETMS(2)\nN20 CTABDEF(Y,X,1,0)\nN30 MY_SUB(1)\nN40 R1=WT_ZONE\nM30\n";
+    let unknown = |settings: &lint::Settings| {
+        let outcome = lint::check_outcome(source, "PART.MPF", ProgramKind::Main, settings);
+        let n005 = outcome
+            .diagnostics
+            .iter()
+            .find(|d| d.code() == "N005")
+            .cloned();
+        (outcome.unresolved_calls, n005.expect("N005 on WT_ZONE"))
+    };
+    let (unresolved, without) = unknown(&lint::Settings::default());
+    assert_eq!(unresolved, ["MY_SUB"]);
+    assert!(without
+        .message
+        .contains("no definitions of the machine were given"));
+    assert!(without
+        .help
+        .as_deref()
+        .is_some_and(|h| h.contains("--definitions")));
+    let mut settings = lint::Settings::default();
+    settings
+        .environment
+        .read_definitions(b"DEF NCK REAL _OTHER\n", Some((Path::new("GUD.DEF"), 0)))
+        .expect("a definition file");
+    settings.environment.given = true;
+    let (_, with) = unknown(&settings);
+    assert_eq!(
+        with.message,
+        "`WT_ZONE` is read before any DEF or assignment"
+    );
+}

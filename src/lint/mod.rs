@@ -316,7 +316,7 @@ fn analyze_stopping<'src>(
     file.complete(model.finish(kind));
     let model = file.model();
     found.extend(model.syntax.iter().cloned());
-    if !checkers.finish(&file, &mut found, &stopped) {
+    if !checkers.finish(&file, &mut found, stopped) {
         return None;
     }
     let analysis = match (walk, stop) {

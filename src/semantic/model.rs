@@ -495,6 +495,11 @@ impl<'src> ModelBuilder<'src> {
         for (index, statement) in block.statements.iter().enumerate() {
             self.read_names
                 .extend(view.reads(index).map(|v| upper(v.name.text(source))));
+            if let StatementKind::For { variable, .. } = &statement.kind {
+                // ENDFOR reads the counter: it counts it up and compares it
+                // with the end value.
+                self.read_names.insert(upper(variable.text(source)));
+            }
             let symbol = |declarator: &crate::syntax::tree::Declarator,
                           data_type: &DataType,
                           global: bool,

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
-use crate::semantic::calls::{call_kind, CallKind};
+use crate::semantic::calls::is_predefined;
 use crate::span::Span;
 use crate::syntax::tree::StatementKind;
 
@@ -72,7 +72,7 @@ impl Check for Checker {
             let machine = || procedures.get(name).map(|procedure| procedure.parameters);
             let Some(parameters) = self.declared.get(name).copied().or_else(machine) else {
                 // The control's commands and cycles are not looked for.
-                if call_kind(name) == CallKind::Subprogram {
+                if !is_predefined(name) {
                     file.unresolved_call(name);
                 }
                 continue;

@@ -39,7 +39,10 @@ globals and macros of the definition files given (`--definitions MGUD.DEF`, `def
 (`DEF AXIS _AX` then `_AX=XC`), a machine axis by its number (`AX1` ... `AXn`, known on every
 machine: `SPOS[AX4]`, `TRAILON(AX2,AX1)`, `$MA_IS_ROT_AX[AX4]`) and `NO_AXIS` are not checked. A name defined before it
 within two edits (one for names of up to four letters) is offered as did-you-mean, and as an
-unsafe fix (`check --fix --unsafe-fixes`)."#,
+unsafe fix (`check --fix --unsafe-fixes`). Checked without any of the machine's definitions, a
+name no definition near it explains may be a GUD variable, macro or axis of the machine: the
+finding says so and asks for the definition files, since a DEF written for a macro's name would
+break the program."#,
 };
 
 #[derive(Default)]
@@ -131,7 +134,8 @@ impl Check for Checker {
                 && !is_axis_identifier(&name)
                 && self.reported.insert(name.clone())
             {
-                out.push(self.undefined(name, variable.name.span));
+                let given = file.environment.given;
+                out.push(self.undefined(name, variable.name.span, given));
             }
         }
         match &statement.kind {
@@ -177,12 +181,20 @@ impl Checker {
 
     /// The finding for `name` at `span`, with the defined name it may have
     /// been meant as (`DEPTHH` for a defined `DEPTH`).
-    fn undefined(&mut self, name: String, span: Span) -> Diagnostic {
+    /// The finding on `name`; `given` says whether the machine's
+    /// definitions were given, without which the name may well be theirs.
+    fn undefined(&mut self, name: String, span: Span, given: bool) -> Diagnostic {
         let most = if name.len() <= 4 { 1 } else { 2 };
-        let diagnostic = RULE
-            .at(span)
-            .message(format!("`{name}` is read before any DEF or assignment"))
-            .label("not defined yet");
+        let diagnostic = RULE.at(span).label("not defined yet");
+        if !given && self.nearest.closest(&name, most).is_none() {
+            // A DEF added for a GUD variable or a macro of the machine would
+            // break the program: the advice is to give the definitions.
+            return diagnostic
+                .message(format!("`{name}` is read before any DEF or assignment of this program, and no definitions of the machine were given: it may be one of its GUD variables, macros or axes"))
+                .help(format!("give the machine's definition files (`definitions` in sinuprep.toml, --definitions FILE) or its axes; if `{name}` is the program's own, declare it before this block (`DEF REAL {name}`)"));
+        }
+        let diagnostic =
+            diagnostic.message(format!("`{name}` is read before any DEF or assignment"));
         match self.nearest.closest(&name, most).map(str::to_string) {
             Some(meant) => diagnostic
                 .help(format!("did you mean `{meant}`? Otherwise declare it, as `DEF REAL {name}`, before this block"))
