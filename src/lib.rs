@@ -58,6 +58,7 @@ pub mod format;
 pub mod kinematics;
 pub mod lint;
 pub mod lsp;
+pub mod machine;
 pub mod measure;
 pub mod registry;
 pub mod rotation;

@@ -4049,3 +4049,19 @@ fn the_nearest_split_chooses_dir_unless_given() {
         travel(&minus)
     );
 }
+
+/// `machine` prints what the machine's data say, and what it could not
+/// read on its line; the JSON is a contract (docs/guide.md).
+#[test]
+fn machine_prints_the_axes_records_and_what_it_could_not_read() {
+    let path = "tests/fixtures/machine/INITIAL.INI";
+    let json = run(&["machine", "--format", "json", path], b"");
+    assert_exit(&json, 0);
+    insta::assert_snapshot!("machine_json", stdout(&json));
+    let human = run(&["machine", path], b"");
+    assert_exit(&human, 0);
+    insta::assert_snapshot!("machine_human", stdout(&human));
+    // A record no solver can use is an error, as everywhere (K001).
+    let broken = run(&["machine", "tests/fixtures/lint/K001_trigger.spf"], b"");
+    assert_exit(&broken, 1);
+}

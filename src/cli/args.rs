@@ -72,6 +72,10 @@ pub enum Command {
     /// (the axis and a point on it); also as the `$TC_CARR` axis vector.
     #[command(allow_negative_numbers = true)]
     Axis(AxisArgs),
+    /// Print what the machine's own data say: its axes with their names,
+    /// software limits and dynamics, its swivel data records, and what could
+    /// not be read (a machine-data file, an archive of a series start-up).
+    Machine(MachineArgs),
     /// Print the completion script of a shell (`sinuprep completions bash >
     /// /usr/share/bash-completion/completions/sinuprep`).
     Completions(CompletionsArgs),
@@ -319,6 +323,26 @@ impl WalkArgs {
             force_exclude: self.force_exclude.then_some(true),
         }
     }
+}
+
+#[derive(Debug, clap::Args)]
+pub struct MachineArgs {
+    /// The machine's data: an `.INI` the control writes (`INITIAL.INI`,
+    /// `_N_AX1_TEA_INI`), an archive of a series start-up (`.arc`), or a
+    /// setup program with `$TC_CARR` records.
+    pub path: PathBuf,
+    /// How to print it: a table for people, or one JSON object (schema in
+    /// docs/guide.md).
+    #[arg(long = "output-format", visible_alias = "format", value_enum, default_value_t = MachineFormat::Human)]
+    pub format: MachineFormat,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MachineFormat {
+    /// A table of the axes, then the records and what could not be read.
+    Human,
+    /// One JSON object.
+    Json,
 }
 
 #[derive(Debug, clap::Args)]

@@ -30,6 +30,7 @@ pub(crate) mod eval;
 mod fmt;
 mod frame;
 mod input;
+mod machine;
 mod mapped;
 pub mod notation;
 mod output;
@@ -116,6 +117,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Axes(axes) => axes::run(axes),
         args::Command::Probe(probe) => probe::run(probe),
         args::Command::Axis(axis) => axis::run(axis),
+        args::Command::Machine(machine) => machine::run(machine),
         args::Command::Completions(completions) => describe::completions(completions.shell),
         args::Command::Manpage(manpage) => describe::manpage(manpage),
         args::Command::Lsp => crate::lsp::run()

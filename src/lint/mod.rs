@@ -21,7 +21,8 @@ use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::rule::{Checkers, FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
-use crate::registry::{cycle600_rewritable, invalid_swivel_data};
+use crate::registry::{cycle600_rewritable, invalid_swivel_data, unreadable_machine_data};
+use crate::semantic::environment::holds_machine_data;
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::model::ModelBuilder;
 use crate::semantic::swivels::{self, OnMachine};
@@ -337,6 +338,16 @@ fn analyze_stopping<'src>(
     }
     if let Some(on) = &settings.machine {
         found.extend(swivel_findings(model, analysis.as_ref(), on));
+    }
+    if selection.enables(unreadable_machine_data::RULE.code)
+        && (file.definition_file || holds_machine_data(source))
+    {
+        // The syntax errors of its lines are the model's, reported above.
+        let data = crate::machine::MachineData::read(source).diagnostics;
+        found.extend(
+            data.into_iter()
+                .filter(|d| d.is(&unreadable_machine_data::RULE)),
+        );
     }
     if settings.swivel_data && selection.enables(invalid_swivel_data::RULE.code) {
         // The syntax errors of its lines are the model's, reported above.

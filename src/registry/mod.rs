@@ -29,6 +29,7 @@ pub mod swivel_direction_outside_limits;
 pub mod swivel_unreachable;
 pub mod syntax;
 pub mod undefined_swivel_record;
+pub mod unreadable_machine_data;
 
 use crate::diagnostic::RuleInfo;
 
@@ -57,6 +58,7 @@ pub static ALL: &[&RuleInfo] = &[
     &swivel_direction_outside_limits::RULE,
     &hirth_rounding::RULE,
     &undefined_swivel_record::RULE,
+    &unreadable_machine_data::RULE,
     &syntax::UNCLOSED_STRING,
     &syntax::UNBALANCED_BRACKET,
     &syntax::INVALID_NUMBER,

@@ -1,0 +1,165 @@
+//! `sinuprep machine`: what a machine's own data say, for people and for
+//! scripts: the machine axes with their names, software limits and dynamics
+//! (`machine::axes`), the swivel data records, how many data were read and
+//! what could not be (K006 for machine data, K001 for records), each on its
+//! line. It reads and prints; it writes nothing.
+
+use std::io::IsTerminal;
+
+use serde_json::json;
+
+use crate::cli::args::{MachineArgs, MachineFormat};
+use crate::cli::error::CliError;
+use crate::cli::render::{human, FileReport};
+use crate::cli::{write_stdout, ExitStatus};
+use crate::diagnostic::Severity;
+use crate::emit::number::format;
+use crate::machine::{axes, Axis, MachineData};
+use crate::semantic::machine::{Machine, Reading};
+use crate::span::LineIndex;
+
+pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
+    let path = &args.path;
+    let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    let shown = path.display().to_string();
+    let setup = crate::archive::setup_data(&bytes, &shown)
+        .map_err(|error| CliError::archive(&shown, error))?;
+    let source = &setup.bytes[..];
+    let data = MachineData::read(source);
+    let records = Machine::read(source, Reading::default());
+    let axes = axes(&data);
+    let mut diagnostics = data.diagnostics.clone();
+    diagnostics.extend(records.diagnostics.iter().cloned());
+    diagnostics.sort_by_key(|d| d.span.start);
+    let status = if diagnostics.iter().any(|d| d.severity == Severity::Error) {
+        ExitStatus::Failure
+    } else {
+        ExitStatus::Success
+    };
+    let text = match args.format {
+        MachineFormat::Json => {
+            let index = LineIndex::new(source);
+            let unreadable: Vec<_> = diagnostics
+                .iter()
+                .map(|d| {
+                    let at = index.position(d.span.start);
+                    json!({"line": at.row, "column": at.column, "code": d.code(), "message": d.message})
+                })
+                .collect();
+            let records: Vec<_> = records
+                .records
+                .iter()
+                .map(|r| json!({"number": r.number, "name": r.name, "kinematics": r.kinematics.letter().to_string()}))
+                .collect();
+            let document = json!({
+                "machine": setup.name,
+                "axes": axes,
+                "records": records,
+                "data": data.data.len(),
+                "unreadable": unreadable,
+            });
+            let mut text = serde_json::to_string_pretty(&document).expect("JSON of plain values");
+            text.push('\n');
+            text
+        }
+        MachineFormat::Human => {
+            let mut text = table(&setup.name, &axes, data.data.len(), &records);
+            let report = FileReport {
+                name: &setup.name,
+                source,
+                diagnostics: &diagnostics,
+            };
+            let colour = crate::cli::colour(std::io::stdout().is_terminal());
+            human(&report, colour, &mut text);
+            text
+        }
+    };
+    write_stdout(text.as_bytes())?;
+    Ok(status)
+}
+
+/// The axes as a table, the records as a line each.
+fn table(name: &str, axes: &[Axis], data: usize, records: &Machine) -> String {
+    let mut text = format!(
+        "{name}: {data} machine data, {} machine axes, {} swivel data records\n",
+        axes.len(),
+        records.records.len()
+    );
+    if !axes.is_empty() {
+        let header = [
+            "axis", "machine", "name", "kind", "limits", "limits 2", "velocity", "accel.", "jerk",
+        ];
+        let mut rows = vec![header.map(str::to_string).to_vec()];
+        for axis in axes {
+            let kind = match (axis.rotary, axis.modulo) {
+                (Some(true), Some(true)) => "rotary, modulo",
+                (Some(true), _) => "rotary",
+                (Some(false), _) => "linear",
+                (None, _) => "?",
+            };
+            rows.push(vec![
+                format!("AX{}", axis.index),
+                axis.machine_name.clone().unwrap_or_else(|| "-".into()),
+                axis.name.clone().unwrap_or_else(|| "-".into()),
+                kind.to_string(),
+                pair(axis.limits),
+                pair(axis.limits2),
+                value(axis.max_velocity),
+                values(&axis.max_acceleration),
+                values(&axis.max_jerk),
+            ]);
+        }
+        let widths: Vec<usize> = (0..header.len())
+            .map(|column| {
+                rows.iter()
+                    .map(|r| r[column].chars().count())
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        for row in rows {
+            let cells: Vec<String> = row
+                .iter()
+                .zip(&widths)
+                .map(|(cell, width)| format!("{cell:<width$}"))
+                .collect();
+            text.push_str(cells.join("  ").trim_end());
+            text.push('\n');
+        }
+        text.push_str("units as the control stores them: mm (inch) or degrees; velocity mm/min or rev/min; acceleration m/s² or rev/s²; jerk m/s³ or rev/s³, by dynamic response group; `-` where the data hold no value\n");
+    }
+    for record in &records.records {
+        text.push_str(&format!(
+            "record {} `{}`: kinematics {}\n",
+            record.number,
+            record.name,
+            record.kinematics.letter()
+        ));
+    }
+    text
+}
+
+fn value(value: Option<f64>) -> String {
+    value.map_or_else(|| "-".to_string(), |v| format(v, 6))
+}
+
+fn pair([low, high]: [Option<f64>; 2]) -> String {
+    match (low, high) {
+        (None, None) => "-".to_string(),
+        _ => format!("{} .. {}", value(low), value(high)),
+    }
+}
+
+fn values(values: &[Option<f64>]) -> String {
+    if values.is_empty() {
+        return "-".to_string();
+    }
+    values
+        .iter()
+        .map(|v| value(*v))
+        .collect::<Vec<_>>()
+        .join(" ")
+}

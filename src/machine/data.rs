@@ -1,0 +1,236 @@
+//! Machine data as the files the control writes hold them (`INITIAL.INI`,
+//! `_N_NC_TEA_INI`, `_N_CH1_TEA_INI`, `_N_AX1_TEA_INI`, an archive's data
+//! members): one assignment a line, optionally numbered by the datum
+//! (`N36110 $MA_POS_LIMIT_PLUS[AX1]=1500.6`); an axis datum indexed by its
+//! axis (`[AX1]`, or `[0,AX1]` for one of several values), a channel's data
+//! after `CHANDATA(n)`. Every machine datum (`$MN_`, `$MC_`, `$MA_`) and
+//! setting datum (`$SN_`, `$SC_`, `$SA_`) is kept by name and index, so that
+//! what a program reads of them can be answered offline. Read with the
+//! project's own parser, and only the lines that name such a datum or
+//! `CHANDATA`: a file of thousands of tool data lines passes at the speed
+//! of a byte search.
+
+use crate::diagnostic::Diagnostic;
+use crate::registry::unreadable_machine_data::RULE;
+use crate::semantic::env::Env;
+use crate::semantic::eval::evaluate;
+use crate::semantic::value::Value;
+use crate::semantic::Supplied;
+use crate::span::Span;
+use crate::syntax::tree::{Expr, ExprKind, LineKind, StatementKind};
+use crate::syntax::WordFinder;
+
+/// The prefixes of the data kept: machine data of the NC, the channel and
+/// the axes, and setting data of the same three.
+const PREFIXES: [&str; 6] = ["$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_"];
+
+/// One index of a datum.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Index {
+    Number(u32),
+    /// An axis by name, upper case: `AX1`, or the machine axis's name (`X1`).
+    Axis(String),
+}
+
+/// One datum as a line assigns it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Datum {
+    /// Upper case, with its prefix: `$MA_POS_LIMIT_PLUS`.
+    pub name: String,
+    /// The channel of the `CHANDATA(n)` before it; `None` before any.
+    pub channel: Option<u32>,
+    pub indices: Vec<Index>,
+    pub value: Value,
+    /// The assignment.
+    pub span: Span,
+}
+
+/// The data of one file, and what in it could not be read.
+#[derive(Debug, Default)]
+pub struct MachineData {
+    /// In the order of the lines.
+    pub data: Vec<Datum>,
+    /// K006, and the syntax errors of the lines not read, in line order.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl MachineData {
+    pub fn read(source: &[u8]) -> MachineData {
+        let mut read = MachineData::default();
+        let finders = [
+            WordFinder::new("$M"),
+            WordFinder::new("$S"),
+            WordFinder::new("CHANDATA"),
+        ];
+        let env = Env::default();
+        let supplied = Supplied::default();
+        let scope = env.scope(&supplied, 0);
+        let mut channel = None;
+        let mut parser = crate::syntax::LineParser::default();
+        for raw in crate::syntax::lines::raw_lines(source) {
+            let content = raw.content.of(source);
+            if !finders.iter().any(|f| f.in_line(content)) {
+                continue;
+            }
+            let (line, error) = parser.parse_line(source, raw);
+            if let Some(error) = error {
+                // The parser's own finding: nothing of the line is read.
+                read.diagnostics.push(error);
+                continue;
+            }
+            let LineKind::Block(block) = &line.kind else {
+                continue;
+            };
+            for statement in &block.statements {
+                match &statement.kind {
+                    StatementKind::Call(call) if call.name.is(source, "CHANDATA") => {
+                        let number = call.arguments.items.first().and_then(|a| a.value.as_ref());
+                        match number.and_then(|n| whole(source, n, &scope)) {
+                            Some(n) => channel = Some(n),
+                            None => read.diagnostics.push(
+                                RULE.at(call.arguments.span)
+                                    .message("CHANDATA takes the channel's number, a whole number from 1")
+                                    .label("no channel number"),
+                            ),
+                        }
+                    }
+                    StatementKind::Assign(assign) => {
+                        let name = assign.target.name.upper(source);
+                        if !PREFIXES.iter().any(|p| name.starts_with(p)) {
+                            continue;
+                        }
+                        let indices: Option<Vec<Index>> = assign
+                            .target
+                            .indices
+                            .iter()
+                            .map(|index| self::index(source, index, &scope))
+                            .collect();
+                        let Some(indices) = indices else {
+                            read.diagnostics.push(
+                                RULE.at(assign.target.span)
+                                    .message(format!("`{name}` is indexed by something other than a whole number or an axis name"))
+                                    .label("index not read")
+                                    .help("an index is a number (`[0]`) or an axis (`[AX1]`, `[0,AX1]`), as the control writes them"),
+                            );
+                            continue;
+                        };
+                        match evaluate(source, &assign.value, &scope) {
+                            Ok(value) => read.data.push(Datum {
+                                name,
+                                channel,
+                                indices,
+                                value,
+                                span: statement.span,
+                            }),
+                            Err(_) => read.diagnostics.push(
+                                RULE.at(assign.value.span)
+                                    .message(format!("the value of `{name}` is no constant"))
+                                    .label("not a value sinuprep can read")
+                                    .help("the files the control writes hold constants: copy the datum from the control as it is"),
+                            ),
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+        read
+    }
+
+    /// The value the last line that assigns `name` (upper case) with these
+    /// indices gives it, in `channel` for a channel's datum.
+    pub fn get(&self, name: &str, channel: Option<u32>, indices: &[Index]) -> Option<&Value> {
+        self.data
+            .iter()
+            .rev()
+            .find(|d| d.name == name && d.indices == indices && d.channel == channel)
+            .map(|d| &d.value)
+    }
+
+    /// Every datum named `name` (upper case), in line order.
+    pub fn named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Datum> + 'a {
+        self.data.iter().filter(move |d| d.name == name)
+    }
+}
+
+/// An index: a whole number, or an axis's name.
+fn index(source: &[u8], expr: &Expr, scope: &crate::semantic::env::Scope) -> Option<Index> {
+    if let ExprKind::Variable(variable) = &expr.kind {
+        if variable.indices.is_empty() {
+            return Some(Index::Axis(variable.name.upper(source)));
+        }
+    }
+    whole(source, expr, scope).map(Index::Number)
+}
+
+fn whole(source: &[u8], expr: &Expr, scope: &crate::semantic::env::Scope) -> Option<u32> {
+    match evaluate(source, expr, scope) {
+        Ok(Value::Number(n)) if n >= 0.0 && n.fract() == 0.0 && n <= f64::from(u32::MAX) => {
+            Some(n as u32)
+        }
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn axis(name: &str) -> Index {
+        Index::Axis(name.to_string())
+    }
+
+    #[test]
+    fn reads_every_datum_by_name_channel_and_index() {
+        let source = b"; machine data\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\nCHANDATA(2)\n\
+N20080 $MC_AXCONF_CHANAX_NAME_TAB[0]=\"X\"\nN36110 $MA_POS_LIMIT_PLUS[AX1]=1500.6\n\
+N32300 $MA_MAX_AX_ACCEL[1,AX1]=2.5 ; m/s2\n$TC_DP1[1,1]=120\n$SN_JOG_CONT_MODE_LEVELTRIGGRD=1\nM17\n";
+        let read = MachineData::read(source);
+        assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
+        assert_eq!(read.data.len(), 5);
+        let number = |name, channel, indices: &[Index]| {
+            read.get(name, channel, indices).and_then(Value::number)
+        };
+        assert_eq!(
+            read.get("$MN_AXCONF_MACHAX_NAME_TAB", None, &[Index::Number(0)]),
+            Some(&Value::Text("X1".to_string()))
+        );
+        assert_eq!(
+            read.get("$MC_AXCONF_CHANAX_NAME_TAB", Some(2), &[Index::Number(0)]),
+            Some(&Value::Text("X".to_string()))
+        );
+        assert_eq!(
+            number("$MA_POS_LIMIT_PLUS", Some(2), &[axis("AX1")]),
+            Some(1500.6)
+        );
+        assert_eq!(
+            number(
+                "$MA_MAX_AX_ACCEL",
+                Some(2),
+                &[Index::Number(1), axis("AX1")]
+            ),
+            Some(2.5)
+        );
+        assert_eq!(number("$MA_POS_LIMIT_PLUS", Some(1), &[axis("AX1")]), None);
+    }
+
+    #[test]
+    fn what_cannot_be_read_is_named_on_its_line() {
+        let source = b"$MA_POS_LIMIT_PLUS[AX1]=_LIMIT\n$MA_POS_LIMIT_MINUS[AX1]=(\nCHANDATA(X)\n\
+$MA_MAX_AX_VELO[1.5]=1000\n$MA_MAX_AX_VELO[AX1]=10000\n";
+        let read = MachineData::read(source);
+        let lines: Vec<usize> = read
+            .diagnostics
+            .iter()
+            .map(|d| {
+                crate::span::LineIndex::new(source)
+                    .position(d.span.start)
+                    .row
+            })
+            .collect();
+        assert_eq!(lines, [1, 2, 3, 4]);
+        let codes: Vec<&str> = read.diagnostics.iter().map(|d| d.code()).collect();
+        assert_eq!(codes, ["K006", "S005", "K006", "K006"]);
+        assert_eq!(read.data.len(), 1);
+    }
+}
