@@ -14,7 +14,7 @@ use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::Severity;
 use crate::emit::number::format;
-use crate::machine::{axes, Axis, MachineData};
+use crate::machine::{axes, frames, tools, Axis, MachineData};
 use crate::semantic::machine::{Machine, Reading};
 use crate::span::LineIndex;
 
@@ -58,6 +58,8 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
                 "machine": setup.name,
                 "axes": axes,
                 "records": records,
+                "frames": frames(&data),
+                "tools": tools(&data),
                 "data": data.data.len(),
                 "unreadable": unreadable,
             });
@@ -66,7 +68,7 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
             text
         }
         MachineFormat::Human => {
-            let mut text = table(&setup.name, &axes, data.data.len(), &records);
+            let mut text = table(&setup.name, &axes, &data, &records);
             let report = FileReport {
                 name: &setup.name,
                 source,
@@ -82,11 +84,15 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
 }
 
 /// The axes as a table, the records as a line each.
-fn table(name: &str, axes: &[Axis], data: usize, records: &Machine) -> String {
+fn table(name: &str, axes: &[Axis], data: &MachineData, records: &Machine) -> String {
+    let frames = frames(data);
     let mut text = format!(
-        "{name}: {data} machine data, {} machine axes, {} swivel data records\n",
+        "{name}: {} data, {} machine axes, {} swivel data records, {} cutting edges, {} settable frames\n",
+        data.data.len(),
         axes.len(),
-        records.records.len()
+        records.records.len(),
+        tools(data).len(),
+        frames.len(),
     );
     if !axes.is_empty() {
         let header = [
@@ -130,6 +136,26 @@ fn table(name: &str, axes: &[Axis], data: usize, records: &Machine) -> String {
             text.push('\n');
         }
         text.push_str("units as the control stores them: mm (inch) or degrees; velocity mm/min or rev/min; acceleration m/s² or rev/s²; jerk m/s³ or rev/s³, by dynamic response group; `-` where the data hold no value\n");
+    }
+    for (name, axes) in &frames {
+        let components: Vec<String> = axes
+            .iter()
+            .map(|(axis, c)| {
+                let parts = [
+                    ("TR", c.tr),
+                    ("FI", c.fi),
+                    ("RT", c.rt),
+                    ("SC", c.sc),
+                    ("MI", c.mi),
+                ];
+                let set: Vec<String> = parts
+                    .iter()
+                    .filter_map(|(what, v)| v.map(|v| format!("{what} {}", format(v, 6))))
+                    .collect();
+                format!("{axis}: {}", set.join(", "))
+            })
+            .collect();
+        text.push_str(&format!("frame {name}: {}\n", components.join("; ")));
     }
     for record in &records.records {
         text.push_str(&format!(

@@ -3,9 +3,10 @@
 //! members): one assignment a line, optionally numbered by the datum
 //! (`N36110 $MA_POS_LIMIT_PLUS[AX1]=1500.6`); an axis datum indexed by its
 //! axis (`[AX1]`, or `[0,AX1]` for one of several values), a channel's data
-//! after `CHANDATA(n)`. Every machine datum (`$MN_`, `$MC_`, `$MA_`) and
-//! setting datum (`$SN_`, `$SC_`, `$SA_`) is kept by name and index, so that
-//! what a program reads of them can be answered offline. Read with the
+//! after `CHANDATA(n)`. Every machine datum (`$MN_`, `$MC_`, `$MA_`),
+//! setting datum (`$SN_`, `$SC_`, `$SA_`), tool offset (`$TC_DPn[t,d]`) and
+//! settable frame component (`$P_UIFR[n,X,TR]`) is kept by name and index,
+//! so that what a program reads of them can be answered offline. Read with the
 //! project's own parser, and only the lines that name such a datum or
 //! `CHANDATA`: a file of thousands of tool data lines passes at the speed
 //! of a byte search.
@@ -21,8 +22,11 @@ use crate::syntax::tree::{Expr, ExprKind, LineKind, StatementKind};
 use crate::syntax::WordFinder;
 
 /// The prefixes of the data kept: machine data of the NC, the channel and
-/// the axes, and setting data of the same three.
-const PREFIXES: [&str; 6] = ["$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_"];
+/// the axes, setting data of the same three, the tool offsets and the
+/// settable frames.
+const PREFIXES: [&str; 8] = [
+    "$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_", "$TC_DP", "$P_UIFR",
+];
 
 /// One index of a datum.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -60,6 +64,8 @@ impl MachineData {
         let finders = [
             WordFinder::new("$M"),
             WordFinder::new("$S"),
+            WordFinder::new("$TC_DP"),
+            WordFinder::new("$P_UIFR"),
             WordFinder::new("CHANDATA"),
         ];
         let env = Env::default();
@@ -122,6 +128,12 @@ impl MachineData {
                                 value,
                                 span: statement.span,
                             }),
+                            Err(_) if name == "$P_UIFR" => read.diagnostics.push(
+                                RULE.at(assign.value.span)
+                                    .message("a settable frame written whole is not read: only its components are (`$P_UIFR[1,X,TR]=10`)")
+                                    .label("frame not read")
+                                    .help("write the frame's components, as the control writes them in `_N_UFR_INI`"),
+                            ),
                             Err(_) => read.diagnostics.push(
                                 RULE.at(assign.value.span)
                                     .message(format!("the value of `{name}` is no constant"))
@@ -187,7 +199,9 @@ N20080 $MC_AXCONF_CHANAX_NAME_TAB[0]=\"X\"\nN36110 $MA_POS_LIMIT_PLUS[AX1]=1500.
 N32300 $MA_MAX_AX_ACCEL[1,AX1]=2.5 ; m/s2\n$TC_DP1[1,1]=120\n$SN_JOG_CONT_MODE_LEVELTRIGGRD=1\nM17\n";
         let read = MachineData::read(source);
         assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
-        assert_eq!(read.data.len(), 5);
+        assert_eq!(read.data.len(), 6);
+        let tool = [Index::Number(1), Index::Number(1)];
+        assert_eq!(read.get("$TC_DP1", Some(2), &tool), Some(&Value::Number(120.0)));
         let number = |name, channel, indices: &[Index]| {
             read.get(name, channel, indices).and_then(Value::number)
         };

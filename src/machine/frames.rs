@@ -1,0 +1,82 @@
+//! The settable frames the data hold, component by component as the control
+//! writes them (`$P_UIFR[1,X,TR]=10`, a `_N_UFR_INI` or an archive's
+//! `INITIAL_INI`): per frame and axis its coarse translation `TR`, fine
+//! translation `FI`, rotation `RT` (degrees), scale `SC` and mirror `MI`
+//! (Siemens, SINUMERIK 840D sl Job Planning, "Frames": `$P_UIFR[0]` is the
+//! frame of G500, `[1]` to `[4]` those of G54 to G57, `[5]` to `[99]` those of
+//! G505 to G599).
+
+use std::collections::BTreeMap;
+
+use crate::machine::data::{Index, MachineData};
+
+/// One axis's components of a frame; `None` where the data hold none.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Components {
+    pub tr: Option<f64>,
+    pub fi: Option<f64>,
+    pub rt: Option<f64>,
+    pub sc: Option<f64>,
+    pub mi: Option<f64>,
+}
+
+/// The G function that selects settable frame `index`.
+pub fn frame_name(index: u32) -> Option<String> {
+    match index {
+        0 => Some("G500".to_string()),
+        1..=4 => Some(format!("G{}", 53 + index)),
+        5..=99 => Some(format!("G{}", 500 + index)),
+        _ => None,
+    }
+}
+
+/// The settable frames by their G function, each with its axes' components
+/// by axis name (upper case).
+pub fn frames(data: &MachineData) -> BTreeMap<String, BTreeMap<String, Components>> {
+    let mut frames: BTreeMap<String, BTreeMap<String, Components>> = BTreeMap::new();
+    for datum in data.named("$P_UIFR") {
+        let [Index::Number(index), Index::Axis(axis), Index::Axis(component)] = &datum.indices[..]
+        else {
+            continue;
+        };
+        let Some(name) = frame_name(*index) else {
+            continue;
+        };
+        let value = datum.value.number();
+        let components = frames
+            .entry(name)
+            .or_default()
+            .entry(axis.clone())
+            .or_default();
+        match component.as_str() {
+            "TR" => components.tr = value,
+            "FI" => components.fi = value,
+            "RT" => components.rt = value,
+            "SC" => components.sc = value,
+            "MI" => components.mi = value,
+            _ => {}
+        }
+    }
+    frames
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frames_are_named_by_the_g_function_that_selects_them() {
+        let names: Vec<Option<String>> = [0, 1, 4, 5, 99, 100].map(frame_name).to_vec();
+        let expected = ["G500", "G54", "G57", "G505", "G599"];
+        assert_eq!(names[..5], expected.map(|n| Some(n.to_string())));
+        assert_eq!(names[5], None);
+        let source = b"$P_UIFR[1,X,TR]=100.5\n$P_UIFR[1,X,FI]=0.01\n$P_UIFR[1,Z,RT]=30\n\
+$P_UIFR[6,Y,TR]=-5\n$P_UIFR[1]=CTRANS(X,1)\n";
+        let frames = frames(&MachineData::read(source));
+        assert_eq!(frames.keys().collect::<Vec<_>>(), ["G506", "G54"]);
+        let x = &frames["G54"]["X"];
+        assert_eq!((x.tr, x.fi, x.rt), (Some(100.5), Some(0.01), None));
+        assert_eq!(frames["G54"]["Z"].rt, Some(30.0));
+        assert_eq!(frames["G506"]["Y"].tr, Some(-5.0));
+    }
+}
