@@ -644,9 +644,11 @@ fn globals_macros_and_axes_of_definition_files_are_defined() {
     let args = ["check", "--format", "short", "--select", "N005", name];
     let output = run(&args, b"");
     assert_exit(&output, 0);
+    // The DEF files beside the program are found; the machine data's axis
+    // names (XC, ZC) and TABLE are not known without them being named.
     assert_eq!(
         stdout(&output).matches("N005").count(),
-        6,
+        3,
         "{}",
         stdout(&output)
     );
@@ -4064,4 +4066,47 @@ fn machine_prints_the_axes_records_and_what_it_could_not_read() {
     // A record no solver can use is an error, as everywhere (K001).
     let broken = run(&["machine", "tests/fixtures/lint/K001_trigger.spf"], b"");
     assert_exit(&broken, 1);
+}
+
+/// Where no definition files are named, those a control would hold beside
+/// the program are read: the `.DEF` files of its folder and a `_N_DEF_DIR`
+/// beside it; one that cannot be read is passed over. A name they define is
+/// no finding, one they lack is.
+#[test]
+fn definitions_beside_the_program_are_found() {
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "tests/fixtures/beside/PART.MPF",
+        ],
+        b"",
+    );
+    let text = stdout(&output);
+    assert!(
+        !text.contains("ZONE_MAX") && !text.contains("TEMP_LIMIT"),
+        "{text}"
+    );
+    assert!(
+        text.contains("`NOT_DEFINED_ANYWHERE` is read before any DEF or assignment\n"),
+        "{text}"
+    );
+    // Named definitions replace those found: the names are unknown again.
+    let named = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--definitions",
+            "tests/fixtures/beside/_N_DEF_DIR/_N_UMAC_DEF",
+            "tests/fixtures/beside/PART.MPF",
+        ],
+        b"",
+    );
+    let text = stdout(&named);
+    assert!(
+        text.contains("`ZONE_MAX`") && !text.contains("TEMP_LIMIT"),
+        "{text}"
+    );
 }

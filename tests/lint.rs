@@ -520,7 +520,11 @@ fn the_rule_reference_is_the_rules_documentation() {
 #[test]
 fn a_macro_definition_file_reads_the_program_as_the_control_does() {
     let program = "tests/fixtures/macros/TOOL_CHANGE.MPF";
-    let output = run(&["check", "--format", "short", program], b"");
+    // Alone, away from the definition file beside it (which is found).
+    let alone = support::scratch("macros_alone").join("TOOL_CHANGE.MPF");
+    std::fs::copy(program, &alone).expect("copy");
+    let alone = alone.to_str().expect("utf-8");
+    let output = run(&["check", "--format", "short", alone], b"");
     assert_exit(&output, 1);
     let report = stdout(&output);
     for expected in [
@@ -548,6 +552,9 @@ fn a_macro_definition_file_reads_the_program_as_the_control_does() {
     );
     assert_exit(&output, 0);
     assert_eq!(stdout(&output), "");
+    let beside = run(&["check", "--format", "short", program], b"");
+    assert_exit(&beside, 0);
+    assert_eq!(stdout(&beside), "");
 }
 
 /// What the machine's definitions would answer is not told as the

@@ -201,7 +201,10 @@ N32300 $MA_MAX_AX_ACCEL[1,AX1]=2.5 ; m/s2\n$TC_DP1[1,1]=120\n$SN_JOG_CONT_MODE_L
         assert!(read.diagnostics.is_empty(), "{:?}", read.diagnostics);
         assert_eq!(read.data.len(), 6);
         let tool = [Index::Number(1), Index::Number(1)];
-        assert_eq!(read.get("$TC_DP1", Some(2), &tool), Some(&Value::Number(120.0)));
+        assert_eq!(
+            read.get("$TC_DP1", Some(2), &tool),
+            Some(&Value::Number(120.0))
+        );
         let number = |name, channel, indices: &[Index]| {
             read.get(name, channel, indices).and_then(Value::number)
         };

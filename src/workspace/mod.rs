@@ -234,7 +234,8 @@ impl Workspace {
             let ignored = self.patterns_of(config)?.ignored_in(program);
             resolved.settings.selection.ignore.extend(ignored);
         }
-        resolved.settings.environment = self.environment(config)?;
+        let (environment, found) = self.environment(config, program)?;
+        resolved.settings.environment = environment;
         resolved.settings.environment.procedures = self.procedures(config, program)?;
         resolved.settings.machine = self.machine(config)?;
         // The machine file is machine data too: the axes it names, of every
@@ -242,7 +243,8 @@ impl Workspace {
         if let Some(machine) = &resolved.settings.machine {
             resolved.settings.environment.learn_axes(&machine.source);
         }
-        resolved.settings.environment.given = !given.definitions.is_empty()
+        resolved.settings.environment.given = found
+            || !given.definitions.is_empty()
             || !given.cycles.is_empty()
             || config.definitions.iter().flatten().next().is_some()
             || config.cycles.iter().flatten().next().is_some()
@@ -420,15 +422,28 @@ impl Workspace {
     }
 
     /// The machine's names: axes from sinuprep.toml, globals and macros from
-    /// the definition files given (or else sinuprep.toml's), each list read
-    /// once a run.
-    fn environment(&self, config: &Config) -> Result<Environment, SettingsError> {
-        let files: Vec<PathBuf> = if self.given.definitions.is_empty() {
-            let listed = config.definitions.iter().flatten();
-            listed.map(|path| config.resolve(path)).collect()
-        } else {
-            self.given.definitions.clone()
+    /// the definition files given (or else sinuprep.toml's, or else those
+    /// beside `program`: [`definitions_beside`]), each list read once a run;
+    /// with whether any definition file was found.
+    fn environment(
+        &self,
+        config: &Config,
+        program: &Path,
+    ) -> Result<(Environment, bool), SettingsError> {
+        let listed: Vec<PathBuf> = config
+            .definitions
+            .iter()
+            .flatten()
+            .map(|path| config.resolve(path))
+            .collect();
+        // Files found rather than named: one that cannot be read is passed
+        // over (its own check reports it), not the programs' error.
+        let (files, lenient) = match (self.given.definitions.is_empty(), listed.is_empty()) {
+            (false, _) => (self.given.definitions.clone(), false),
+            (true, false) => (listed, false),
+            (true, true) => (definitions_beside(program), true),
         };
+        let found = !files.is_empty();
         let known = self
             .definitions
             .lock()
@@ -437,7 +452,7 @@ impl Workspace {
         let mut environment = match known {
             Some(environment) => environment,
             None => {
-                let environment = definitions(&files, |path| self.read(path))?;
+                let environment = definitions(&files, lenient, |path| self.read(path))?;
                 if let Ok(mut read) = self.definitions.lock() {
                     read.insert(files, environment.clone());
                 }
@@ -446,7 +461,7 @@ impl Workspace {
         };
         let listed = Environment::with_axes(config.axes.iter().flatten()).axes;
         environment.axes.extend(listed);
-        Ok(environment)
+        Ok((environment, found))
     }
 
     /// The machine given (or else sinuprep.toml's), read once a run: the one
@@ -630,54 +645,110 @@ fn own_directory(program: &Path) -> PathBuf {
 /// What the definition files `files` define: GUD and macro files give
 /// variables and macros, machine data axis names (an `.INI`, or any file or
 /// archive member that holds machine data, [`holds_machine_data`]); an
-/// archive gives what its `_DEF` and data members do.
+/// archive gives what its `_DEF` and data members do. `lenient`: a file
+/// that cannot be read is passed over rather than an error.
 fn definitions(
     files: &[PathBuf],
+    lenient: bool,
     read: impl Fn(&Path) -> std::io::Result<Vec<u8>>,
 ) -> Result<Environment, SettingsError> {
     let mut environment = Environment::default();
     for path in files {
-        let bytes = read(path).map_err(|source| SettingsError::Read {
-            path: path.clone(),
-            source,
-        })?;
-        let name = path.display().to_string();
-        let members = match archive::read(&bytes, &name) {
-            None => vec![(path.clone(), 0..bytes.len(), definition_kind(path))],
-            Some(read) => read
-                .map_err(|error| SettingsError::Archive {
-                    path: path.clone(),
-                    error,
-                })?
-                .members
-                .into_iter()
-                .map(|m| (PathBuf::from(format!("{name}:{}", m.name)), m.data, m.kind))
-                .collect(),
-        };
-        for (member, range, kind) in members {
-            let start = range.start;
-            let bytes = &bytes[range];
-            let read = match kind {
-                MemberKind::Data => environment.read_machine_data(bytes),
-                _ if holds_machine_data(bytes) => environment.read_machine_data(bytes),
-                MemberKind::Definitions => environment.read_definitions(bytes, Some((path, start))),
-                _ => continue,
-            };
-            if let Err(errors) = read {
-                let Some(first) = errors.first() else {
-                    continue;
-                };
-                let position = crate::span::LineIndex::new(bytes).position(first.span.start);
-                return Err(SettingsError::Definitions {
-                    path: member,
-                    line: position.row,
-                    column: position.column,
-                    why: first.message.clone(),
-                });
-            }
+        match definitions_of(path, &mut environment, &read) {
+            Err(_) if lenient => continue,
+            result => result?,
         }
     }
     Ok(environment)
+}
+
+/// What the definition file `path` defines, added to `environment`.
+fn definitions_of(
+    path: &Path,
+    environment: &mut Environment,
+    read: impl Fn(&Path) -> std::io::Result<Vec<u8>>,
+) -> Result<(), SettingsError> {
+    let bytes = read(path).map_err(|source| SettingsError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let name = path.display().to_string();
+    let members = match archive::read(&bytes, &name) {
+        None => vec![(path.to_path_buf(), 0..bytes.len(), definition_kind(path))],
+        Some(read) => read
+            .map_err(|error| SettingsError::Archive {
+                path: path.to_path_buf(),
+                error,
+            })?
+            .members
+            .into_iter()
+            .map(|m| (PathBuf::from(format!("{name}:{}", m.name)), m.data, m.kind))
+            .collect(),
+    };
+    for (member, range, kind) in members {
+        let start = range.start;
+        let bytes = &bytes[range];
+        let read = match kind {
+            MemberKind::Data => environment.read_machine_data(bytes),
+            _ if holds_machine_data(bytes) => environment.read_machine_data(bytes),
+            MemberKind::Definitions => environment.read_definitions(bytes, Some((path, start))),
+            _ => continue,
+        };
+        if let Err(errors) = read {
+            let Some(first) = errors.first() else {
+                continue;
+            };
+            let position = crate::span::LineIndex::new(bytes).position(first.span.start);
+            return Err(SettingsError::Definitions {
+                path: member,
+                line: position.row,
+                column: position.column,
+                why: first.message.clone(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The definition files a control would hold for `program` where none are
+/// named: the `.DEF` files of its folder, and the files of a `_N_DEF_DIR`
+/// beside it or beside its folder (a control's own tree: `_N_MPF_DIR` and
+/// `_N_DEF_DIR` side by side, `_N_MGUD_DEF` within), in name order.
+fn definitions_beside(program: &Path) -> Vec<PathBuf> {
+    if program == Path::new("-") {
+        return Vec::new();
+    }
+    let folder = match program.parent() {
+        Some(folder) if folder.as_os_str().is_empty() => Path::new("."),
+        Some(folder) => folder,
+        None => return Vec::new(),
+    };
+    let is_definitions = |path: &Path| {
+        path.extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("def"))
+            || path
+                .file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.len() > 4 && n[n.len() - 4..].eq_ignore_ascii_case("_DEF"))
+    };
+    let mut found = Vec::new();
+    let folders = [
+        folder.to_path_buf(),
+        folder.join("_N_DEF_DIR"),
+        folder.join("..").join("_N_DEF_DIR"),
+    ];
+    for folder in folders {
+        let Ok(entries) = std::fs::read_dir(&folder) else {
+            continue;
+        };
+        let mut here: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file() && is_definitions(p))
+            .collect();
+        here.sort();
+        found.extend(here);
+    }
+    found
 }
 
 /// A definition file's kind by its extension: machine data (`.INI`) or
