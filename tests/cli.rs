@@ -4063,6 +4063,28 @@ fn machine_prints_the_axes_records_and_what_it_could_not_read() {
     let human = run(&["machine", path], b"");
     assert_exit(&human, 0);
     insta::assert_snapshot!("machine_human", stdout(&human));
+    // An archive: its data member, and its definition members counted.
+    let archive = run(
+        &[
+            "machine",
+            "--format",
+            "json",
+            "tests/fixtures/machine/SETUP.ARC",
+        ],
+        b"",
+    );
+    assert_exit(&archive, 0);
+    let read: serde_json::Value = serde_json::from_str(&stdout(&archive)).expect("JSON");
+    assert_eq!(
+        read["machine"],
+        "tests/fixtures/machine/SETUP.ARC:INITIAL_INI"
+    );
+    assert_eq!(read["axes"][0]["name"], "X");
+    assert_eq!(read["axes"][0]["limits"], serde_json::json!([-0.6, 800.6]));
+    assert_eq!(
+        read["definitions"],
+        serde_json::json!({"gud": 2, "macros": 0})
+    );
     // A record no solver can use is an error, as everywhere (K001).
     let broken = run(&["machine", "tests/fixtures/lint/K001_trigger.spf"], b"");
     assert_exit(&broken, 1);

@@ -8,6 +8,7 @@ use std::io::IsTerminal;
 
 use serde_json::json;
 
+use crate::archive::MemberKind;
 use crate::cli::args::{MachineArgs, MachineFormat};
 use crate::cli::error::CliError;
 use crate::cli::render::{human, FileReport};
@@ -16,6 +17,7 @@ use crate::diagnostic::Severity;
 use crate::emit::number::format;
 use crate::machine::{axes, frames, tools, Axis, MachineData};
 use crate::semantic::machine::{Machine, Reading};
+use crate::semantic::Environment;
 use crate::span::LineIndex;
 
 pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
@@ -29,6 +31,7 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
         .map_err(|error| CliError::archive(&shown, error))?;
     let source = &setup.bytes[..];
     let data = MachineData::read(source);
+    let (gud, macros) = definitions(&bytes, &shown);
     let records = Machine::read(source, Reading::default());
     let axes = axes(&data);
     let mut diagnostics = data.diagnostics.clone();
@@ -60,6 +63,7 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
                 "records": records,
                 "frames": frames(&data),
                 "tools": tools(&data),
+                "definitions": {"gud": gud, "macros": macros},
                 "data": data.data.len(),
                 "unreadable": unreadable,
             });
@@ -69,6 +73,11 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
         }
         MachineFormat::Human => {
             let mut text = table(&setup.name, &axes, &data, &records);
+            if gud + macros > 0 {
+                text.push_str(&format!(
+                    "definitions: {gud} GUD variables, {macros} macros\n"
+                ));
+            }
             let report = FileReport {
                 name: &setup.name,
                 source,
@@ -81,6 +90,22 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
     };
     write_stdout(text.as_bytes())?;
     Ok(status)
+}
+
+/// How many GUD variables and macros the definition members of the archive
+/// `bytes` define (none for a file that is no archive, or members that
+/// cannot be read: `check` of the archive reports those).
+fn definitions(bytes: &[u8], name: &str) -> (usize, usize) {
+    let Some(Ok(archive)) = crate::archive::read(bytes, name) else {
+        return (0, 0);
+    };
+    let mut environment = Environment::default();
+    for member in archive.members {
+        if member.kind == MemberKind::Definitions {
+            let _ = environment.read_definitions(&bytes[member.data], None);
+        }
+    }
+    (environment.variables.len(), environment.macros.len())
 }
 
 /// The axes as a table, the records as a line each.
