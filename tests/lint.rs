@@ -528,7 +528,7 @@ fn a_macro_definition_file_reads_the_program_as_the_control_does() {
     assert_exit(&output, 1);
     let report = stdout(&output);
     for expected in [
-        ":4:9: error[S002]",
+        ":4:27: error[S002] `_DEC2` stands where an operator belongs",
         ":6:5: error[N004]",
         ":9:7: error[S005]",
     ] {

@@ -375,9 +375,10 @@ fn analyze_stopping<'src>(
             crate::syntax::macros::annotate(diagnostic, &model.macro_uses, source);
         }
     }
-    let names_as_operators = syntax_error_lines(&kept, source)
-        .filter(|line| crate::syntax::macros::name_in_operator_position(line))
-        .count();
+    let names_as_operators = name_the_operators(&mut kept, source);
+    if names_as_operators > 0 {
+        kept.sort_by_key(|d| (d.span.start, d.code()));
+    }
     let unresolved_calls = file.take_unresolved().into_iter().collect();
     Some(Analyzed {
         model: file.into_model(),
@@ -388,22 +389,33 @@ fn analyze_stopping<'src>(
     })
 }
 
-/// The lines with syntax errors among `found` (sorted), each once.
-fn syntax_error_lines<'s>(
-    found: &'s [Diagnostic],
-    source: &'s [u8],
-) -> impl Iterator<Item = &'s [u8]> + 's {
+/// A syntax error on a line that writes a name where an operator belongs
+/// (`(R1 _DEC2)`) names it: read without the machine's macros, it may be
+/// one. Gives how many lines do.
+fn name_the_operators(found: &mut [Diagnostic], source: &[u8]) -> usize {
+    let mut lines = 0;
     let mut last = None;
-    found
-        .iter()
-        .filter(|d| d.code().starts_with('S'))
-        .filter_map(move |d| {
-            let start = crate::span::line_start(source, d.span.start.min(source.len()));
-            (last.replace(start) != Some(start)).then(|| {
-                let end = crate::span::line_end(source, start);
-                &source[start..end]
-            })
-        })
+    for diagnostic in found.iter_mut().filter(|d| d.code().starts_with('S')) {
+        let start = crate::span::line_start(source, diagnostic.span.start.min(source.len()));
+        let end = crate::span::line_end(source, start);
+        let Some(name) = crate::syntax::macros::name_in_operator_position(&source[start..end])
+        else {
+            continue;
+        };
+        if last.replace(start) != Some(start) {
+            lines += 1;
+        }
+        let span = crate::span::Span::new(start + name.start, start + name.end);
+        let text = String::from_utf8_lossy(span.of(source));
+        diagnostic.message = format!(
+            "`{text}` stands where an operator belongs ({}): it may be a macro of the machine, which sinuprep reads only from its definition files",
+            diagnostic.message
+        );
+        diagnostic.span = span;
+        diagnostic.label = "a name where an operator belongs".into();
+        diagnostic.help = Some(format!("give the machine's macro definition files (`definitions`, --definitions MMAC.DEF), which define `{text}`; or write an operator here").into());
+    }
+    lines
 }
 
 /// The swivels of the program solved on the machine: its CYCLE800 calls

@@ -226,18 +226,19 @@ const OPERATOR_NAMES: [&str; 10] = [
     "MOD", "DIV", "AND", "OR", "XOR", "NOT", "B_AND", "B_OR", "B_XOR", "B_NOT",
 ];
 
-/// Whether `content` writes a name where an operator belongs, inside
-/// parentheses (`($TC_CARR37[_TC1] _DEC2)`): read without the macros of the
-/// machine, such a name is a syntax error, and it may well be a macro.
-/// (Outside parentheses a name after an operand is the block's next word.)
-pub fn name_in_operator_position(content: &[u8]) -> bool {
+/// The first name `content` writes where an operator belongs, inside
+/// parentheses (`($TC_CARR37[_TC1] _DEC2)`), as a range of `content`: read
+/// without the macros of the machine, such a name is a syntax error, and it
+/// may well be a macro. (Outside parentheses a name after an operand is the
+/// block's next word.)
+pub fn name_in_operator_position(content: &[u8]) -> Option<std::ops::Range<usize>> {
     let mut depth = 0usize;
     let mut after_operand = false;
     let mut at = 0;
     while at < content.len() {
         let byte = content[at];
         match byte {
-            b';' => return false,
+            b';' => return None,
             b'"' => {
                 at = memchr::memchr(b'"', &content[at + 1..]).map_or(content.len(), |n| at + n + 2);
                 after_operand = true;
@@ -264,7 +265,7 @@ pub fn name_in_operator_position(content: &[u8]) -> bool {
                     .iter()
                     .any(|o| word.eq_ignore_ascii_case(o.as_bytes()));
                 if depth > 0 && after_operand && !operator && !byte.is_ascii_digit() {
-                    return true;
+                    return Some(start..at);
                 }
                 after_operand = !operator;
                 continue;
@@ -273,7 +274,7 @@ pub fn name_in_operator_position(content: &[u8]) -> bool {
         }
         at += 1;
     }
-    false
+    None
 }
 
 /// Calls `each` with the span (in `text`) of every name the control may
@@ -768,17 +769,18 @@ mod tests {
 
     #[test]
     fn a_name_after_an_operand_in_parentheses_may_be_a_macro() {
-        assert!(name_in_operator_position(
-            b"IF (($TC_CARR37[_TC1] _DEC2)==1)"
-        ));
-        assert!(!name_in_operator_position(
-            b"IF (($TC_CARR37[_TC1] MOD 100)==1)"
-        ));
-        assert!(!name_in_operator_position(b"G1 X10 Y20 F=R1 ; (A B)"));
-        assert!(!name_in_operator_position(
-            b"IF (R1 == 1) AND NOT (R2 > 0) GOTOF END"
-        ));
-        assert!(!name_in_operator_position(b"MSG(\"A B\" << R1)"));
+        assert_eq!(
+            name_in_operator_position(b"IF (($TC_CARR37[_TC1] _DEC2)==1)"),
+            Some(22..27)
+        );
+        for plain in [
+            &b"IF (($TC_CARR37[_TC1] MOD 100)==1)"[..],
+            b"G1 X10 Y20 F=R1 ; (A B)",
+            b"IF (R1 == 1) AND NOT (R2 > 0) GOTOF END",
+            b"MSG(\"A B\" << R1)",
+        ] {
+            assert_eq!(name_in_operator_position(plain), None);
+        }
     }
 
     /// Macros that multiply their text at every level stop growing once
