@@ -4132,3 +4132,28 @@ fn definitions_beside_the_program_are_found() {
         "{text}"
     );
 }
+
+/// A program's read of a machine datum is known offline when the machine's
+/// data are given: `$MA_POS_LIMIT_PLUS[Z]` by the channel axis's name.
+#[test]
+fn machine_data_a_program_reads_are_known_offline() {
+    let dir = scratch("machine_reads");
+    let program = dir.join("MA.MPF");
+    std::fs::write(
+        &program,
+        "DEF REAL _A\nN10 _A=$MA_POS_LIMIT_PLUS[Z]*10\n\
+N20 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, _A, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n",
+    )
+    .expect("write");
+    let program = program.to_str().expect("utf-8");
+    let eval = |machine: &[&str]| {
+        let mut args = vec!["eval", "--heads", "samples/HEAD_DEF.SPF"];
+        args.extend(machine);
+        args.push(program);
+        stdout(&run(&args, b""))
+    };
+    let without = eval(&[]);
+    assert!(!without.contains("_CYC600_3=5"), "{without}");
+    let with = eval(&["--machine", "tests/fixtures/machine/INITIAL.INI"]);
+    assert!(with.contains("_CYC600_3=5 "), "{with}");
+}

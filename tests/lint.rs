@@ -26,6 +26,7 @@ fn sample_machine() -> std::sync::Arc<OnMachine> {
     std::sync::Arc::new(OnMachine {
         name: "MACHINE.SPF".into(),
         machine: Machine::read(&source, Reading::default()),
+        values: Vec::new(),
         source,
         hirth_tolerance_deg: swivels::HIRTH_TOLERANCE_DEG,
         table: None,

@@ -31,7 +31,7 @@ fuzz_target!(|data: &[u8]| {
         assert!(
             finding.span.start <= finding.span.end && finding.span.end <= data.len(),
             "{}",
-            finding.code
+            finding.code()
         );
     }
     render(data, &findings);

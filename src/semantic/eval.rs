@@ -71,8 +71,12 @@ fn index_text(source: &[u8], index: &Expr, lookup: &dyn Lookup) -> Result<String
     }
 }
 
-/// A geometry or rotary axis name, or a frame component (`TR`, `RT`).
+/// A geometry or rotary axis name, a machine axis by its number (`AX4`),
+/// or a frame component (`TR`, `RT`).
 fn is_axis_like(name: &[u8]) -> bool {
+    if crate::semantic::words::is_machine_axis(name) {
+        return true;
+    }
     let upper = name.to_ascii_uppercase();
     matches!(
         upper.as_slice(),

@@ -31,6 +31,9 @@ pub struct OnMachine {
     /// machine's findings point into it.
     pub source: Vec<u8>,
     pub machine: Machine,
+    /// The machine data, tool offsets and frame components the file holds,
+    /// by the key a program reads each with ([`crate::machine::keyed`]).
+    pub values: Vec<(String, crate::semantic::value::Value)>,
     /// The orientation error (degrees) Hirth rounding may make unreported.
     pub hirth_tolerance_deg: f64,
     /// The record of a rotary table under the machine's heads (`--table`,

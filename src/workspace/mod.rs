@@ -390,6 +390,16 @@ impl Workspace {
         for text in &given.set {
             values::read_set(text, &mut supplied)?;
         }
+        // What the machine's data hold is known offline, unless a value given
+        // says otherwise.
+        if let Some(on) = self.machine(config)? {
+            let by = format!("the machine data of {}", on.name);
+            for (key, value) in &on.values {
+                if supplied.get(key).is_none() {
+                    supplied.insert(key.clone(), value.clone(), by.clone());
+                }
+            }
+        }
         let heads = match setting(&given.heads, &config.heads, "heads") {
             Some(given) => Some(given),
             None => self.heads_beside(program)?.map(|path| (path, None)),
@@ -512,8 +522,11 @@ impl Workspace {
                 });
             }
         }
+        let machine_data = crate::machine::MachineData::read(&data.bytes);
+        let axes = crate::machine::axes(&machine_data);
         let on = Arc::new(OnMachine {
             machine,
+            values: crate::machine::keyed(&machine_data, &axes),
             name: data.name,
             source: data.bytes.into_owned(),
             hirth_tolerance_deg: config
