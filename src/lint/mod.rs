@@ -10,7 +10,9 @@
 //! runs on it without parsing again. It reports diagnostics; printing them is the CLI's job.
 
 pub(crate) mod codes;
+mod dispatch;
 pub mod fix;
+pub mod readers;
 pub mod reference;
 pub mod rule;
 pub mod rules;
@@ -19,7 +21,8 @@ pub(crate) mod suppression;
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
-use crate::lint::rule::{Checkers, FileContext, LineView, PlainLine};
+use crate::lint::dispatch::Checkers;
+use crate::lint::rule::{FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
 use crate::registry::{cycle600_rewritable, invalid_swivel_data, unreadable_machine_data};
 use crate::semantic::environment::holds_machine_data;
