@@ -109,6 +109,24 @@ impl Diagnostic {
         }
     }
 
+    /// The diagnostic with every span it holds `by` bytes earlier: the
+    /// same finding told in a part of the text it was found in.
+    pub fn moved_back(&self, by: usize) -> Self {
+        let back =
+            |span: Span| Span::new(span.start - by.min(span.start), span.end - by.min(span.end));
+        let mut moved = self.clone();
+        moved.span = back(moved.span);
+        if let Some(related) = &mut moved.related {
+            related.span = back(related.span);
+        }
+        if let Some(fix) = &mut moved.fix {
+            for edit in &mut fix.edits {
+                edit.span = back(edit.span);
+            }
+        }
+        moved
+    }
+
     /// The rule's code (`N005`).
     pub fn code(&self) -> &'static str {
         self.rule.code

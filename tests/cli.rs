@@ -4090,6 +4090,59 @@ fn machine_prints_the_axes_records_and_what_it_could_not_read() {
     assert_exit(&broken, 1);
 }
 
+/// A folder of the control's data files is one machine: INITIAL first, the
+/// files after it winning where they assign a datum again; a finding is told
+/// on its own file's line; the folder's definition files are counted; other
+/// files are passed over. As `--machine`, the folder answers a program's reads.
+#[test]
+fn a_folder_of_data_files_is_one_machine() {
+    let folder = "tests/fixtures/machine/folder";
+    let json = run(&["machine", "--format", "json", folder], b"");
+    assert_exit(&json, 0);
+    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    assert_eq!(read["axes"][1]["name"], "Z");
+    assert_eq!(read["axes"][1]["limits"], serde_json::json!([-450.0, 1.5]));
+    assert_eq!(read["frames"]["G54"]["X"]["tr"], 250.5);
+    assert_eq!(
+        read["definitions"],
+        serde_json::json!({"gud": 1, "macros": 0})
+    );
+    let unreadable = &read["unreadable"];
+    assert_eq!(unreadable.as_array().map(Vec::len), Some(1), "{unreadable}");
+    assert_eq!(unreadable[0]["code"], "K006");
+    assert_eq!(unreadable[0]["line"], 4);
+    assert!(
+        unreadable[0]["file"]
+            .as_str()
+            .is_some_and(|f| f.ends_with("_N_UFR_INI")),
+        "{unreadable}"
+    );
+    let human = stdout(&run(&["machine", folder], b""));
+    assert!(human.contains("_N_UFR_INI:4:"), "{human}");
+
+    let dir = scratch("machine_folder");
+    let program = dir.join("LIMIT.MPF");
+    std::fs::write(
+        &program,
+        "DEF REAL _A\nN10 _A=$MA_POS_LIMIT_PLUS[Z]*10\n\
+N20 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, _A, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n",
+    )
+    .expect("write");
+    let eval = run(
+        &[
+            "eval",
+            "--heads",
+            "samples/HEAD_DEF.SPF",
+            "--machine",
+            folder,
+            program.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    let text = stdout(&eval);
+    assert!(text.contains("_CYC600_3=15 "), "{text}");
+}
+
 /// Where no definition files are named, those a control would hold beside
 /// the program are read: the `.DEF` files of its folder and a `_N_DEF_DIR`
 /// beside it; one that cannot be read is passed over. A name they define is

@@ -27,6 +27,10 @@ fn sample_machine() -> std::sync::Arc<OnMachine> {
         name: "MACHINE.SPF".into(),
         machine: Machine::read(&source, Reading::default()),
         values: Vec::new(),
+        parts: vec![sinuprep::archive::Part {
+            name: "MACHINE.SPF".into(),
+            range: 0..source.len(),
+        }],
         source,
         hirth_tolerance_deg: swivels::HIRTH_TOLERANCE_DEG,
         table: None,

@@ -19,6 +19,7 @@ pub mod text;
 
 use std::ops::Range;
 
+use crate::diagnostic::Diagnostic;
 use crate::edit::Edit;
 use crate::syntax::ProgramKind;
 
@@ -173,7 +174,8 @@ impl Archive {
     }
 }
 
-/// Swivel data records and machine data, as a file or an archive holds them.
+/// Swivel data records and machine data, as a file, an archive or a
+/// folder of the control's files holds them.
 pub struct SetupData<'a> {
     /// A plain file whole; of an archive, its data members (`_INI`,
     /// `_TOA`, ...) one after the other, since programs hold no machine data.
@@ -181,6 +183,39 @@ pub struct SetupData<'a> {
     /// What reports call them: the file, or `ARCH.arc:INITIAL_INI` when
     /// one member holds them all.
     pub name: String,
+    /// The files or members `bytes` joins, in order: a finding is told on
+    /// the line of its own file ([`Part::split`]).
+    pub parts: Vec<Part>,
+}
+
+/// One file's or member's share of joined setup data.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Part {
+    pub name: String,
+    pub range: Range<usize>,
+}
+
+impl Part {
+    /// `diagnostics`, whose spans point into the joined bytes, by the part
+    /// each points into (in the parts' order, parts without one left out),
+    /// their spans moved to point into the part.
+    pub fn split(parts: &[Part], diagnostics: &[Diagnostic]) -> Vec<(usize, Vec<Diagnostic>)> {
+        let mut split: Vec<(usize, Vec<Diagnostic>)> = Vec::new();
+        for (i, part) in parts.iter().enumerate() {
+            let inside: Vec<Diagnostic> = diagnostics
+                .iter()
+                .filter(|d| {
+                    part.range.contains(&d.span.start)
+                        || (d.span.start == part.range.end && i + 1 == parts.len())
+                })
+                .map(|d| d.moved_back(part.range.start))
+                .collect();
+            if !inside.is_empty() {
+                split.push((i, inside));
+            }
+        }
+        split
+    }
 }
 
 /// The setup data of `bytes`, the file `name`.
@@ -189,6 +224,10 @@ pub fn setup_data<'a>(bytes: &'a [u8], name: &str) -> Result<SetupData<'a>, Arch
         return Ok(SetupData {
             bytes: std::borrow::Cow::Borrowed(bytes),
             name: name.to_string(),
+            parts: vec![Part {
+                name: name.to_string(),
+                range: 0..bytes.len(),
+            }],
         });
     };
     let data: Vec<Member> = archive?
@@ -197,11 +236,17 @@ pub fn setup_data<'a>(bytes: &'a [u8], name: &str) -> Result<SetupData<'a>, Arch
         .filter(|m| m.kind == MemberKind::Data)
         .collect();
     let mut joined = Vec::new();
+    let mut parts = Vec::new();
     for member in &data {
+        let start = joined.len();
         joined.extend_from_slice(&bytes[member.data.clone()]);
         if joined.last().is_some_and(|&b| b != b'\n') {
             joined.push(b'\n');
         }
+        parts.push(Part {
+            name: format!("{name}:{}", member.name),
+            range: start..joined.len(),
+        });
     }
     let name = match data.as_slice() {
         [one] => format!("{name}:{}", one.name),
@@ -210,6 +255,39 @@ pub fn setup_data<'a>(bytes: &'a [u8], name: &str) -> Result<SetupData<'a>, Arch
     Ok(SetupData {
         bytes: std::borrow::Cow::Owned(joined),
         name,
+        parts,
+    })
+}
+
+/// The setup data of a folder `name` holding `files` (name, bytes), in the
+/// order given: each file's as [`setup_data`] reads it, one after the other.
+pub fn setup_data_of_files(
+    name: &str,
+    files: &[(String, Vec<u8>)],
+) -> Result<SetupData<'static>, ArchiveError> {
+    let mut joined = Vec::new();
+    let mut parts = Vec::new();
+    for (file, bytes) in files {
+        let data = setup_data(bytes, file).map_err(|error| ArchiveError {
+            member: error.member.or_else(|| Some(file.clone())),
+            ..error
+        })?;
+        for part in data.parts {
+            let start = joined.len();
+            joined.extend_from_slice(&data.bytes[part.range]);
+            if joined.last().is_some_and(|&b| b != b'\n') {
+                joined.push(b'\n');
+            }
+            parts.push(Part {
+                name: part.name,
+                range: start..joined.len(),
+            });
+        }
+    }
+    Ok(SetupData {
+        bytes: std::borrow::Cow::Owned(joined),
+        name: name.to_string(),
+        parts,
     })
 }
 
@@ -249,6 +327,7 @@ mod tests {
         let data = setup_data(archive, "A.ARC").expect("readable");
         assert_eq!(&data.bytes[..], b"%_N_INITIAL_INI\n$TC_CARR1[1]=0\n");
         assert_eq!(data.name, "A.ARC:INITIAL_INI");
+        assert_eq!(data.parts[0].range, 0..data.bytes.len());
         let plain = setup_data(b"G0 X0\n", "P.MPF").expect("readable");
         assert_eq!(
             (&plain.bytes[..], plain.name.as_str()),

@@ -64,12 +64,17 @@ pub fn report(rewritten: &Rewritten, name: &str, source: &[u8], format: MessageF
 /// A machine file's findings (K001, syntax errors) as text for stderr, in
 /// the format asked for.
 pub fn machine_report(on: &OnMachine, format: MessageFormat) -> String {
-    let report = FileReport {
-        name: &on.name,
-        source: &on.source,
-        diagnostics: &on.machine.diagnostics,
-    };
-    render(&report, format)
+    on.by_file(&on.machine.diagnostics)
+        .into_iter()
+        .map(|(name, source, diagnostics)| {
+            let report = FileReport {
+                name,
+                source,
+                diagnostics: &diagnostics,
+            };
+            render(&report, format)
+        })
+        .collect()
 }
 
 /// The machine files a run has told of: a file's findings are told once a

@@ -224,8 +224,8 @@ pub struct CheckArgs {
     /// A cycle directory of the control (CUS, CMA, CST as copied from the machine), searched after the program's own directory for the subprograms it calls, whose PROC headers N018 checks calls against (repeatable, in search order; also `cycles = [...]` in sinuprep.toml).
     #[arg(long = "cycles", value_name = "DIR")]
     pub cycles: Vec<PathBuf>,
-    /// The machine's swivel data records (`$TC_CARRn[m]=value`): each swivel of the programs is solved on the record it names (K002-K005) [default: `machine` in sinuprep.toml].
-    #[arg(long, value_name = "FILE")]
+    /// The machine: its swivel data records (`$TC_CARRn[m]=value`), machine data, tool offsets and frames, as a setup program, an `.INI` the control writes, a series start-up archive or a folder of them; each swivel of the programs is solved on the record it names (K002-K005) and the machine data a program reads are known [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "PATH")]
     pub machine: Option<PathBuf>,
     /// Add the records' fine offsets ($TC_CARR41..65), as the control does with SD42974 = 1.
     #[arg(long)]
@@ -328,8 +328,9 @@ impl WalkArgs {
 #[derive(Debug, clap::Args)]
 pub struct MachineArgs {
     /// The machine's data: an `.INI` the control writes (`INITIAL.INI`,
-    /// `_N_AX1_TEA_INI`), an archive of a series start-up (`.arc`), or a
-    /// setup program with `$TC_CARR` records.
+    /// `_N_AX1_TEA_INI`), an archive of a series start-up (`.arc`), a
+    /// folder of them (`INITIAL` first, each finding on its own file's
+    /// line), or a setup program with `$TC_CARR` records.
     pub path: PathBuf,
     /// How to print it: a table for people, or one JSON object (schema in
     /// docs/guide.md).

@@ -287,10 +287,12 @@ fn report(
                     if !diagnostics.is_empty() && told.first(&on) {
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
-                        let mut report = Report::new(args);
-                        report.add(args, colour, None, &on.name, &on.source, diagnostics);
-                        print(report, args.format, out, &mut held)?;
-                        files += 1;
+                        for (name, source, diagnostics) in on.by_file(&diagnostics) {
+                            let mut report = Report::new(args);
+                            report.add(args, colour, None, name, source, diagnostics);
+                            print(report, args.format, out, &mut held)?;
+                            files += 1;
+                        }
                     }
                 }
                 fails |= checked.fails;

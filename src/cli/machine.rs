@@ -8,7 +8,7 @@ use std::io::IsTerminal;
 
 use serde_json::json;
 
-use crate::archive::MemberKind;
+use crate::archive::{MemberKind, Part};
 use crate::cli::args::{MachineArgs, MachineFormat};
 use crate::cli::error::CliError;
 use crate::cli::render::{human, FileReport};
@@ -22,16 +22,33 @@ use crate::span::LineIndex;
 
 pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
     let path = &args.path;
-    let bytes = std::fs::read(path).map_err(|source| CliError::Read {
+    let unreadable = |source| CliError::Read {
         path: path.clone(),
         source,
-    })?;
+    };
     let shown = path.display().to_string();
-    let setup = crate::archive::setup_data(&bytes, &shown)
-        .map_err(|error| CliError::archive(&shown, error))?;
+    let (setup, (gud, macros)) = if path.is_dir() {
+        let files = crate::workspace::file::setup_files(path).map_err(unreadable)?;
+        let setup = crate::archive::setup_data_of_files(&shown, &files)
+            .map_err(|error| CliError::archive(&shown, error))?;
+        let beside = crate::workspace::definitions_beside(&path.join("-"));
+        let read: Vec<(String, Vec<u8>)> = beside
+            .iter()
+            .filter_map(|p| Some((p.display().to_string(), std::fs::read(p).ok()?)))
+            .collect();
+        (setup, definitions(&read))
+    } else {
+        let bytes = std::fs::read(path).map_err(unreadable)?;
+        let setup = crate::archive::setup_data(&bytes, &shown)
+            .map_err(|error| CliError::archive(&shown, error))?;
+        let setup = crate::archive::SetupData {
+            bytes: std::borrow::Cow::Owned(setup.bytes.into_owned()),
+            ..setup
+        };
+        (setup, definitions(&[(shown.clone(), bytes)]))
+    };
     let source = &setup.bytes[..];
     let data = MachineData::read(source);
-    let (gud, macros) = definitions(&bytes, &shown);
     let records = Machine::read(source, Reading::default());
     let axes = axes(&data);
     let mut diagnostics = data.diagnostics.clone();
@@ -42,16 +59,18 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
     } else {
         ExitStatus::Success
     };
+    let by_file = Part::split(&setup.parts, &diagnostics);
     let text = match args.format {
         MachineFormat::Json => {
-            let index = LineIndex::new(source);
-            let unreadable: Vec<_> = diagnostics
-                .iter()
-                .map(|d| {
+            let mut unreadable = Vec::new();
+            for (part, found) in &by_file {
+                let part = &setup.parts[*part];
+                let index = LineIndex::new(&source[part.range.clone()]);
+                for d in found {
                     let at = index.position(d.span.start);
-                    json!({"line": at.row, "column": at.column, "code": d.code(), "message": d.message})
-                })
-                .collect();
+                    unreadable.push(json!({"file": part.name, "line": at.row, "column": at.column, "code": d.code(), "message": d.message}));
+                }
+            }
             let records: Vec<_> = records
                 .records
                 .iter()
@@ -78,13 +97,16 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
                     "definitions: {gud} GUD variables, {macros} macros\n"
                 ));
             }
-            let report = FileReport {
-                name: &setup.name,
-                source,
-                diagnostics: &diagnostics,
-            };
             let colour = crate::cli::colour(std::io::stdout().is_terminal());
-            human(&report, colour, &mut text);
+            for (part, found) in &by_file {
+                let part = &setup.parts[*part];
+                let report = FileReport {
+                    name: &part.name,
+                    source: &source[part.range.clone()],
+                    diagnostics: found,
+                };
+                human(&report, colour, &mut text);
+            }
             text
         }
     };
@@ -92,17 +114,26 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
     Ok(status)
 }
 
-/// How many GUD variables and macros the definition members of the archive
-/// `bytes` define (none for a file that is no archive, or members that
-/// cannot be read: `check` of the archive reports those).
-fn definitions(bytes: &[u8], name: &str) -> (usize, usize) {
-    let Some(Ok(archive)) = crate::archive::read(bytes, name) else {
-        return (0, 0);
-    };
+/// How many GUD variables and macros the definition files among `files`
+/// (name, bytes) and the definition members of the archives among them
+/// define (a member or file that cannot be read is passed over: `check`
+/// of it reports why).
+fn definitions(files: &[(String, Vec<u8>)]) -> (usize, usize) {
     let mut environment = Environment::default();
-    for member in archive.members {
-        if member.kind == MemberKind::Definitions {
-            let _ = environment.read_definitions(&bytes[member.data], None);
+    for (name, bytes) in files {
+        match crate::archive::read(bytes, name) {
+            Some(Ok(archive)) => {
+                for member in archive.members {
+                    if member.kind == MemberKind::Definitions {
+                        let _ = environment.read_definitions(&bytes[member.data], None);
+                    }
+                }
+            }
+            Some(Err(_)) => {}
+            None if MemberKind::of_name(name) == MemberKind::Definitions => {
+                let _ = environment.read_definitions(bytes, None);
+            }
+            None => {}
         }
     }
     (environment.variables.len(), environment.macros.len())

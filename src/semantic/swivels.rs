@@ -30,6 +30,9 @@ pub struct OnMachine {
     /// What was read (the file, or an archive's data members joined): the
     /// machine's findings point into it.
     pub source: Vec<u8>,
+    /// The files or archive members `source` joins, where a finding is
+    /// told ([`crate::archive::Part::split`]).
+    pub parts: Vec<crate::archive::Part>,
     pub machine: Machine,
     /// The machine data, tool offsets and frame components the file holds,
     /// by the key a program reads each with ([`crate::machine::keyed`]).
@@ -44,6 +47,21 @@ pub struct OnMachine {
 }
 
 impl OnMachine {
+    /// `diagnostics` (spans into [`Self::source`]) by the file or member
+    /// they were found in: its name, its text, and them pointing into it.
+    pub fn by_file<'a>(
+        &'a self,
+        diagnostics: &[Diagnostic],
+    ) -> Vec<(&'a str, &'a [u8], Vec<Diagnostic>)> {
+        crate::archive::Part::split(&self.parts, diagnostics)
+            .into_iter()
+            .map(|(i, found)| {
+                let part = &self.parts[i];
+                (part.name.as_str(), &self.source[part.range.clone()], found)
+            })
+            .collect()
+    }
+
     /// The table under `head`, when one is named and `head` is a head
     /// (kinematics `T`, two rotary axes) other than the table's record.
     pub fn table_under(&self, head: &Record) -> Option<&Record> {

@@ -27,6 +27,49 @@ pub fn read(path: &Path) -> std::io::Result<Vec<u8>> {
     Ok(bytes)
 }
 
+/// The files of the folder `dir` that hold a machine's data, as
+/// (path shown, bytes): the data files the control writes (`INITIAL.INI`,
+/// `_N_TO_INI`, `TEA`, `UFR`, ... in either spelling) and series start-up
+/// archives (`.arc`), not the subfolders. `INITIAL` (the whole machine)
+/// comes first, the others after it by name, so that what they hold wins as
+/// it does when the control loads them after it.
+pub fn setup_files(dir: &Path) -> std::io::Result<Vec<(String, Vec<u8>)>> {
+    let mut paths: Vec<PathBuf> = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
+        let path = entry?.path();
+        let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+            continue;
+        };
+        let is_archive = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("arc"));
+        let is_data = crate::archive::MemberKind::of_name(name) == crate::archive::MemberKind::Data;
+        if (is_archive || is_data) && path.is_file() {
+            paths.push(path);
+        }
+    }
+    let initial_first = |path: &PathBuf| {
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().to_ascii_uppercase());
+        (
+            !name.as_deref().is_some_and(|n| n.contains("INITIAL")),
+            name,
+        )
+    };
+    paths.sort_by_key(initial_first);
+    if paths.is_empty() {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::NotFound,
+            "a folder without a machine's data files (`.INI`, `_N_..._INI`, `.arc`)",
+        ));
+    }
+    paths
+        .into_iter()
+        .map(|path| Ok((path.display().to_string(), read(&path)?)))
+        .collect()
+}
+
 /// A regular file's length, or why it cannot be read as a settings file.
 fn regular(metadata: &std::fs::Metadata) -> std::io::Result<u64> {
     if !metadata.is_file() {

@@ -163,18 +163,8 @@ impl Workspace {
         path: &Path,
         key: Option<&'static str>,
     ) -> Result<Vec<u8>, SettingsError> {
-        self.read(path).map_err(|source| match key {
-            Some(key) => SettingsError::ReadSetting {
-                path: path.to_path_buf(),
-                key,
-                config: config.describe(),
-                source,
-            },
-            None => SettingsError::Read {
-                path: path.to_path_buf(),
-                source,
-            },
-        })
+        self.read(path)
+            .map_err(|source| unreadable(config, path, key, source))
     }
 
     /// An editor's workspace: it reads the files in `buffers` (the open
@@ -391,10 +381,11 @@ impl Workspace {
             values::read_set(text, &mut supplied)?;
         }
         // What the machine's data hold is known offline, unless a value given
-        // says otherwise.
+        // says otherwise; of a key assigned twice, the last (the file loaded
+        // later), so the walk goes from the end.
         if let Some(on) = self.machine(config)? {
             let by = format!("the machine data of {}", on.name);
-            for (key, value) in &on.values {
+            for (key, value) in on.values.iter().rev() {
                 if supplied.get(key).is_none() {
                     supplied.insert(key.clone(), value.clone(), by.clone());
                 }
@@ -503,15 +494,25 @@ impl Workspace {
         {
             return Ok(Some(known));
         }
-        let source = self.read_setting(config, &path, key)?;
         let reading = Reading {
             fine_offsets: self.given.fine_offsets,
         };
-        let data = archive::setup_data(&source, &path.display().to_string()).map_err(|error| {
-            SettingsError::Archive {
-                path: path.clone(),
-                error,
-            }
+        let shown = path.display().to_string();
+        let read = if path.is_dir() {
+            let files = file::setup_files(&path)
+                .map_err(|source| unreadable(config, &path, key, source))?;
+            archive::setup_data_of_files(&shown, &files)
+        } else {
+            let source = self.read_setting(config, &path, key)?;
+            archive::setup_data(&source, &shown).map(|data| archive::SetupData {
+                bytes: std::borrow::Cow::Owned(data.bytes.into_owned()),
+                name: data.name,
+                parts: data.parts,
+            })
+        };
+        let data = read.map_err(|error| SettingsError::Archive {
+            path: path.clone(),
+            error,
         })?;
         let machine = Machine::read(&data.bytes, reading);
         if let Some(name) = &table {
@@ -528,6 +529,7 @@ impl Workspace {
             machine,
             values: crate::machine::keyed(&machine_data, &axes),
             name: data.name,
+            parts: data.parts,
             source: data.bytes.into_owned(),
             hirth_tolerance_deg: config
                 .hirth_tolerance
@@ -727,7 +729,7 @@ fn definitions_of(
 /// named: the `.DEF` files of its folder, and the files of a `_N_DEF_DIR`
 /// beside it or beside its folder (a control's own tree: `_N_MPF_DIR` and
 /// `_N_DEF_DIR` side by side, `_N_MGUD_DEF` within), in name order.
-fn definitions_beside(program: &Path) -> Vec<PathBuf> {
+pub fn definitions_beside(program: &Path) -> Vec<PathBuf> {
     if program == Path::new("-") {
         return Vec::new();
     }
@@ -788,6 +790,28 @@ fn codes(list: &[String], origin: &str) -> Result<Vec<String>, SettingsError> {
 
 /// Whether `name` is a record of `machine` that can be a rotary table under
 /// its heads: kinematics "P", one rotary axis.
+/// Why the file at `path`, given as an option or (`key`) in sinuprep.toml,
+/// could not be read: the error names where it was given.
+fn unreadable(
+    config: &Config,
+    path: &Path,
+    key: Option<&'static str>,
+    source: std::io::Error,
+) -> SettingsError {
+    match key {
+        Some(key) => SettingsError::ReadSetting {
+            path: path.to_path_buf(),
+            key,
+            config: config.describe(),
+            source,
+        },
+        None => SettingsError::Read {
+            path: path.to_path_buf(),
+            source,
+        },
+    }
+}
+
 fn table_record(machine: &Machine, name: &str) -> Result<(), String> {
     let Some(record) = machine.record(name) else {
         let known: Vec<&str> = machine.usable().map(|r| r.name.as_str()).collect();
