@@ -4143,6 +4143,44 @@ N20 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, _A, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\n
     assert!(text.contains("_CYC600_3=15 "), "{text}");
 }
 
+/// A swivel record's value that names a GUD variable is named (K001) with
+/// what would give it, and read from the value given with `--set`.
+#[test]
+fn a_variable_in_a_record_is_named_until_its_value_is_given() {
+    let dir = scratch("record_variable");
+    let machine = dir.join("MACHINE.SPF");
+    std::fs::write(
+        &machine,
+        "$TC_CARR23[1]=\"T\" $TC_CARR34[1]=\"HEAD\"\n$TC_CARR7[1]=1 $TC_CARR11[1]=1\n\
+$TC_CARR5[1]=_RT_HOEHE_Y\nM17\n",
+    )
+    .expect("write");
+    let program = dir.join("P.MPF");
+    std::fs::write(&program, "G0 X0\nM30\n").expect("write");
+    let check = |set: &[&str]| {
+        let mut args = vec![
+            "check",
+            "--format",
+            "short",
+            "--machine",
+            machine.to_str().expect("utf-8"),
+        ];
+        args.extend(set);
+        args.push(program.to_str().expect("utf-8"));
+        run(&args, b"")
+    };
+    let without = check(&[]);
+    let text = stdout(&without);
+    assert!(
+        text.contains("MACHINE.SPF:3:14: error[K001] `$TC_CARR5[1]` reads `_RT_HOEHE_Y`"),
+        "{text}"
+    );
+    assert_exit(&without, 1);
+    let with = check(&["--set", "_RT_HOEHE_Y=12.5"]);
+    assert!(!stdout(&with).contains("K001"), "{}", stdout(&with));
+    assert_exit(&with, 0);
+}
+
 /// Where no definition files are named, those a control would hold beside
 /// the program are read: the `.DEF` files of its folder and a `_N_DEF_DIR`
 /// beside it; one that cannot be read is passed over. A name they define is

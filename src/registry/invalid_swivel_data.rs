@@ -13,7 +13,9 @@ Reports what in a machine file (`--machine`, `machine = "..."` in sinuprep.toml)
 swivel data records the control holds: an assignment to `$TC_CARRn[m]` whose `n` names no
 parameter (1 to 65 less 47-54 and 61-63: the control raises an alarm for them), a record number
 that is not a whole number from 1 to 999999, a value that is not a constant or not of the parameter's
-type, a kinematic type other than T, P or M (`$TC_CARR23`, alarm 14153), and a record with a
+type (a value that reads a variable, `$TC_CARR5[1]=_RT_HOEHE_Y`, as setup programs of some machine
+builders write, is read from the values given with `--set` or a `values` file; without one the
+finding names the variable), a kinematic type other than T, P or M (`$TC_CARR23`, alarm 14153), and a record with a
 name or axes whose data cannot describe a machine: rotary axis 1 without a direction vector,
 mixed kinematics with one axis, two parallel axes, a position limit (`$TC_CARR30..33`) beyond
 ±100,000,000 degrees (no rotary axis has one: it is a typo or garbage), a minimum position above
@@ -37,5 +39,6 @@ $TC_CARR10[1]=0 $TC_CARR11[1]=0 $TC_CARR12[1]=-1
 
 ## Fix
 Copy the records from the control as they are (a setup program, `TO_INI.INI`, an archive's
-`INITIAL.INI`), or correct the assignment the finding names."#,
+`INITIAL.INI`), or correct the assignment the finding names; for a variable, give the value the
+control holds (`--set _RT_HOEHE_Y=125.5`)."#,
 };

@@ -13,7 +13,7 @@ use crate::kinematics::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
 use crate::registry::invalid_swivel_data::RULE;
 use crate::semantic::env::Env;
 use crate::semantic::eval::{evaluate, Lookup};
-use crate::semantic::value::Value;
+use crate::semantic::value::{Unknown, Value};
 use crate::semantic::Supplied;
 use crate::span::Span;
 use crate::syntax::tree::{Expr, LineKind, StatementKind};
@@ -49,10 +49,17 @@ enum Field {
 
 impl Machine {
     pub fn read(source: &[u8], reading: Reading) -> Machine {
+        Machine::read_knowing(source, reading, &Supplied::default())
+    }
+
+    /// The records of `source`, a value that names a variable (a GUD
+    /// variable, an R parameter: `$TC_CARR5[1]=_RT_HOEHE_Y`) read from
+    /// `known` (the values the user gives).
+    pub fn read_knowing(source: &[u8], reading: Reading, known: &Supplied) -> Machine {
         let mut fields: BTreeMap<u32, BTreeMap<u32, (Field, Span)>> = BTreeMap::new();
         let mut diagnostics = Vec::new();
         let env = Env::default();
-        let supplied = Supplied::default();
+        let supplied = known;
         for (line, error) in crate::syntax::lines_naming(source, "TC_CARR") {
             diagnostics.extend(error);
             let LineKind::Block(block) = &line.kind else {
@@ -80,7 +87,7 @@ impl Machine {
                     );
                     continue;
                 }
-                let scope = env.scope(&supplied, 0);
+                let scope = env.scope(supplied, 0);
                 let record = match assign.target.indices.as_slice() {
                     [index] => {
                         match evaluate(source, index, &scope) {
@@ -127,7 +134,21 @@ impl Machine {
                             .or_default()
                             .insert(parameter, (field, span));
                     }
-                    Err(why) => diagnostics.push(
+                    Err(Unread::Variables(names)) => {
+                        let listed = names
+                            .iter()
+                            .map(|n| format!("`{n}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ");
+                        let first = &names[0];
+                        diagnostics.push(
+                            RULE.at(assign.value.span)
+                                .message(format!("`$TC_CARR{parameter}[{record}]` reads {listed}, which neither the machine's files nor the values given hold: a GUD variable or R parameter set on the control"))
+                                .label("its value is needed")
+                                .help(format!("give its value as the control holds it: --set {first}=VALUE, or a `values` file (sinuprep.toml); until then it counts as 0 and what is solved on record {record} is in doubt")),
+                        );
+                    }
+                    Err(Unread::Why(why)) => diagnostics.push(
                         RULE.at(assign.value.span)
                             .message(format!("`$TC_CARR{parameter}[{record}]`: {why}"))
                             .label("not a value sinuprep can read"),
@@ -215,7 +236,14 @@ fn is_text(n: u32) -> bool {
     matches!(n, 21 | 22 | 23 | 34..=36)
 }
 
-fn value(source: &[u8], parameter: u32, expr: &Expr, scope: &dyn Lookup) -> Result<Field, String> {
+/// Why a parameter's value was not read.
+enum Unread {
+    /// It reads variables without a value (their names).
+    Variables(Vec<String>),
+    Why(String),
+}
+
+fn value(source: &[u8], parameter: u32, expr: &Expr, scope: &dyn Lookup) -> Result<Field, Unread> {
     // The axis identifiers are of type AXIS: a bare axis name (`C1`).
     if matches!(parameter, 21 | 22) {
         let text = String::from_utf8_lossy(expr.span.of(source));
@@ -224,9 +252,12 @@ fn value(source: &[u8], parameter: u32, expr: &Expr, scope: &dyn Lookup) -> Resu
     match evaluate(source, expr, scope) {
         Ok(Value::Number(n)) if !is_text(parameter) => Ok(Field::Number(n)),
         Ok(Value::Text(t)) if is_text(parameter) => Ok(Field::Text(t)),
-        Ok(Value::Number(_)) => Err("text expected (in quotes)".into()),
-        Ok(Value::Text(_)) => Err("a number expected".into()),
-        Err(_) => Err("the value must be a constant".into()),
+        Ok(Value::Number(_)) => Err(Unread::Why("text expected (in quotes)".into())),
+        Ok(Value::Text(_)) => Err(Unread::Why("a number expected".into())),
+        Err(Unknown::Variables(read)) if !read.is_empty() => Err(Unread::Variables(
+            read.into_iter().map(|(name, _)| name).collect(),
+        )),
+        Err(_) => Err(Unread::Why("the value must be a constant".into())),
     }
 }
 
@@ -458,8 +489,37 @@ mod tests {
             "{found:?}"
         );
         assert!(
-            found[4].1.contains("the value must be a constant"),
+            found[4]
+                .1
+                .contains("`$TC_CARR1[4]` reads `R1`, which neither"),
             "{found:?}"
         );
+    }
+
+    /// A record's value that names a variable is read from the values the
+    /// user gives; without one it is named, with what would give it.
+    #[test]
+    fn a_variable_in_a_record_is_read_from_the_values_given() {
+        let source = b"$TC_CARR23[1]=\"T\" $TC_CARR8[1]=1 $TC_CARR5[1]=_RT_HOEHE_Y*2\n";
+        let without = Machine::read(source, Reading::default());
+        let told = &without.diagnostics[0];
+        assert!(
+            told.message.contains("reads `_RT_HOEHE_Y`"),
+            "{}",
+            told.message
+        );
+        assert!(
+            told.help
+                .as_deref()
+                .is_some_and(|h| h.contains("--set _RT_HOEHE_Y=VALUE")),
+            "{:?}",
+            told.help
+        );
+        let mut known = Supplied::default();
+        known.insert("_RT_HOEHE_Y".into(), Value::Number(12.5), "--set".into());
+        let with = Machine::read_knowing(source, Reading::default(), &known);
+        assert!(with.diagnostics.is_empty(), "{:?}", with.diagnostics);
+        let record = with.record("1").expect("record 1");
+        assert_eq!(record.offsets[1].y, 25.0, "$TC_CARR5 is l2 along y");
     }
 }

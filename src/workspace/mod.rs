@@ -359,6 +359,30 @@ impl Workspace {
         })
     }
 
+    /// The values the user gives: `--values` (or else sinuprep.toml's
+    /// `values`) and `--set`, the latter winning.
+    fn given_values(&self, config: &Config) -> Result<Supplied, SettingsError> {
+        let mut supplied = Supplied::default();
+        let file = match &self.given.values {
+            Some(path) => Some((path.clone(), None)),
+            None => config
+                .values
+                .as_ref()
+                .map(|p| (config.resolve(p), Some("values"))),
+        };
+        if let Some((path, key)) = file {
+            values::read_file(
+                &path,
+                &self.read_setting(config, &path, key)?,
+                &mut supplied,
+            )?;
+        }
+        for text in &self.given.set {
+            values::read_set(text, &mut supplied)?;
+        }
+        Ok(supplied)
+    }
+
     /// Measured values and HEAD_DEF: given first, then `sinuprep.toml`.
     fn inputs(
         &self,
@@ -373,13 +397,7 @@ impl Workspace {
                 None => file.as_ref().map(|p| (config.resolve(p), Some(key))),
             };
         let read = |path: &Path, key: Option<&'static str>| self.read_setting(config, path, key);
-        let mut supplied = Supplied::default();
-        if let Some((path, key)) = &setting(&given.values, &config.values, "values") {
-            values::read_file(path, &read(path, *key)?, &mut supplied)?;
-        }
-        for text in &given.set {
-            values::read_set(text, &mut supplied)?;
-        }
+        let mut supplied = self.given_values(config)?;
         // What the machine's data hold is known offline, unless a value given
         // says otherwise; of a key assigned twice, the last (the file loaded
         // later), so the walk goes from the end.
@@ -514,7 +532,7 @@ impl Workspace {
             path: path.clone(),
             error,
         })?;
-        let machine = Machine::read(&data.bytes, reading);
+        let machine = Machine::read_knowing(&data.bytes, reading, &self.given_values(config)?);
         if let Some(name) = &table {
             if let Err(why) = table_record(&machine, name) {
                 return Err(SettingsError::Table {
