@@ -62,6 +62,7 @@ pub mod machine;
 pub mod measure;
 pub mod registry;
 pub mod rotation;
+pub mod run;
 pub mod semantic;
 pub mod span;
 pub mod suggest;

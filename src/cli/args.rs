@@ -76,6 +76,10 @@ pub enum Command {
     /// software limits and dynamics, its swivel data records, and what could
     /// not be read (a machine-data file, an archive of a series start-up).
     Machine(MachineArgs),
+    /// Run a program offline on the machine its own data describe (the dry
+    /// run): each block's machine positions against the software limits
+    /// (K007), and the time it takes from the feeds and the axes' dynamics.
+    Run(RunArgs),
     /// Print the completion script of a shell (`sinuprep completions bash >
     /// /usr/share/bash-completion/completions/sinuprep`).
     Completions(CompletionsArgs),
@@ -323,6 +327,43 @@ impl WalkArgs {
             force_exclude: self.force_exclude.then_some(true),
         }
     }
+}
+
+#[derive(Debug, clap::Args)]
+pub struct RunArgs {
+    /// The program to run (a main program; `-` reads stdin).
+    pub path: PathBuf,
+    /// The machine: its machine data (axes, limits, dynamics), tool offsets and
+    /// settable frames, as an `.INI` the control writes, a series start-up
+    /// archive or a folder of them [default: `machine` in sinuprep.toml].
+    #[arg(long, value_name = "PATH")]
+    pub machine: Option<PathBuf>,
+    /// A definition file (GUD variables, macros) the program uses (repeatable; also `definitions = [...]` in sinuprep.toml).
+    #[arg(long = "definitions", value_name = "FILE")]
+    pub definitions: Vec<PathBuf>,
+    #[command(flatten)]
+    pub input: InputArgs,
+    /// How to print it: a summary for people, one JSON object (schema in
+    /// docs/guide.md), or SARIF 2.1.0 of the limits passed (K007).
+    #[arg(long = "output-format", visible_alias = "format", value_enum, default_value_t = RunFormat::Human)]
+    pub format: RunFormat,
+    /// With `--format json`: every block executed, its line, its machine
+    /// positions and the time so far, written as the run goes.
+    #[arg(long)]
+    pub blocks: bool,
+    /// Check against the second software limits (MD36120/MD36130), as the PLC may select them.
+    #[arg(long)]
+    pub second_limits: bool,
+    /// The dynamic response group whose MD32300/MD32431 apply: 0 DYNNORM, 1 DYNPOS, 2 DYNROUGH, 3 DYNSEMIFIN, 4 DYNFINISH.
+    #[arg(long, value_name = "N", default_value_t = 0, value_parser = clap::value_parser!(u8).range(0..5))]
+    pub dynamic_group: u8,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RunFormat {
+    Human,
+    Json,
+    Sarif,
 }
 
 #[derive(Debug, clap::Args)]

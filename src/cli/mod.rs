@@ -40,6 +40,7 @@ mod probe;
 pub mod render;
 mod rewrite;
 mod rule;
+mod run;
 mod walk;
 
 pub use args::Args;
@@ -118,6 +119,7 @@ pub fn run(args: &Args) -> Result<ExitStatus, CliError> {
         args::Command::Probe(probe) => probe::run(probe),
         args::Command::Axis(axis) => axis::run(axis),
         args::Command::Machine(machine) => machine::run(machine),
+        args::Command::Run(run) => run::run(run),
         args::Command::Completions(completions) => describe::completions(completions.shell),
         args::Command::Manpage(manpage) => describe::manpage(manpage),
         args::Command::Lsp => crate::lsp::run()

@@ -5,6 +5,7 @@
 //! diagnostics from the one definition (`RULE.at(span)`) that `sinuprep rule`
 //! prints; the `N...` rules live with their checkers in `lint::rules`.
 
+pub mod axis_beyond_limit;
 pub mod cycle600_additive_extrinsic_unknown_active;
 pub mod cycle600_argument_count;
 pub mod cycle600_computed_at_run_time;
@@ -59,6 +60,7 @@ pub static ALL: &[&RuleInfo] = &[
     &hirth_rounding::RULE,
     &undefined_swivel_record::RULE,
     &unreadable_machine_data::RULE,
+    &axis_beyond_limit::RULE,
     &syntax::UNCLOSED_STRING,
     &syntax::UNBALANCED_BRACKET,
     &syntax::INVALID_NUMBER,

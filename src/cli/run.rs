@@ -1,0 +1,269 @@
+//! `sinuprep run`: the dry run of one program on the machine its own data
+//! describe ([`crate::run`]), printed as a summary, as JSON (every block
+//! with `--blocks`, written as the run goes) or as SARIF of the limits
+//! passed. A limit passed fails the run (exit 1).
+
+use std::io::{IsTerminal, Write};
+
+use serde_json::json;
+
+use crate::cli::args::{RunArgs, RunFormat};
+use crate::cli::error::CliError;
+use crate::cli::input::{read, Found};
+use crate::cli::render::{human, FileReport, Located, Sarif};
+use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
+use crate::diagnostic::Diagnostic;
+use crate::emit::number::format;
+use crate::machine::MachineData;
+use crate::registry::axis_beyond_limit::RULE;
+use crate::run::{Options, Report, Setup, Side, Violation};
+use crate::semantic::Model;
+use crate::workspace::{Given, Workspace};
+
+pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
+    let workspace = Workspace::new(Given {
+        machine: args.machine.clone(),
+        definitions: args.definitions.clone(),
+        config: args.input.config.clone(),
+        values: args.input.values.clone(),
+        set: args.input.set.clone(),
+        heads: args.input.heads.clone(),
+        ..Given::default()
+    })?;
+    let file = read(&Found::named(args.path.clone()))?;
+    let resolved = workspace.for_check(&args.path)?;
+    let on = workspace.machine(&resolved.config)?;
+    let (setup, machine_name) = match &on {
+        Some(on) => (
+            Setup::of(&MachineData::read(&on.source)),
+            Some(on.name.clone()),
+        ),
+        None => (Setup::default(), None),
+    };
+    let setup = if setup.axes.is_empty() {
+        // No machine, or one without axis data: the geometry axes alone,
+        // positions and frames without limits or time.
+        Setup {
+            axes: ["X", "Y", "Z"]
+                .iter()
+                .enumerate()
+                .map(|(g, name)| crate::run::RunAxis {
+                    name: (*name).to_string(),
+                    geometry: Some(g),
+                    machine: None,
+                })
+                .collect(),
+            ..setup
+        }
+    } else {
+        setup
+    };
+    let kind = crate::syntax::program_kind(Some(&file.name), &file.bytes);
+    let model = Model::build_with(
+        &file.bytes,
+        kind,
+        resolved.settings.environment.expansions.clone(),
+    );
+    let options = Options {
+        dynamic_group: usize::from(args.dynamic_group),
+        second_limits: args.second_limits,
+        ..Options::default()
+    };
+    let supplied = &resolved.settings.supplied;
+    let names: Vec<String> = setup.axes.iter().map(|a| a.machine_name()).collect();
+    let mut report = if args.blocks && args.format == RunFormat::Json {
+        let mut written = None;
+        write_stdout_with(|out| {
+            let mut out = std::io::BufWriter::new(out);
+            write!(out, "{{\"blocks\": [")?;
+            let mut first = true;
+            let mut failed: Option<std::io::Error> = None;
+            let report = crate::run::run(&model, &setup, supplied, &options, |end| {
+                if failed.is_some() {
+                    return;
+                }
+                let mcs: serde_json::Map<String, serde_json::Value> = names
+                    .iter()
+                    .zip(end.mcs)
+                    .filter_map(|(name, v)| Some((name.clone(), json!(v.as_ref()?))))
+                    .collect();
+                let block = json!({"line": end.line, "mcs": mcs, "t_s": end.t_s});
+                let comma = if first { "" } else { "," };
+                first = false;
+                if let Err(error) = write!(out, "{comma}\n  {block}") {
+                    failed = Some(error);
+                }
+            });
+            if let Some(error) = failed {
+                return Err(error);
+            }
+            let summary = summary(&report, machine_name.as_deref());
+            let text = serde_json::to_string_pretty(&summary).expect("JSON of plain values");
+            // The summary's fields after the blocks, in the same object.
+            write!(out, "\n],\n{}\n", &text[1..])?;
+            out.flush()?;
+            written = Some(report);
+            Ok(())
+        })?;
+        match written {
+            Some(report) => report,
+            None => return Ok(ExitStatus::Success),
+        }
+    } else {
+        crate::run::run(&model, &setup, supplied, &options, |_| {})
+    };
+    report.violations.sort_by_key(|v| v.line);
+    let diagnostics: Vec<Diagnostic> = report.violations.iter().map(diagnostic).collect();
+    let status = if diagnostics.is_empty() {
+        ExitStatus::Success
+    } else {
+        ExitStatus::Failure
+    };
+    match args.format {
+        RunFormat::Json if args.blocks => {}
+        RunFormat::Json => {
+            let mut text = serde_json::to_string_pretty(&summary(&report, machine_name.as_deref()))
+                .expect("JSON of plain values");
+            text.push('\n');
+            write_stdout(text.as_bytes())?;
+        }
+        RunFormat::Sarif => {
+            let mut sarif = Sarif::default();
+            let mut located = Located::new(&file.name, &file.bytes, diagnostics);
+            located.path = (args.path != std::path::Path::new("-")).then(|| args.path.clone());
+            sarif.add(&located);
+            write_stdout(sarif.finish().as_bytes())?;
+        }
+        RunFormat::Human => {
+            let mut text = text(&report, &file.name, machine_name.as_deref());
+            let colour = crate::cli::colour(std::io::stdout().is_terminal());
+            human(
+                &FileReport {
+                    name: &file.name,
+                    source: &file.bytes,
+                    diagnostics: &diagnostics,
+                },
+                colour,
+                &mut text,
+            );
+            write_stdout(text.as_bytes())?;
+        }
+    }
+    Ok(status)
+}
+
+/// A limit passed, as a finding on its block.
+fn diagnostic(violation: &Violation) -> Diagnostic {
+    let (side, datum) = match violation.side {
+        Side::Plus => ("plus", "MD36110 $MA_POS_LIMIT_PLUS"),
+        Side::Minus => ("minus", "MD36100 $MA_POS_LIMIT_MINUS"),
+    };
+    let by = (violation.value - violation.limit).abs();
+    let stays = match violation.last_line {
+        last if last > violation.line => format!(" (beyond it up to line {last})"),
+        _ => String::new(),
+    };
+    RULE.at(violation.span)
+        .message(format!(
+            "machine axis {} reaches {}, {} past its {side} software limit {} ({datum}){stays}: the control stops here with alarm 10720",
+            violation.axis,
+            format(violation.value, 3),
+            format(by, 3),
+            format(violation.limit, 3),
+        ))
+        .label("beyond the travel")
+        .help("program the move within the travel, or check the zero offset, the tool and the machine data given")
+}
+
+/// The JSON contract (docs/guide.md).
+fn summary(report: &Report, machine: Option<&str>) -> serde_json::Value {
+    let upper = report.time_bounds_s[1];
+    let axes: serde_json::Map<String, serde_json::Value> = report
+        .axes
+        .iter()
+        .map(|t| {
+            (
+                t.axis.clone(),
+                json!({"min": t.min, "max": t.max, "limits": t.limits}),
+            )
+        })
+        .collect();
+    json!({
+        "machine": machine,
+        "time_s": report.time_s,
+        "time_bounds_s": [report.time_bounds_s[0], upper.is_finite().then_some(upper)],
+        "blocks_without_time": report.blocks_without_time,
+        "tools": report.tools,
+        "axes": axes,
+        "violations": report.violations,
+        "unknown": report.unknown,
+        "assumptions": report.assumptions,
+        "blocks_run": report.blocks,
+    })
+}
+
+/// The summary for people.
+fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
+    let mut text = match machine {
+        Some(machine) => format!("{name} on {machine}: {} blocks run\n", report.blocks),
+        None => format!(
+            "{name} without a machine (--machine): {} blocks run; no limits, no time\n",
+            report.blocks
+        ),
+    };
+    let upper = report.time_bounds_s[1];
+    let upper = if upper.is_finite() {
+        seconds(upper)
+    } else {
+        "? (a dynamic datum missing)".to_string()
+    };
+    text.push_str(&format!(
+        "time {} (at least {}, at most {upper})",
+        seconds(report.time_s),
+        seconds(report.time_bounds_s[0])
+    ));
+    if report.blocks_without_time > 0 {
+        text.push_str(&format!(
+            ", {} blocks not timed",
+            report.blocks_without_time
+        ));
+    }
+    text.push('\n');
+    if !report.tools.is_empty() {
+        let tools: Vec<String> = report
+            .tools
+            .iter()
+            .map(|t| format!("T{} {}", t.t, seconds(t.time_s)))
+            .collect();
+        text.push_str(&format!("per tool: {}\n", tools.join(", ")));
+    }
+    let value = |v: Option<f64>| v.map_or_else(|| "-".to_string(), |v| format(v, 3));
+    for travel in &report.axes {
+        text.push_str(&format!(
+            "{:<8} {:>12} .. {:<12} limits {} .. {}\n",
+            travel.axis,
+            value(travel.min),
+            value(travel.max),
+            value(travel.limits[0]),
+            value(travel.limits[1])
+        ));
+    }
+    for unknown in &report.unknown {
+        match unknown.line {
+            0 => text.push_str(&format!("note: {}\n", unknown.why)),
+            line => text.push_str(&format!("line {line}: {}\n", unknown.why)),
+        }
+    }
+    for assumption in &report.assumptions {
+        text.push_str(&format!("assumed: {assumption}\n"));
+    }
+    text
+}
+
+fn seconds(s: f64) -> String {
+    if s >= 60.0 {
+        format!("{}:{:06.3} min", (s / 60.0).floor(), s % 60.0)
+    } else {
+        format!("{} s", format(s, 3))
+    }
+}

@@ -1,0 +1,1480 @@
+//! The interpreter: one block after another in the order the control runs
+//! them, the modal state it keeps, and what each block's motion does on the
+//! machine (see the module above for what is modelled).
+
+use std::collections::{BTreeMap, HashMap, HashSet};
+
+use nalgebra::{Rotation3, Vector3};
+
+use crate::run::arc::Arc;
+use crate::run::frame::{rpy, Frame};
+use crate::run::profile::{rest_to_rest, Limits};
+use crate::run::setup::Setup;
+use crate::run::{BlockEnd, Options, Report, Side, ToolTime, Travel, Unknown, Violation};
+use crate::semantic::addresses::{of_plain_into, Address};
+use crate::semantic::eval::{evaluate, key, variable_key, Lookup};
+use crate::semantic::model::Model;
+use crate::semantic::value::{Origin, Unknown as Missing, Value};
+use crate::semantic::Supplied;
+use crate::span::Span;
+use crate::syntax::tree::{
+    upper, Block, Expr, ExprKind, FrameKind, GotoKind, GotoTarget, Initializer, LineKind,
+    StatementKind, TypeKind, WordValue,
+};
+
+/// At most this many things unknown are told: a loop repeats its own.
+const MOST_UNKNOWN: usize = 1000;
+
+/// Runs the program `model` holds on `setup`, `known` giving what the
+/// program reads and does not assign (machine data, values the user
+/// gives); `each` is handed every block's end.
+pub fn run(
+    model: &Model,
+    setup: &Setup,
+    known: &Supplied,
+    options: &Options,
+    mut each: impl FnMut(BlockEnd),
+) -> Report {
+    let mut machine = Interpreter::new(model, setup, known, options);
+    let rows = model.lines.len();
+    let mut row = 0;
+    while row < rows {
+        if machine.report.blocks >= options.block_limit {
+            let span = model.lines.raw(row).content;
+            machine.unknown(
+                row,
+                span,
+                format!(
+                    "the run stopped after {} blocks: a loop that does not end offline (its condition reads a value unknown here?)",
+                    options.block_limit
+                ),
+            );
+            break;
+        }
+        machine.report.blocks += 1;
+        let flow = machine.block(row);
+        each(BlockEnd {
+            line: row + 1,
+            mcs: &machine.mcs,
+            t_s: machine.report.time_s,
+        });
+        row = match flow {
+            Flow::Next => row + 1,
+            Flow::To(next) => next,
+            Flow::End => break,
+        };
+    }
+    machine.finish()
+}
+
+/// Where the run goes after a block.
+enum Flow {
+    Next,
+    To(usize),
+    End,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Motion {
+    Rapid,
+    Linear,
+    Clockwise,
+    Counterclockwise,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum FeedMode {
+    PerMinute,
+    PerRevolution,
+    InverseTime,
+}
+
+/// How an axis word's value is meant: as the modal G90/G91 says, or AC/IC.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Coordinate {
+    Modal,
+    Absolute,
+    Incremental,
+}
+
+/// One address word of a block, its value evaluated.
+struct Word {
+    /// Upper case, the extension included (`X`, `X1`, `G`, `CR`).
+    name: String,
+    value: Result<f64, String>,
+    coordinate: Coordinate,
+}
+
+/// A block's words, by what they are for.
+#[derive(Default)]
+struct Content {
+    words: Vec<Word>,
+    frame: Option<(FrameKind, Vec<Word>)>,
+    commands: Vec<String>,
+    /// Subprograms and cycles called.
+    calls: Vec<String>,
+}
+
+struct Variables<'a> {
+    local: HashMap<String, Value>,
+    known: &'a Supplied,
+}
+
+impl Lookup for Variables<'_> {
+    fn variable(&self, key: &str) -> Result<Value, Missing> {
+        if let Some(value) = self.local.get(key) {
+            return Ok(value.clone());
+        }
+        match self.known.get(key) {
+            Some((value, _)) => Ok(value.clone()),
+            None => Err(Missing::Variables(vec![(
+                key.to_string(),
+                Origin::NeverAssigned,
+            )])),
+        }
+    }
+}
+
+struct Interpreter<'a, 'src> {
+    model: &'a Model<'src>,
+    source: &'src [u8],
+    setup: &'a Setup,
+    options: &'a Options,
+    variables: Variables<'a>,
+    /// Closing row to opening row, of the control blocks.
+    openers: HashMap<usize, usize>,
+    /// FOR loops entered and not yet left, by their opening row.
+    in_for: HashSet<usize>,
+    /// Each run axis's machine position; `None` until known.
+    mcs: Vec<Option<f64>>,
+    motion: Motion,
+    incremental: bool,
+    /// 0: G17 (XY, infeed Z), 1: G18 (ZX, infeed Y), 2: G19 (YZ, infeed X).
+    plane: usize,
+    /// Program lengths to the machine's: 25.4 for G70/G700 on a metric machine.
+    length_scale: f64,
+    /// Feeds too (G700, G710).
+    feed_scale: f64,
+    feed_mode: FeedMode,
+    /// As programmed, per minute (or per revolution, or inverse time).
+    feed: Option<f64>,
+    spindle: Option<f64>,
+    exact_stop: bool,
+    soft: bool,
+    settable: Frame,
+    programmable: Frame,
+    preselected: Option<u32>,
+    tool: Option<u32>,
+    edge: Option<u32>,
+    /// The MD10600 rotation order is known (RPY) or a rotation is about one axis.
+    report: Report,
+    told: HashSet<(usize, String)>,
+    minimum: Vec<Option<f64>>,
+    maximum: Vec<Option<f64>>,
+    violations: Vec<Violation>,
+    /// The violations of the axes (axis, plus side) beyond a limit at the
+    /// last block's end: a block that stays beyond continues them.
+    beyond: HashMap<(usize, bool), usize>,
+    /// A violation by the block it began in and its key: a loop that passes
+    /// again adds to it.
+    began: HashMap<(usize, usize, bool), usize>,
+    tool_times: BTreeMap<String, f64>,
+    upper_complete: bool,
+    words: Vec<Address>,
+}
+
+impl<'a, 'src> Interpreter<'a, 'src> {
+    fn new(
+        model: &'a Model<'src>,
+        setup: &'a Setup,
+        known: &'a Supplied,
+        options: &'a Options,
+    ) -> Self {
+        let axes = setup.axes.len();
+        let openers = model
+            .blocks
+            .closed()
+            .iter()
+            .map(|c| (c.end, c.row))
+            .collect();
+        let mut report = Report::default();
+        report.assumptions.push(
+            "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), G64 continuous path, BRISK; positions unknown until programmed".to_string(),
+        );
+        report.assumptions.push(
+            "G0 interpolates linearly (MD20730 G0_LINEAR_MODE), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
+        );
+        Interpreter {
+            model,
+            source: model.source,
+            setup,
+            options,
+            variables: Variables {
+                local: HashMap::new(),
+                known,
+            },
+            openers,
+            in_for: HashSet::new(),
+            mcs: vec![None; axes],
+            motion: Motion::Rapid,
+            incremental: false,
+            plane: 0,
+            length_scale: 1.0,
+            feed_scale: 1.0,
+            feed_mode: FeedMode::PerMinute,
+            feed: None,
+            spindle: None,
+            exact_stop: false,
+            soft: false,
+            settable: Frame::identity(axes),
+            programmable: Frame::identity(axes),
+            preselected: None,
+            tool: None,
+            edge: None,
+            report,
+            told: HashSet::new(),
+            minimum: vec![None; axes],
+            maximum: vec![None; axes],
+            violations: Vec::new(),
+            beyond: HashMap::new(),
+            began: HashMap::new(),
+            tool_times: BTreeMap::new(),
+            upper_complete: true,
+            words: Vec::with_capacity(16),
+        }
+    }
+
+    fn unknown(&mut self, row: usize, span: Span, why: String) {
+        if self.report.unknown.len() >= MOST_UNKNOWN || !self.told.insert((row, why.clone())) {
+            return;
+        }
+        self.report.unknown.push(Unknown {
+            line: if span == Span::default() && row == usize::MAX {
+                0
+            } else {
+                row + 1
+            },
+            span,
+            why,
+        });
+    }
+
+    /// Said once a run, not tied to a block.
+    fn note(&mut self, why: String) {
+        if !self.told.insert((usize::MAX, why.clone())) {
+            return;
+        }
+        self.report.unknown.push(Unknown {
+            line: 0,
+            span: Span::default(),
+            why,
+        });
+    }
+
+    /// Executes line `row`.
+    fn block(&mut self, row: usize) -> Flow {
+        let raw = self.model.lines.raw(row);
+        if self.model.lines.is_plain(row) {
+            let mut words = std::mem::take(&mut self.words);
+            of_plain_into(self.source, raw.content, &mut words);
+            let content = Content {
+                words: words.iter().map(|a| self.plain_word(a)).collect(),
+                ..Content::default()
+            };
+            self.words = words;
+            return self.apply(row, raw.content, content);
+        }
+        let line = self.model.lines.line(row);
+        let LineKind::Block(block) = &line.kind else {
+            return Flow::Next;
+        };
+        self.tree_block(row, raw.content, block)
+    }
+
+    fn plain_word(&self, address: &Address) -> Word {
+        let name = upper(address.name.of(self.source));
+        let value = address
+            .number
+            .and_then(|n| {
+                std::str::from_utf8(n.of(self.source))
+                    .ok()?
+                    .parse::<f64>()
+                    .ok()
+            })
+            .ok_or_else(|| format!("`{}` has no value", upper(address.span.of(self.source))));
+        Word {
+            name,
+            value,
+            coordinate: Coordinate::Modal,
+        }
+    }
+
+    fn tree_block(&mut self, row: usize, span: Span, block: &Block) -> Flow {
+        let mut content = Content::default();
+        let mut in_frame = false;
+        let source = self.source;
+        let mut condition: Option<bool> = None;
+        for statement in &block.statements {
+            match &statement.kind {
+                StatementKind::Word(word) => {
+                    let mut name = upper(word.address.text(source));
+                    if let Some(extension) = word.extension {
+                        name.push_str(&upper(extension.of(source)));
+                    }
+                    let (value, coordinate) = match &word.value {
+                        WordValue::Number(n) => (Ok(n.value), Coordinate::Modal),
+                        WordValue::Expr(expr) => self.word_value(expr),
+                    };
+                    let word = Word {
+                        name,
+                        value,
+                        coordinate,
+                    };
+                    match (&mut content.frame, in_frame) {
+                        (Some((_, words)), true) => words.push(word),
+                        _ => content.words.push(word),
+                    }
+                }
+                StatementKind::Assign(assign) => {
+                    let name = assign.target.name.upper(source);
+                    if assign.target.indices.is_empty()
+                        && matches!(name.as_str(), "CR" | "AR" | "AP" | "RP" | "TURN" | "RPL")
+                    {
+                        let (value, coordinate) = self.word_value(&assign.value);
+                        let word = Word {
+                            name,
+                            value,
+                            coordinate,
+                        };
+                        match (&mut content.frame, in_frame) {
+                            (Some((_, words)), true) => words.push(word),
+                            _ => content.words.push(word),
+                        }
+                        continue;
+                    }
+                    let key = variable_key(source, &assign.target, &self.variables);
+                    let value = evaluate(source, &assign.value, &self.variables);
+                    match (key, value) {
+                        (Ok(key), Ok(value)) => {
+                            self.variables.local.insert(key, value);
+                        }
+                        (Ok(key), Err(missing)) => {
+                            self.variables.local.remove(&key);
+                            self.unknown(row, statement.span, format!("`{key}` is assigned a value unknown offline ({missing}): what reads it is unknown; give it with --set"));
+                        }
+                        (Err(missing), _) => {
+                            self.unknown(
+                                row,
+                                statement.span,
+                                format!("an assignment's target is unknown offline ({missing})"),
+                            );
+                        }
+                    }
+                }
+                StatementKind::Def(def) => {
+                    for declarator in &def.variables {
+                        let name = declarator.name.upper(source);
+                        let value = match &declarator.init {
+                            Some(Initializer::Expr(expr)) => {
+                                evaluate(source, expr, &self.variables).ok()
+                            }
+                            Some(Initializer::List(_)) => None,
+                            // The control sets what a DEF does not initialise to 0 (text: empty).
+                            None if declarator.dimensions.is_empty() => Some(
+                                if matches!(
+                                    def.data_type.kind,
+                                    TypeKind::String | TypeKind::Axis | TypeKind::Frame
+                                ) {
+                                    Value::Text(String::new())
+                                } else {
+                                    Value::Number(0.0)
+                                },
+                            ),
+                            None => None,
+                        };
+                        match value {
+                            Some(value) => {
+                                self.variables.local.insert(key(&name, &[]), value);
+                            }
+                            None => {
+                                self.variables.local.remove(&name);
+                            }
+                        }
+                    }
+                }
+                StatementKind::Frame(frame) => {
+                    content.frame = Some((frame.kind, Vec::new()));
+                    in_frame = true;
+                }
+                StatementKind::Command(name) => {
+                    content.commands.push(name.upper(source));
+                }
+                StatementKind::Call(call) => {
+                    content.calls.push(call.name.upper(source));
+                }
+                StatementKind::IndirectCall { keyword, .. } => {
+                    content.calls.push(keyword.upper(source));
+                }
+                StatementKind::If { condition: expr } => {
+                    let jumps = block
+                        .statements
+                        .iter()
+                        .any(|s| matches!(s.kind, StatementKind::Goto(_)));
+                    let holds = self.condition(row, statement.span, expr, "taken as false");
+                    if jumps {
+                        condition = Some(holds);
+                        continue;
+                    }
+                    let flow = if holds {
+                        Flow::Next
+                    } else {
+                        match self.model.blocks.opened_on(row) {
+                            Some(closed) => Flow::To(closed.else_row.unwrap_or(closed.end) + 1),
+                            None => Flow::End,
+                        }
+                    };
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::Else => {
+                    // Reached from the IF's branch: on past the ENDIF.
+                    let flow = match self.model.blocks.else_end(row) {
+                        Some(end) => Flow::To(end + 1),
+                        None => Flow::Next,
+                    };
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::While { condition: expr } => {
+                    let holds = self.condition(
+                        row,
+                        statement.span,
+                        expr,
+                        "taken as false: the loop is left",
+                    );
+                    let flow = match (holds, self.model.blocks.opened_on(row)) {
+                        (true, _) => Flow::Next,
+                        (false, Some(closed)) => Flow::To(closed.end + 1),
+                        (false, None) => Flow::End,
+                    };
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::EndWhile => {
+                    let flow = self.openers.get(&row).map_or(Flow::Next, |&o| Flow::To(o));
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::For {
+                    variable,
+                    start,
+                    end,
+                } => {
+                    let name = key(&variable.upper(source), &[]);
+                    if self.in_for.insert(row) {
+                        match evaluate(source, start, &self.variables) {
+                            Ok(value) => {
+                                self.variables.local.insert(name.clone(), value);
+                            }
+                            Err(missing) => {
+                                self.unknown(row, statement.span, format!("the FOR loop's start is unknown offline ({missing}): the loop is left"));
+                                self.in_for.remove(&row);
+                                return self.leave(row, span, content);
+                            }
+                        }
+                    }
+                    let counter = self.variables.local.get(&name).and_then(Value::number);
+                    let last = evaluate(source, end, &self.variables)
+                        .ok()
+                        .and_then(|v| v.number());
+                    match counter.zip(last) {
+                        Some((counter, last)) if counter <= last => {
+                            return self.then(row, span, content, Flow::Next);
+                        }
+                        Some(_) => {}
+                        None => self.unknown(
+                            row,
+                            statement.span,
+                            "the FOR loop's end is unknown offline: the loop is left".to_string(),
+                        ),
+                    }
+                    self.in_for.remove(&row);
+                    return self.leave(row, span, content);
+                }
+                StatementKind::EndFor => {
+                    let Some(&opener) = self.openers.get(&row) else {
+                        return self.then(row, span, content, Flow::Next);
+                    };
+                    let counter = self.for_counter(opener);
+                    if let Some(name) = counter {
+                        let next = self
+                            .variables
+                            .local
+                            .get(&name)
+                            .and_then(Value::number)
+                            .map(|n| n + 1.0);
+                        match next {
+                            Some(next) => {
+                                self.variables.local.insert(name, Value::Number(next));
+                            }
+                            None => {
+                                self.in_for.remove(&opener);
+                                return self.then(row, span, content, Flow::Next);
+                            }
+                        }
+                    }
+                    return self.then(row, span, content, Flow::To(opener));
+                }
+                StatementKind::Loop => return self.then(row, span, content, Flow::Next),
+                StatementKind::EndLoop => {
+                    let flow = self
+                        .openers
+                        .get(&row)
+                        .map_or(Flow::Next, |&o| Flow::To(o + 1));
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::Repeat { targets, .. } if targets.is_empty() => {
+                    return self.then(row, span, content, Flow::Next);
+                }
+                StatementKind::Repeat { .. } => {
+                    self.unknown(row, statement.span, "REPEAT of a section is not followed: the section runs once where it stands".to_string());
+                }
+                StatementKind::Until { condition: expr } => {
+                    let holds = self.condition(
+                        row,
+                        statement.span,
+                        expr,
+                        "taken as true: the loop is left",
+                    );
+                    let flow = match (holds, self.openers.get(&row)) {
+                        (false, Some(&opener)) => Flow::To(opener + 1),
+                        _ => Flow::Next,
+                    };
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::Goto(goto) => {
+                    if condition == Some(false) {
+                        continue;
+                    }
+                    let flow = self.jump(row, statement.span, goto.kind, goto.target.as_ref());
+                    return self.then(row, span, content, flow);
+                }
+                StatementKind::Case(_) => {
+                    self.unknown(
+                        row,
+                        statement.span,
+                        "CASE is not followed: the run goes on with the next block".to_string(),
+                    );
+                }
+                StatementKind::SyncAction(_) => {
+                    self.unknown(
+                        row,
+                        statement.span,
+                        "a synchronized action acts in the main run: not modelled".to_string(),
+                    );
+                }
+                _ => {}
+            }
+        }
+        self.apply(row, span, content)
+    }
+
+    /// The counter of the FOR loop on `row`.
+    fn for_counter(&self, row: usize) -> Option<String> {
+        let line = self.model.lines.line(row);
+        let LineKind::Block(block) = &line.kind else {
+            return None;
+        };
+        block.statements.iter().find_map(|s| match &s.kind {
+            StatementKind::For { variable, .. } => Some(key(&variable.upper(self.source), &[])),
+            _ => None,
+        })
+    }
+
+    /// The block's words applied, then on past the end of the loop it opens.
+    fn leave(&mut self, row: usize, span: Span, content: Content) -> Flow {
+        let flow = match self.model.blocks.opened_on(row) {
+            Some(closed) => Flow::To(closed.end + 1),
+            None => Flow::End,
+        };
+        self.then(row, span, content, flow)
+    }
+
+    /// The block's words applied, then `flow` (unless the block ends the program).
+    fn then(&mut self, row: usize, span: Span, content: Content, flow: Flow) -> Flow {
+        match self.apply(row, span, content) {
+            Flow::End => Flow::End,
+            _ => flow,
+        }
+    }
+
+    fn condition(&mut self, row: usize, span: Span, expr: &Expr, otherwise: &str) -> bool {
+        match evaluate(self.source, expr, &self.variables) {
+            Ok(Value::Number(n)) => n != 0.0,
+            Ok(Value::Text(t)) => !t.is_empty(),
+            Err(missing) => {
+                self.unknown(row, span, format!("the condition is unknown offline ({missing}): {otherwise}; give the value with --set"));
+                false
+            }
+        }
+    }
+
+    fn jump(
+        &mut self,
+        row: usize,
+        span: Span,
+        kind: GotoKind,
+        target: Option<&GotoTarget>,
+    ) -> Flow {
+        let Some(target) = target else {
+            return Flow::Next;
+        };
+        if let GotoTarget::Computed(_) = target {
+            self.unknown(
+                row,
+                span,
+                "a computed jump target is not followed: the run goes on with the next block"
+                    .to_string(),
+            );
+            return Flow::Next;
+        }
+        match self.model.landing(target, kind, row) {
+            Some(landing) => Flow::To(landing),
+            None if kind == GotoKind::Conditional => Flow::Next,
+            None => {
+                self.unknown(
+                    row,
+                    span,
+                    "the jump's target is not found: the control stops with an alarm here"
+                        .to_string(),
+                );
+                Flow::End
+            }
+        }
+    }
+
+    /// An axis word's value written as an expression: `AC(..)`/`IC(..)`
+    /// say how it is meant.
+    fn word_value(&self, expr: &Expr) -> (Result<f64, String>, Coordinate) {
+        let (inner, coordinate) = match &expr.kind {
+            ExprKind::Call(call) if call.arguments.items.len() == 1 => {
+                let coordinate = match call.name.upper(self.source).as_str() {
+                    "AC" | "DC" | "ACP" | "ACN" => Some(Coordinate::Absolute),
+                    "IC" => Some(Coordinate::Incremental),
+                    _ => None,
+                };
+                match (coordinate, &call.arguments.items[0].value) {
+                    (Some(coordinate), Some(inner)) => (inner, coordinate),
+                    _ => (expr, Coordinate::Modal),
+                }
+            }
+            _ => (expr, Coordinate::Modal),
+        };
+        let value = match evaluate(self.source, inner, &self.variables) {
+            Ok(Value::Number(n)) => Ok(n),
+            Ok(Value::Text(_)) => Err("text where a number belongs".to_string()),
+            Err(missing) => Err(format!("unknown offline ({missing})")),
+        };
+        (value, coordinate)
+    }
+
+    /// What a block's words do: its modal G functions, frames, tool, feed,
+    /// and its motion.
+    fn apply(&mut self, row: usize, span: Span, content: Content) -> Flow {
+        let mut dwell = false;
+        let mut exact_here = false;
+        let mut suppress_frames = false;
+        let mut ends = false;
+        let mut changes_tool = false;
+        let mut targets: Vec<Option<(Result<f64, String>, Coordinate)>> =
+            vec![None; self.setup.axes.len()];
+        let mut centre: [Option<(Result<f64, String>, Coordinate)>; 3] = [None, None, None];
+        let mut radius = None;
+        let mut dwell_value = None;
+        for word in &content.words {
+            let value = &word.value;
+            match word.name.as_str() {
+                "G" => {
+                    let Ok(g) = value else {
+                        self.unknown(row, span, "a G function's number is unknown offline".into());
+                        continue;
+                    };
+                    match *g as u32 {
+                        0 => self.motion = Motion::Rapid,
+                        1 => self.motion = Motion::Linear,
+                        2 => self.motion = Motion::Clockwise,
+                        3 => self.motion = Motion::Counterclockwise,
+                        4 => dwell = true,
+                        9 => exact_here = true,
+                        17 => self.plane = 0,
+                        18 => self.plane = 1,
+                        19 => self.plane = 2,
+                        41 | 42 => self.note("cutter radius compensation (G41/G42) is not modelled: positions are the programmed contour's".into()),
+                        53 | 153 => suppress_frames = true,
+                        500 => self.settable = Frame::identity(self.setup.axes.len()),
+                        54..=57 | 505..=599 => self.select_frame(row, span, *g as u32),
+                        60 => self.exact_stop = true,
+                        64 | 641..=645 => self.exact_stop = false,
+                        70 | 700 | 71 | 710 => self.units(row, span, *g as u32),
+                        90 => self.incremental = false,
+                        91 => self.incremental = true,
+                        93 => self.feed_mode = FeedMode::InverseTime,
+                        94 => self.feed_mode = FeedMode::PerMinute,
+                        95 => self.feed_mode = FeedMode::PerRevolution,
+                        110..=112 => self.unknown(row, span, "polar coordinates (G110-G112) are not modelled".into()),
+                        _ => {}
+                    }
+                }
+                "M" => match value {
+                    Ok(m) if [2.0, 17.0, 30.0].contains(m) => ends = true,
+                    Ok(m) if *m == 6.0 => changes_tool = true,
+                    _ => {}
+                },
+                "T" => match value {
+                    Ok(t) if *t >= 0.0 && t.fract() == 0.0 => {
+                        self.preselected = Some(*t as u32);
+                        if self.setup.tool_change_with_m6 == Some(false) {
+                            changes_tool = true;
+                        }
+                    }
+                    _ => self.unknown(
+                        row,
+                        span,
+                        "a tool named by text or unknown offline: its length is not known".into(),
+                    ),
+                },
+                "D" => match value {
+                    Ok(d) if *d >= 0.0 && d.fract() == 0.0 => self.edge = Some(*d as u32),
+                    _ => self.unknown(row, span, "the cutting edge (D) is unknown offline".into()),
+                },
+                "F" if dwell => dwell_value = Some(value.clone()),
+                "F" => match value {
+                    Ok(f) => self.feed = Some(*f),
+                    Err(why) => {
+                        self.feed = None;
+                        self.unknown(row, span, format!("the feed is {why}"));
+                    }
+                },
+                "S" | "S1" => match value {
+                    Ok(s) if dwell => {
+                        dwell_value =
+                            Some(match self.spindle {
+                                Some(speed) if speed > 0.0 => Ok(s * 60.0 / speed),
+                                _ => Err("a dwell in spindle revolutions without a known speed"
+                                    .to_string()),
+                            })
+                    }
+                    Ok(s) => self.spindle = Some(*s),
+                    Err(_) => self.spindle = None,
+                },
+                "I" | "J" | "K" => {
+                    let k = (word.name.as_bytes()[0] - b'I') as usize;
+                    centre[k] = Some((value.clone(), word.coordinate));
+                }
+                "CR" => radius = Some(value.clone()),
+                "AR" | "AP" | "RP" => self.unknown(
+                    row,
+                    span,
+                    format!(
+                        "`{}` (an arc by its angle, polar coordinates) is not modelled",
+                        word.name
+                    ),
+                ),
+                "TURN" => self.unknown(
+                    row,
+                    span,
+                    "TURN (a helix's full turns) is not modelled".into(),
+                ),
+                name => {
+                    if let Some(axis) = self.setup.axis(name) {
+                        targets[axis] = Some((value.clone(), word.coordinate));
+                    }
+                }
+            }
+        }
+        for command in &content.commands {
+            match command.as_str() {
+                "BRISK" => self.soft = false,
+                "SOFT" => self.soft = true,
+                "SUPA" => suppress_frames = true,
+                "TRAORI" | "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
+                "TRAFOOF" => {}
+                _ => {}
+            }
+        }
+        for call in &content.calls {
+            if call == "CYCLE800" {
+                self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into());
+            } else if !crate::semantic::calls::is_predefined(call)
+                && !matches!(call.as_str(), "MSG" | "CYCLE832" | "STOPRE")
+            {
+                self.unknown(
+                    row,
+                    span,
+                    format!(
+                        "`{call}` is not followed: what it moves, and its time, are not in the run"
+                    ),
+                );
+            }
+        }
+        if let Some((kind, words)) = content.frame {
+            self.frame_statement(row, span, kind, &words);
+        }
+        if changes_tool {
+            self.tool = self.preselected;
+            if let (Some(d), true) = (self.setup.default_edge, self.tool.is_some()) {
+                self.edge = Some(d);
+            }
+        }
+        if dwell {
+            match dwell_value {
+                Some(Ok(seconds)) => self.add_time(seconds, Some(seconds)),
+                Some(Err(why)) => self.unknown(row, span, format!("the dwell's time: {why}")),
+                None => {}
+            }
+        }
+        let moves = targets.iter().any(Option::is_some);
+        if moves {
+            self.motion_block(
+                row,
+                span,
+                &targets,
+                &centre,
+                radius,
+                suppress_frames,
+                exact_here,
+            );
+        }
+        if ends {
+            Flow::End
+        } else {
+            Flow::Next
+        }
+    }
+
+    fn units(&mut self, row: usize, span: Span, g: u32) {
+        let inch = matches!(g, 70 | 700);
+        let scale = match (self.setup.metric, inch) {
+            (Some(true), true) => 25.4,
+            (Some(false), false) => 1.0 / 25.4,
+            (Some(_), _) => 1.0,
+            (None, _) => {
+                self.unknown(row, span, "G70/G71: the machine's system of units (MD10240) is not in its data: lengths taken as they are written".into());
+                1.0
+            }
+        };
+        self.length_scale = scale;
+        self.feed_scale = if matches!(g, 700 | 710) { scale } else { 1.0 };
+    }
+
+    /// G54..G57, G505..G599: the settable frame the machine's data hold.
+    fn select_frame(&mut self, row: usize, span: Span, g: u32) {
+        let name = format!("G{g}");
+        let Some(components) = self.setup.frames.get(&name) else {
+            self.unknown(
+                row,
+                span,
+                format!("{name}: the machine's data hold no such frame (`$P_UIFR`): taken as zero"),
+            );
+            self.settable = Frame::identity(self.setup.axes.len());
+            return;
+        };
+        let mut frame = Frame::identity(self.setup.axes.len());
+        let mut angles = [0.0; 3];
+        for (axis, c) in components {
+            let Some(at) = self.setup.axis(axis) else {
+                self.unknown(
+                    row,
+                    span,
+                    format!("{name} moves axis `{axis}`, which is no axis of the channel"),
+                );
+                continue;
+            };
+            frame.translation[at] = c.tr.unwrap_or(0.0) + c.fi.unwrap_or(0.0);
+            if let Some(g) = self.setup.axes[at].geometry {
+                angles[g] = c.rt.unwrap_or(0.0);
+            }
+            if c.sc.is_some_and(|s| s != 1.0) || c.mi.is_some_and(|m| m != 0.0) {
+                self.unknown(
+                    row,
+                    span,
+                    format!("{name}: scale and mirror of a frame are not modelled"),
+                );
+            }
+        }
+        frame.rotation = self.rotation(row, span, angles);
+        self.settable = frame;
+    }
+
+    /// A rotation by RPY angles; with more than one axis, MD10600 decides
+    /// the order, RPY where the data say so.
+    fn rotation(&mut self, row: usize, span: Span, angles: [f64; 3]) -> Rotation3<f64> {
+        if angles.iter().filter(|a| **a != 0.0).count() > 1 {
+            match self.variables.known.get("$MN_FRAME_ANGLE_INPUT_MODE") {
+                Some((Value::Number(n), _)) if *n == 1.0 => {}
+                _ => self.unknown(row, span, "a rotation about several axes, and MD10600 (RPY or Euler) not in the machine's data: taken as RPY (Z, Y', X'')".into()),
+            }
+        }
+        rpy(angles)
+    }
+
+    fn frame_statement(&mut self, row: usize, span: Span, kind: FrameKind, words: &[Word]) {
+        let axes = self.setup.axes.len();
+        let mut values = vec![0.0; axes];
+        let mut angles = [0.0; 3];
+        let mut in_plane = None;
+        for word in words {
+            let Ok(value) = word.value else {
+                self.unknown(
+                    row,
+                    span,
+                    format!("the frame's `{}` is unknown offline: taken as 0", word.name),
+                );
+                continue;
+            };
+            if word.name == "RPL" {
+                in_plane = Some(value);
+                continue;
+            }
+            match self.setup.axis(&word.name) {
+                Some(at) => {
+                    values[at] = value;
+                    if let Some(g) = self.setup.axes[at].geometry {
+                        angles[g] = value;
+                    }
+                }
+                None => self.unknown(
+                    row,
+                    span,
+                    format!("`{}` is no axis of the channel", word.name),
+                ),
+            }
+        }
+        if let Some(angle) = in_plane {
+            angles = [0.0; 3];
+            angles[[2, 1, 0][self.plane]] = angle;
+        }
+        match kind {
+            FrameKind::Trans => {
+                self.programmable = Frame::identity(axes);
+                self.programmable.translation = values.iter().map(|v| v * self.length_scale).collect();
+            }
+            FrameKind::ATrans => {
+                let geometry = Vector3::new(values[0], values[1], values[2]) * self.length_scale;
+                let turned = self.programmable.turn(geometry);
+                for (k, v) in values.iter().enumerate() {
+                    self.programmable.translation[k] += if k < 3 { turned[k] } else { *v };
+                }
+            }
+            FrameKind::Rot => {
+                self.programmable = Frame::identity(axes);
+                self.programmable.rotation = self.rotation(row, span, angles);
+            }
+            FrameKind::ARot => {
+                let rotation = self.rotation(row, span, angles);
+                self.programmable.rotation *= rotation;
+            }
+            other => self.unknown(row, span, format!("{other:?} (a frame's scale, mirror or solid-angle rotation) is not modelled: the frame is left as it was")),
+        }
+    }
+
+    /// The tool's length along the infeed axis of the plane, in the machine.
+    fn tool_offset(&mut self, row: usize, span: Span) -> [f64; 3] {
+        let mut offset = [0.0; 3];
+        let (Some(t), Some(d)) = (self.tool, self.edge) else {
+            return offset;
+        };
+        if d == 0 {
+            return offset;
+        }
+        let Some(tool) = self.setup.tool(t, d) else {
+            self.unknown(row, span, format!("T{t} D{d}: the machine's data hold no offsets for it (`$TC_DP`): its length taken as 0"));
+            return offset;
+        };
+        let milling = tool.kind.is_none_or(|k| (100.0..300.0).contains(&k));
+        if !milling {
+            self.unknown(row, span, format!("T{t} D{d}: tool type {} (not a milling or drilling tool) is not modelled: its length taken as 0", tool.kind.unwrap_or(0.0)));
+            return offset;
+        }
+        let length = tool.length[0].unwrap_or(0.0) + tool.length_wear[0].unwrap_or(0.0);
+        offset[[2, 1, 0][self.plane]] = length;
+        offset
+    }
+
+    /// The machine position of the programmed point `wcs`.
+    fn to_machine(&self, wcs: &[Option<f64>], suppress: bool, tool: [f64; 3]) -> Vec<Option<f64>> {
+        let mut at = if suppress {
+            wcs.to_vec()
+        } else {
+            self.settable.apply(&self.programmable.apply(wcs))
+        };
+        for (k, length) in tool.iter().enumerate() {
+            at[k] = at[k].map(|v| v + length);
+        }
+        at
+    }
+
+    /// The programmed point of the machine position `mcs`.
+    fn to_program(&self, mcs: &[Option<f64>], suppress: bool, tool: [f64; 3]) -> Vec<Option<f64>> {
+        let mut at = mcs.to_vec();
+        for (k, length) in tool.iter().enumerate() {
+            at[k] = at[k].map(|v| v - length);
+        }
+        if suppress {
+            return at;
+        }
+        let back = |frame: &Frame, point: Vec<Option<f64>>| -> Vec<Option<f64>> {
+            let mut out: Vec<Option<f64>> = point
+                .iter()
+                .zip(&frame.translation)
+                .map(|(p, t)| p.map(|p| p - t))
+                .collect();
+            if frame.rotation != Rotation3::identity() {
+                match (out[0], out[1], out[2]) {
+                    (Some(x), Some(y), Some(z)) => {
+                        let r = frame.rotation.inverse() * Vector3::new(x, y, z);
+                        out[0] = Some(r.x);
+                        out[1] = Some(r.y);
+                        out[2] = Some(r.z);
+                    }
+                    _ => {
+                        out[0] = None;
+                        out[1] = None;
+                        out[2] = None;
+                    }
+                }
+            }
+            out
+        };
+        back(&self.programmable, back(&self.settable, at))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn motion_block(
+        &mut self,
+        row: usize,
+        span: Span,
+        targets: &[Option<(Result<f64, String>, Coordinate)>],
+        centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
+        radius: Option<Result<f64, String>>,
+        suppress: bool,
+        exact_here: bool,
+    ) {
+        let tool = self.tool_offset(row, span);
+        let start_mcs = self.mcs.clone();
+        let start = self.to_program(&start_mcs, suppress, tool);
+        let mut end = start.clone();
+        for (k, target) in targets.iter().enumerate() {
+            let Some((value, coordinate)) = target else {
+                continue;
+            };
+            let scale = if self.setup.axes[k].rotary() {
+                1.0
+            } else {
+                self.length_scale
+            };
+            end[k] = match value {
+                Ok(v) => {
+                    let incremental = match coordinate {
+                        Coordinate::Modal => self.incremental,
+                        Coordinate::Absolute => false,
+                        Coordinate::Incremental => true,
+                    };
+                    if incremental {
+                        start[k].map(|s| s + v * scale)
+                    } else {
+                        Some(v * scale)
+                    }
+                }
+                Err(why) => {
+                    self.unknown(
+                        row,
+                        span,
+                        format!("axis `{}`: its position is {why}", self.setup.axes[k].name),
+                    );
+                    None
+                }
+            };
+        }
+        let end_mcs = self.to_machine(&end, suppress, tool);
+        // The arc, in the machine's coordinates.
+        let arc = match self.motion {
+            Motion::Clockwise | Motion::Counterclockwise => {
+                self.arc(row, span, &start, &end, centre, radius, suppress, tool)
+            }
+            _ => None,
+        };
+        // Limits and travel: the ends, and the arc's turning points.
+        let mut points = vec![end_mcs.clone()];
+        if let Some(arc) = &arc {
+            for k in 0..3 {
+                for point in arc.turning_points(k) {
+                    let mut at = end_mcs.clone();
+                    at[0] = Some(point.x);
+                    at[1] = Some(point.y);
+                    at[2] = Some(point.z);
+                    points.push(at);
+                }
+            }
+        }
+        let mut out = HashSet::new();
+        for point in &points {
+            self.check(row, span, point, &mut out);
+        }
+        // An axis back within its limits ends its excursion.
+        self.beyond.retain(|key, _| out.contains(key));
+        // Time.
+        let moved: Vec<(usize, f64)> = start_mcs
+            .iter()
+            .zip(&end_mcs)
+            .enumerate()
+            .filter_map(|(k, (a, b))| match (a, b) {
+                (Some(a), Some(b)) if (b - a).abs() > 1e-12 => Some((k, b - a)),
+                _ => None,
+            })
+            .collect();
+        // An axis whose start or end is unknown: how far it goes is unknown.
+        let timed = start_mcs
+            .iter()
+            .zip(&end_mcs)
+            .all(|(a, b)| a.is_some() == b.is_some());
+        self.mcs = end_mcs;
+        if !timed {
+            self.report.blocks_without_time += 1;
+            self.unknown(row, span, "where the axes were before this block is unknown (the program's start, or a value unknown offline): its time is not counted".into());
+            return;
+        }
+        if moved.is_empty() && arc.is_none() {
+            return;
+        }
+        self.time(row, span, &moved, arc.as_ref(), exact_here);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn arc(
+        &mut self,
+        row: usize,
+        span: Span,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
+        radius: Option<Result<f64, String>>,
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Option<Arc> {
+        let point = |p: &[Option<f64>]| Some(Vector3::new(p[0]?, p[1]?, p[2]?));
+        let (Some(s), Some(e)) = (point(start), point(end)) else {
+            self.unknown(
+                row,
+                span,
+                "an arc from or to a point unknown offline: its travel is not checked".into(),
+            );
+            return None;
+        };
+        let applicate = [2, 1, 0][self.plane];
+        let mut normal = Vector3::zeros();
+        normal[applicate] = if self.motion == Motion::Clockwise {
+            -1.0
+        } else {
+            1.0
+        };
+        let c = match (centre.iter().any(Option::is_some), radius) {
+            (true, _) => {
+                let mut c = s;
+                for (k, given) in centre.iter().enumerate() {
+                    match given {
+                        Some((Ok(v), Coordinate::Absolute)) => c[k] = v * self.length_scale,
+                        Some((Ok(v), _)) => c[k] = s[k] + v * self.length_scale,
+                        Some((Err(why), _)) => {
+                            self.unknown(row, span, format!("the arc's centre is {why}"));
+                            return None;
+                        }
+                        None => {}
+                    }
+                }
+                c
+            }
+            (false, Some(Ok(r))) => {
+                match Arc::centre_of_radius(s, e, r * self.length_scale, normal) {
+                    Some(c) => c,
+                    None => {
+                        self.unknown(row, span, "the arc's radius is smaller than half the way from start to end: the control stops with an alarm (14045)".into());
+                        return None;
+                    }
+                }
+            }
+            (false, Some(Err(why))) => {
+                self.unknown(row, span, format!("the arc's radius is {why}"));
+                return None;
+            }
+            (false, None) => {
+                self.unknown(
+                    row,
+                    span,
+                    "an arc without its centre (I, J, K) or radius (CR=)".into(),
+                );
+                return None;
+            }
+        };
+        let arc = Arc::through(s, e, c, normal)?;
+        // Into the machine: the frames turn and shift the arc, the tool shifts it.
+        let to_machine = |p: Vector3<f64>| -> Vector3<f64> {
+            let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
+            wcs[0] = Some(p.x);
+            wcs[1] = Some(p.y);
+            wcs[2] = Some(p.z);
+            let at = self.to_machine(&wcs, suppress, tool);
+            Vector3::new(
+                at[0].unwrap_or(0.0),
+                at[1].unwrap_or(0.0),
+                at[2].unwrap_or(0.0),
+            )
+        };
+        let origin = to_machine(Vector3::zeros());
+        let turn = |d: Vector3<f64>| to_machine(d) - origin;
+        Some(Arc {
+            centre: to_machine(arc.centre),
+            u: turn(arc.u),
+            v: turn(arc.v),
+            normal: turn(arc.normal),
+            sweep: arc.sweep,
+            rise: arc.rise,
+        })
+    }
+
+    /// Every position of `point` against its axis's software limits, and
+    /// the travel's extent.
+    fn check(
+        &mut self,
+        row: usize,
+        span: Span,
+        point: &[Option<f64>],
+        out: &mut HashSet<(usize, bool)>,
+    ) {
+        for (k, value) in point.iter().enumerate() {
+            let Some(value) = *value else { continue };
+            self.minimum[k] = Some(self.minimum[k].map_or(value, |m| m.min(value)));
+            self.maximum[k] = Some(self.maximum[k].map_or(value, |m| m.max(value)));
+            let axis = &self.setup.axes[k];
+            let limits = if self.options.second_limits {
+                axis.machine.as_ref().map_or([None, None], |m| m.limits2)
+            } else {
+                axis.limits()
+            };
+            for (side, limit) in [(Side::Minus, limits[0]), (Side::Plus, limits[1])] {
+                let Some(limit) = limit else { continue };
+                let past = match side {
+                    Side::Minus => value < limit,
+                    Side::Plus => value > limit,
+                };
+                if !past {
+                    continue;
+                }
+                let key = (k, side == Side::Plus);
+                out.insert(key);
+                let known = self
+                    .beyond
+                    .get(&key)
+                    .or_else(|| self.began.get(&(row, k, side == Side::Plus)))
+                    .copied();
+                match known {
+                    Some(at) => {
+                        let violation = &mut self.violations[at];
+                        let worse = match side {
+                            Side::Minus => value < violation.value,
+                            Side::Plus => value > violation.value,
+                        };
+                        if worse {
+                            violation.value = value;
+                        }
+                        violation.last_line = violation.last_line.max(row + 1);
+                        self.beyond.insert(key, at);
+                    }
+                    None => {
+                        self.violations.push(Violation {
+                            line: row + 1,
+                            last_line: row + 1,
+                            span,
+                            axis: axis.machine_name(),
+                            value,
+                            limit,
+                            side,
+                        });
+                        let at = self.violations.len() - 1;
+                        self.beyond.insert(key, at);
+                        self.began.insert((row, k, side == Side::Plus), at);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The time of a move of `moved` (axis, distance in the machine), along
+    /// `arc` where it is one.
+    fn time(
+        &mut self,
+        row: usize,
+        span: Span,
+        moved: &[(usize, f64)],
+        arc: Option<&Arc>,
+        exact_here: bool,
+    ) {
+        let geometry: f64 = moved
+            .iter()
+            .filter(|(k, _)| *k < 3)
+            .map(|(_, d)| d * d)
+            .sum::<f64>()
+            .sqrt();
+        let others: f64 = moved
+            .iter()
+            .filter(|(k, _)| *k >= 3)
+            .map(|(_, d)| d * d)
+            .sum::<f64>()
+            .sqrt();
+        let length = match arc {
+            Some(arc) => arc.length(),
+            None if geometry > 0.0 => geometry,
+            None => others,
+        };
+        if length <= 0.0 {
+            return;
+        }
+        // The programmed path velocity.
+        let mut velocity = match self.motion {
+            Motion::Rapid => f64::INFINITY,
+            _ => match (self.feed_mode, self.feed) {
+                (_, None) => {
+                    self.report.blocks_without_time += 1;
+                    self.unknown(
+                        row,
+                        span,
+                        "a feed motion without a feed (F): its time is not counted".into(),
+                    );
+                    return;
+                }
+                (FeedMode::PerMinute, Some(f)) => f * self.feed_scale / 60.0,
+                (FeedMode::PerRevolution, Some(f)) => match self.spindle {
+                    Some(s) if s > 0.0 => f * self.feed_scale * s / 60.0,
+                    _ => {
+                        self.report.blocks_without_time += 1;
+                        self.unknown(row, span, "a feed per revolution (G95) without a known spindle speed (S): its time is not counted".into());
+                        return;
+                    }
+                },
+                (FeedMode::InverseTime, Some(f)) if f > 0.0 => length / (60.0 / f),
+                (FeedMode::InverseTime, Some(_)) => f64::INFINITY,
+            },
+        };
+        let group = self.options.dynamic_group;
+        let mut acceleration = f64::INFINITY;
+        let mut jerk = f64::INFINITY;
+        let mut complete = true;
+        for &(k, d) in moved {
+            let axis = &self.setup.axes[k];
+            // The axis's share of the path: all of it on an arc's plane.
+            let share = match arc {
+                Some(arc) if k < 3 => {
+                    let plane =
+                        (arc.u[k].hypot(arc.v[k]) * arc.sweep).hypot(arc.rise * arc.normal[k]);
+                    (plane / length).clamp(0.0, 1.0).max(d.abs() / length)
+                }
+                _ => d.abs() / length,
+            };
+            if share <= 0.0 {
+                continue;
+            }
+            let name = axis.machine_name();
+            match axis.max_velocity() {
+                Some(v) => velocity = velocity.min(v / share),
+                None => {
+                    self.note(format!("MD32000 $MA_MAX_AX_VELO of {name} is not in the machine's data: the blocks that move it are not capped by it (G0: not timed)"));
+                    complete = false;
+                }
+            }
+            match axis.max_acceleration(group) {
+                Some(a) => acceleration = acceleration.min(a / share),
+                None => {
+                    self.note(format!("MD32300 $MA_MAX_AX_ACCEL of {name} is not in the machine's data: the upper bound leaves out the blocks that move it"));
+                    complete = false;
+                }
+            }
+            if self.soft {
+                match axis.max_jerk(group) {
+                    Some(j) => jerk = jerk.min(j / share),
+                    None => self.note(format!("MD32431 $MA_MAX_AX_JERK of {name} is not in the machine's data: its SOFT blocks are timed as BRISK")),
+                }
+            }
+        }
+        if let (Some(arc), true) = (arc, acceleration.is_finite()) {
+            // The centripetal acceleration v²/r stays within the axes'.
+            velocity = velocity.min((acceleration * arc.radius()).sqrt());
+        }
+        if !velocity.is_finite() || velocity <= 0.0 {
+            self.report.blocks_without_time += 1;
+            return;
+        }
+        let mut lower = length / velocity;
+        let upper = (complete && acceleration.is_finite()).then(|| {
+            rest_to_rest(
+                length,
+                Limits {
+                    velocity,
+                    acceleration,
+                    jerk: (self.soft && jerk.is_finite()).then_some(jerk),
+                },
+            )
+        });
+        if exact_here || self.exact_stop {
+            if let Some(upper) = upper {
+                lower = upper;
+            }
+        }
+        if let Some(cycle) = self.setup.ipo_cycle_s {
+            lower = lower.max(cycle);
+        }
+        self.add_time(lower, upper.map(|u| u.max(lower)));
+    }
+
+    fn add_time(&mut self, lower: f64, upper: Option<f64>) {
+        self.report.time_s += lower;
+        self.report.time_bounds_s[0] += lower;
+        match upper {
+            Some(upper) => self.report.time_bounds_s[1] += upper,
+            None => self.upper_complete = false,
+        }
+        let tool = self
+            .tool
+            .map_or_else(|| "none".to_string(), |t| t.to_string());
+        *self.tool_times.entry(tool).or_default() += lower;
+    }
+
+    fn finish(mut self) -> Report {
+        let mut report = std::mem::take(&mut self.report);
+        report.violations = std::mem::take(&mut self.violations);
+        report.violations.sort_by_key(|v| v.line);
+        report.axes = self
+            .setup
+            .axes
+            .iter()
+            .enumerate()
+            .map(|(k, axis)| Travel {
+                axis: axis.machine_name(),
+                min: self.minimum[k],
+                max: self.maximum[k],
+                limits: if self.options.second_limits {
+                    axis.machine.as_ref().map_or([None, None], |m| m.limits2)
+                } else {
+                    axis.limits()
+                },
+            })
+            .collect();
+        report.tools = self
+            .tool_times
+            .iter()
+            .map(|(t, time)| ToolTime {
+                t: t.clone(),
+                time_s: *time,
+            })
+            .collect();
+        if !self.upper_complete {
+            report.time_bounds_s[1] = f64::NAN;
+        }
+        report
+    }
+}

@@ -1,0 +1,87 @@
+//! Where a programmed point lies on the machine: the chain of frames from
+//! the workpiece (WCS) to the machine (MCS) as the control builds it
+//! (Siemens, SINUMERIK 840D sl Job Planning, "Frames"): the programmable
+//! frame (TRANS, ATRANS, ROT, AROT) inside the settable frame (G54 ..
+//! G599, `$P_UIFR`), then the tool's length along the infeed axis of the
+//! plane. A frame moves a point by its rotation, then its translation:
+//! `parent = T + R · child`. Base frames are not read (the machine data
+//! hold them where a machine uses them; said in the run's assumptions).
+
+use nalgebra::{Rotation3, Vector3};
+
+/// One frame over the run's axes: a translation per axis (the geometry
+/// axes first) and a rotation of the geometry axes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    pub translation: Vec<f64>,
+    pub rotation: Rotation3<f64>,
+}
+
+impl Frame {
+    pub fn identity(axes: usize) -> Frame {
+        Frame {
+            translation: vec![0.0; axes],
+            rotation: Rotation3::identity(),
+        }
+    }
+
+    /// `point` (the run's axes, geometry first) in the frame's parent;
+    /// `None` where a coordinate it needs is unknown.
+    pub fn apply(&self, point: &[Option<f64>]) -> Vec<Option<f64>> {
+        let mut out: Vec<Option<f64>> = point
+            .iter()
+            .zip(&self.translation)
+            .map(|(p, t)| p.map(|p| p + t))
+            .collect();
+        if self.rotation != Rotation3::identity() {
+            let geometry = (point[0], point[1], point[2]);
+            let rotated = match geometry {
+                (Some(x), Some(y), Some(z)) => {
+                    let r = self.rotation * Vector3::new(x, y, z);
+                    [Some(r.x), Some(r.y), Some(r.z)]
+                }
+                _ => [None, None, None],
+            };
+            for (k, value) in rotated.into_iter().enumerate() {
+                out[k] = value.map(|v| v + self.translation[k]);
+            }
+        }
+        out
+    }
+
+    /// The rotation part applied to a direction of the geometry axes.
+    pub fn turn(&self, direction: Vector3<f64>) -> Vector3<f64> {
+        self.rotation * direction
+    }
+}
+
+/// The rotation `ROT X=a Y=b Z=c` gives under RPY angles (MD10600 = 1):
+/// about Z, then the new Y, then the new X (degrees).
+pub fn rpy(angles: [f64; 3]) -> Rotation3<f64> {
+    let [a, b, c] = angles.map(f64::to_radians);
+    Rotation3::from_axis_angle(&Vector3::z_axis(), c)
+        * Rotation3::from_axis_angle(&Vector3::y_axis(), b)
+        * Rotation3::from_axis_angle(&Vector3::x_axis(), a)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_frame_turns_then_shifts() {
+        let frame = Frame {
+            translation: vec![100.0, 0.0, 0.0, 5.0],
+            rotation: rpy([0.0, 0.0, 90.0]),
+        };
+        let out = frame.apply(&[Some(10.0), Some(0.0), Some(0.0), Some(1.0)]);
+        let out: Vec<f64> = out.into_iter().map(|v| v.expect("known")).collect();
+        assert!(
+            (out[0] - 100.0).abs() < 1e-12 && (out[1] - 10.0).abs() < 1e-12,
+            "{out:?}"
+        );
+        assert_eq!(out[3], 6.0);
+        let unknown = frame.apply(&[None, Some(0.0), Some(0.0), Some(1.0)]);
+        assert_eq!(unknown[..3], [None, None, None]);
+    }
+}

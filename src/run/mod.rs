@@ -1,0 +1,129 @@
+//! `sinuprep run`: the dry run. The program executed offline on the
+//! machine its own data describe ([`setup`]): its control flow and
+//! variables, the modal state, the frames and the tool ([`frame`]), each
+//! block's end point on every machine axis (MCS) and the travel inside it
+//! (arcs' turning points, [`arc`]) against the software limits, and its
+//! time from the feed and the axes' dynamics ([`profile`]).
+//!
+//! What cannot be known offline (a measured value, a condition on one, a
+//! subprogram not followed, a function not modelled) is named with its
+//! block in [`Report::unknown`]; the run goes on and says what it took.
+
+pub mod arc;
+mod execute;
+pub mod frame;
+pub mod profile;
+pub mod setup;
+
+pub use execute::run;
+pub use setup::{RunAxis, Setup};
+
+use crate::span::Span;
+
+/// How to run.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// MD32300/MD32431's dynamic response group (0 DYNNORM).
+    pub dynamic_group: usize,
+    /// The second pair of software limits (MD36120/36130), as the PLC may
+    /// select them.
+    pub second_limits: bool,
+    /// At most this many blocks are executed: a loop that never ends is
+    /// told, not followed for ever.
+    pub block_limit: u64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            dynamic_group: 0,
+            second_limits: false,
+            block_limit: 50_000_000,
+        }
+    }
+}
+
+/// Which limit a position passes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Side {
+    Plus,
+    Minus,
+}
+
+/// A machine axis beyond its software limit: from the block that takes it
+/// there to the last block after which it is still beyond (a loop that
+/// passes the first again adds to it), and the furthest point it reaches.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Violation {
+    /// 1-based.
+    pub line: usize,
+    pub last_line: usize,
+    #[serde(skip)]
+    pub span: Span,
+    /// The machine axis (MD10000's name).
+    pub axis: String,
+    pub value: f64,
+    pub limit: f64,
+    pub side: Side,
+}
+
+/// Something the run could not know, and what it did instead.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Unknown {
+    /// 1-based; 0 for the machine's data.
+    pub line: usize,
+    #[serde(skip)]
+    pub span: Span,
+    pub why: String,
+}
+
+/// One block's end, as the run passes it.
+#[derive(Debug)]
+pub struct BlockEnd<'a> {
+    /// 1-based.
+    pub line: usize,
+    /// Each run axis's machine position, in [`Setup::axes`]'s order.
+    pub mcs: &'a [Option<f64>],
+    /// The time so far (seconds, as [`Report::time_s`]).
+    pub t_s: f64,
+}
+
+/// A machine axis's travel over the run.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Travel {
+    /// The machine axis (MD10000's name), or the program's name where the
+    /// data name none.
+    pub axis: String,
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+    pub limits: [Option<f64>; 2],
+}
+
+/// The time spent with one tool.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct ToolTime {
+    pub t: String,
+    pub time_s: f64,
+}
+
+/// What a run found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Report {
+    /// The exact-stop blocks' time exact, the continuous-path blocks' at
+    /// their feed without slowing down at their corners: the lower bound.
+    pub time_s: f64,
+    /// Continuous-path blocks at their feed (lower) and each block from
+    /// rest to rest (upper).
+    pub time_bounds_s: [f64; 2],
+    /// Blocks whose time is not in the figures (a dynamic datum missing).
+    pub blocks_without_time: u64,
+    pub tools: Vec<ToolTime>,
+    pub axes: Vec<Travel>,
+    pub violations: Vec<Violation>,
+    pub unknown: Vec<Unknown>,
+    /// What the run took for granted, once each.
+    pub assumptions: Vec<String>,
+    /// Blocks executed.
+    pub blocks: u64,
+}

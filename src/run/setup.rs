@@ -1,0 +1,196 @@
+//! The machine as the dry run needs it, from its own data: the axes a
+//! program names (geometry axes through MD20050/MD20060, the others by their
+//! channel names), each with its machine axis, limits and dynamics in the
+//! units the run computes in (mm or degrees, per second), the settable
+//! frames, the tool offsets and the clock. Nothing is assumed: a datum the
+//! data lack stays `None`, and the run says what it could not do for it.
+
+use std::collections::BTreeMap;
+
+use crate::machine::data::{Index, MachineData};
+use crate::machine::{axes, frames, tools, Axis, Components, Tool};
+use crate::semantic::value::Value;
+
+/// One axis a program moves.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunAxis {
+    /// The name programs give it (`X`, `C`).
+    pub name: String,
+    /// Geometry axis 0, 1, 2 (`X`, `Y`, `Z` of the plane G17), if it is one.
+    pub geometry: Option<usize>,
+    /// The machine axis it drives, when the data say which.
+    pub machine: Option<Axis>,
+}
+
+impl RunAxis {
+    /// What reports call its machine axis: MD10000's name, else `AXn`,
+    /// else the program's name.
+    pub fn machine_name(&self) -> String {
+        match &self.machine {
+            Some(axis) => axis
+                .machine_name
+                .clone()
+                .unwrap_or_else(|| format!("AX{}", axis.index)),
+            None => self.name.clone(),
+        }
+    }
+
+    pub fn rotary(&self) -> bool {
+        self.machine
+            .as_ref()
+            .and_then(|a| a.rotary)
+            .unwrap_or(self.geometry.is_none() && matches!(self.name.as_str(), "A" | "B" | "C"))
+    }
+
+    /// Its software limits (MD36100, MD36110), none on a modulo axis.
+    pub fn limits(&self) -> [Option<f64>; 2] {
+        match &self.machine {
+            Some(axis) if axis.modulo == Some(true) => [None, None],
+            Some(axis) => axis.limits,
+            None => [None, None],
+        }
+    }
+
+    /// MD32000 in mm/s (or degrees/s): the datum is mm/min (rev/min).
+    pub fn max_velocity(&self) -> Option<f64> {
+        let v = self.machine.as_ref()?.max_velocity?;
+        Some(if self.rotary() {
+            v * 360.0 / 60.0
+        } else {
+            v / 60.0
+        })
+    }
+
+    /// MD32300 of dynamic response group `group` in mm/s² (degrees/s²):
+    /// the datum is m/s² (rev/s²); one written without a group serves all.
+    pub fn max_acceleration(&self, group: usize) -> Option<f64> {
+        let values = &self.machine.as_ref()?.max_acceleration;
+        let a = by_group(values, group)?;
+        Some(if self.rotary() { a * 360.0 } else { a * 1000.0 })
+    }
+
+    /// MD32431 of `group` in mm/s³ (degrees/s³), as the acceleration.
+    pub fn max_jerk(&self, group: usize) -> Option<f64> {
+        let values = &self.machine.as_ref()?.max_jerk;
+        let j = by_group(values, group)?;
+        Some(if self.rotary() { j * 360.0 } else { j * 1000.0 })
+    }
+}
+
+fn by_group(values: &[Option<f64>], group: usize) -> Option<f64> {
+    match values {
+        [one] => *one,
+        _ => values.get(group).copied().flatten(),
+    }
+}
+
+/// The machine of a run.
+#[derive(Debug, Default)]
+pub struct Setup {
+    /// Geometry axes first (X, Y, Z as MD20060 names them), then the other
+    /// channel axes.
+    pub axes: Vec<RunAxis>,
+    /// The settable frames by G function, their components by axis name.
+    pub frames: BTreeMap<String, BTreeMap<String, Components>>,
+    pub tools: Vec<Tool>,
+    /// MD10240: `Some(true)` metric, `Some(false)` inch.
+    pub metric: Option<bool>,
+    /// The interpolation cycle in seconds (MD10050 × MD10070), the least
+    /// time a block takes.
+    pub ipo_cycle_s: Option<f64>,
+    /// MD22550 `$MC_TOOL_CHANGE_MODE`: 1 where M6 changes the tool T selects.
+    pub tool_change_with_m6: Option<bool>,
+    /// MD20270 `$MC_CUTTING_EDGE_DEFAULT`: the D a tool change selects.
+    pub default_edge: Option<u32>,
+}
+
+impl Setup {
+    pub fn of(data: &MachineData) -> Setup {
+        let machine_axes = axes(data);
+        let number = |name: &str, channel: Option<u32>, indices: &[Index]| match data
+            .get(name, channel, indices)
+        {
+            Some(Value::Number(n)) => Some(*n),
+            _ => None,
+        };
+        let text = |name: &str, index: u32| match data.get(name, Some(1), &[Index::Number(index)]) {
+            Some(Value::Text(t)) => Some(t.to_ascii_uppercase()),
+            _ => None,
+        };
+        // Channel axis k (1-based) by its name, MD20080.
+        let channel_name = |k: u32| text("$MC_AXCONF_CHANAX_NAME_TAB", k - 1);
+        let machine_of = |channel_name: &str| {
+            machine_axes
+                .iter()
+                .find(|a| {
+                    a.name
+                        .as_deref()
+                        .is_some_and(|n| n.eq_ignore_ascii_case(channel_name))
+                })
+                .cloned()
+        };
+        let mut run_axes = Vec::new();
+        for g in 0..3u32 {
+            let name = text("$MC_AXCONF_GEOAX_NAME_TAB", g)
+                .unwrap_or_else(|| ["X", "Y", "Z"][g as usize].to_string());
+            let assigned = number("$MC_AXCONF_GEOAX_ASSIGN_TAB", Some(1), &[Index::Number(g)]);
+            let machine = match assigned {
+                Some(k) if k >= 1.0 => channel_name(k as u32).and_then(|c| machine_of(&c)),
+                Some(_) => None,
+                None => machine_of(&name),
+            };
+            run_axes.push(RunAxis {
+                name,
+                geometry: Some(g as usize),
+                machine,
+            });
+        }
+        let geometry_machines: Vec<u32> = run_axes
+            .iter()
+            .filter_map(|a| a.machine.as_ref().map(|m| m.index))
+            .collect();
+        for axis in &machine_axes {
+            let Some(name) = &axis.name else { continue };
+            if geometry_machines.contains(&axis.index)
+                || run_axes.iter().any(|a| a.name.eq_ignore_ascii_case(name))
+            {
+                continue;
+            }
+            run_axes.push(RunAxis {
+                name: name.to_ascii_uppercase(),
+                geometry: None,
+                machine: Some(axis.clone()),
+            });
+        }
+        // An NCK datum, wherever the files write it (after a CHANDATA too).
+        let nck = |name: &str| match data.named(name).filter(|d| d.indices.is_empty()).last() {
+            Some(crate::machine::Datum {
+                value: Value::Number(n),
+                ..
+            }) => Some(*n),
+            _ => None,
+        };
+        let sysclock = nck("$MN_SYSCLOCK_CYCLE_TIME");
+        let ratio = nck("$MN_IPO_SYSCLOCK_TIME_RATIO");
+        Setup {
+            axes: run_axes,
+            frames: frames(data),
+            tools: tools(data),
+            metric: nck("$MN_SCALING_SYSTEM_IS_METRIC").map(|n| n != 0.0),
+            ipo_cycle_s: sysclock.zip(ratio).map(|(s, r)| s * r),
+            tool_change_with_m6: number("$MC_TOOL_CHANGE_MODE", Some(1), &[]).map(|n| n == 1.0),
+            default_edge: number("$MC_CUTTING_EDGE_DEFAULT", Some(1), &[])
+                .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
+        }
+    }
+
+    /// The axis programs call `name` (upper case).
+    pub fn axis(&self, name: &str) -> Option<usize> {
+        self.axes.iter().position(|a| a.name == name)
+    }
+
+    /// Tool `t`'s cutting edge `d`.
+    pub fn tool(&self, t: u32, d: u32) -> Option<&Tool> {
+        self.tools.iter().find(|tool| tool.t == t && tool.d == d)
+    }
+}
