@@ -12,6 +12,7 @@ use crate::run::profile::{rest_to_rest, Limits};
 use crate::run::setup::Setup;
 use crate::run::{BlockEnd, Options, Report, Side, ToolTime, Travel, Unknown, Violation};
 use crate::semantic::addresses::{of_plain_into, Address};
+use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::eval::{evaluate, key, variable_key, Lookup};
 use crate::semantic::model::Model;
 use crate::semantic::value::{Origin, Unknown as Missing, Value};
@@ -147,6 +148,9 @@ struct Interpreter<'a, 'src> {
     in_for: HashSet<usize>,
     /// Each run axis's machine position; `None` until known.
     mcs: Vec<Option<f64>>,
+    /// Each run axis's position as last programmed, in the work's
+    /// coordinates (what G91 adds to).
+    programmed: Vec<Option<f64>>,
     motion: Motion,
     incremental: bool,
     /// 0: G17 (XY, infeed Z), 1: G18 (ZX, infeed Y), 2: G19 (YZ, infeed X).
@@ -216,6 +220,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             openers,
             in_for: HashSet::new(),
             mcs: vec![None; axes],
+            programmed: vec![None; axes],
             motion: Motion::Rapid,
             incremental: false,
             plane: 0,
@@ -420,7 +425,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         .statements
                         .iter()
                         .any(|s| matches!(s.kind, StatementKind::Goto(_)));
-                    let holds = self.condition(row, statement.span, expr, "taken as false");
+                    let holds = self.condition(row, statement.span, expr, false);
                     if jumps {
                         condition = Some(holds);
                         continue;
@@ -444,12 +449,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     return self.then(row, span, content, flow);
                 }
                 StatementKind::While { condition: expr } => {
-                    let holds = self.condition(
-                        row,
-                        statement.span,
-                        expr,
-                        "taken as false: the loop is left",
-                    );
+                    let holds = self.condition(row, statement.span, expr, false);
                     let flow = match (holds, self.model.blocks.opened_on(row)) {
                         (true, _) => Flow::Next,
                         (false, Some(closed)) => Flow::To(closed.end + 1),
@@ -536,12 +536,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     self.unknown(row, statement.span, "REPEAT of a section is not followed: the section runs once where it stands".to_string());
                 }
                 StatementKind::Until { condition: expr } => {
-                    let holds = self.condition(
-                        row,
-                        statement.span,
-                        expr,
-                        "taken as true: the loop is left",
-                    );
+                    let holds = self.condition(row, statement.span, expr, true);
                     let flow = match (holds, self.openers.get(&row)) {
                         (false, Some(&opener)) => Flow::To(opener + 1),
                         _ => Flow::Next,
@@ -604,13 +599,20 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
     }
 
-    fn condition(&mut self, row: usize, span: Span, expr: &Expr, otherwise: &str) -> bool {
+    /// The condition's truth; unknown offline, `otherwise` (said with
+    /// the block).
+    fn condition(&mut self, row: usize, span: Span, expr: &Expr, otherwise: bool) -> bool {
         match evaluate(self.source, expr, &self.variables) {
             Ok(Value::Number(n)) => n != 0.0,
             Ok(Value::Text(t)) => !t.is_empty(),
             Err(missing) => {
-                self.unknown(row, span, format!("the condition is unknown offline ({missing}): {otherwise}; give the value with --set"));
-                false
+                let taken = if otherwise {
+                    "taken as true"
+                } else {
+                    "taken as false"
+                };
+                self.unknown(row, span, format!("the condition is unknown offline ({missing}): {taken}; give the value with --set"));
+                otherwise
             }
         }
     }
@@ -781,6 +783,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     span,
                     "TURN (a helix's full turns) is not modelled".into(),
                 ),
+                "L" => {
+                    let number = value
+                        .as_ref()
+                        .map_or_else(|_| "?".to_string(), f64::to_string);
+                    self.unknown(row, span, format!("`L{number}` is not followed: what it moves, and its time, are not in the run"));
+                }
                 name => {
                     if let Some(axis) = self.setup.axis(name) {
                         targets[axis] = Some((value.clone(), word.coordinate));
@@ -798,7 +806,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 _ => {}
             }
         }
-        for call in &content.calls {
+        // A bare name calls a subprogram unless the control knows it.
+        let called = content
+            .commands
+            .iter()
+            .filter(|name| call_kind(name) == CallKind::Subprogram || name.starts_with("CYCLE"));
+        for call in content.calls.iter().chain(called) {
             if call == "CYCLE800" {
                 self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into());
             } else if !crate::semantic::calls::is_predefined(call)
@@ -906,9 +919,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     /// the order, RPY where the data say so.
     fn rotation(&mut self, row: usize, span: Span, angles: [f64; 3]) -> Rotation3<f64> {
         if angles.iter().filter(|a| **a != 0.0).count() > 1 {
-            match self.variables.known.get("$MN_FRAME_ANGLE_INPUT_MODE") {
-                Some((Value::Number(n), _)) if *n == 1.0 => {}
-                _ => self.unknown(row, span, "a rotation about several axes, and MD10600 (RPY or Euler) not in the machine's data: taken as RPY (Z, Y', X'')".into()),
+            match self.setup.angles_rpy {
+                Some(true) => {}
+                Some(false) => self.unknown(row, span, "a rotation about several axes in Euler angles (MD10600 = 2) is not modelled: taken as RPY (Z, Y', X'')".into()),
+                None => self.unknown(row, span, "a rotation about several axes, and MD10600 (RPY or Euler) not in the machine's data: taken as RPY (Z, Y', X'')".into()),
             }
         }
         rpy(angles)
@@ -1058,7 +1072,13 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     ) {
         let tool = self.tool_offset(row, span);
         let start_mcs = self.mcs.clone();
-        let start = self.to_program(&start_mcs, suppress, tool);
+        // Where the program left each axis; in machine coordinates less the
+        // tool for a block that suppresses the frames (G53, G153, SUPA).
+        let start = if suppress {
+            self.to_program(&start_mcs, true, tool)
+        } else {
+            self.programmed.clone()
+        };
         let mut end = start.clone();
         for (k, target) in targets.iter().enumerate() {
             let Some((value, coordinate)) = target else {
@@ -1092,7 +1112,26 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 }
             };
         }
-        let end_mcs = self.to_machine(&end, suppress, tool);
+        // A changed frame or tool is traversed with the next move of the
+        // axes it concerns (MD42440, MD42442 at their defaults): an axis not
+        // programmed stays where it is; the geometry axes go together, as
+        // a rotation couples them.
+        let reached = self.to_machine(&end, suppress, tool);
+        let geometry_moves = targets.iter().take(3).any(Option::is_some);
+        let end_mcs: Vec<Option<f64>> = (0..reached.len())
+            .map(|k| {
+                if targets[k].is_some() || (k < 3 && geometry_moves) {
+                    reached[k]
+                } else {
+                    start_mcs[k]
+                }
+            })
+            .collect();
+        self.programmed = if suppress {
+            self.to_program(&end_mcs, false, tool)
+        } else {
+            end.clone()
+        };
         // The arc, in the machine's coordinates.
         let arc = match self.motion {
             Motion::Clockwise | Motion::Counterclockwise => {
@@ -1100,11 +1139,15 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             }
             _ => None,
         };
-        // Limits and travel: the ends, and the arc's turning points.
+        // Limits and travel: the ends, and the arc's turning points. Where
+        // the block traverses a changed offset, the arc's start under the new
+        // one too: the path lies between the arc under the old offset and
+        // under the new, which holds its extremes.
         let mut points = vec![end_mcs.clone()];
         if let Some(arc) = &arc {
             for k in 0..3 {
-                for point in arc.turning_points(k) {
+                let start = std::iter::once(arc.point(0.0));
+                for point in arc.turning_points(k).into_iter().chain(start) {
                     let mut at = end_mcs.clone();
                     at[0] = Some(point.x);
                     at[1] = Some(point.y);

@@ -1,0 +1,438 @@
+//! The dry run (`sinuprep run`): single-block times against their closed
+//! forms, positions and limits against an independent sampler of the path
+//! through the frames and the tool, and the command's outputs.
+
+mod support;
+
+use nalgebra::{Rotation3, Vector3};
+use sinuprep::machine::MachineData;
+use sinuprep::run::{run, Options, Report, Setup, Side};
+use sinuprep::semantic::{Model, Supplied};
+use support::{assert_exit, run as command, scratch, stdout};
+
+/// A three-axis mill's data as the control writes them: X1, Y1, Z1 named
+/// X, Y, Z, 500 mm/s, 2.5 m/s², 40 m/s³; `extra` appended (limits, frames,
+/// tools).
+fn machine(extra: &str) -> String {
+    let mut text = String::from(
+        "%_N_INITIAL_INI\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n\
+N10000 $MN_AXCONF_MACHAX_NAME_TAB[1]=\"Y1\"\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[2]=\"Z1\"\n\
+N10240 $MN_SCALING_SYSTEM_IS_METRIC=1\nN10600 $MN_FRAME_ANGLE_INPUT_MODE=1\nCHANDATA(1)\n",
+    );
+    for (k, name) in ["X", "Y", "Z"].iter().enumerate() {
+        text.push_str(&format!(
+            "N20070 $MC_AXCONF_MACHAX_USED[{k}]={}\nN20080 $MC_AXCONF_CHANAX_NAME_TAB[{k}]=\"{name}\"\n",
+            k + 1
+        ));
+    }
+    for axis in 1..=3 {
+        text.push_str(&format!(
+            "N30300 $MA_IS_ROT_AX[AX{axis}]=0\nN32000 $MA_MAX_AX_VELO[AX{axis}]=30000.\n\
+N32300 $MA_MAX_AX_ACCEL[0,AX{axis}]=2.5\nN32431 $MA_MAX_AX_JERK[0,AX{axis}]=40.\n"
+        ));
+    }
+    text.push_str(extra);
+    text.push_str("M17\n");
+    text
+}
+
+fn dry_run(machine_text: &str, program: &str) -> Report {
+    let data = MachineData::read(machine_text.as_bytes());
+    assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
+    let setup = Setup::of(&data);
+    let model = Model::of(program.as_bytes());
+    run(
+        &model,
+        &setup,
+        &Supplied::default(),
+        &Options::default(),
+        |_| {},
+    )
+}
+
+fn assert_near(a: f64, b: f64, tolerance: f64, what: &str) {
+    assert!((a - b).abs() <= tolerance, "{what}: {a} != {b}");
+}
+
+/// One axis, exact stop: the trapezoid of MD32000 and MD32300 (BRISK), the
+/// jerk-limited profile of MD32431 (SOFT, ruckig 0.19.4's time), and a feed
+/// under the axis's velocity.
+#[test]
+fn a_single_block_at_exact_stop_takes_the_closed_form_time() {
+    let data = machine("");
+    // 100 mm at 500 mm/s and 2500 mm/s²: 100/500 + 500/2500 = 0.4 s.
+    let brisk = dry_run(&data, "G0 X0 Y0 Z0\nG60 G0 X100\nM30\n");
+    assert_near(brisk.time_s, 0.4, 1e-12, "BRISK G0");
+    assert_eq!(brisk.time_bounds_s, [brisk.time_s, brisk.time_s]);
+    let soft = dry_run(&data, "G0 X0 Y0 Z0\nSOFT G60 G0 X100\nM30\n");
+    assert_near(soft.time_s, 0.46735336851754117, 1e-12, "SOFT G0");
+    // F6000: 100 mm/s, reached after 2 mm: 100/100 + 100/2500 s.
+    let feed = dry_run(&data, "G0 X0 Y0 Z0\nG1 G9 X100 F6000\nM30\n");
+    assert_near(feed.time_s, 1.04, 1e-12, "G1 G9");
+    // Continuous path: at least the cruise, at most rest to rest.
+    let path = dry_run(&data, "G0 X0 Y0 Z0\nG64 G1 X100 F6000\nM30\n");
+    assert_near(path.time_bounds_s[0], 1.0, 1e-12, "G64 lower");
+    assert_near(path.time_bounds_s[1], 1.04, 1e-12, "G64 upper");
+    // A diagonal at G0 moves at √2 times the axes' own velocity.
+    let diagonal = dry_run(&data, "G0 X0 Y0 Z0\nG60 G0 X300 Y300\nM30\n");
+    let d = 300.0 * 2f64.sqrt();
+    let (v, a) = (500.0 * 2f64.sqrt(), 2500.0 * 2f64.sqrt());
+    assert_near(diagonal.time_s, d / v + v / a, 1e-12, "diagonal");
+    // A dwell counts its seconds.
+    let dwell = dry_run(&data, "G4 F2.5\nM30\n");
+    assert_near(dwell.time_s, 2.5, 1e-12, "G4");
+}
+
+/// A small generator of numbers (the tests need no crate for it).
+struct Numbers(u64);
+
+impl Numbers {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A value in `low..high`, written with four decimals as a program
+    /// would be, and read back as the control reads it.
+    fn between(&mut self, low: f64, high: f64) -> f64 {
+        let value = low + (high - low) * self.next();
+        format!("{value:.4}").parse().expect("number")
+    }
+}
+
+/// A generated program and the machine positions an independent sampler
+/// finds along it: every point of every block, through the settable frame,
+/// the programmable frame and the tool.
+struct Generated {
+    program: String,
+    frames: String,
+    extremes: [[f64; 2]; 3],
+}
+
+fn generate(seed: u64) -> Generated {
+    let mut numbers = Numbers(seed);
+    // G54: a shift and a turn about Z; TRANS and AROT in the program.
+    let shift = [
+        numbers.between(-300.0, 300.0),
+        numbers.between(-300.0, 300.0),
+        numbers.between(-300.0, 0.0),
+    ];
+    let turn = numbers.between(-45.0, 45.0);
+    let trans = [
+        numbers.between(-20.0, 20.0),
+        numbers.between(-20.0, 20.0),
+        numbers.between(-5.0, 5.0),
+    ];
+    let arot = [
+        numbers.between(-10.0, 10.0),
+        0.0,
+        numbers.between(-30.0, 30.0),
+    ];
+    let length = numbers.between(50.0, 150.0);
+    let frames = format!(
+        "$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$P_UIFR[1,Z,RT]={turn}\n\
+$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+        shift[0], shift[1], shift[2]
+    );
+    let settable = Rotation3::from_axis_angle(&Vector3::z_axis(), turn.to_radians());
+    let programmable = Rotation3::from_axis_angle(&Vector3::z_axis(), arot[2].to_radians())
+        * Rotation3::from_axis_angle(&Vector3::x_axis(), arot[0].to_radians());
+    let mut program = format!(
+        "G54 G17 G90 T1 M6 D1\nTRANS X{} Y{} Z{}\nAROT X{} Z{}\nF2000\n",
+        trans[0], trans[1], trans[2], arot[0], arot[2]
+    );
+    let mut extremes = [[f64::MAX, f64::MIN]; 3];
+    let mut sample = |p: Vector3<f64>, plane: usize| {
+        let inner = programmable * p + Vector3::new(trans[0], trans[1], trans[2]);
+        let mut machine = settable * inner + Vector3::new(shift[0], shift[1], shift[2]);
+        machine[[2, 1, 0][plane]] += length;
+        for k in 0..3 {
+            extremes[k][0] = extremes[k][0].min(machine[k]);
+            extremes[k][1] = extremes[k][1].max(machine[k]);
+        }
+    };
+    let mut at = Vector3::new(0.0, 0.0, 10.0);
+    program.push_str("G0 X0 Y0 Z10\n");
+    sample(at, 0);
+    for _ in 0..12 {
+        if numbers.next() < 0.4 {
+            let to = Vector3::new(
+                numbers.between(-60.0, 60.0),
+                numbers.between(-60.0, 60.0),
+                numbers.between(-30.0, 10.0),
+            );
+            program.push_str(&format!("G1 X{} Y{} Z{}\n", to.x, to.y, to.z));
+            // A straight line reaches its extremes at its ends.
+            sample(to, 0);
+            at = to;
+            continue;
+        }
+        // An arc (a helix half the time) in a plane drawn at random.
+        let plane = (numbers.next() * 3.0) as usize % 3;
+        let [p, q, a] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
+        let radius = numbers.between(2.0, 40.0);
+        let from = numbers.next() * std::f64::consts::TAU;
+        let mut centre = at;
+        centre[p] = at[p] - radius * from.cos();
+        centre[q] = at[q] - radius * from.sin();
+        let counterclockwise = numbers.next() < 0.5;
+        let sweep = numbers.between(0.1, 6.2);
+        let to_angle = if counterclockwise {
+            from + sweep
+        } else {
+            from - sweep
+        };
+        let rise = if numbers.next() < 0.5 {
+            0.0
+        } else {
+            numbers.between(-5.0, 5.0)
+        };
+        let mut end = at;
+        end[p] = centre[p] + radius * to_angle.cos();
+        end[q] = centre[q] + radius * to_angle.sin();
+        end[a] = at[a] + rise;
+        // Written with four decimals, as the program holds it: the centre
+        // is the start plus I, J, K so written, the end as written.
+        let letters = ["X", "Y", "Z"];
+        let offsets = ["I", "J", "K"];
+        let write = |v: f64| format!("{v:.4}");
+        let end_written = end.map(|v| write(v).parse::<f64>().expect("number"));
+        let offset_p = write(centre[p] - at[p]);
+        let offset_q = write(centre[q] - at[q]);
+        let centre_read = {
+            let mut c = at;
+            c[p] = at[p] + offset_p.parse::<f64>().expect("number");
+            c[q] = at[q] + offset_q.parse::<f64>().expect("number");
+            c
+        };
+        program.push_str(&format!(
+            "G{} G{} X{} Y{} Z{} {}{offset_p} {}{offset_q}\n",
+            [17, 18, 19][plane],
+            if counterclockwise { 3 } else { 2 },
+            write(end.x),
+            write(end.y),
+            write(end.z),
+            offsets[p],
+            offsets[q],
+        ));
+        let _ = letters;
+        // The sampler: the angle from start to end the way the arc turns.
+        let start_angle = (at[q] - centre_read[q]).atan2(at[p] - centre_read[p]);
+        let end_angle = (end_written[q] - centre_read[q]).atan2(end_written[p] - centre_read[p]);
+        let mut swept = if counterclockwise {
+            (end_angle - start_angle).rem_euclid(std::f64::consts::TAU)
+        } else {
+            (start_angle - end_angle).rem_euclid(std::f64::consts::TAU)
+        };
+        if swept < 1e-9 {
+            swept = std::f64::consts::TAU;
+        }
+        // The end as written lies off the circle by the rounding: the
+        // control closes the difference along the arc, the radius going
+        // from the start's to the end's.
+        let r = (at[p] - centre_read[p]).hypot(at[q] - centre_read[q]);
+        let r_end = (end_written[p] - centre_read[p]).hypot(end_written[q] - centre_read[q]);
+        let steps = 20_000;
+        for i in 0..=steps {
+            let t = swept * i as f64 / steps as f64;
+            let angle = if counterclockwise {
+                start_angle + t
+            } else {
+                start_angle - t
+            };
+            let mut point = at;
+            let radius = r + (r_end - r) * t / swept;
+            point[p] = centre_read[p] + radius * angle.cos();
+            point[q] = centre_read[q] + radius * angle.sin();
+            point[a] = at[a] + (end_written[a] - at[a]) * t / swept;
+            sample(point, plane);
+        }
+        sample(end_written, plane);
+        program.push_str("G17\n");
+        at = end_written;
+    }
+    program.push_str("M30\n");
+    Generated {
+        program,
+        frames,
+        extremes,
+    }
+}
+
+/// Generated programs (frames, a tool, lines, arcs and helices in the three
+/// planes): the run's travel per axis is the sampler's, and a limit placed
+/// just inside the true extreme is a violation where one just outside is
+/// none, on every side of every axis.
+#[test]
+fn positions_and_limits_agree_with_a_sampler_of_the_path() {
+    for seed in 1..=40u64 {
+        let generated = generate(seed);
+        let report = dry_run(&machine(&generated.frames), &generated.program);
+        // Only the first move's start is unknown (the program's start).
+        let unknown: Vec<_> = report.unknown.iter().filter(|u| u.line != 5).collect();
+        assert!(
+            unknown.is_empty(),
+            "seed {seed}: {unknown:?}\n{}",
+            generated.program
+        );
+        for k in 0..3 {
+            let travel = &report.axes[k];
+            let [low, high] = generated.extremes[k];
+            // The run's extremes are the sampler's, within what the
+            // rounding of the end points to four decimals moves the arcs
+            // (the run takes the start's radius throughout).
+            let (min, max) = (travel.min.expect("min"), travel.max.expect("max"));
+            assert!(
+                (min - low).abs() < 5e-4 && (max - high).abs() < 5e-4,
+                "seed {seed}, axis {k}: run {min}..{max}, sampler {low}..{high}\n{}",
+                generated.program
+            );
+            for (side, limit, inside) in [
+                (Side::Plus, high - 1e-3, true),
+                (Side::Plus, high + 1e-3, false),
+                (Side::Minus, low + 1e-3, true),
+                (Side::Minus, low - 1e-3, false),
+            ] {
+                let datum = match side {
+                    Side::Plus => "N36110 $MA_POS_LIMIT_PLUS",
+                    Side::Minus => "N36100 $MA_POS_LIMIT_MINUS",
+                };
+                let limited = format!("{}{datum}[AX{}]={limit}\n", generated.frames, k + 1);
+                let report = dry_run(&machine(&limited), &generated.program);
+                let found = report
+                    .violations
+                    .iter()
+                    .any(|v| v.side == side && v.axis == format!("{}1", ["X", "Y", "Z"][k]));
+                assert_eq!(
+                    found, inside,
+                    "seed {seed}, axis {k}, {side:?} limit {limit} (extreme {low}..{high}): {:?}\n{}",
+                    report.violations, generated.program
+                );
+            }
+        }
+    }
+}
+
+/// What cannot be known offline is named with its block, and the run goes
+/// on: a measured value in a condition, a subprogram not followed, a
+/// frame the machine lacks.
+#[test]
+fn what_is_unknown_offline_is_named_with_its_block() {
+    let report = dry_run(
+        &machine(""),
+        "G0 X0 Y0 Z0\nIF $AA_IM[X]>5\nG0 X500\nENDIF\nL105\nG55\nG1 X=R7 F100\nM30\n",
+    );
+    let lines: Vec<(usize, &str)> = report
+        .unknown
+        .iter()
+        .map(|u| (u.line, u.why.as_str()))
+        .collect();
+    assert!(
+        lines
+            .iter()
+            .any(|(l, why)| *l == 2 && why.contains("$AA_IM[X]") && why.contains("taken as false")),
+        "{lines:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|(l, why)| *l == 5 && why.contains("`L105` is not followed")),
+        "{lines:?}"
+    );
+    assert!(
+        lines.iter().any(|(l, why)| *l == 6 && why.contains("G55")),
+        "{lines:?}"
+    );
+    assert!(
+        lines.iter().any(|(l, why)| *l == 7 && why.contains("R7")),
+        "{lines:?}"
+    );
+    // The IF's branch was not taken: X never reached 500.
+    assert_eq!(report.axes[0].max, Some(0.0));
+}
+
+/// Loops run as the control runs them, with their counters.
+#[test]
+fn loops_and_jumps_run_as_on_the_control() {
+    let report = dry_run(
+        &machine(""),
+        "DEF INT I\nG0 X0 Y0 Z0\nFOR I=1 TO 4\nG91 G1 X10 F600\nENDFOR\nG90\n\
+R1=0\nLOOP\nR1=R1+1\nIF R1>=3 GOTOF OUT\nG1 Y=R1*5\nENDLOOP\nOUT:\nREPEAT\nG91 Z-1\nUNTIL $P_EP[Z]<0 \nM30\n",
+    );
+    assert_eq!(report.axes[0].max, Some(40.0), "{:?}", report.unknown);
+    assert_eq!(report.axes[1].max, Some(10.0));
+    // The REPEAT's condition reads the position, unknown offline: left after one pass.
+    assert_eq!(report.axes[2].min, Some(-1.0));
+}
+
+/// The command: JSON as docs/guide.md gives it, the blocks streamed, SARIF,
+/// and exit 1 where a limit is passed.
+#[test]
+fn the_command_prints_the_run() {
+    let dir = scratch("run_command");
+    let data = dir.join("MACHINE.INI");
+    std::fs::write(
+        &data,
+        machine("N36110 $MA_POS_LIMIT_PLUS[AX1]=50\nN36100 $MA_POS_LIMIT_MINUS[AX1]=-10\n"),
+    )
+    .expect("write");
+    let program = dir.join("P.MPF");
+    std::fs::write(&program, "G0 X0 Y0 Z0\nG60 G0 X100\nG0 X0\nM30\n").expect("write");
+    let (data, program) = (
+        data.to_str().expect("utf-8"),
+        program.to_str().expect("utf-8"),
+    );
+    let json = command(
+        &["run", "--machine", data, "--format", "json", program],
+        b"",
+    );
+    assert_exit(&json, 1);
+    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    assert_eq!(read["violations"][0]["line"], 2);
+    assert_eq!(read["violations"][0]["axis"], "X1");
+    assert_eq!(read["violations"][0]["value"], 100.0);
+    assert_eq!(read["violations"][0]["limit"], 50.0);
+    assert_eq!(read["violations"][0]["side"], "plus");
+    assert_eq!(
+        read["axes"]["X1"]["limits"],
+        serde_json::json!([-10.0, 50.0])
+    );
+    assert!(read["time_s"].as_f64().is_some_and(|t| t > 0.4));
+    let blocks = command(
+        &[
+            "run",
+            "--machine",
+            data,
+            "--format",
+            "json",
+            "--blocks",
+            program,
+        ],
+        b"",
+    );
+    let read: serde_json::Value = serde_json::from_str(&stdout(&blocks)).expect("JSON");
+    assert_eq!(read["blocks"][1]["line"], 2);
+    assert_eq!(read["blocks"][1]["mcs"]["X1"], 100.0);
+    assert_eq!(read["blocks"][1]["t_s"], 0.4);
+    let sarif = command(
+        &["run", "--machine", data, "--format", "sarif", program],
+        b"",
+    );
+    let read: serde_json::Value = serde_json::from_str(&stdout(&sarif)).expect("SARIF");
+    assert_eq!(read["runs"][0]["results"][0]["ruleId"], "K007");
+    let human = command(&["run", "--machine", data, program], b"");
+    let text = stdout(&human);
+    assert!(text.contains("K007"), "{text}");
+    assert!(
+        text.contains("machine axis X1 reaches 100, 50 past its plus software limit 50"),
+        "{text}"
+    );
+    let within = command(
+        &["run", "--machine", data, "-"],
+        b"G0 X0 Y0 Z0\nG0 X20\nM30\n",
+    );
+    assert_exit(&within, 0);
+}
