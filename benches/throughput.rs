@@ -13,7 +13,8 @@
 //!
 //! `cargo bench --bench throughput` (size in MB: `SINUPREP_BENCH_MB`, default
 //! 100; `SINUPREP_BENCH_KEEP=1` keeps the inputs; `SINUPREP_BENCH_ONLY=syntax`
-//! stops after the syntax table). The resident peak comes from
+//! stops after the syntax table, `SINUPREP_BENCH_ONLY=run` measures the dry
+//! run of the CAM program alone). The resident peak comes from
 //! `/usr/bin/time -f %M`; nothing is asserted.
 //!
 //! `SINUPREP_BENCH_ONLY=syntax-pass-cam` or `syntax-pass-hand` runs the
@@ -44,7 +45,9 @@ fn main() {
         syntax_pass_once(&root, input);
         return;
     }
-    syntax_only(&root);
+    if only != "run" {
+        syntax_only(&root);
+    }
     if only == "syntax" {
         return;
     }
@@ -54,6 +57,10 @@ fn main() {
 
     let cam = dir.join("CAM_5AXIS.MPF");
     std::fs::write(&cam, cam_program(size, 0)).expect("write");
+    dry_run(&root, &binary, &cam);
+    if only == "run" {
+        return;
+    }
     let with_cycle600 = dir.join("CAM_CYCLE600.MPF");
     std::fs::write(&with_cycle600, cam_program(size, 10_000)).expect("write");
     let corpus = dir.join("CORPUS.MPF");
@@ -163,6 +170,33 @@ fn main() {
     } else {
         println!("inputs kept in {}", dir.display());
     }
+}
+
+/// `sinuprep run` of the CAM program on the test machine's data
+/// (tests/fixtures/run/MACHINE.INI: X, Y, Z and a modulo C; the program's
+/// B and TRAORI are named, not followed), its summary as JSON.
+fn dry_run(root: &Path, binary: &Path, cam: &Path) {
+    let machine = root.join("tests/fixtures/run/MACHINE.INI");
+    let bytes = std::fs::metadata(cam).map(|m| m.len()).unwrap_or(0) as f64;
+    let blocks = bytecount_lines(cam);
+    let command = [
+        binary.to_str().expect("utf-8"),
+        "run",
+        "--machine",
+        machine.to_str().expect("utf-8"),
+        "--format",
+        "json",
+        cam.to_str().expect("utf-8"),
+    ];
+    let (seconds, peak, anon) = process::measure(&command, process::Input::Nothing);
+    println!(
+        "{:<44} {seconds:>9.2} {:>10.1} {:>12.0} {:>10.1} {:>10.1}",
+        "run CAM_5AXIS.MPF",
+        bytes / seconds / 1e6,
+        blocks / seconds,
+        peak as f64 / 1024.0,
+        anon as f64 / 1024.0
+    );
 }
 
 /// The syntax layer in this process, in MB/s (best of five after a warm-up):

@@ -9,6 +9,7 @@
 //!       -> rotation, kinematics, measure (pure math: no spans, no syntax)
 //!       -> emit, format (text edits) and lint (findings with their fixes)
 //!       -> document (one program's analysis, over the settings `workspace` resolved)
+//!       -> run (the program executed offline on the machine: positions, limits, time)
 //!       -> cli, lsp (the command line prints it, the server answers from it)
 //! ```
 //!
@@ -31,6 +32,10 @@
 //! - [`semantic`]: the model every reader shares (what each line holds, names and where
 //!   they are defined, labels and jumps, control blocks, modal state), values, the walk through
 //!   the program, CYCLE600 binding, HEAD_DEF and the machine's swivel data records.
+//! - [`machine`]: the machine as its own data describe it: machine data by name and index,
+//!   axes with limits and dynamics, tool offsets, settable frames.
+//! - [`run`]: the dry run: the program executed offline on the machine its data describe,
+//!   each block's machine positions against the software limits, and its time.
 //! - [`emit`]: text edits that rewrite CYCLE600 calls; never re-prints untouched bytes; and a
 //!   swivel split over a table and a head in words (what the machine is told), shared by `axes`,
 //!   `eval` and the rewrite's refusal.

@@ -436,3 +436,58 @@ fn the_command_prints_the_run() {
     );
     assert_exit(&within, 0);
 }
+
+/// The dry run of a pocket and four holes on a three-axis mill's own data
+/// (tests/fixtures/run): read and checked by hand (the positions through
+/// G54 and the tools' lengths, the times of the blocks against their closed
+/// forms) before it was accepted.
+#[test]
+fn a_part_runs_dry_on_its_machine() {
+    let args = [
+        "run",
+        "--machine",
+        "tests/fixtures/run/MACHINE.INI",
+        "tests/fixtures/run/PART.MPF",
+    ];
+    let human = command(&args, b"");
+    assert_exit(&human, 1);
+    insta::assert_snapshot!("run_human", stdout(&human));
+    let mut json_args = args.to_vec();
+    json_args.extend(["--format", "json"]);
+    insta::assert_snapshot!("run_json", stdout(&command(&json_args, b"")));
+}
+
+/// Every program of the outside corpus and every sample and fixture runs to
+/// its end (or to the block limit) on the test machine: no panic, whatever
+/// the program holds, and every position it reports is a number.
+#[test]
+fn every_real_program_runs_without_a_panic() {
+    let data = std::fs::read_to_string(support::repo().join("tests/fixtures/run/MACHINE.INI"))
+        .expect("machine");
+    let setup = Setup::of(&MachineData::read(data.as_bytes()));
+    let options = Options {
+        block_limit: 200_000,
+        ..Options::default()
+    };
+    let mut files = support::corpus_files();
+    files.extend(support::own_inputs());
+    assert!(files.len() > 40);
+    for path in files {
+        let Ok(source) = std::fs::read(&path) else {
+            continue;
+        };
+        let model = Model::of(&source);
+        let report = run(&model, &setup, &Supplied::default(), &options, |end| {
+            assert!(
+                end.mcs.iter().flatten().all(|v| v.is_finite()),
+                "{}",
+                path.display()
+            );
+        });
+        assert!(
+            report.time_s.is_finite() && report.time_s >= 0.0,
+            "{}",
+            path.display()
+        );
+    }
+}

@@ -223,10 +223,11 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
         seconds(report.time_bounds_s[0])
     ));
     if report.blocks_without_time > 0 {
-        text.push_str(&format!(
-            ", {} blocks not timed",
-            report.blocks_without_time
-        ));
+        let blocks = match report.blocks_without_time {
+            1 => "1 block".to_string(),
+            n => format!("{n} blocks"),
+        };
+        text.push_str(&format!(", {blocks} not timed"));
     }
     text.push('\n');
     if !report.tools.is_empty() {

@@ -151,6 +151,8 @@ struct Interpreter<'a, 'src> {
     /// Each run axis's position as last programmed, in the work's
     /// coordinates (what G91 adds to).
     programmed: Vec<Option<f64>>,
+    /// The frames' rotation at the last move.
+    last_rotation: Rotation3<f64>,
     motion: Motion,
     incremental: bool,
     /// 0: G17 (XY, infeed Z), 1: G18 (ZX, infeed Y), 2: G19 (YZ, infeed X).
@@ -221,6 +223,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             in_for: HashSet::new(),
             mcs: vec![None; axes],
             programmed: vec![None; axes],
+            last_rotation: Rotation3::identity(),
             motion: Motion::Rapid,
             incremental: false,
             plane: 0,
@@ -789,11 +792,13 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         .map_or_else(|_| "?".to_string(), f64::to_string);
                     self.unknown(row, span, format!("`L{number}` is not followed: what it moves, and its time, are not in the run"));
                 }
-                name => {
-                    if let Some(axis) = self.setup.axis(name) {
-                        targets[axis] = Some((value.clone(), word.coordinate));
+                name => match self.setup.axis(name) {
+                    Some(axis) => targets[axis] = Some((value.clone(), word.coordinate)),
+                    None if name.starts_with(['A', 'B', 'C', 'U', 'V', 'W', 'X', 'Y', 'Z']) => {
+                        self.note(format!("`{name}` is no axis of the machine's channel (MD20080): its moves are not in the run"));
                     }
-                }
+                    None => {}
+                },
             }
         }
         for command in &content.commands {
@@ -1114,13 +1119,19 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
         // A changed frame or tool is traversed with the next move of the
         // axes it concerns (MD42440, MD42442 at their defaults): an axis not
-        // programmed stays where it is; the geometry axes go together, as
-        // a rotation couples them.
+        // programmed stays where it is; where the frames' rotation changed,
+        // the geometry axes go together, as the rotation couples them.
         let reached = self.to_machine(&end, suppress, tool);
-        let geometry_moves = targets.iter().take(3).any(Option::is_some);
+        let rotation = if suppress {
+            Rotation3::identity()
+        } else {
+            self.settable.rotation * self.programmable.rotation
+        };
+        let coupled = rotation != self.last_rotation && targets.iter().take(3).any(Option::is_some);
+        self.last_rotation = rotation;
         let end_mcs: Vec<Option<f64>> = (0..reached.len())
             .map(|k| {
-                if targets[k].is_some() || (k < 3 && geometry_moves) {
+                if targets[k].is_some() || (k < 3 && coupled) {
                     reached[k]
                 } else {
                     start_mcs[k]
