@@ -6,7 +6,7 @@ mod support;
 
 use nalgebra::{Rotation3, Vector3};
 use sinuprep::machine::MachineData;
-use sinuprep::run::{run, Options, Report, Setup, Side};
+use sinuprep::run::{run, Options, Programs, Report, Setup, Side};
 use sinuprep::semantic::{Model, Supplied};
 use support::{assert_exit, run as command, scratch, stdout};
 
@@ -40,9 +40,9 @@ fn dry_run(machine_text: &str, program: &str) -> Report {
     let data = MachineData::read(machine_text.as_bytes());
     assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
     let setup = Setup::of(&data);
-    let model = Model::of(program.as_bytes());
+    let programs = Programs::alone(Model::of(program.as_bytes()));
     run(
-        &model,
+        &programs,
         &setup,
         &Supplied::default(),
         &Options::default(),
@@ -476,8 +476,8 @@ fn every_real_program_runs_without_a_panic() {
         let Ok(source) = std::fs::read(&path) else {
             continue;
         };
-        let model = Model::of(&source);
-        let report = run(&model, &setup, &Supplied::default(), &options, |end| {
+        let programs = Programs::alone(Model::of(&source));
+        let report = run(&programs, &setup, &Supplied::default(), &options, |end| {
             assert!(
                 end.mcs.iter().flatten().all(|v| v.is_finite()),
                 "{}",
@@ -490,4 +490,84 @@ fn every_real_program_runs_without_a_panic() {
             path.display()
         );
     }
+}
+
+/// Subprograms are followed as the control runs them: found beside the
+/// program in any case, `L105` with `P` repetitions, a PROC given its
+/// arguments by value, R parameters shared by every level, DEF variables
+/// each level's own; a call nobody defines is named.
+#[test]
+fn subprograms_are_followed() {
+    let dir = scratch("run_subprograms");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "DEF REAL _X=1\nG0 X0 Y0 Z0\nR1=0\nL105 P3\nPOCKET(40, 5)\nG1 Y=R1 F600\nNOWHERE\nG0 X=_X\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("l105.spf"),
+        "DEF REAL _X=99\nR1=R1+1\nG91 G1 X10 F600\nG90\nM17\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("POCKET.SPF"),
+        "PROC POCKET(REAL _WIDTH, REAL _DEPTH)\nG1 X=_WIDTH Z=-_DEPTH F300\nRET\n",
+    )
+    .expect("write");
+    let json = command(
+        &[
+            "run",
+            "--machine",
+            dir.join("MACHINE.INI").to_str().expect("utf-8"),
+            "--format",
+            "json",
+            "--blocks",
+            dir.join("MAIN.MPF").to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    // Three runs of L105 take X to 30, POCKET to 40 and Z -5; R1 counts the runs.
+    assert_eq!(read["axes"]["X1"]["max"], 40.0, "{read}");
+    assert_eq!(read["axes"]["Z1"]["min"], -5.0);
+    assert_eq!(read["axes"]["Y1"]["max"], 3.0);
+    // The main program's _X is its own: back at X1 after the calls.
+    let blocks = read["blocks"].as_array().expect("blocks");
+    assert_eq!(blocks.last().expect("last")["mcs"]["X1"], 1.0);
+    // The subprogram's blocks are passed with their own line numbers.
+    assert!(
+        blocks
+            .iter()
+            .any(|b| b["line"] == 3 && b["mcs"]["X1"] == 20.0),
+        "{blocks:?}"
+    );
+    let unknown = read["unknown"].to_string();
+    assert!(unknown.contains("`NOWHERE` is not followed"), "{unknown}");
+    assert!(
+        !unknown.contains("L105") && !unknown.contains("POCKET"),
+        "{unknown}"
+    );
+    // A limit passed inside a subprogram is told on the subprogram's line.
+    std::fs::write(
+        dir.join("MACHINE.INI"),
+        machine("N36110 $MA_POS_LIMIT_PLUS[AX1]=35\n"),
+    )
+    .expect("write");
+    let human = command(
+        &[
+            "run",
+            "--machine",
+            dir.join("MACHINE.INI").to_str().expect("utf-8"),
+            dir.join("MAIN.MPF").to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    assert_exit(&human, 1);
+    let text = stdout(&human);
+    assert!(text.contains("POCKET.SPF:2:1]"), "{text}");
+    assert!(
+        text.contains("machine axis X1 reaches 40, 5 past"),
+        "{text}"
+    );
 }

@@ -341,6 +341,9 @@ pub struct RunArgs {
     /// A definition file (GUD variables, macros) the program uses (repeatable; also `definitions = [...]` in sinuprep.toml).
     #[arg(long = "definitions", value_name = "FILE")]
     pub definitions: Vec<PathBuf>,
+    /// A cycle directory of the control, searched after the program's own directory for the subprograms it calls (repeatable, in search order; also `cycles = [...]` in sinuprep.toml).
+    #[arg(long = "cycles", value_name = "DIR")]
+    pub cycles: Vec<PathBuf>,
     #[command(flatten)]
     pub input: InputArgs,
     /// How to print it: a summary for people, one JSON object (schema in

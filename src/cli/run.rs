@@ -16,7 +16,7 @@ use crate::diagnostic::Diagnostic;
 use crate::emit::number::format;
 use crate::machine::MachineData;
 use crate::registry::axis_beyond_limit::RULE;
-use crate::run::{Options, Report, Setup, Side, Violation};
+use crate::run::{Options, Programs, Report, Setup, Side, Violation};
 use crate::semantic::Model;
 use crate::workspace::{Given, Workspace};
 
@@ -24,6 +24,7 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(Given {
         machine: args.machine.clone(),
         definitions: args.definitions.clone(),
+        cycles: args.cycles.clone(),
         config: args.input.config.clone(),
         values: args.input.values.clone(),
         set: args.input.set.clone(),
@@ -59,11 +60,15 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
         setup
     };
     let kind = crate::syntax::program_kind(Some(&file.name), &file.bytes);
-    let model = Model::build_with(
-        &file.bytes,
-        kind,
-        resolved.settings.environment.expansions.clone(),
-    );
+    let macros = &resolved.settings.environment.expansions;
+    let model = Model::build_with(&file.bytes, kind, macros.clone());
+    // The subprograms its calls reach, as the control finds them: beside
+    // the program, then in the cycle directories.
+    let files = workspace.subprogram_files(&resolved.config, &args.path)?;
+    let sources = crate::run::subprogram_sources(&model, macros, |name| {
+        crate::workspace::file::read(files.get(name)?).ok()
+    });
+    let programs = Programs::with(model, &sources, macros);
     let options = Options {
         dynamic_group: usize::from(args.dynamic_group),
         second_limits: args.second_limits,
@@ -78,7 +83,7 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
             write!(out, "{{\"blocks\": [")?;
             let mut first = true;
             let mut failed: Option<std::io::Error> = None;
-            let report = crate::run::run(&model, &setup, supplied, &options, |end| {
+            let report = crate::run::run(&programs, &setup, supplied, &options, |end| {
                 if failed.is_some() {
                     return;
                 }
@@ -87,7 +92,10 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
                     .zip(end.mcs)
                     .filter_map(|(name, v)| Some((name.clone(), json!(v.as_ref()?))))
                     .collect();
-                let block = json!({"line": end.line, "mcs": mcs, "t_s": end.t_s});
+                let mut block = json!({"line": end.line, "mcs": mcs, "t_s": end.t_s});
+                if let Some(program) = end.program {
+                    block["program"] = json!(program);
+                }
                 let comma = if first { "" } else { "," };
                 first = false;
                 if let Err(error) = write!(out, "{comma}\n  {block}") {
@@ -110,15 +118,45 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
             None => return Ok(ExitStatus::Success),
         }
     } else {
-        crate::run::run(&model, &setup, supplied, &options, |_| {})
+        crate::run::run(&programs, &setup, supplied, &options, |_| {})
     };
     report.violations.sort_by_key(|v| v.line);
-    let diagnostics: Vec<Diagnostic> = report.violations.iter().map(diagnostic).collect();
-    let status = if diagnostics.is_empty() {
+    let status = if report.violations.is_empty() {
         ExitStatus::Success
     } else {
         ExitStatus::Failure
     };
+    // The findings by the file their block is in: the program, or a
+    // subprogram it calls.
+    let mut by_file = vec![Findings {
+        name: file.name.clone(),
+        path: args.path.clone(),
+        source: &file.bytes,
+        diagnostics: Vec::new(),
+    }];
+    for violation in &report.violations {
+        let at = match &violation.program {
+            None => 0,
+            Some(name) => match by_file.iter().skip(1).position(|f| &f.name == name) {
+                Some(at) => at + 1,
+                None => {
+                    let path = files.get(name);
+                    let source = sources.iter().find(|(n, _)| n == name);
+                    let (Some(path), Some((_, source))) = (path, source) else {
+                        continue;
+                    };
+                    by_file.push(Findings {
+                        name: path.display().to_string(),
+                        path: path.clone(),
+                        source,
+                        diagnostics: Vec::new(),
+                    });
+                    by_file.len() - 1
+                }
+            },
+        };
+        by_file[at].diagnostics.push(diagnostic(violation));
+    }
     match args.format {
         RunFormat::Json if args.blocks => {}
         RunFormat::Json => {
@@ -129,27 +167,39 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
         }
         RunFormat::Sarif => {
             let mut sarif = Sarif::default();
-            let mut located = Located::new(&file.name, &file.bytes, diagnostics);
-            located.path = (args.path != std::path::Path::new("-")).then(|| args.path.clone());
-            sarif.add(&located);
+            for findings in by_file {
+                let mut located =
+                    Located::new(&findings.name, findings.source, findings.diagnostics);
+                located.path =
+                    (findings.path != std::path::Path::new("-")).then_some(findings.path);
+                sarif.add(&located);
+            }
             write_stdout(sarif.finish().as_bytes())?;
         }
         RunFormat::Human => {
             let mut text = text(&report, &file.name, machine_name.as_deref());
             let colour = crate::cli::colour(std::io::stdout().is_terminal());
-            human(
-                &FileReport {
-                    name: &file.name,
-                    source: &file.bytes,
-                    diagnostics: &diagnostics,
-                },
-                colour,
-                &mut text,
-            );
+            for findings in &by_file {
+                let report = FileReport {
+                    name: &findings.name,
+                    source: findings.source,
+                    diagnostics: &findings.diagnostics,
+                };
+                human(&report, colour, &mut text);
+            }
             write_stdout(text.as_bytes())?;
         }
     }
     Ok(status)
+}
+
+/// The findings in one file: the program's, or a subprogram's.
+struct Findings<'a> {
+    /// As reports name it.
+    name: String,
+    path: std::path::PathBuf,
+    source: &'a [u8],
+    diagnostics: Vec<Diagnostic>,
 }
 
 /// A limit passed, as a finding on its block.
@@ -250,9 +300,12 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
         ));
     }
     for unknown in &report.unknown {
-        match unknown.line {
-            0 => text.push_str(&format!("note: {}\n", unknown.why)),
-            line => text.push_str(&format!("line {line}: {}\n", unknown.why)),
+        match (unknown.line, &unknown.program) {
+            (0, _) => text.push_str(&format!("note: {}\n", unknown.why)),
+            (line, None) => text.push_str(&format!("line {line}: {}\n", unknown.why)),
+            (line, Some(program)) => {
+                text.push_str(&format!("{program}, line {line}: {}\n", unknown.why))
+            }
         }
     }
     for assumption in &report.assumptions {

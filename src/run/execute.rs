@@ -10,7 +10,7 @@ use crate::run::arc::Arc;
 use crate::run::frame::{rpy, Frame};
 use crate::run::profile::{rest_to_rest, Limits};
 use crate::run::setup::Setup;
-use crate::run::{BlockEnd, Options, Report, Side, ToolTime, Travel, Unknown, Violation};
+use crate::run::{BlockEnd, Options, Programs, Report, Side, ToolTime, Travel, Unknown, Violation};
 use crate::semantic::addresses::{of_plain_into, Address};
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::eval::{evaluate, key, variable_key, Lookup};
@@ -30,18 +30,27 @@ const MOST_UNKNOWN: usize = 1000;
 /// program reads and does not assign (machine data, values the user
 /// gives); `each` is handed every block's end.
 pub fn run(
-    model: &Model,
+    programs: &Programs,
     setup: &Setup,
     known: &Supplied,
     options: &Options,
     mut each: impl FnMut(BlockEnd),
 ) -> Report {
-    let mut machine = Interpreter::new(model, setup, known, options);
-    let rows = model.lines.len();
+    let mut machine = Interpreter::new(programs, setup, known, options);
     let mut row = 0;
-    while row < rows {
+    loop {
+        if row >= machine.model.lines.len() {
+            // The end of a file: a subprogram returns, the main program ends.
+            match machine.give_back() {
+                Some(back) => {
+                    row = back;
+                    continue;
+                }
+                None => break,
+            }
+        }
         if machine.report.blocks >= options.block_limit {
-            let span = model.lines.raw(row).content;
+            let span = machine.model.lines.raw(row).content;
             machine.unknown(
                 row,
                 span,
@@ -55,14 +64,22 @@ pub fn run(
         machine.report.blocks += 1;
         let flow = machine.block(row);
         each(BlockEnd {
+            program: machine.program.as_deref(),
             line: row + 1,
             mcs: &machine.mcs,
             t_s: machine.report.time_s,
         });
-        row = match flow {
+        let next = match flow {
             Flow::Next => row + 1,
             Flow::To(next) => next,
-            Flow::End => break,
+            Flow::End => match machine.give_back() {
+                Some(back) => back,
+                None => break,
+            },
+        };
+        row = match machine.calling.take() {
+            Some(call) => machine.enter(row, call, next),
+            None => next,
         };
     }
     machine.finish()
@@ -113,7 +130,7 @@ struct Content {
     frame: Option<(FrameKind, Vec<Word>)>,
     commands: Vec<String>,
     /// Subprograms and cycles called.
-    calls: Vec<String>,
+    calls: Vec<(String, Vec<Option<Value>>)>,
 }
 
 struct Variables<'a> {
@@ -136,8 +153,38 @@ impl Lookup for Variables<'_> {
     }
 }
 
-struct Interpreter<'a, 'src> {
+/// A subprogram's call: what it is given, and how often it runs.
+struct Calling {
+    name: String,
+    arguments: Vec<Option<Value>>,
+    times: u32,
+}
+
+/// Where a subprogram returns to, and what the caller had.
+struct Return<'a, 'src> {
     model: &'a Model<'src>,
+    program: Option<String>,
+    row: usize,
+    locals: HashMap<String, Value>,
+    openers: HashMap<usize, usize>,
+    in_for: HashSet<usize>,
+    /// Runs of the subprogram still to come (`P`).
+    again: u32,
+    arguments: Vec<Option<Value>>,
+}
+
+/// The most program levels the control nests: the main program and 15
+/// subprograms (Siemens, Programming Manual Fundamentals, "Nesting depth").
+const MOST_LEVELS: usize = 16;
+
+struct Interpreter<'a, 'src> {
+    programs: &'a Programs<'src>,
+    model: &'a Model<'src>,
+    stack: Vec<Return<'a, 'src>>,
+    /// The subprogram running, by name; `None` in the main program.
+    program: Option<String>,
+    /// The call the block just run makes, entered after it.
+    calling: Option<Calling>,
     source: &'src [u8],
     setup: &'a Setup,
     options: &'a Options,
@@ -174,7 +221,8 @@ struct Interpreter<'a, 'src> {
     edge: Option<u32>,
     /// The MD10600 rotation order is known (RPY) or a rotation is about one axis.
     report: Report,
-    told: HashSet<(usize, String)>,
+    /// What was told, by program, row and text: a loop repeats it.
+    told: HashSet<(Option<String>, usize, String)>,
     minimum: Vec<Option<f64>>,
     maximum: Vec<Option<f64>>,
     violations: Vec<Violation>,
@@ -183,7 +231,7 @@ struct Interpreter<'a, 'src> {
     beyond: HashMap<(usize, bool), usize>,
     /// A violation by the block it began in and its key: a loop that passes
     /// again adds to it.
-    began: HashMap<(usize, usize, bool), usize>,
+    began: HashMap<(Option<String>, usize, usize, bool), usize>,
     tool_times: BTreeMap<String, f64>,
     upper_complete: bool,
     words: Vec<Address>,
@@ -191,18 +239,14 @@ struct Interpreter<'a, 'src> {
 
 impl<'a, 'src> Interpreter<'a, 'src> {
     fn new(
-        model: &'a Model<'src>,
+        programs: &'a Programs<'src>,
         setup: &'a Setup,
         known: &'a Supplied,
         options: &'a Options,
     ) -> Self {
+        let model = &programs.main;
         let axes = setup.axes.len();
-        let openers = model
-            .blocks
-            .closed()
-            .iter()
-            .map(|c| (c.end, c.row))
-            .collect();
+        let openers = openers(model);
         let mut report = Report::default();
         report.assumptions.push(
             "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), G64 continuous path, BRISK; positions unknown until programmed".to_string(),
@@ -211,7 +255,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             "G0 interpolates linearly (MD20730 G0_LINEAR_MODE), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
         );
         Interpreter {
+            programs,
             model,
+            stack: Vec::new(),
+            program: None,
+            calling: None,
             source: model.source,
             setup,
             options,
@@ -252,16 +300,104 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
     }
 
+    /// Into the subprogram `call` names, from the block on `row`: where
+    /// the run goes on (`next` where it is not followed).
+    fn enter(&mut self, row: usize, call: Calling, next: usize) -> usize {
+        let span = self.model.lines.raw(row).content;
+        let Some(callee) = self.programs.subprograms.get(&call.name) else {
+            self.unknown(row, span, format!("`{}` is not followed: no subprogram of that name beside the program or in the cycle directories (--cycles); what it moves, and its time, are not in the run", call.name));
+            return next;
+        };
+        if self.stack.len() + 1 >= MOST_LEVELS {
+            self.unknown(row, span, format!("`{}` would nest deeper than {MOST_LEVELS} program levels: the control stops with an alarm (14000s); not followed", call.name));
+            return next;
+        }
+        let caller = Return {
+            model: self.model,
+            program: self.program.replace(call.name.clone()),
+            row: next,
+            locals: std::mem::take(&mut self.variables.local),
+            openers: std::mem::replace(&mut self.openers, openers(callee)),
+            in_for: std::mem::take(&mut self.in_for),
+            again: call.times.saturating_sub(1),
+            arguments: call.arguments,
+        };
+        self.model = callee;
+        self.source = callee.source;
+        self.variables.local = globals(&caller.locals);
+        self.bind(&caller.arguments);
+        self.stack.push(caller);
+        0
+    }
+
+    /// The PROC line's parameters of the program now running, given
+    /// `arguments` (by position; one not given or unknown stays unknown).
+    fn bind(&mut self, arguments: &[Option<Value>]) {
+        let source = self.source;
+        let Some(parameters) = self
+            .model
+            .lines
+            .other_lines()
+            .take(50)
+            .find_map(|(_, line)| {
+                let LineKind::Block(block) = &line.kind else {
+                    return None;
+                };
+                block.statements.iter().find_map(|s| match &s.kind {
+                    StatementKind::Proc(proc) => Some(
+                        proc.parameters
+                            .iter()
+                            .map(|p| p.declarator.name.upper(source))
+                            .collect::<Vec<_>>(),
+                    ),
+                    _ => None,
+                })
+            })
+        else {
+            return;
+        };
+        for (name, value) in parameters.into_iter().zip(arguments) {
+            if let Some(value) = value {
+                self.variables.local.insert(key(&name, &[]), value.clone());
+            }
+        }
+    }
+
+    /// Back from a subprogram at its end (M17, RET, M2, M30 or its last
+    /// line), or into it again while its `P` asks: where the caller goes on;
+    /// `None` at the main program's end. R parameters are the channel's:
+    /// what the subprogram wrote, the caller reads.
+    fn give_back(&mut self) -> Option<usize> {
+        let mut caller = self.stack.pop()?;
+        let written = std::mem::take(&mut self.variables.local);
+        if caller.again > 0 {
+            caller.again -= 1;
+            self.variables.local = globals(&written);
+            self.in_for.clear();
+            let arguments = std::mem::take(&mut caller.arguments);
+            self.bind(&arguments);
+            caller.arguments = arguments;
+            self.stack.push(caller);
+            return Some(0);
+        }
+        self.variables.local = caller.locals;
+        self.variables.local.extend(globals(&written));
+        self.model = caller.model;
+        self.program = caller.program;
+        self.source = caller.model.source;
+        self.openers = caller.openers;
+        self.in_for = caller.in_for;
+        Some(caller.row)
+    }
+
     fn unknown(&mut self, row: usize, span: Span, why: String) {
-        if self.report.unknown.len() >= MOST_UNKNOWN || !self.told.insert((row, why.clone())) {
+        let told = (self.program.clone(), row, why.clone());
+        if self.report.unknown.len() >= MOST_UNKNOWN || !self.told.insert(told) {
             return;
         }
         self.report.unknown.push(Unknown {
-            line: if span == Span::default() && row == usize::MAX {
-                0
-            } else {
-                row + 1
-            },
+            program: self.program.clone(),
+            line: row + 1,
             span,
             why,
         });
@@ -269,10 +405,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
 
     /// Said once a run, not tied to a block.
     fn note(&mut self, why: String) {
-        if !self.told.insert((usize::MAX, why.clone())) {
+        if !self.told.insert((None, usize::MAX, why.clone())) {
             return;
         }
         self.report.unknown.push(Unknown {
+            program: None,
             line: 0,
             span: Span::default(),
             why,
@@ -300,7 +437,13 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     }
 
     fn plain_word(&self, address: &Address) -> Word {
-        let name = upper(address.name.of(self.source));
+        let mut name = upper(address.name.of(self.source));
+        if name == "L" {
+            // `L105`: the subprogram's number as written.
+            name.push_str(&upper(
+                address.number.map_or(&b""[..], |n| n.of(self.source)),
+            ));
+        }
         let value = address
             .number
             .and_then(|n| {
@@ -330,7 +473,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         name.push_str(&upper(extension.of(source)));
                     }
                     let (value, coordinate) = match &word.value {
-                        WordValue::Number(n) => (Ok(n.value), Coordinate::Modal),
+                        WordValue::Number(n) => {
+                            if name == "L" {
+                                name.push_str(&upper(n.span.of(source)));
+                            }
+                            (Ok(n.value), Coordinate::Modal)
+                        }
                         WordValue::Expr(expr) => self.word_value(expr),
                     };
                     let word = Word {
@@ -418,10 +566,28 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     content.commands.push(name.upper(source));
                 }
                 StatementKind::Call(call) => {
-                    content.calls.push(call.name.upper(source));
+                    let arguments = call
+                        .arguments
+                        .items
+                        .iter()
+                        .map(|a| {
+                            let value = a.value.as_ref()?;
+                            evaluate(source, value, &self.variables).ok()
+                        })
+                        .collect();
+                    content.calls.push((call.name.upper(source), arguments));
                 }
-                StatementKind::IndirectCall { keyword, .. } => {
-                    content.calls.push(keyword.upper(source));
+                StatementKind::IndirectCall { keyword, target } => {
+                    let keyword = keyword.upper(source);
+                    // `CALL "NAME"`: the name as a string written out.
+                    let named =
+                        target.map(|t| String::from_utf8_lossy(t.of(source)).trim().to_string());
+                    match named.as_deref().and_then(|t| t.strip_prefix('"')?.strip_suffix('"')) {
+                        Some(name) if keyword == "CALL" => {
+                            content.calls.push((name.to_ascii_uppercase(), Vec::new()));
+                        }
+                        _ => self.unknown(row, statement.span, format!("{keyword} is not followed (a modal, external or computed call): what it moves, and its time, are not in the run")),
+                    }
                 }
                 StatementKind::If { condition: expr } => {
                     let jumps = block
@@ -692,6 +858,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut centre: [Option<(Result<f64, String>, Coordinate)>; 3] = [None, None, None];
         let mut radius = None;
         let mut dwell_value = None;
+        let mut called: Vec<(String, Vec<Option<Value>>)> = Vec::new();
+        let mut times = 1;
         for word in &content.words {
             let value = &word.value;
             match word.name.as_str() {
@@ -786,12 +954,15 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     span,
                     "TURN (a helix's full turns) is not modelled".into(),
                 ),
-                "L" => {
-                    let number = value
-                        .as_ref()
-                        .map_or_else(|_| "?".to_string(), f64::to_string);
-                    self.unknown(row, span, format!("`L{number}` is not followed: what it moves, and its time, are not in the run"));
-                }
+                name if is_numbered_call(name) => called.push((name.to_string(), Vec::new())),
+                "P" => match value {
+                    Ok(p) if *p >= 1.0 && p.fract() == 0.0 => times = *p as u32,
+                    _ => self.unknown(
+                        row,
+                        span,
+                        "a subprogram's repetitions (P) unknown offline: run once".into(),
+                    ),
+                },
                 name => match self.setup.axis(name) {
                     Some(axis) => targets[axis] = Some((value.clone(), word.coordinate)),
                     None if name.starts_with(['A', 'B', 'C', 'U', 'V', 'W', 'X', 'Y', 'Z']) => {
@@ -812,23 +983,30 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             }
         }
         // A bare name calls a subprogram unless the control knows it.
-        let called = content
+        let commands = content
             .commands
             .iter()
-            .filter(|name| call_kind(name) == CallKind::Subprogram || name.starts_with("CYCLE"));
-        for call in content.calls.iter().chain(called) {
-            if call == "CYCLE800" {
+            .filter(|name| call_kind(name) == CallKind::Subprogram || name.starts_with("CYCLE"))
+            .map(|name| (name.clone(), Vec::new()));
+        called.extend(content.calls.into_iter().chain(commands));
+        for (name, arguments) in called {
+            if name == "CYCLE800" {
                 self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into());
-            } else if !crate::semantic::calls::is_predefined(call)
-                && !matches!(call.as_str(), "MSG" | "CYCLE832" | "STOPRE")
+            } else if crate::semantic::calls::is_predefined(&name)
+                || matches!(name.as_str(), "MSG" | "CYCLE832" | "STOPRE")
             {
+            } else if self.calling.is_some() {
                 self.unknown(
                     row,
                     span,
-                    format!(
-                        "`{call}` is not followed: what it moves, and its time, are not in the run"
-                    ),
+                    format!("`{name}`: a second call in one block is not followed"),
                 );
+            } else {
+                self.calling = Some(Calling {
+                    name,
+                    arguments,
+                    times,
+                });
             }
         }
         if let Some((kind, words)) = content.frame {
@@ -1325,7 +1503,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 let known = self
                     .beyond
                     .get(&key)
-                    .or_else(|| self.began.get(&(row, k, side == Side::Plus)))
+                    .or_else(|| {
+                        self.began
+                            .get(&(self.program.clone(), row, k, side == Side::Plus))
+                    })
                     .copied();
                 match known {
                     Some(at) => {
@@ -1342,6 +1523,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     }
                     None => {
                         self.violations.push(Violation {
+                            program: self.program.clone(),
                             line: row + 1,
                             last_line: row + 1,
                             span,
@@ -1352,7 +1534,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         });
                         let at = self.violations.len() - 1;
                         self.beyond.insert(key, at);
-                        self.began.insert((row, k, side == Side::Plus), at);
+                        self.began
+                            .insert((self.program.clone(), row, k, side == Side::Plus), at);
                     }
                 }
             }
@@ -1531,4 +1714,32 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
         report
     }
+}
+
+/// Closing row to opening row, of a program's control blocks.
+fn openers(model: &Model) -> HashMap<usize, usize> {
+    model
+        .blocks
+        .closed()
+        .iter()
+        .map(|c| (c.end, c.row))
+        .collect()
+}
+
+/// The variables every program level shares: the R parameters.
+fn globals(variables: &HashMap<String, Value>) -> HashMap<String, Value> {
+    variables
+        .iter()
+        .filter(|(key, _)| {
+            key.strip_prefix('R')
+                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+        })
+        .map(|(key, value)| (key.clone(), value.clone()))
+        .collect()
+}
+
+/// `L105`: a subprogram called by its number (the digits as written:
+/// `L0105` is another).
+fn is_numbered_call(name: &str) -> bool {
+    name.len() > 1 && name.starts_with('L') && name[1..].bytes().all(|b| b.is_ascii_digit())
 }

@@ -13,9 +13,11 @@ pub mod arc;
 mod execute;
 pub mod frame;
 pub mod profile;
+mod programs;
 pub mod setup;
 
 pub use execute::run;
+pub use programs::{called, subprogram_sources, Programs};
 pub use setup::{RunAxis, Setup};
 
 use crate::span::Span;
@@ -56,6 +58,9 @@ pub enum Side {
 /// passes the first again adds to it), and the furthest point it reaches.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Violation {
+    /// The subprogram the block is in (by name); `None` for the main program.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub program: Option<String>,
     /// 1-based.
     pub line: usize,
     pub last_line: usize,
@@ -71,7 +76,10 @@ pub struct Violation {
 /// Something the run could not know, and what it did instead.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Unknown {
-    /// 1-based; 0 for the machine's data.
+    /// The subprogram the block is in (by name); `None` for the main program.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub program: Option<String>,
+    /// 1-based; 0 for what is said of the whole run (the machine's data).
     pub line: usize,
     #[serde(skip)]
     pub span: Span,
@@ -81,6 +89,8 @@ pub struct Unknown {
 /// One block's end, as the run passes it.
 #[derive(Debug)]
 pub struct BlockEnd<'a> {
+    /// The subprogram the block is in; `None` for the main program.
+    pub program: Option<&'a str>,
     /// 1-based.
     pub line: usize,
     /// Each run axis's machine position, in [`Setup::axes`]'s order.

@@ -578,13 +578,7 @@ impl Workspace {
         config: &Config,
         program: &Path,
     ) -> Result<Arc<Procedures>, SettingsError> {
-        let mut searched = vec![(own_directory(program), None)];
-        if self.given.cycles.is_empty() {
-            let listed = config.cycles.iter().flatten();
-            searched.extend(listed.map(|dir| (config.resolve(dir), Some(config))));
-        } else {
-            searched.extend(self.given.cycles.iter().map(|dir| (dir.clone(), None)));
-        }
+        let searched = self.searched_directories(config, program);
         let mut out: Option<Arc<Procedures>> = None;
         for (index, (dir, from_config)) in searched.iter().enumerate() {
             // The program's own directory may be unreadable (stdin in a
@@ -619,6 +613,45 @@ impl Workspace {
             }
         }
         Ok(out.unwrap_or_default())
+    }
+
+    /// The directories a call of `program` searches for its subprogram, in
+    /// order: the program's own, then the cycle directories given (or else
+    /// sinuprep.toml's), each with the settings file that named it.
+    fn searched_directories<'c>(
+        &self,
+        config: &'c Config,
+        program: &Path,
+    ) -> Vec<(PathBuf, Option<&'c Config>)> {
+        let mut searched = vec![(own_directory(program), None)];
+        if self.given.cycles.is_empty() {
+            let listed = config.cycles.iter().flatten();
+            searched.extend(listed.map(|dir| (config.resolve(dir), Some(config))));
+        } else {
+            searched.extend(self.given.cycles.iter().map(|dir| (dir.clone(), None)));
+        }
+        searched
+    }
+
+    /// The subprogram files (`.SPF`, any case) a call of `program` reaches,
+    /// by name in upper case without the extension: searched as the control
+    /// searches them, the first found winning; a directory that cannot be
+    /// listed holds none.
+    pub fn subprogram_files(
+        &self,
+        config: &Config,
+        program: &Path,
+    ) -> Result<HashMap<String, PathBuf>, SettingsError> {
+        let mut files = HashMap::new();
+        for (dir, _) in self.searched_directories(config, program) {
+            let Ok(listing) = self.listing(&dir) else {
+                continue;
+            };
+            for (name, path) in listing.subprograms(self.given.follow_links)? {
+                files.entry(name).or_insert(path);
+            }
+        }
+        Ok(files)
     }
 
     /// The names in `dir` that matter to a program beside them (any case).

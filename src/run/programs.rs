@@ -1,0 +1,125 @@
+//! The programs a run executes: the main program and the subprograms its
+//! calls reach, read before the run (each once, however often it is
+//! called), so that every program's model lives as long as the run.
+
+use std::collections::{BTreeSet, HashMap};
+use std::sync::Arc;
+
+use crate::semantic::calls::{call_kind, CallKind};
+use crate::semantic::Model;
+use crate::syntax::macros::Macros;
+use crate::syntax::tree::{upper, LineKind, StatementKind, WordValue};
+use crate::syntax::ProgramKind;
+
+/// The programs of a run: the main program, and the subprograms it may
+/// call (`L105`, `NAME`, `NAME(...)`, `CALL "NAME"`) by name in upper case.
+pub struct Programs<'s> {
+    pub main: Model<'s>,
+    pub subprograms: HashMap<String, Model<'s>>,
+}
+
+impl<'s> Programs<'s> {
+    /// A program that calls none the run can follow.
+    pub fn alone(main: Model<'s>) -> Self {
+        Programs {
+            main,
+            subprograms: HashMap::new(),
+        }
+    }
+
+    /// `main` and the subprograms of `sources` (name, text), read with
+    /// `macros`.
+    pub fn with(main: Model<'s>, sources: &'s [(String, Vec<u8>)], macros: &Arc<Macros>) -> Self {
+        let subprograms = sources
+            .iter()
+            .map(|(name, source)| {
+                let model = Model::build_with(source, ProgramKind::Subprogram, macros.clone());
+                (name.clone(), model)
+            })
+            .collect();
+        Programs { main, subprograms }
+    }
+}
+
+/// The names of the subprograms `model` may call: `L105` (the digits as
+/// written), a bare name the control does not know, `NAME(...)` and
+/// `CALL "NAME"`; predefined procedures and cycles are not among them.
+pub fn called(model: &Model) -> BTreeSet<String> {
+    let source = model.source;
+    let mut names = BTreeSet::new();
+    for (_, line) in model.lines.other_lines() {
+        let LineKind::Block(block) = &line.kind else {
+            continue;
+        };
+        for statement in &block.statements {
+            let name = match &statement.kind {
+                StatementKind::Call(call) => call.name.upper(source),
+                StatementKind::Command(name) => name.upper(source),
+                StatementKind::IndirectCall { keyword, target } if keyword.is(source, "CALL") => {
+                    let Some(target) = target else { continue };
+                    let text = String::from_utf8_lossy(target.of(source))
+                        .trim()
+                        .to_string();
+                    match text.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
+                        Some(name) => name.to_ascii_uppercase(),
+                        None => continue,
+                    }
+                }
+                StatementKind::Word(word) if word.address.is(source, "L") => match &word.value {
+                    WordValue::Number(n) => format!("L{}", upper(n.span.of(source))),
+                    WordValue::Expr(_) => continue,
+                },
+                _ => continue,
+            };
+            if call_kind(&name) == CallKind::Subprogram
+                && !crate::semantic::calls::is_predefined(&name)
+            {
+                names.insert(name);
+            }
+        }
+    }
+    // `L105` on a plain line (letters and numbers only): found by its letter.
+    for at in memchr::memchr2_iter(b'L', b'l', source) {
+        let starts_word = at == 0 || matches!(source[at - 1], b' ' | b'\t' | b'\n' | b'\r');
+        let digits = source[at + 1..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .count();
+        let ends_word = source
+            .get(at + 1 + digits)
+            .is_none_or(|b| matches!(b, b' ' | b'\t' | b'\n' | b'\r' | b';'));
+        if starts_word && digits > 0 && ends_word {
+            names.insert(format!(
+                "L{}",
+                String::from_utf8_lossy(&source[at + 1..at + 1 + digits])
+            ));
+        }
+    }
+    names
+}
+
+/// The texts of the subprograms `main` calls, and those they call in turn,
+/// each read once by `read` (the file of a name, `None` where there is
+/// none: its call is named as not followed when the run meets it).
+pub fn subprogram_sources(
+    main: &Model,
+    macros: &Arc<Macros>,
+    mut read: impl FnMut(&str) -> Option<Vec<u8>>,
+) -> Vec<(String, Vec<u8>)> {
+    let mut sources: Vec<(String, Vec<u8>)> = Vec::new();
+    let mut seen: BTreeSet<String> = BTreeSet::new();
+    let mut queue: Vec<String> = called(main).into_iter().collect();
+    while let Some(name) = queue.pop() {
+        if !seen.insert(name.clone()) {
+            continue;
+        }
+        let Some(source) = read(&name) else {
+            continue;
+        };
+        let model = Model::build_with(&source, ProgramKind::Subprogram, macros.clone());
+        queue.extend(called(&model));
+        drop(model);
+        sources.push((name, source));
+    }
+    sources
+}
