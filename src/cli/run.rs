@@ -246,6 +246,7 @@ fn summary(report: &Report, machine: Option<&str>) -> serde_json::Value {
         "tools": report.tools,
         "axes": axes,
         "violations": report.violations,
+        "violations_untold": report.violations_untold,
         "unknown": report.unknown,
         "assumptions": report.assumptions,
         "blocks_run": report.blocks,
@@ -297,6 +298,13 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
             value(travel.max),
             value(travel.limits[0]),
             value(travel.limits[1])
+        ));
+    }
+    if report.violations_untold > 0 {
+        text.push_str(&format!(
+            "note: {} more excursions past a limit than the {} listed below\n",
+            report.violations_untold,
+            crate::run::MOST_VIOLATIONS
         ));
     }
     for unknown in &report.unknown {

@@ -2,6 +2,7 @@
 //! them, the modal state it keeps, and what each block's motion does on the
 //! machine (see the module above for what is modelled).
 
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap, HashSet};
 
 use nalgebra::{Rotation3, Vector3};
@@ -10,7 +11,10 @@ use crate::run::arc::Arc;
 use crate::run::frame::{rpy, Frame};
 use crate::run::profile::{rest_to_rest, Limits};
 use crate::run::setup::Setup;
-use crate::run::{BlockEnd, Options, Programs, Report, Side, ToolTime, Travel, Unknown, Violation};
+use crate::run::{
+    BlockEnd, Options, Programs, Report, Side, ToolTime, Travel, Unknown, Violation,
+    MOST_VIOLATIONS,
+};
 use crate::semantic::addresses::{of_plain_into, Address};
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::eval::{evaluate, key, variable_key, Lookup};
@@ -22,6 +26,15 @@ use crate::syntax::tree::{
     upper, Block, Expr, ExprKind, FrameKind, GotoKind, GotoTarget, Initializer, LineKind,
     StatementKind, TypeKind, WordValue,
 };
+
+/// In [`Interpreter::beyond`], an excursion counted and not listed.
+const UNTOLD: usize = usize::MAX;
+
+/// The addresses of one letter, by letter.
+const LETTERS: [&str; 26] = [
+    "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R", "S",
+    "T", "U", "V", "W", "X", "Y", "Z",
+];
 
 /// At most this many things unknown are told: a loop repeats its own.
 const MOST_UNKNOWN: usize = 1000;
@@ -118,7 +131,7 @@ enum Coordinate {
 /// One address word of a block, its value evaluated.
 struct Word {
     /// Upper case, the extension included (`X`, `X1`, `G`, `CR`).
-    name: String,
+    name: Cow<'static, str>,
     value: Result<f64, String>,
     coordinate: Coordinate,
 }
@@ -437,13 +450,18 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     }
 
     fn plain_word(&self, address: &Address) -> Word {
-        let mut name = upper(address.name.of(self.source));
-        if name == "L" {
+        // A plain line's address is one letter: named without an allocation,
+        // its millions of words read by the million.
+        let letter = address.letter(self.source);
+        let name = match letter {
             // `L105`: the subprogram's number as written.
-            name.push_str(&upper(
-                address.number.map_or(&b""[..], |n| n.of(self.source)),
-            ));
-        }
+            b'L' => Cow::Owned(format!(
+                "L{}",
+                upper(address.number.map_or(&b""[..], |n| n.of(self.source)))
+            )),
+            b'A'..=b'Z' => Cow::Borrowed(LETTERS[usize::from(letter - b'A')]),
+            _ => Cow::Owned(upper(address.name.of(self.source))),
+        };
         let value = address
             .number
             .and_then(|n| {
@@ -482,7 +500,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         WordValue::Expr(expr) => self.word_value(expr),
                     };
                     let word = Word {
-                        name,
+                        name: Cow::Owned(name),
                         value,
                         coordinate,
                     };
@@ -498,7 +516,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     {
                         let (value, coordinate) = self.word_value(&assign.value);
                         let word = Word {
-                            name,
+                            name: Cow::Owned(name),
                             value,
                             coordinate,
                         };
@@ -862,7 +880,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut times = 1;
         for word in &content.words {
             let value = &word.value;
-            match word.name.as_str() {
+            match word.name.as_ref() {
                 "G" => {
                     let Ok(g) = value else {
                         self.unknown(row, span, "a G function's number is unknown offline".into());
@@ -1509,6 +1527,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     })
                     .copied();
                 match known {
+                    // Counted once an excursion, not listed.
+                    Some(UNTOLD) => {
+                        self.beyond.insert(key, UNTOLD);
+                    }
                     Some(at) => {
                         let violation = &mut self.violations[at];
                         let worse = match side {
@@ -1520,6 +1542,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         }
                         violation.last_line = violation.last_line.max(row + 1);
                         self.beyond.insert(key, at);
+                    }
+                    None if self.violations.len() >= MOST_VIOLATIONS => {
+                        self.report.violations_untold += 1;
+                        self.beyond.insert(key, UNTOLD);
                     }
                     None => {
                         self.violations.push(Violation {

@@ -22,6 +22,10 @@ pub use setup::{RunAxis, Setup};
 
 use crate::span::Span;
 
+/// At most this many excursions past a limit are listed (the rest are
+/// counted): a program far off its machine passes them by the million.
+pub const MOST_VIOLATIONS: usize = 10_000;
+
 /// How to run.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -130,7 +134,10 @@ pub struct Report {
     pub blocks_without_time: u64,
     pub tools: Vec<ToolTime>,
     pub axes: Vec<Travel>,
+    /// The first [`MOST_VIOLATIONS`] excursions past a limit.
     pub violations: Vec<Violation>,
+    /// Excursions past a limit beyond those listed.
+    pub violations_untold: u64,
     pub unknown: Vec<Unknown>,
     /// What the run took for granted, once each.
     pub assumptions: Vec<String>,

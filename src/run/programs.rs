@@ -42,8 +42,8 @@ impl<'s> Programs<'s> {
 }
 
 /// The names of the subprograms `model` may call: `L105` (the digits as
-/// written), a bare name the control does not know, `NAME(...)` and
-/// `CALL "NAME"`; predefined procedures and cycles are not among them.
+/// written), a bare name the control does not know, `NAME(...)`, a cycle
+/// and `CALL "NAME"`; predefined procedures are not among them.
 pub fn called(model: &Model) -> BTreeSet<String> {
     let source = model.source;
     let mut names = BTreeSet::new();
@@ -71,9 +71,10 @@ pub fn called(model: &Model) -> BTreeSet<String> {
                 },
                 _ => continue,
             };
-            if call_kind(&name) == CallKind::Subprogram
-                && !crate::semantic::calls::is_predefined(&name)
-            {
+            // A cycle is followed too where its file is given (the
+            // control's cycle directories, --cycles).
+            let subprogram = call_kind(&name) == CallKind::Subprogram || name.starts_with("CYCLE");
+            if subprogram && !crate::semantic::calls::is_predefined(&name) {
                 names.insert(name);
             }
         }
