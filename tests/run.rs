@@ -78,6 +78,14 @@ fn a_single_block_at_exact_stop_takes_the_closed_form_time() {
     let d = 300.0 * 2f64.sqrt();
     let (v, a) = (500.0 * 2f64.sqrt(), 2500.0 * 2f64.sqrt());
     assert_near(diagonal.time_s, d / v + v / a, 1e-12, "diagonal");
+    // RTLIOF: each axis on its own, the block as long as the slowest.
+    let single = dry_run(&data, "G0 X0 Y0 Z0\nRTLIOF G60 G0 X300 Y100\nM30\n");
+    assert_near(
+        single.time_s,
+        300.0 / 500.0 + 500.0 / 2500.0,
+        1e-12,
+        "RTLIOF",
+    );
     // A dwell counts its seconds.
     let dwell = dry_run(&data, "G4 F2.5\nM30\n");
     assert_near(dwell.time_s, 2.5, 1e-12, "G4");
@@ -570,4 +578,33 @@ fn subprograms_are_followed() {
         text.contains("machine axis X1 reaches 40, 5 past"),
         "{text}"
     );
+}
+
+/// What the NC cannot know takes the seconds sinuprep.toml gives it, each
+/// time it runs; a time that is no number of seconds is refused.
+#[test]
+fn the_times_the_user_gives_are_added() {
+    let dir = scratch("run_times");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("sinuprep.toml"),
+        "machine = \"MACHINE.INI\"\n[run]\ntimes = { M06 = 7.5, cycle800 = 12 }\n",
+    )
+    .expect("write");
+    std::fs::write(dir.join("P.MPF"), "T1 M6\nT2 M6\nCYCLE800()\nM30\n").expect("write");
+    let program = dir.join("P.MPF");
+    let json = command(
+        &["run", "--format", "json", program.to_str().expect("utf-8")],
+        b"",
+    );
+    assert_exit(&json, 0);
+    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    assert_eq!(read["time_s"], 27.0, "{read}");
+    assert!(
+        read["assumptions"].to_string().contains("M6 takes 7.5 s"),
+        "{read}"
+    );
+    std::fs::write(dir.join("sinuprep.toml"), "[run]\ntimes = { M6 = -1 }\n").expect("write");
+    let refused = command(&["run", program.to_str().expect("utf-8")], b"");
+    assert_exit(&refused, 2);
 }

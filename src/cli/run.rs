@@ -69,9 +69,21 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
         crate::workspace::file::read(files.get(name)?).ok()
     });
     let programs = Programs::with(model, &sources, macros);
+    let times = match &resolved.config.run {
+        Some(run) => run
+            .times()
+            .map_err(|why| crate::workspace::SettingsError::Config {
+                path: resolved.config.path.clone().unwrap_or_default(),
+                line: 1,
+                column: 1,
+                why,
+            })?,
+        None => Default::default(),
+    };
     let options = Options {
         dynamic_group: usize::from(args.dynamic_group),
         second_limits: args.second_limits,
+        times,
         ..Options::default()
     };
     let supplied = &resolved.settings.supplied;

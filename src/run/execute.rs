@@ -227,6 +227,8 @@ struct Interpreter<'a, 'src> {
     spindle: Option<f64>,
     exact_stop: bool,
     soft: bool,
+    /// G0 interpolates linearly (RTLION) or each axis on its own (RTLIOF).
+    rapid_linear: bool,
     settable: Frame,
     programmable: Frame,
     preselected: Option<u32>,
@@ -265,7 +267,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), G64 continuous path, BRISK; positions unknown until programmed".to_string(),
         );
         report.assumptions.push(
-            "G0 interpolates linearly (MD20730 G0_LINEAR_MODE), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
+            "G0 interpolates linearly (RTLION, until RTLIOF), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
         );
         Interpreter {
             programs,
@@ -295,6 +297,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             spindle: None,
             exact_stop: false,
             soft: false,
+            rapid_linear: true,
             settable: Frame::identity(axes),
             programmable: Frame::identity(axes),
             preselected: None,
@@ -995,6 +998,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "BRISK" => self.soft = false,
                 "SOFT" => self.soft = true,
                 "SUPA" => suppress_frames = true,
+                "RTLION" => self.rapid_linear = true,
+                "RTLIOF" => self.rapid_linear = false,
                 "TRAORI" | "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
                 "TRAFOOF" => {}
                 _ => {}
@@ -1007,6 +1012,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             .filter(|name| call_kind(name) == CallKind::Subprogram || name.starts_with("CYCLE"))
             .map(|name| (name.clone(), Vec::new()));
         called.extend(content.calls.into_iter().chain(commands));
+        self.given_times(&content.words, &called);
         for (name, arguments) in called {
             if name == "CYCLE800" {
                 self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into());
@@ -1598,6 +1604,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         if length <= 0.0 {
             return;
         }
+        if self.motion == Motion::Rapid && !self.rapid_linear {
+            return self.single_axis_rapid(moved, exact_here);
+        }
         // The programmed path velocity.
         let mut velocity = match self.motion {
             Motion::Rapid => f64::INFINITY,
@@ -1687,6 +1696,74 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             if let Some(upper) = upper {
                 lower = upper;
             }
+        }
+        if let Some(cycle) = self.setup.ipo_cycle_s {
+            lower = lower.max(cycle);
+        }
+        self.add_time(lower, upper.map(|u| u.max(lower)));
+    }
+
+    /// The times the user gives for what the block's words and calls do
+    /// (`[run] times`: `M6 = 7.5`), each added where it runs.
+    fn given_times(&mut self, words: &[Word], called: &[(String, Vec<Option<Value>>)]) {
+        if self.options.times.is_empty() {
+            return;
+        }
+        let words = words.iter().filter_map(|word| match word.value {
+            Ok(v) if v >= 0.0 && v.fract() == 0.0 && word.name.len() == 1 => {
+                Some(format!("{}{}", word.name, v as u64))
+            }
+            _ => None,
+        });
+        let names: Vec<String> = words
+            .chain(called.iter().map(|(name, _)| name.clone()))
+            .collect();
+        for name in names {
+            if let Some(&seconds) = self.options.times.get(&name) {
+                let said = format!(
+                    "{name} takes {seconds} s each time it runs ([run] times in sinuprep.toml)"
+                );
+                if !self.report.assumptions.contains(&said) {
+                    self.report.assumptions.push(said);
+                }
+                self.add_time(seconds, Some(seconds));
+            }
+        }
+    }
+
+    /// G0 under RTLIOF: each axis at its own velocity, acceleration and
+    /// jerk, the block as long as its slowest axis.
+    fn single_axis_rapid(&mut self, moved: &[(usize, f64)], exact_here: bool) {
+        let group = self.options.dynamic_group;
+        let (mut lower, mut upper) = (0.0f64, Some(0.0f64));
+        for &(k, d) in moved {
+            let axis = &self.setup.axes[k];
+            let name = axis.machine_name();
+            let Some(velocity) = axis.max_velocity() else {
+                self.note(format!("MD32000 $MA_MAX_AX_VELO of {name} is not in the machine's data: the blocks that move it are not capped by it (G0: not timed)"));
+                self.report.blocks_without_time += 1;
+                return;
+            };
+            lower = lower.max(d.abs() / velocity);
+            let jerk = if self.soft {
+                axis.max_jerk(group)
+            } else {
+                None
+            };
+            upper = match (upper, axis.max_acceleration(group)) {
+                (Some(upper), Some(acceleration)) => Some(upper.max(rest_to_rest(
+                    d.abs(),
+                    Limits {
+                        velocity,
+                        acceleration,
+                        jerk,
+                    },
+                ))),
+                _ => None,
+            };
+        }
+        if exact_here || self.exact_stop {
+            lower = upper.unwrap_or(lower);
         }
         if let Some(cycle) = self.setup.ipo_cycle_s {
             lower = lower.max(cycle);

@@ -37,6 +37,9 @@ pub struct Options {
     /// At most this many blocks are executed: a loop that never ends is
     /// told, not followed for ever.
     pub block_limit: u64,
+    /// Seconds a word (`M6`) or a call (`CYCLE800`) takes each time it
+    /// runs, by its text in upper case (`[run] times` in sinuprep.toml).
+    pub times: std::collections::BTreeMap<String, f64>,
 }
 
 impl Default for Options {
@@ -45,6 +48,7 @@ impl Default for Options {
             dynamic_group: 0,
             second_limits: false,
             block_limit: 50_000_000,
+            times: std::collections::BTreeMap::new(),
         }
     }
 }

@@ -77,9 +77,54 @@ pub struct Config {
     pub per_file_ignores: Option<std::collections::BTreeMap<String, Vec<String>>>,
     /// `[format]`: how `sinuprep fmt` lays programs out.
     pub format: Option<crate::format::FormatConfig>,
+    /// `[run]`: what `sinuprep run` cannot know from the program and the
+    /// machine's data.
+    pub run: Option<RunConfig>,
     /// Where the file was read from (not a key).
     #[serde(skip)]
     pub path: Option<PathBuf>,
+}
+
+/// `[run]` of sinuprep.toml.
+#[derive(Debug, Clone, Default, PartialEq, serde::Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct RunConfig {
+    /// Seconds a word or a call takes each time it runs, which neither the
+    /// program nor the machine's data say: a tool change (`M6 = 7.5`), a
+    /// clamping (`M10 = 2`), a swivel with its retract (`CYCLE800 = 12`).
+    pub times: Option<std::collections::BTreeMap<String, f64>>,
+}
+
+impl RunConfig {
+    /// The times by word or name in upper case (`M06` as `M6`), or why one
+    /// is none.
+    pub fn times(&self) -> Result<std::collections::BTreeMap<String, f64>, String> {
+        let mut times = std::collections::BTreeMap::new();
+        for (key, seconds) in self.times.iter().flatten() {
+            if !seconds.is_finite() || *seconds < 0.0 {
+                return Err(format!(
+                    "[run] times: `{key}` takes {seconds} s: give seconds, 0 or more"
+                ));
+            }
+            let upper = key.trim().to_ascii_uppercase();
+            let letter = upper.chars().next().filter(|c| c.is_ascii_alphabetic());
+            let digits = upper
+                .get(1..)
+                .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()));
+            let key = match (letter, digits) {
+                // `M06` is `M6`, as the control reads it.
+                (Some(letter), Some(digits)) if letter != 'L' => {
+                    match digits.trim_start_matches('0') {
+                        "" => format!("{letter}0"),
+                        number => format!("{letter}{number}"),
+                    }
+                }
+                _ => upper,
+            };
+            times.insert(key, *seconds);
+        }
+        Ok(times)
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Deserialize, clap::ValueEnum)]
