@@ -438,6 +438,33 @@ fn the_command_prints_the_run() {
         text.contains("machine axis X1 reaches 100, 50 past its plus software limit 50"),
         "{text}"
     );
+    // The page: self-contained, the axes over time, the two views, the tools.
+    let page = dir.join("run.html");
+    let html = command(
+        &[
+            "run",
+            "--machine",
+            data,
+            "--html",
+            page.to_str().expect("utf-8"),
+            program,
+        ],
+        b"",
+    );
+    assert_exit(&html, 1);
+    let page = std::fs::read_to_string(&page).expect("page written");
+    assert!(page.starts_with("<!DOCTYPE html>") && page.ends_with("</html>\n"));
+    assert_eq!(
+        page.matches("<svg").count(),
+        6,
+        "X1, Y1, Z1 over time, two views, the time per tool"
+    );
+    assert!(page.contains("1 excursion past a software limit"));
+    assert!(page.contains("limit 50"));
+    assert!(
+        !page.contains("<script") && !page.contains("http"),
+        "nothing run, nothing fetched"
+    );
     let within = command(
         &["run", "--machine", data, "-"],
         b"G0 X0 Y0 Z0\nG0 X20\nM30\n",

@@ -354,6 +354,11 @@ pub struct RunArgs {
     /// positions and the time so far, written as the run goes.
     #[arg(long)]
     pub blocks: bool,
+    /// Also write one self-contained HTML page (no script, nothing fetched)
+    /// with each axis's position over time against its limits, the path
+    /// from above and from the front, and the time per tool.
+    #[arg(long, value_name = "FILE")]
+    pub html: Option<PathBuf>,
     /// Check against the second software limits (MD36120/MD36130), as the PLC may select them.
     #[arg(long)]
     pub second_limits: bool,

@@ -10,6 +10,7 @@ use serde_json::json;
 use crate::cli::args::{RunArgs, RunFormat};
 use crate::cli::error::CliError;
 use crate::cli::input::{read, Found};
+use crate::cli::output::write_atomically;
 use crate::cli::render::{human, FileReport, Located, Sarif};
 use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::diagnostic::Diagnostic;
@@ -88,6 +89,11 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
     };
     let supplied = &resolved.settings.supplied;
     let names: Vec<String> = setup.axes.iter().map(|a| a.machine_name()).collect();
+    // The page's plots, kept as the run goes.
+    let mut trace = args
+        .html
+        .as_ref()
+        .map(|_| crate::run::plot::Trace::new(&setup, args.second_limits));
     let mut report = if args.blocks && args.format == RunFormat::Json {
         let mut written = None;
         write_stdout_with(|out| {
@@ -96,6 +102,9 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
             let mut first = true;
             let mut failed: Option<std::io::Error> = None;
             let report = crate::run::run(&programs, &setup, supplied, &options, |end| {
+                if let Some(trace) = &mut trace {
+                    trace.record(&end);
+                }
                 if failed.is_some() {
                     return;
                 }
@@ -130,9 +139,21 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
             None => return Ok(ExitStatus::Success),
         }
     } else {
-        crate::run::run(&programs, &setup, supplied, &options, |_| {})
+        crate::run::run(&programs, &setup, supplied, &options, |end| {
+            if let Some(trace) = &mut trace {
+                trace.record(&end);
+            }
+        })
     };
     report.violations.sort_by_key(|v| v.line);
+    if let (Some(path), Some(trace)) = (&args.html, &trace) {
+        let title = match &machine_name {
+            Some(machine) => format!("{} on {machine}", file.name),
+            None => file.name.clone(),
+        };
+        let page = crate::run::plot::html(trace, &report, &title);
+        write_atomically(path, |out| out.write_all(page.as_bytes()), None)?;
+    }
     let status = if report.violations.is_empty() {
         ExitStatus::Success
     } else {

@@ -81,6 +81,7 @@ pub fn run(
             line: row + 1,
             mcs: &machine.mcs,
             t_s: machine.report.time_s,
+            arc: machine.last_arc.take().as_ref(),
         });
         let next = match flow {
             Flow::Next => row + 1,
@@ -198,6 +199,8 @@ struct Interpreter<'a, 'src> {
     program: Option<String>,
     /// The call the block just run makes, entered after it.
     calling: Option<Calling>,
+    /// The arc the block just run moves along, for [`BlockEnd::arc`].
+    last_arc: Option<Arc>,
     source: &'src [u8],
     setup: &'a Setup,
     options: &'a Options,
@@ -275,6 +278,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             stack: Vec::new(),
             program: None,
             calling: None,
+            last_arc: None,
             source: model.source,
             setup,
             options,
@@ -1352,6 +1356,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             }
             _ => None,
         };
+        self.last_arc = arc;
         // Limits and travel: the ends, and the arc's turning points. Where
         // the block traverses a changed offset, the arc's start under the new
         // one too: the path lies between the arc under the old offset and

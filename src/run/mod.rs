@@ -12,6 +12,7 @@
 pub mod arc;
 mod execute;
 pub mod frame;
+pub mod plot;
 pub mod profile;
 mod programs;
 pub mod setup;
@@ -105,6 +106,9 @@ pub struct BlockEnd<'a> {
     pub mcs: &'a [Option<f64>],
     /// The time so far (seconds, as [`Report::time_s`]).
     pub t_s: f64,
+    /// The arc the block moved along, in machine coordinates of the
+    /// geometry axes.
+    pub arc: Option<&'a arc::Arc>,
 }
 
 /// A machine axis's travel over the run.
