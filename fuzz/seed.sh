@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 outside="${SINUPREP_CORPUS:-../../shared/corpus}"
-for target in parse_print check rewrite archive fmt; do
+for target in parse_print check rewrite archive fmt run; do
   mkdir -p "corpus/$target"
   find ../samples ../tests/fixtures "$outside" -type f ! -name '*.md' ! -name '*.snap' 2>/dev/null |
     while read -r file; do cp "$file" "corpus/$target/$(echo "$file" | sed 's|^\(\.\./\)*||; s|/|_|g')"; done
