@@ -4120,27 +4120,8 @@ fn a_folder_of_data_files_is_one_machine() {
     let human = stdout(&run(&["machine", folder], b""));
     assert!(human.contains("_N_UFR_INI:4:"), "{human}");
 
-    let dir = scratch("machine_folder");
-    let program = dir.join("LIMIT.MPF");
-    std::fs::write(
-        &program,
-        "DEF REAL _A\nN10 _A=$MA_POS_LIMIT_PLUS[Z]*10\n\
-N20 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, _A, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n",
-    )
-    .expect("write");
-    let eval = run(
-        &[
-            "eval",
-            "--heads",
-            "samples/HEAD_DEF.SPF",
-            "--machine",
-            folder,
-            program.to_str().expect("utf-8"),
-        ],
-        b"",
-    );
-    let text = stdout(&eval);
-    assert!(text.contains("_CYC600_3=15 "), "{text}");
+    let evaluated = limit_read_by_a_program("machine_folder", &["--machine", folder]);
+    assert!(evaluated.contains("_CYC600_3=15 "), "{evaluated}");
 }
 
 /// A swivel record's value that names a GUD variable is named (K001) with
@@ -4228,23 +4209,26 @@ fn definitions_beside_the_program_are_found() {
 /// data are given: `$MA_POS_LIMIT_PLUS[Z]` by the channel axis's name.
 #[test]
 fn machine_data_a_program_reads_are_known_offline() {
-    let dir = scratch("machine_reads");
-    let program = dir.join("MA.MPF");
+    let without = limit_read_by_a_program("machine_reads", &[]);
+    assert!(!without.contains("_CYC600_3=5"), "{without}");
+    let machine = ["--machine", "tests/fixtures/machine/INITIAL.INI"];
+    let with = limit_read_by_a_program("machine_reads_given", &machine);
+    assert!(with.contains("_CYC600_3=5 "), "{with}");
+}
+
+/// `eval` (with `options`) of a program whose CYCLE600 turns by ten times
+/// `$MA_POS_LIMIT_PLUS[Z]` (its third result), in the scratch folder `name`.
+fn limit_read_by_a_program(name: &str, options: &[&str]) -> String {
+    let dir = scratch(name);
+    let program = dir.join("LIMIT.MPF");
     std::fs::write(
         &program,
         "DEF REAL _A\nN10 _A=$MA_POS_LIMIT_PLUS[Z]*10\n\
 N20 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, _A, 0, 0, 0, 0, 0, 1, 39, 0, 0, 0)\nM30\n",
     )
     .expect("write");
-    let program = program.to_str().expect("utf-8");
-    let eval = |machine: &[&str]| {
-        let mut args = vec!["eval", "--heads", "samples/HEAD_DEF.SPF"];
-        args.extend(machine);
-        args.push(program);
-        stdout(&run(&args, b""))
-    };
-    let without = eval(&[]);
-    assert!(!without.contains("_CYC600_3=5"), "{without}");
-    let with = eval(&["--machine", "tests/fixtures/machine/INITIAL.INI"]);
-    assert!(with.contains("_CYC600_3=5 "), "{with}");
+    let mut args = vec!["eval", "--heads", "samples/HEAD_DEF.SPF"];
+    args.extend(options);
+    args.push(program.to_str().expect("utf-8"));
+    stdout(&run(&args, b""))
 }

@@ -147,6 +147,17 @@ struct Content {
     calls: Vec<(String, Vec<Option<Value>>)>,
 }
 
+impl Content {
+    /// A word of the block: after a frame statement (`TRANS X10`), the
+    /// frame's.
+    fn push(&mut self, word: Word) {
+        match &mut self.frame {
+            Some((_, words)) => words.push(word),
+            None => self.words.push(word),
+        }
+    }
+}
+
 struct Variables<'a> {
     local: HashMap<String, Value>,
     known: &'a Supplied,
@@ -487,7 +498,6 @@ impl<'a, 'src> Interpreter<'a, 'src> {
 
     fn tree_block(&mut self, row: usize, span: Span, block: &Block) -> Flow {
         let mut content = Content::default();
-        let mut in_frame = false;
         let source = self.source;
         let mut condition: Option<bool> = None;
         for statement in &block.statements {
@@ -506,15 +516,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         }
                         WordValue::Expr(expr) => self.word_value(expr),
                     };
-                    let word = Word {
+                    content.push(Word {
                         name: Cow::Owned(name),
                         value,
                         coordinate,
-                    };
-                    match (&mut content.frame, in_frame) {
-                        (Some((_, words)), true) => words.push(word),
-                        _ => content.words.push(word),
-                    }
+                    });
                 }
                 StatementKind::Assign(assign) => {
                     let name = assign.target.name.upper(source);
@@ -522,15 +528,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         && matches!(name.as_str(), "CR" | "AR" | "AP" | "RP" | "TURN" | "RPL")
                     {
                         let (value, coordinate) = self.word_value(&assign.value);
-                        let word = Word {
+                        content.push(Word {
                             name: Cow::Owned(name),
                             value,
                             coordinate,
-                        };
-                        match (&mut content.frame, in_frame) {
-                            (Some((_, words)), true) => words.push(word),
-                            _ => content.words.push(word),
-                        }
+                        });
                         continue;
                     }
                     let key = variable_key(source, &assign.target, &self.variables);
@@ -585,7 +587,6 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 }
                 StatementKind::Frame(frame) => {
                     content.frame = Some((frame.kind, Vec::new()));
-                    in_frame = true;
                 }
                 StatementKind::Command(name) => {
                     content.commands.push(name.upper(source));
