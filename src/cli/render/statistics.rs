@@ -1,0 +1,104 @@
+//! Findings counted per rule (`check --statistics`), as ruff counts them.
+
+use crate::diagnostic::{Applicability, Diagnostic};
+
+/// Findings per rule (`check --statistics`), summed over a run.
+#[derive(Default)]
+pub struct Statistics {
+    rules: std::collections::BTreeMap<&'static str, Statistic>,
+}
+
+#[derive(Clone, Copy)]
+struct Statistic {
+    name: &'static str,
+    count: usize,
+    /// Whether `--fix` (with `--unsafe-fixes`, where given) answers any of them.
+    fixable: bool,
+}
+
+impl Statistics {
+    /// Counts `diagnostics`; `unsafe_fixes`: whether unsafe fixes count as fixable.
+    pub fn add(&mut self, diagnostics: &[Diagnostic], unsafe_fixes: bool) {
+        for d in diagnostics {
+            let fixable = d
+                .fix
+                .as_deref()
+                .is_some_and(|fix| fix.applicability == Applicability::Safe || unsafe_fixes);
+            let entry = self.rules.entry(d.code()).or_insert(Statistic {
+                name: d.name(),
+                count: 0,
+                fixable: false,
+            });
+            entry.count += 1;
+            entry.fixable |= fixable;
+        }
+    }
+
+    pub fn extend(&mut self, other: Statistics) {
+        for (code, theirs) in other.rules {
+            let ours = self.rules.entry(code).or_insert(Statistic {
+                count: 0,
+                fixable: false,
+                ..theirs
+            });
+            ours.count += theirs.count;
+            ours.fixable |= theirs.fixable;
+        }
+    }
+
+    /// The most frequent first, then by code.
+    fn sorted(&self) -> Vec<(&'static str, Statistic)> {
+        let mut rules: Vec<_> = self.rules.iter().map(|(&c, &s)| (c, s)).collect();
+        rules.sort_by(|a, b| b.1.count.cmp(&a.1.count).then(a.0.cmp(b.0)));
+        rules
+    }
+
+    /// One line a rule, as ruff prints them: the count, the code, `[*]`
+    /// where `--fix` answers some of its findings (`[ ]` where it answers
+    /// none; no column when no rule is fixable), the rule's name.
+    pub fn text(&self) -> String {
+        let rules = self.sorted();
+        let count_width = rules
+            .iter()
+            .map(|(_, s)| s.count.to_string().len())
+            .max()
+            .unwrap_or(0);
+        let code_width = rules.iter().map(|(c, _)| c.len()).max().unwrap_or(0);
+        let any_fixable = rules.iter().any(|(_, s)| s.fixable);
+        let mut out = String::new();
+        for (code, s) in rules {
+            let mark = match (any_fixable, s.fixable) {
+                (false, _) => "",
+                (true, true) => "[*] ",
+                (true, false) => "[ ] ",
+            };
+            out.push_str(&format!(
+                "{:>count_width$}\t{code:<code_width$}\t{mark}{}\n",
+                s.count, s.name
+            ));
+        }
+        out
+    }
+
+    /// The table in `format`: JSON for `json`, text for the others.
+    pub fn render(&self, format: crate::cli::args::Format) -> String {
+        match format {
+            crate::cli::args::Format::Json => self.json(),
+            _ => self.text(),
+        }
+    }
+
+    /// A JSON array of `{code, name, count, fixable}`, as ruff's.
+    pub fn json(&self) -> String {
+        let rules: Vec<_> = self
+            .sorted()
+            .into_iter()
+            .map(|(code, s)| {
+                serde_json::json!({ "code": code, "name": s.name, "count": s.count, "fixable": s.fixable })
+            })
+            .collect();
+        let mut text = serde_json::to_string_pretty(&rules).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+}
