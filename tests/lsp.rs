@@ -653,6 +653,33 @@ fn a_cycle800_hover_says_what_the_call_asks_for() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// With a machine whose data describe its axes, a hover on a block gives
+/// where the dry run takes the machine axes by its end and the time so far,
+/// and a block past a software limit says so.
+#[test]
+fn a_block_hover_shows_the_dry_run() {
+    let dir = scratch("lsp-run");
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/run");
+    std::fs::copy(fixtures.join("MACHINE.INI"), dir.join("MACHINE.INI")).expect("machine");
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"MACHINE.INI\"\n").expect("toml");
+    let uri = format!("file://{}", dir.join("P.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, "G54 G0 X0 Y0 Z0\nG60 G0 X100\nG0 Z400\nM30\n");
+    let hover = client.request("textDocument/hover", at(&uri, 1, 9));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    // G54 shifts X by 250: X1 at 350; 100 mm at G0 exact stop, 0.4 s.
+    assert!(shown.contains("X1 350 · Y1 120 · Z1 -380"), "{shown}");
+    assert!(shown.contains("0.4 s so far"), "{shown}");
+    let beyond = client.request("textDocument/hover", at(&uri, 2, 5));
+    let shown = beyond["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.contains("**Z1 past its software limit** 0.5 (reaches 20)"),
+        "{shown}"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A call of a subprogram the program does not define goes to the PROC of
 /// the file beside it, as the control finds it (any case).
 #[test]

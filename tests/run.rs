@@ -40,7 +40,8 @@ fn dry_run(machine_text: &str, program: &str) -> Report {
     let data = MachineData::read(machine_text.as_bytes());
     assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
     let setup = Setup::of(&data);
-    let programs = Programs::alone(Model::of(program.as_bytes()));
+    let model = Model::of(program.as_bytes());
+    let programs = Programs::alone(&model);
     run(
         &programs,
         &setup,
@@ -511,7 +512,8 @@ fn every_real_program_runs_without_a_panic() {
         let Ok(source) = std::fs::read(&path) else {
             continue;
         };
-        let programs = Programs::alone(Model::of(&source));
+        let model = Model::of(&source);
+        let programs = Programs::alone(&model);
         let report = run(&programs, &setup, &Supplied::default(), &options, |end| {
             assert!(
                 end.mcs.iter().flatten().all(|v| v.is_finite()),

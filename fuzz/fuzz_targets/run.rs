@@ -17,7 +17,8 @@ fuzz_target!(|data: &[u8]| {
         block_limit: 20_000,
         ..Options::default()
     };
-    let programs = Programs::alone(Model::of(data));
+    let model = Model::of(data);
+    let programs = Programs::alone(&model);
     let report = run(&programs, &setup, &Supplied::default(), &options, |end| {
         assert!(end.mcs.iter().flatten().all(|v| v.is_finite()));
     });

@@ -69,7 +69,7 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
     let sources = crate::run::subprogram_sources(&model, macros, |name| {
         crate::workspace::file::read(files.get(name)?).ok()
     });
-    let programs = Programs::with(model, &sources, macros);
+    let programs = Programs::with(&model, &sources, macros);
     let times = match &resolved.config.run {
         Some(run) => run
             .times()

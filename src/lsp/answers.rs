@@ -8,6 +8,8 @@ use crate::document::archive::Opened;
 use crate::document::held;
 use crate::document::text::Text;
 use crate::lint::Settings;
+use crate::machine::MachineData;
+use crate::run::{Programs, Setup};
 use crate::semantic::cycle800;
 use crate::semantic::uses::{Namespace, Role, Use, Uses};
 use crate::semantic::walk;
@@ -141,7 +143,9 @@ impl<'a, 't> Snapshot<'a, 't> {
         if let Some(hover) = self.function_hover(at) {
             return Some(hover);
         }
-        let found = self.uses().at(at)?;
+        let Some(found) = self.uses().at(at) else {
+            return self.run_hover(position.line as usize);
+        };
         let text = match self.uses().definition(self.model, found) {
             Some(definition) if definition.span == found.span => {
                 let users = self.uses().references(found).count() - 1;
@@ -160,6 +164,71 @@ impl<'a, 't> Snapshot<'a, 't> {
             _ => text,
         };
         Some(markdown(text, self.range(found.span)))
+    }
+
+    /// On a block, given a machine whose data describe its axes: where the
+    /// dry run (`sinuprep run`) takes each machine axis by the block's end,
+    /// the first time the program passes it, and the time so far; a block
+    /// past a software limit says so.
+    fn run_hover(&self, row: usize) -> Option<lsp::Hover> {
+        let machine = self.settings.machine.as_deref()?;
+        let setup = Setup::of(&MachineData::read(&machine.source));
+        if setup.axes.iter().all(|a| a.machine.is_none()) {
+            return None;
+        }
+        let options = crate::run::Options {
+            block_limit: 1_000_000,
+            ..crate::run::Options::default()
+        };
+        let programs = Programs::alone(self.model);
+        let mut passed: Option<(Vec<Option<f64>>, f64)> = None;
+        let report = crate::run::run(
+            &programs,
+            &setup,
+            &self.settings.supplied,
+            &options,
+            |end| {
+                if passed.is_none() && end.program.is_none() && end.line == row + 1 {
+                    passed = Some((end.mcs.to_vec(), end.t_s));
+                }
+            },
+        );
+        let (mcs, t) = passed?;
+        let positions: Vec<String> = setup
+            .axes
+            .iter()
+            .zip(&mcs)
+            .filter_map(|(axis, v)| {
+                Some(format!(
+                    "{} {}",
+                    axis.machine_name(),
+                    crate::emit::number::format((*v)?, 3)
+                ))
+            })
+            .collect();
+        if positions.is_empty() {
+            return None;
+        }
+        let mut text = format!(
+            "Dry run on `{}`, at the block's end (its first pass): {}; {} s so far",
+            machine.name,
+            positions.join(" · "),
+            crate::emit::number::format(t, 3)
+        );
+        for violation in report
+            .violations
+            .iter()
+            .filter(|v| v.program.is_none() && v.line == row + 1)
+        {
+            text.push_str(&format!(
+                "\n\n**{} past its software limit** {} (reaches {})",
+                violation.axis,
+                crate::emit::number::format(violation.limit, 3),
+                crate::emit::number::format(violation.value, 3)
+            ));
+        }
+        let line = self.model.lines.raw(row).content;
+        Some(markdown(text, self.range(line)))
     }
 
     /// On a variable: the type its DEF or PROC gives it, and the value it

@@ -273,7 +273,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         known: &'a Supplied,
         options: &'a Options,
     ) -> Self {
-        let model = &programs.main;
+        let model = programs.main;
         let axes = setup.axes.len();
         let openers = openers(model);
         let mut report = Report::default();

@@ -14,13 +14,13 @@ use crate::syntax::ProgramKind;
 /// The programs of a run: the main program, and the subprograms it may
 /// call (`L105`, `NAME`, `NAME(...)`, `CALL "NAME"`) by name in upper case.
 pub struct Programs<'s> {
-    pub main: Model<'s>,
+    pub main: &'s Model<'s>,
     pub subprograms: HashMap<String, Model<'s>>,
 }
 
 impl<'s> Programs<'s> {
     /// A program that calls none the run can follow.
-    pub fn alone(main: Model<'s>) -> Self {
+    pub fn alone(main: &'s Model<'s>) -> Self {
         Programs {
             main,
             subprograms: HashMap::new(),
@@ -29,7 +29,11 @@ impl<'s> Programs<'s> {
 
     /// `main` and the subprograms of `sources` (name, text), read with
     /// `macros`.
-    pub fn with(main: Model<'s>, sources: &'s [(String, Vec<u8>)], macros: &Arc<Macros>) -> Self {
+    pub fn with(
+        main: &'s Model<'s>,
+        sources: &'s [(String, Vec<u8>)],
+        macros: &Arc<Macros>,
+    ) -> Self {
         let subprograms = sources
             .iter()
             .map(|(name, source)| {
