@@ -17,7 +17,8 @@ fn machine(extra: &str) -> String {
     let mut text = String::from(
         "%_N_INITIAL_INI\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n\
 N10000 $MN_AXCONF_MACHAX_NAME_TAB[1]=\"Y1\"\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[2]=\"Z1\"\n\
-N10240 $MN_SCALING_SYSTEM_IS_METRIC=1\nN10600 $MN_FRAME_ANGLE_INPUT_MODE=1\nCHANDATA(1)\n",
+N10240 $MN_SCALING_SYSTEM_IS_METRIC=1\nN10600 $MN_FRAME_ANGLE_INPUT_MODE=1\nCHANDATA(1)\n\
+N22550 $MC_TOOL_CHANGE_MODE=1\n",
     );
     for (k, name) in ["X", "Y", "Z"].iter().enumerate() {
         text.push_str(&format!(

@@ -928,8 +928,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "T" => match value {
                     Ok(t) if *t >= 0.0 && t.fract() == 0.0 => {
                         self.preselected = Some(*t as u32);
-                        if self.setup.tool_change_with_m6 == Some(false) {
-                            changes_tool = true;
+                        match self.setup.tool_change_with_m6 {
+                            Some(false) => changes_tool = true,
+                            Some(true) => {}
+                            None => self.note("MD22550 $MC_TOOL_CHANGE_MODE is not in the machine's data: T selects a tool and M6 changes it, as on most milling machines".into()),
                         }
                     }
                     _ => self.unknown(
@@ -939,7 +941,19 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     ),
                 },
                 "D" => match value {
-                    Ok(d) if *d >= 0.0 && d.fract() == 0.0 => self.edge = Some(*d as u32),
+                    Ok(d) if *d >= 0.0 && d.fract() == 0.0 => {
+                        self.edge = Some(*d as u32);
+                        if *d > 0.0
+                            && self.tool.is_none()
+                            && !changes_tool
+                            && !content
+                                .words
+                                .iter()
+                                .any(|w| w.name == "M" && w.value == Ok(6.0))
+                        {
+                            self.unknown(row, span, format!("D{} without a tool changed in (T and M6 not met before it): no tool length applied", *d as u32));
+                        }
+                    }
                     _ => self.unknown(row, span, "the cutting edge (D) is unknown offline".into()),
                 },
                 "F" if dwell => dwell_value = Some(value.clone()),
@@ -1019,23 +1033,23 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         called.extend(content.calls.into_iter().chain(commands));
         self.given_times(&content.words, &called);
         for (name, arguments) in called {
-            if name == "CYCLE800" {
-                self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into());
-            } else if crate::semantic::calls::is_predefined(&name)
-                || matches!(name.as_str(), "MSG" | "CYCLE832" | "STOPRE")
-            {
-            } else if self.calling.is_some() {
-                self.unknown(
+            match name.as_str() {
+                "CYCLE800" => self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into()),
+                // What moves nothing: messages, settings, the control's own procedures.
+                "MSG" | "CYCLE832" | "STOPRE" => {}
+                _ if crate::semantic::calls::is_predefined(&name) => {}
+                _ if self.calling.is_some() => self.unknown(
                     row,
                     span,
                     format!("`{name}`: a second call in one block is not followed"),
-                );
-            } else {
-                self.calling = Some(Calling {
-                    name,
-                    arguments,
-                    times,
-                });
+                ),
+                _ => {
+                    self.calling = Some(Calling {
+                        name,
+                        arguments,
+                        times,
+                    })
+                }
             }
         }
         if let Some((kind, words)) = content.frame {
