@@ -376,6 +376,18 @@ R1=0\nLOOP\nR1=R1+1\nIF R1>=3 GOTOF OUT\nG1 Y=R1*5\nENDLOOP\nOUT:\nREPEAT\nG91 Z
     assert_eq!(report.axes[1].max, Some(10.0));
     // The REPEAT's condition reads the position, unknown offline: left after one pass.
     assert_eq!(report.axes[2].min, Some(-1.0));
+    // CASE jumps to the branch of the selector's value, else to DEFAULT's.
+    let case = |r1: u32| {
+        let program = format!(
+            "G0 X0 Y0 Z0\nR1={r1}\nCASE(R1) OF 1 GOTOF ONE 2 GOTOF TWO DEFAULT GOTOF OTHER\n\
+ONE: G0 X10\nGOTOF END\nTWO: G0 X20\nGOTOF END\nOTHER: G0 X30\nEND: M30\n"
+        );
+        dry_run(&machine(""), &program).axes[0].max
+    };
+    assert_eq!(
+        (case(1), case(2), case(7)),
+        (Some(10.0), Some(20.0), Some(30.0))
+    );
 }
 
 /// The command: JSON as docs/guide.md gives it, the blocks streamed, SARIF,

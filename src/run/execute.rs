@@ -745,12 +745,33 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     let flow = self.jump(row, statement.span, goto.kind, goto.target.as_ref());
                     return self.then(row, span, content, flow);
                 }
-                StatementKind::Case(_) => {
-                    self.unknown(
-                        row,
-                        statement.span,
-                        "CASE is not followed: the run goes on with the next block".to_string(),
-                    );
+                StatementKind::Case(case) => {
+                    // The first constant equal to the selector's value jumps,
+                    // else DEFAULT's, else the next block.
+                    let flow = match evaluate(source, &case.selector, &self.variables) {
+                        Ok(selected) => {
+                            let taken = case
+                                .branches
+                                .iter()
+                                .find(|(constant, _)| {
+                                    evaluate(source, constant, &self.variables).ok().as_ref()
+                                        == Some(&selected)
+                                })
+                                .map(|(_, goto)| goto)
+                                .or(case.default.as_ref());
+                            match taken {
+                                Some(goto) => {
+                                    self.jump(row, statement.span, goto.kind, goto.target.as_ref())
+                                }
+                                None => Flow::Next,
+                            }
+                        }
+                        Err(missing) => {
+                            self.unknown(row, statement.span, format!("CASE's value is unknown offline ({missing}): the run goes on with the next block; give the value with --set"));
+                            Flow::Next
+                        }
+                    };
+                    return self.then(row, span, content, flow);
                 }
                 StatementKind::SyncAction(_) => {
                     self.unknown(
