@@ -362,6 +362,17 @@ fn what_is_unknown_offline_is_named_with_its_block() {
     );
     // The IF's branch was not taken: X never reached 500.
     assert_eq!(report.axes[0].max, Some(0.0));
+    // A base frame that moves something is named, not applied.
+    let report = dry_run(&machine("$P_CHBFR[0,X,TR]=5\n"), "G0 X0 Y0 Z0\nM30\n");
+    assert!(
+        report
+            .unknown
+            .iter()
+            .any(|u| u.line == 0 && u.why.contains("base frames CHBFR0")),
+        "{:?}",
+        report.unknown
+    );
+    assert_eq!(report.axes[0].max, Some(0.0));
 }
 
 /// Loops run as the control runs them, with their counters.

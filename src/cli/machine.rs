@@ -15,7 +15,7 @@ use crate::cli::render::{human, FileReport};
 use crate::cli::{write_stdout, ExitStatus};
 use crate::diagnostic::Severity;
 use crate::emit::number::format;
-use crate::machine::{axes, frames, tools, Axis, MachineData};
+use crate::machine::{axes, base_frames, frames, tools, Axis, MachineData};
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::Environment;
 use crate::span::LineIndex;
@@ -81,6 +81,7 @@ pub fn run(args: &MachineArgs) -> Result<ExitStatus, CliError> {
                 "axes": axes,
                 "records": records,
                 "frames": frames(&data),
+                "base_frames": base_frames(&data),
                 "tools": tools(&data),
                 "definitions": {"gud": gud, "macros": macros},
                 "data": data.data.len(),
@@ -193,7 +194,15 @@ fn table(name: &str, axes: &[Axis], data: &MachineData, records: &Machine) -> St
         }
         text.push_str("units as the control stores them: mm (inch) or degrees; velocity mm/min or rev/min; acceleration m/s² or rev/s²; jerk m/s³ or rev/s³, by dynamic response group; `-` where the data hold no value\n");
     }
-    for (name, axes) in &frames {
+    let base = base_frames(data);
+    let named = frames
+        .iter()
+        .map(|(name, axes)| (format!("frame {name}"), axes))
+        .chain(
+            base.iter()
+                .map(|(name, axes)| (format!("base frame {name}"), axes)),
+        );
+    for (name, axes) in named {
         let components: Vec<String> = axes
             .iter()
             .map(|(axis, c)| {
@@ -211,7 +220,7 @@ fn table(name: &str, axes: &[Axis], data: &MachineData, records: &Machine) -> St
                 format!("{axis}: {}", set.join(", "))
             })
             .collect();
-        text.push_str(&format!("frame {name}: {}\n", components.join("; ")));
+        text.push_str(&format!("{name}: {}\n", components.join("; ")));
     }
     for record in &records.records {
         text.push_str(&format!(

@@ -22,10 +22,10 @@ use crate::syntax::tree::{Expr, ExprKind, LineKind, StatementKind};
 use crate::syntax::WordFinder;
 
 /// The prefixes of the data kept: machine data of the NC, the channel and
-/// the axes, setting data of the same three, the tool offsets and the
-/// settable frames.
-const PREFIXES: [&str; 8] = [
-    "$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_", "$TC_DP", "$P_UIFR",
+/// the axes, setting data of the same three, the tool offsets, the settable
+/// frames and the base frames (of the NC and of the channel).
+const PREFIXES: [&str; 10] = [
+    "$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_", "$TC_DP", "$P_UIFR", "$P_NCBFR", "$P_CHBFR",
 ];
 
 /// One index of a datum.
@@ -66,6 +66,8 @@ impl MachineData {
             WordFinder::new("$S"),
             WordFinder::new("$TC_DP"),
             WordFinder::new("$P_UIFR"),
+            WordFinder::new("$P_NCBFR"),
+            WordFinder::new("$P_CHBFR"),
             WordFinder::new("CHANDATA"),
         ];
         let env = Env::default();
@@ -128,7 +130,7 @@ impl MachineData {
                                 value,
                                 span: statement.span,
                             }),
-                            Err(_) if name == "$P_UIFR" => read.diagnostics.push(
+                            Err(_) if name.starts_with("$P_") => read.diagnostics.push(
                                 RULE.at(assign.value.span)
                                     .message("a settable frame written whole is not read: only its components are (`$P_UIFR[1,X,TR]=10`)")
                                     .label("frame not read")

@@ -33,13 +33,38 @@ pub fn frame_name(index: u32) -> Option<String> {
 /// The settable frames by their G function, each with its axes' components
 /// by axis name (upper case).
 pub fn frames(data: &MachineData) -> BTreeMap<String, BTreeMap<String, Components>> {
+    named_frames(data, "$P_UIFR", frame_name)
+}
+
+/// The base frames the data hold, the NC's (`$P_NCBFR[n]`, named `NCBFRn`)
+/// and the first channel's (`$P_CHBFR[n]`, `CHBFRn`), each with its axes'
+/// components. Which of them are active is the control's state
+/// (`$P_NCBFRMASK`, `$P_CHBFRMASK` and MD20110's reset behaviour).
+pub fn base_frames(data: &MachineData) -> BTreeMap<String, BTreeMap<String, Components>> {
+    let mut frames = named_frames(data, "$P_NCBFR", |n| Some(format!("NCBFR{n}")));
+    frames.extend(named_frames(data, "$P_CHBFR", |n| {
+        Some(format!("CHBFR{n}"))
+    }));
+    frames
+}
+
+/// The frames of the system variable `variable`, named by `name` from their
+/// index, component by component.
+fn named_frames(
+    data: &MachineData,
+    variable: &str,
+    name: impl Fn(u32) -> Option<String>,
+) -> BTreeMap<String, BTreeMap<String, Components>> {
     let mut frames: BTreeMap<String, BTreeMap<String, Components>> = BTreeMap::new();
-    for datum in data.named("$P_UIFR") {
+    for datum in data.named(variable) {
+        if variable == "$P_CHBFR" && datum.channel.is_some_and(|c| c != 1) {
+            continue;
+        }
         let [Index::Number(index), Index::Axis(axis), Index::Axis(component)] = &datum.indices[..]
         else {
             continue;
         };
-        let Some(name) = frame_name(*index) else {
+        let Some(name) = name(*index) else {
             continue;
         };
         let value = datum.value.number();
@@ -60,6 +85,18 @@ pub fn frames(data: &MachineData) -> BTreeMap<String, BTreeMap<String, Component
     frames
 }
 
+impl Components {
+    /// Whether the frame moves or turns anything: a translation or rotation
+    /// other than 0, a scale other than 1, a mirror.
+    pub fn acts(&self) -> bool {
+        [self.tr, self.fi, self.rt, self.mi]
+            .iter()
+            .flatten()
+            .any(|v| *v != 0.0)
+            || self.sc.is_some_and(|s| s != 1.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,5 +115,10 @@ $P_UIFR[6,Y,TR]=-5\n$P_UIFR[1]=CTRANS(X,1)\n";
         assert_eq!((x.tr, x.fi, x.rt), (Some(100.5), Some(0.01), None));
         assert_eq!(frames["G54"]["Z"].rt, Some(30.0));
         assert_eq!(frames["G506"]["Y"].tr, Some(-5.0));
+        let base = base_frames(&MachineData::read(
+            b"$P_NCBFR[0,X,TR]=1\nCHANDATA(1)\n$P_CHBFR[0,Z,RT]=2\nCHANDATA(2)\n$P_CHBFR[1,Z,TR]=3\n",
+        ));
+        assert_eq!(base.keys().collect::<Vec<_>>(), ["CHBFR0", "NCBFR0"]);
+        assert!(base["CHBFR0"]["Z"].acts());
     }
 }

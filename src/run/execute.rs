@@ -280,6 +280,17 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         report.assumptions.push(
             "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), G64 continuous path, BRISK; positions unknown until programmed".to_string(),
         );
+        if !setup.base_frames.is_empty() {
+            report.unknown.push(Unknown {
+                program: None,
+                line: 0,
+                span: Span::default(),
+                why: format!(
+                    "the base frames {} of the machine's data are not applied: which are active is the control's state ($P_NCBFRMASK, $P_CHBFRMASK, MD20110); positions are of the settable and programmable frames alone",
+                    setup.base_frames.join(", ")
+                ),
+            });
+        }
         report.assumptions.push(
             "G0 interpolates linearly (RTLION, until RTLIOF), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
         );

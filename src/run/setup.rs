@@ -102,6 +102,9 @@ pub struct Setup {
     pub tool_change_with_m6: Option<bool>,
     /// MD20270 `$MC_CUTTING_EDGE_DEFAULT`: the D a tool change selects.
     pub default_edge: Option<u32>,
+    /// The base frames in the data that move or turn anything (`CHBFR0`):
+    /// not applied, since which are active is the control's state.
+    pub base_frames: Vec<String>,
     /// MD10600 `$MN_FRAME_ANGLE_INPUT_MODE`: `Some(true)` for RPY angles
     /// (Z, Y', X''), `Some(false)` for Euler angles.
     pub angles_rpy: Option<bool>,
@@ -182,6 +185,11 @@ impl Setup {
             metric: nck("$MN_SCALING_SYSTEM_IS_METRIC").map(|n| n != 0.0),
             ipo_cycle_s: sysclock.zip(ratio).map(|(s, r)| s * r),
             tool_change_with_m6: number("$MC_TOOL_CHANGE_MODE", Some(1), &[]).map(|n| n == 1.0),
+            base_frames: crate::machine::base_frames(data)
+                .into_iter()
+                .filter(|(_, axes)| axes.values().any(|c| c.acts()))
+                .map(|(name, _)| name)
+                .collect(),
             angles_rpy: nck("$MN_FRAME_ANGLE_INPUT_MODE").map(|n| n == 1.0),
             default_edge: number("$MC_CUTTING_EDGE_DEFAULT", Some(1), &[])
                 .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
