@@ -18,14 +18,28 @@ pub fn scratch(name: &str) -> PathBuf {
 
 /// Runs the built binary in the repository with `args`, feeding `stdin`.
 pub fn run(args: &[&str], stdin: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_sinuprep"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
+    let spawn = || {
+        Command::new(env!("CARGO_BIN_EXE_sinuprep"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+    };
+    // Wine now and then fails to create a process (ERROR_INTERNAL_ERROR,
+    // 1359) while many tests start theirs at once: tried again, a few times.
+    let mut child = spawn();
+    for _ in 0..4 {
+        match &child {
+            Err(error) if cfg!(windows) && error.raw_os_error() == Some(1359) => {
+                std::thread::sleep(std::time::Duration::from_millis(200));
+                child = spawn();
+            }
+            _ => break,
+        }
+    }
+    let mut child = child.expect("binary runs");
     // A command that stops before reading stdin (a refused option) closes
     // the pipe: that is its answer, not the test's failure.
     let written = child.stdin.take().expect("stdin").write_all(stdin);
