@@ -1,0 +1,539 @@
+//! Motion: the units and frames a block's words set, the tool's length,
+//! where a programmed point lies on the machine and back, a block's move
+//! with its arc, and every position against the software limits.
+
+use std::collections::HashSet;
+
+use nalgebra::{Rotation3, Vector3};
+
+use super::{Coordinate, Interpreter, Motion, Word, UNTOLD};
+use crate::run::arc::Arc;
+use crate::run::frame::{rpy, Frame};
+use crate::run::{Side, Violation, MOST_VIOLATIONS};
+use crate::span::Span;
+use crate::syntax::tree::FrameKind;
+
+impl Interpreter<'_, '_> {
+    pub(super) fn units(&mut self, row: usize, span: Span, g: u32) {
+        let inch = matches!(g, 70 | 700);
+        let scale = match (self.setup.metric, inch) {
+            (Some(true), true) => 25.4,
+            (Some(false), false) => 1.0 / 25.4,
+            (Some(_), _) => 1.0,
+            (None, _) => {
+                self.unknown(row, span, "G70/G71: the machine's system of units (MD10240) is not in its data: lengths taken as they are written".into());
+                1.0
+            }
+        };
+        self.length_scale = scale;
+        self.feed_scale = if matches!(g, 700 | 710) { scale } else { 1.0 };
+    }
+
+    /// G54..G57, G505..G599: the settable frame the machine's data hold.
+    pub(super) fn select_frame(&mut self, row: usize, span: Span, g: u32) {
+        let name = format!("G{g}");
+        let Some(components) = self.setup.frames.get(&name) else {
+            self.unknown(
+                row,
+                span,
+                format!("{name}: the machine's data hold no such frame (`$P_UIFR`): taken as zero"),
+            );
+            self.settable = Frame::identity(self.setup.axes.len());
+            return;
+        };
+        let mut frame = Frame::identity(self.setup.axes.len());
+        let mut angles = [0.0; 3];
+        for (axis, c) in components {
+            let Some(at) = self.setup.axis(axis) else {
+                self.unknown(
+                    row,
+                    span,
+                    format!("{name} moves axis `{axis}`, which is no axis of the channel"),
+                );
+                continue;
+            };
+            frame.translation[at] = c.tr.unwrap_or(0.0) + c.fi.unwrap_or(0.0);
+            if let Some(g) = self.setup.axes[at].geometry {
+                angles[g] = c.rt.unwrap_or(0.0);
+            }
+            if c.sc.is_some_and(|s| s != 1.0) || c.mi.is_some_and(|m| m != 0.0) {
+                self.unknown(
+                    row,
+                    span,
+                    format!("{name}: scale and mirror of a frame are not modelled"),
+                );
+            }
+        }
+        frame.rotation = self.rotation(row, span, angles);
+        self.settable = frame;
+    }
+
+    /// A rotation by RPY angles; with more than one axis, MD10600 decides
+    /// the order, RPY where the data say so.
+    pub(super) fn rotation(&mut self, row: usize, span: Span, angles: [f64; 3]) -> Rotation3<f64> {
+        if angles.iter().filter(|a| **a != 0.0).count() > 1 {
+            match self.setup.angles_rpy {
+                Some(true) => {}
+                Some(false) => self.unknown(row, span, "a rotation about several axes in Euler angles (MD10600 = 2) is not modelled: taken as RPY (Z, Y', X'')".into()),
+                None => self.unknown(row, span, "a rotation about several axes, and MD10600 (RPY or Euler) not in the machine's data: taken as RPY (Z, Y', X'')".into()),
+            }
+        }
+        rpy(angles)
+    }
+
+    pub(super) fn frame_statement(
+        &mut self,
+        row: usize,
+        span: Span,
+        kind: FrameKind,
+        words: &[Word],
+    ) {
+        let axes = self.setup.axes.len();
+        let mut values = vec![0.0; axes];
+        let mut angles = [0.0; 3];
+        let mut in_plane = None;
+        for word in words {
+            let Ok(value) = word.value else {
+                self.unknown(
+                    row,
+                    span,
+                    format!("the frame's `{}` is unknown offline: taken as 0", word.name),
+                );
+                continue;
+            };
+            if word.name == "RPL" {
+                in_plane = Some(value);
+                continue;
+            }
+            match self.setup.axis(&word.name) {
+                Some(at) => {
+                    values[at] = value;
+                    if let Some(g) = self.setup.axes[at].geometry {
+                        angles[g] = value;
+                    }
+                }
+                None => self.unknown(
+                    row,
+                    span,
+                    format!("`{}` is no axis of the channel", word.name),
+                ),
+            }
+        }
+        if let Some(angle) = in_plane {
+            angles = [0.0; 3];
+            angles[[2, 1, 0][self.plane]] = angle;
+        }
+        match kind {
+            FrameKind::Trans => {
+                self.programmable = Frame::identity(axes);
+                self.programmable.translation = values.iter().map(|v| v * self.length_scale).collect();
+            }
+            FrameKind::ATrans => {
+                let geometry = Vector3::new(values[0], values[1], values[2]) * self.length_scale;
+                let turned = self.programmable.turn(geometry);
+                for (k, v) in values.iter().enumerate() {
+                    self.programmable.translation[k] += if k < 3 { turned[k] } else { *v };
+                }
+            }
+            FrameKind::Rot => {
+                self.programmable = Frame::identity(axes);
+                self.programmable.rotation = self.rotation(row, span, angles);
+            }
+            FrameKind::ARot => {
+                let rotation = self.rotation(row, span, angles);
+                self.programmable.rotation *= rotation;
+            }
+            other => self.unknown(row, span, format!("{other:?} (a frame's scale, mirror or solid-angle rotation) is not modelled: the frame is left as it was")),
+        }
+    }
+
+    /// The tool's length along the infeed axis of the plane, in the machine.
+    pub(super) fn tool_offset(&mut self, row: usize, span: Span) -> [f64; 3] {
+        let mut offset = [0.0; 3];
+        let (Some(t), Some(d)) = (self.tool, self.edge) else {
+            return offset;
+        };
+        if d == 0 {
+            return offset;
+        }
+        let Some(tool) = self.setup.tool(t, d) else {
+            self.unknown(row, span, format!("T{t} D{d}: the machine's data hold no offsets for it (`$TC_DP`): its length taken as 0"));
+            return offset;
+        };
+        let milling = tool.kind.is_none_or(|k| (100.0..300.0).contains(&k));
+        if !milling {
+            self.unknown(row, span, format!("T{t} D{d}: tool type {} (not a milling or drilling tool) is not modelled: its length taken as 0", tool.kind.unwrap_or(0.0)));
+            return offset;
+        }
+        let length = tool.length[0].unwrap_or(0.0) + tool.length_wear[0].unwrap_or(0.0);
+        offset[[2, 1, 0][self.plane]] = length;
+        offset
+    }
+
+    /// The machine position of the programmed point `wcs`.
+    pub(super) fn to_machine(
+        &self,
+        wcs: &[Option<f64>],
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Vec<Option<f64>> {
+        let mut at = if suppress {
+            wcs.to_vec()
+        } else {
+            self.settable.apply(&self.programmable.apply(wcs))
+        };
+        for (k, length) in tool.iter().enumerate() {
+            at[k] = at[k].map(|v| v + length);
+        }
+        at
+    }
+
+    /// The programmed point of the machine position `mcs`.
+    pub(super) fn to_program(
+        &self,
+        mcs: &[Option<f64>],
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Vec<Option<f64>> {
+        let mut at = mcs.to_vec();
+        for (k, length) in tool.iter().enumerate() {
+            at[k] = at[k].map(|v| v - length);
+        }
+        if suppress {
+            return at;
+        }
+        let back = |frame: &Frame, point: Vec<Option<f64>>| -> Vec<Option<f64>> {
+            let mut out: Vec<Option<f64>> = point
+                .iter()
+                .zip(&frame.translation)
+                .map(|(p, t)| p.map(|p| p - t))
+                .collect();
+            if frame.rotation != Rotation3::identity() {
+                match (out[0], out[1], out[2]) {
+                    (Some(x), Some(y), Some(z)) => {
+                        let r = frame.rotation.inverse() * Vector3::new(x, y, z);
+                        out[0] = Some(r.x);
+                        out[1] = Some(r.y);
+                        out[2] = Some(r.z);
+                    }
+                    _ => {
+                        out[0] = None;
+                        out[1] = None;
+                        out[2] = None;
+                    }
+                }
+            }
+            out
+        };
+        back(&self.programmable, back(&self.settable, at))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn motion_block(
+        &mut self,
+        row: usize,
+        span: Span,
+        targets: &[Option<(Result<f64, String>, Coordinate)>],
+        centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
+        radius: Option<Result<f64, String>>,
+        suppress: bool,
+        exact_here: bool,
+    ) {
+        let tool = self.tool_offset(row, span);
+        let start_mcs = self.mcs.clone();
+        // Where the program left each axis; in machine coordinates less the
+        // tool for a block that suppresses the frames (G53, G153, SUPA).
+        let start = if suppress {
+            self.to_program(&start_mcs, true, tool)
+        } else {
+            self.programmed.clone()
+        };
+        let mut end = start.clone();
+        for (k, target) in targets.iter().enumerate() {
+            let Some((value, coordinate)) = target else {
+                continue;
+            };
+            let scale = if self.setup.axes[k].rotary() {
+                1.0
+            } else {
+                self.length_scale
+            };
+            end[k] = match value {
+                Ok(v) => {
+                    let incremental = match coordinate {
+                        Coordinate::Modal => self.incremental,
+                        Coordinate::Absolute => false,
+                        Coordinate::Incremental => true,
+                    };
+                    if incremental {
+                        start[k].map(|s| s + v * scale)
+                    } else {
+                        Some(v * scale)
+                    }
+                }
+                Err(why) => {
+                    self.unknown(
+                        row,
+                        span,
+                        format!("axis `{}`: its position is {why}", self.setup.axes[k].name),
+                    );
+                    None
+                }
+            };
+        }
+        // A changed frame or tool is traversed with the next move of the
+        // axes it concerns (MD42440, MD42442 at their defaults): an axis not
+        // programmed stays where it is; where the frames' rotation changed,
+        // the geometry axes go together, as the rotation couples them.
+        let reached = self.to_machine(&end, suppress, tool);
+        let rotation = if suppress {
+            Rotation3::identity()
+        } else {
+            self.settable.rotation * self.programmable.rotation
+        };
+        let coupled = rotation != self.last_rotation && targets.iter().take(3).any(Option::is_some);
+        self.last_rotation = rotation;
+        let end_mcs: Vec<Option<f64>> = (0..reached.len())
+            .map(|k| {
+                if targets[k].is_some() || (k < 3 && coupled) {
+                    reached[k]
+                } else {
+                    start_mcs[k]
+                }
+            })
+            .collect();
+        self.programmed = if suppress {
+            self.to_program(&end_mcs, false, tool)
+        } else {
+            end.clone()
+        };
+        // The arc, in the machine's coordinates.
+        let arc = match self.motion {
+            Motion::Clockwise | Motion::Counterclockwise => {
+                self.arc(row, span, &start, &end, centre, radius, suppress, tool)
+            }
+            _ => None,
+        };
+        self.last_arc = arc;
+        // Limits and travel: the ends, and the arc's turning points. Where
+        // the block traverses a changed offset, the arc's start under the new
+        // one too: the path lies between the arc under the old offset and
+        // under the new, which holds its extremes.
+        let mut points = vec![end_mcs.clone()];
+        if let Some(arc) = &arc {
+            for k in 0..3 {
+                let start = std::iter::once(arc.point(0.0));
+                for point in arc.turning_points(k).into_iter().chain(start) {
+                    let mut at = end_mcs.clone();
+                    at[0] = Some(point.x);
+                    at[1] = Some(point.y);
+                    at[2] = Some(point.z);
+                    points.push(at);
+                }
+            }
+        }
+        let mut out = HashSet::new();
+        for point in &points {
+            self.check(row, span, point, &mut out);
+        }
+        // An axis back within its limits ends its excursion.
+        self.beyond.retain(|key, _| out.contains(key));
+        // Time.
+        let moved: Vec<(usize, f64)> = start_mcs
+            .iter()
+            .zip(&end_mcs)
+            .enumerate()
+            .filter_map(|(k, (a, b))| match (a, b) {
+                (Some(a), Some(b)) if (b - a).abs() > 1e-12 => Some((k, b - a)),
+                _ => None,
+            })
+            .collect();
+        // An axis whose start or end is unknown: how far it goes is unknown.
+        let timed = start_mcs
+            .iter()
+            .zip(&end_mcs)
+            .all(|(a, b)| a.is_some() == b.is_some());
+        self.mcs = end_mcs;
+        if !timed {
+            self.report.blocks_without_time += 1;
+            self.unknown(row, span, "where the axes were before this block is unknown (the program's start, or a value unknown offline): its time is not counted".into());
+            return;
+        }
+        if moved.is_empty() && arc.is_none() {
+            return;
+        }
+        self.time(row, span, &moved, arc.as_ref(), exact_here);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn arc(
+        &mut self,
+        row: usize,
+        span: Span,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
+        radius: Option<Result<f64, String>>,
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Option<Arc> {
+        let point = |p: &[Option<f64>]| Some(Vector3::new(p[0]?, p[1]?, p[2]?));
+        let (Some(s), Some(e)) = (point(start), point(end)) else {
+            self.unknown(
+                row,
+                span,
+                "an arc from or to a point unknown offline: its travel is not checked".into(),
+            );
+            return None;
+        };
+        let applicate = [2, 1, 0][self.plane];
+        let mut normal = Vector3::zeros();
+        normal[applicate] = if self.motion == Motion::Clockwise {
+            -1.0
+        } else {
+            1.0
+        };
+        let c = match (centre.iter().any(Option::is_some), radius) {
+            (true, _) => {
+                let mut c = s;
+                for (k, given) in centre.iter().enumerate() {
+                    match given {
+                        Some((Ok(v), Coordinate::Absolute)) => c[k] = v * self.length_scale,
+                        Some((Ok(v), _)) => c[k] = s[k] + v * self.length_scale,
+                        Some((Err(why), _)) => {
+                            self.unknown(row, span, format!("the arc's centre is {why}"));
+                            return None;
+                        }
+                        None => {}
+                    }
+                }
+                c
+            }
+            (false, Some(Ok(r))) => {
+                match Arc::centre_of_radius(s, e, r * self.length_scale, normal) {
+                    Some(c) => c,
+                    None => {
+                        self.unknown(row, span, "the arc's radius is smaller than half the way from start to end: the control stops with an alarm (14045)".into());
+                        return None;
+                    }
+                }
+            }
+            (false, Some(Err(why))) => {
+                self.unknown(row, span, format!("the arc's radius is {why}"));
+                return None;
+            }
+            (false, None) => {
+                self.unknown(
+                    row,
+                    span,
+                    "an arc without its centre (I, J, K) or radius (CR=)".into(),
+                );
+                return None;
+            }
+        };
+        let arc = Arc::through(s, e, c, normal)?;
+        // Into the machine: the frames turn and shift the arc, the tool shifts it.
+        let to_machine = |p: Vector3<f64>| -> Vector3<f64> {
+            let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
+            wcs[0] = Some(p.x);
+            wcs[1] = Some(p.y);
+            wcs[2] = Some(p.z);
+            let at = self.to_machine(&wcs, suppress, tool);
+            Vector3::new(
+                at[0].unwrap_or(0.0),
+                at[1].unwrap_or(0.0),
+                at[2].unwrap_or(0.0),
+            )
+        };
+        let origin = to_machine(Vector3::zeros());
+        let turn = |d: Vector3<f64>| to_machine(d) - origin;
+        Some(Arc {
+            centre: to_machine(arc.centre),
+            u: turn(arc.u),
+            v: turn(arc.v),
+            normal: turn(arc.normal),
+            sweep: arc.sweep,
+            rise: arc.rise,
+        })
+    }
+
+    /// Every position of `point` against its axis's software limits, and
+    /// the travel's extent.
+    pub(super) fn check(
+        &mut self,
+        row: usize,
+        span: Span,
+        point: &[Option<f64>],
+        out: &mut HashSet<(usize, bool)>,
+    ) {
+        for (k, value) in point.iter().enumerate() {
+            let Some(value) = *value else { continue };
+            self.minimum[k] = Some(self.minimum[k].map_or(value, |m| m.min(value)));
+            self.maximum[k] = Some(self.maximum[k].map_or(value, |m| m.max(value)));
+            let axis = &self.setup.axes[k];
+            let limits = if self.options.second_limits {
+                axis.machine.as_ref().map_or([None, None], |m| m.limits2)
+            } else {
+                axis.limits()
+            };
+            for (side, limit) in [(Side::Minus, limits[0]), (Side::Plus, limits[1])] {
+                let Some(limit) = limit else { continue };
+                let past = match side {
+                    Side::Minus => value < limit,
+                    Side::Plus => value > limit,
+                };
+                if !past {
+                    continue;
+                }
+                let key = (k, side == Side::Plus);
+                out.insert(key);
+                let known = self
+                    .beyond
+                    .get(&key)
+                    .or_else(|| {
+                        self.began
+                            .get(&(self.program.clone(), row, k, side == Side::Plus))
+                    })
+                    .copied();
+                match known {
+                    // Counted once an excursion, not listed.
+                    Some(UNTOLD) => {
+                        self.beyond.insert(key, UNTOLD);
+                    }
+                    Some(at) => {
+                        let violation = &mut self.violations[at];
+                        let worse = match side {
+                            Side::Minus => value < violation.value,
+                            Side::Plus => value > violation.value,
+                        };
+                        if worse {
+                            violation.value = value;
+                        }
+                        violation.last_line = violation.last_line.max(row + 1);
+                        self.beyond.insert(key, at);
+                    }
+                    None if self.violations.len() >= MOST_VIOLATIONS => {
+                        self.report.violations_untold += 1;
+                        self.beyond.insert(key, UNTOLD);
+                    }
+                    None => {
+                        self.violations.push(Violation {
+                            program: self.program.clone(),
+                            line: row + 1,
+                            last_line: row + 1,
+                            span,
+                            axis: axis.machine_name(),
+                            value,
+                            limit,
+                            side,
+                        });
+                        let at = self.violations.len() - 1;
+                        self.beyond.insert(key, at);
+                        self.began
+                            .insert((self.program.clone(), row, k, side == Side::Plus), at);
+                    }
+                }
+            }
+        }
+    }
+}
