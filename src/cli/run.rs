@@ -35,31 +35,11 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
     let file = read(&Found::named(args.path.clone()))?;
     let resolved = workspace.for_check(&args.path)?;
     let on = workspace.machine(&resolved.config)?;
-    let (setup, machine_name) = match &on {
-        Some(on) => (
-            Setup::of(&MachineData::read(&on.source)),
-            Some(on.name.clone()),
-        ),
-        None => (Setup::default(), None),
-    };
-    let setup = if setup.axes.is_empty() {
-        // No machine, or one without axis data: the geometry axes alone,
-        // positions and frames without limits or time.
-        Setup {
-            axes: ["X", "Y", "Z"]
-                .iter()
-                .enumerate()
-                .map(|(g, name)| crate::run::RunAxis {
-                    name: (*name).to_string(),
-                    geometry: Some(g),
-                    machine: None,
-                })
-                .collect(),
-            ..setup
-        }
-    } else {
-        setup
-    };
+    // Without a machine (or its axis data), the geometry axes alone:
+    // positions and frames, no limits, no time.
+    let data = MachineData::read(on.as_ref().map_or(&b""[..], |on| &on.source[..]));
+    let setup = Setup::of(&data);
+    let machine_name = on.as_ref().map(|on| on.name.clone());
     let kind = crate::syntax::program_kind(Some(&file.name), &file.bytes);
     let macros = &resolved.settings.environment.expansions;
     let model = Model::build_with(&file.bytes, kind, macros.clone());
@@ -291,7 +271,7 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
     let mut text = match machine {
         Some(machine) => format!("{name} on {machine}: {} blocks run\n", report.blocks),
         None => format!(
-            "{name} without a machine (--machine): {} blocks run; no limits, no time\n",
+            "{name} without a machine (--machine): {} blocks run; no limits, times from the feeds alone\n",
             report.blocks
         ),
     };
@@ -318,7 +298,10 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
         let tools: Vec<String> = report
             .tools
             .iter()
-            .map(|t| format!("T{} {}", t.t, seconds(t.time_s)))
+            .map(|t| match t.t.as_str() {
+                "none" => format!("no tool {}", seconds(t.time_s)),
+                number => format!("T{number} {}", seconds(t.time_s)),
+            })
             .collect();
         text.push_str(&format!("per tool: {}\n", tools.join(", ")));
     }

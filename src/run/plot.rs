@@ -203,10 +203,13 @@ svg{{background:#fafafa;border:1px solid #ddd}}.limit{{stroke:#c00;stroke-dashar
             };
             let _ = writeln!(
                 page,
-                "<text x=\"8\" y=\"{}\">T{}</text><rect class=\"bar\" x=\"80\" y=\"{top}\" width=\"{width:.1}\" height=\"16\"/>\
+                "<text x=\"8\" y=\"{}\">{}</text><rect class=\"bar\" x=\"80\" y=\"{top}\" width=\"{width:.1}\" height=\"16\"/>\
 <text x=\"{:.1}\" y=\"{}\">{}</text>",
                 top + 12.0,
-                escape(&tool.t),
+                match tool.t.as_str() {
+                    "none" => "no tool".to_string(),
+                    number => format!("T{}", escape(number)),
+                },
                 86.0 + width,
                 top + 12.0,
                 seconds(tool.time_s)
