@@ -102,6 +102,11 @@ pub struct Setup {
     pub tool_change_with_m6: Option<bool>,
     /// MD20270 `$MC_CUTTING_EDGE_DEFAULT`: the D a tool change selects.
     pub default_edge: Option<u32>,
+    /// MD20150 `$MC_GCODE_RESET_VALUES[9]` (G group 10): `Some(true)` for
+    /// G60 at the start, `Some(false)` for a continuous-path mode.
+    pub reset_exact_stop: Option<bool>,
+    /// MD20150 `[20]` (G group 21): `Some(true)` for SOFT at the start.
+    pub reset_soft: Option<bool>,
     /// The base frames in the data that move or turn anything (`CHBFR0`):
     /// not applied, since which are active is the control's state.
     pub base_frames: Vec<String>,
@@ -185,6 +190,10 @@ impl Setup {
             metric: nck("$MN_SCALING_SYSTEM_IS_METRIC").map(|n| n != 0.0),
             ipo_cycle_s: sysclock.zip(ratio).map(|(s, r)| s * r),
             tool_change_with_m6: number("$MC_TOOL_CHANGE_MODE", Some(1), &[]).map(|n| n == 1.0),
+            reset_exact_stop: number("$MC_GCODE_RESET_VALUES", Some(1), &[Index::Number(9)])
+                .map(|g| g == 1.0),
+            reset_soft: number("$MC_GCODE_RESET_VALUES", Some(1), &[Index::Number(20)])
+                .map(|g| g == 2.0),
             base_frames: crate::machine::base_frames(data)
                 .into_iter()
                 .filter(|(_, axes)| axes.values().any(|c| c.acts()))

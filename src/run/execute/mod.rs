@@ -279,9 +279,24 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let axes = setup.axes.len();
         let openers = openers(model);
         let mut report = Report::default();
-        report.assumptions.push(
-            "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), G64 continuous path, BRISK; positions unknown until programmed".to_string(),
-        );
+        // The modes at the start: MD20150's where the data hold them, else
+        // the Programming Manual's defaults (G60, BRISK).
+        let exact_stop = setup.reset_exact_stop.unwrap_or(true);
+        let soft = setup.reset_soft.unwrap_or(false);
+        let said = |given: bool| {
+            if given {
+                "MD20150"
+            } else {
+                "the control's default; MD20150 not in the data"
+            }
+        };
+        report.assumptions.push(format!(
+            "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), positions unknown until programmed; {} ({}), {} ({})",
+            if exact_stop { "G60 exact stop" } else { "continuous path" },
+            said(setup.reset_exact_stop.is_some()),
+            if soft { "SOFT" } else { "BRISK" },
+            said(setup.reset_soft.is_some()),
+        ));
         if !setup.base_frames.is_empty() {
             report.unknown.push(Unknown {
                 program: None,
@@ -323,8 +338,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             feed_mode: FeedMode::PerMinute,
             feed: None,
             spindle: None,
-            exact_stop: false,
-            soft: false,
+            exact_stop,
+            soft,
             rapid_linear: true,
             settable: Frame::identity(axes),
             programmable: Frame::identity(axes),
