@@ -88,9 +88,27 @@ fn a_single_block_at_exact_stop_takes_the_closed_form_time() {
         1e-12,
         "RTLIOF",
     );
+    // A full circle of 10 mm at F60000: the centripetal acceleration caps
+    // the path at sqrt(2500 · 10) mm/s, under the axes' 500 mm/s.
+    let circle = dry_run(&data, "G0 X0 Y0 Z0\nG60 G2 X0 Y0 I10 F60000\nM30\n");
+    let (d, v) = (std::f64::consts::TAU * 10.0, (2500.0f64 * 10.0).sqrt());
+    assert_near(circle.time_s, d / v + v / 2500.0, 1e-9, "full circle");
     // A dwell counts its seconds.
     let dwell = dry_run(&data, "G4 F2.5\nM30\n");
     assert_near(dwell.time_s, 2.5, 1e-12, "G4");
+}
+
+/// Under a rotated frame an axis programmed alone moves the machine's
+/// geometry axes together: X20, then X30, after ROT Z90 is machine Y 20, then 30.
+#[test]
+fn under_a_rotation_one_axis_moves_the_machine_axes_together() {
+    let report = dry_run(&machine(""), "G0 X0 Y0 Z0\nROT Z90\nG0 X20\nG0 X30\nM30\n");
+    let (x, y) = (&report.axes[0], &report.axes[1]);
+    assert!((y.max.expect("Y") - 30.0).abs() < 1e-9, "{report:?}");
+    assert!(
+        x.max.expect("X").abs() < 1e-9 && x.min.expect("X").abs() < 1e-9,
+        "{report:?}"
+    );
 }
 
 /// A small generator of numbers (the tests need no crate for it).

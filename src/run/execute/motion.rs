@@ -283,15 +283,17 @@ impl Interpreter<'_, '_> {
         }
         // A changed frame or tool is traversed with the next move of the
         // axes it concerns (MD42440, MD42442 at their defaults): an axis not
-        // programmed stays where it is; where the frames' rotation changed,
-        // the geometry axes go together, as the rotation couples them.
+        // programmed stays where it is; under a rotation, or where it
+        // changed, the geometry axes go together.
         let reached = self.to_machine(&end, suppress, tool);
         let rotation = if suppress {
             Rotation3::identity()
         } else {
             self.settable.rotation * self.programmable.rotation
         };
-        let coupled = rotation != self.last_rotation && targets.iter().take(3).any(Option::is_some);
+        // A rotation couples the geometry axes: one programmed moves them all.
+        let coupled = (rotation != self.last_rotation || rotation != Rotation3::identity())
+            && targets.iter().take(3).any(Option::is_some);
         self.last_rotation = rotation;
         let end_mcs: Vec<Option<f64>> = (0..reached.len())
             .map(|k| {

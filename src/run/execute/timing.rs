@@ -72,17 +72,30 @@ impl Interpreter<'_, '_> {
         let mut acceleration = f64::INFINITY;
         let mut jerk = f64::INFINITY;
         let mut complete = true;
-        for &(k, d) in moved {
+        // Each axis's largest share of the path velocity: on a line its part
+        // of the way; on an arc (a full circle too, whose ends meet) the
+        // largest a geometry axis reaches on the whole circle, its turning
+        // and its part of the rise together.
+        let mut shares: Vec<(usize, f64)> = match arc {
+            Some(arc) => (0..3)
+                .map(|k| {
+                    let turning = arc.u[k].hypot(arc.v[k]) * arc.sweep;
+                    (
+                        k,
+                        ((turning + (arc.rise * arc.normal[k]).abs()) / length).min(1.0),
+                    )
+                })
+                .collect(),
+            None => Vec::new(),
+        };
+        shares.extend(
+            moved
+                .iter()
+                .filter(|(k, _)| arc.is_none() || *k >= 3)
+                .map(|&(k, d)| (k, d.abs() / length)),
+        );
+        for (k, share) in shares {
             let axis = &self.setup.axes[k];
-            // The axis's share of the path: all of it on an arc's plane.
-            let share = match arc {
-                Some(arc) if k < 3 => {
-                    let plane =
-                        (arc.u[k].hypot(arc.v[k]) * arc.sweep).hypot(arc.rise * arc.normal[k]);
-                    (plane / length).clamp(0.0, 1.0).max(d.abs() / length)
-                }
-                _ => d.abs() / length,
-            };
             if share <= 0.0 {
                 continue;
             }
