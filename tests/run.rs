@@ -405,6 +405,14 @@ R1=0\nLOOP\nR1=R1+1\nIF R1>=3 GOTOF OUT\nG1 Y=R1*5\nENDLOOP\nOUT:\nREPEAT\nG91 Z
     assert_eq!(report.axes[1].max, Some(10.0));
     // The REPEAT's condition reads the position, unknown offline: left after one pass.
     assert_eq!(report.axes[2].min, Some(-1.0));
+    // A FOR left by a jump starts anew when met again: the first pass
+    // counts I = 1, 2, the second 1, 2, 3; R5 sums them (3 + 6), Z shows it.
+    let again = dry_run(
+        &machine(""),
+        "DEF INT I\nG0 X0 Y0 Z0\nR2=0\nR5=0\nWHILE R2<2\nR2=R2+1\nFOR I=1 TO 10\nR5=R5+I\n\
+IF I==R2+1 GOTOF NEXT\nENDFOR\nNEXT:\nENDWHILE\nG0 Z=R5\nM30\n",
+    );
+    assert_eq!(again.axes[2].max, Some(9.0), "{:?}", again.unknown);
     // CASE jumps to the branch of the selector's value, else to DEFAULT's.
     let case = |r1: u32| {
         let program = format!(

@@ -791,7 +791,16 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             return Flow::Next;
         }
         match self.model.landing(target, kind, row) {
-            Some(landing) => Flow::To(landing),
+            Some(landing) => {
+                // A jump out of a FOR loop leaves it: met again, it starts anew.
+                let blocks = &self.model.blocks;
+                self.in_for.retain(|&opener| {
+                    blocks
+                        .opened_on(opener)
+                        .is_some_and(|c| (c.row + 1..=c.end).contains(&landing))
+                });
+                Flow::To(landing)
+            }
             None if kind == GotoKind::Conditional => Flow::Next,
             None => {
                 self.unknown(
