@@ -413,6 +413,21 @@ R1=0\nLOOP\nR1=R1+1\nIF R1>=3 GOTOF OUT\nG1 Y=R1*5\nENDLOOP\nOUT:\nREPEAT\nG91 Z
 IF I==R2+1 GOTOF NEXT\nENDFOR\nNEXT:\nENDWHILE\nG0 Z=R5\nM30\n",
     );
     assert_eq!(again.axes[2].max, Some(9.0), "{:?}", again.unknown);
+    // REPEAT: a section from a label to the REPEAT, between two labels,
+    // one block (REPEATB), each P times more after its first pass.
+    let repeated = dry_run(
+        &machine(""),
+        "G0 X0 Y0 Z0\nR1=0\nR2=0\nSTART: R1=R1+1\nG91 G0 X1\nG90\nREPEAT START P=2\n\
+FROM: R2=R2+1\nTO: R2=R2+10\nREPEAT FROM TO P=2\nONE: R2=R2+100\nREPEATB ONE P=3\n\
+G0 Y=R1 Z=R2\nM30\n",
+    );
+    let (x, y, z) = (&repeated.axes[0], &repeated.axes[1], &repeated.axes[2]);
+    assert_eq!(
+        (x.max, y.max, z.max),
+        (Some(3.0), Some(3.0), Some(433.0)),
+        "{:?}",
+        repeated.unknown
+    );
     // CASE jumps to the branch of the selector's value, else to DEFAULT's.
     let case = |r1: u32| {
         let program = format!(

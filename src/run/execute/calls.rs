@@ -1,12 +1,15 @@
 //! Subprograms: into one with its arguments, back to the caller, again
-//! while its `P` asks; what every program level shares.
+//! while its `P` asks; sections of a program repeated (REPEAT); what every
+//! program level shares.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
-use super::{openers, Calling, Interpreter, Return, MOST_LEVELS};
-use crate::semantic::eval::key;
+use super::{openers, Calling, Flow, Interpreter, Return, MOST_LEVELS};
+use crate::semantic::eval::{evaluate, key};
+use crate::semantic::jumps::Target;
 use crate::semantic::value::Value;
-use crate::syntax::tree::{LineKind, StatementKind};
+use crate::span::Span;
+use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind};
 
 impl Interpreter<'_, '_> {
     /// Into the subprogram `call` names, from the block on `row`: where
@@ -30,6 +33,7 @@ impl Interpreter<'_, '_> {
             in_for: std::mem::take(&mut self.in_for),
             again: call.times.saturating_sub(1),
             arguments: call.arguments,
+            section: None,
         };
         self.model = callee;
         self.source = callee.source;
@@ -77,6 +81,10 @@ impl Interpreter<'_, '_> {
     /// `None` at the main program's end. R parameters are the channel's:
     /// what the subprogram wrote, the caller reads.
     pub(super) fn give_back(&mut self) -> Option<usize> {
+        // A program that ends inside a section it repeats ends the repetition.
+        while self.stack.last().is_some_and(|r| r.section.is_some()) {
+            self.stack.pop();
+        }
         let mut caller = self.stack.pop()?;
         let written = std::mem::take(&mut self.variables.local);
         if caller.again > 0 {
@@ -97,6 +105,95 @@ impl Interpreter<'_, '_> {
         self.openers = caller.openers;
         self.in_for = caller.in_for;
         Some(caller.row)
+    }
+}
+
+impl Interpreter<'_, '_> {
+    /// `REPEAT LABEL P=n` (from the label to the REPEAT, or to an
+    /// `ENDLABEL:` between them), `REPEAT START END P=n` (from one label to
+    /// the other), `REPEATB LABEL P=n` (the labelled block): the section
+    /// run `n` times more (once without `P`), then on after the REPEAT
+    /// (Siemens, Job Planning, "Program section repetition").
+    pub(super) fn repeat(
+        &mut self,
+        row: usize,
+        span: Span,
+        targets: &[Name],
+        count: Option<&Expr>,
+    ) -> Flow {
+        let source = self.source;
+        let times = match count.map(|c| evaluate(source, c, &self.variables)) {
+            None => 1,
+            Some(Ok(Value::Number(n))) if n >= 1.0 && n.fract() == 0.0 => n as u32,
+            Some(_) => {
+                self.unknown(row, span, "REPEAT's count (P) is unknown offline or no whole number from 1: the section is repeated once".into());
+                1
+            }
+        };
+        let label = |name: &Name| Target::Label(name.upper(source));
+        let single = upper(span.of(source)).starts_with("REPEATB");
+        let model = self.model;
+        let section = match targets {
+            [block] if single => model
+                .target_landing(&label(block), GotoKind::Both, row)
+                .map(|at| (at, at)),
+            [start] => model
+                .target_landing(&label(start), GotoKind::Backward, row)
+                .map(|at| {
+                    let end = model
+                        .target_rows(&Target::Label("ENDLABEL".into()))
+                        .into_iter()
+                        .find(|&r| r > at && r < row);
+                    (at, end.unwrap_or(row.saturating_sub(1)))
+                }),
+            [start, end] => model
+                .target_landing(&label(start), GotoKind::Both, row)
+                .and_then(|at| {
+                    Some((
+                        at,
+                        model.target_landing(&label(end), GotoKind::Forward, at)?,
+                    ))
+                }),
+            _ => None,
+        };
+        let Some((start, end)) = section.filter(|(start, end)| start <= end) else {
+            self.unknown(row, span, "REPEAT's label is not found where the control searches it: the control stops with an alarm here".into());
+            return Flow::End;
+        };
+        if self.stack.len() + 1 >= MOST_LEVELS {
+            self.unknown(
+                row,
+                span,
+                format!("REPEAT would nest deeper than {MOST_LEVELS} levels: not followed"),
+            );
+            return Flow::Next;
+        }
+        self.stack.push(Return {
+            model,
+            program: self.program.clone(),
+            row: row + 1,
+            locals: HashMap::new(),
+            openers: HashMap::new(),
+            in_for: HashSet::new(),
+            again: times - 1,
+            arguments: Vec::new(),
+            section: Some((start, end)),
+        });
+        Flow::To(start)
+    }
+
+    /// At the last block of the section on top: again from its start, or
+    /// back after its REPEAT.
+    pub(super) fn end_section(&mut self) -> usize {
+        let top = self.stack.last_mut().expect("a section");
+        let (start, _) = top.section.expect("a section");
+        if top.again > 0 {
+            top.again -= 1;
+            return start;
+        }
+        let row = top.row;
+        self.stack.pop();
+        row
     }
 }
 

@@ -93,6 +93,11 @@ pub fn run(
                 None => break,
             },
         };
+        // The last block of a section REPEAT repeats: again, or back.
+        let next = match machine.stack.last().and_then(|r| r.section) {
+            Some((_, end)) if row == end && next == end + 1 => machine.end_section(),
+            _ => next,
+        };
         row = match machine.calling.take() {
             Some(call) => machine.enter(row, call, next),
             None => next,
@@ -198,6 +203,9 @@ struct Return<'a, 'src> {
     /// Runs of the subprogram still to come (`P`).
     again: u32,
     arguments: Vec<Option<Value>>,
+    /// A section of the same program repeated (`REPEAT`): its first and
+    /// last rows; the caller's variables are the section's own.
+    section: Option<(usize, usize)>,
 }
 
 /// The most program levels the control nests: the main program and 15
@@ -665,8 +673,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 StatementKind::Repeat { targets, .. } if targets.is_empty() => {
                     return self.then(row, span, content, Flow::Next);
                 }
-                StatementKind::Repeat { .. } => {
-                    self.unknown(row, statement.span, "REPEAT of a section is not followed: the section runs once where it stands".to_string());
+                StatementKind::Repeat { targets, count } => {
+                    let flow = self.repeat(row, statement.span, targets, count.as_deref());
+                    return self.then(row, span, content, flow);
                 }
                 StatementKind::Until { condition: expr } => {
                     let holds = self.condition(row, statement.span, expr, true);
