@@ -238,15 +238,8 @@ pub fn setup_data<'a>(bytes: &'a [u8], name: &str) -> Result<SetupData<'a>, Arch
     let mut joined = Vec::new();
     let mut parts = Vec::new();
     for member in &data {
-        let start = joined.len();
-        joined.extend_from_slice(&bytes[member.data.clone()]);
-        if joined.last().is_some_and(|&b| b != b'\n') {
-            joined.push(b'\n');
-        }
-        parts.push(Part {
-            name: format!("{name}:{}", member.name),
-            range: start..joined.len(),
-        });
+        let part_name = format!("{name}:{}", member.name);
+        parts.push(join(&mut joined, &bytes[member.data.clone()], part_name));
     }
     let name = match data.as_slice() {
         [one] => format!("{name}:{}", one.name),
@@ -257,6 +250,19 @@ pub fn setup_data<'a>(bytes: &'a [u8], name: &str) -> Result<SetupData<'a>, Arch
         name,
         parts,
     })
+}
+
+/// `bytes` appended to `joined` as the part `name`, ending with a line break.
+fn join(joined: &mut Vec<u8>, bytes: &[u8], name: String) -> Part {
+    let start = joined.len();
+    joined.extend_from_slice(bytes);
+    if joined.last().is_some_and(|&b| b != b'\n') {
+        joined.push(b'\n');
+    }
+    Part {
+        name,
+        range: start..joined.len(),
+    }
 }
 
 /// The setup data of a folder `name` holding `files` (name, bytes), in the
@@ -273,15 +279,7 @@ pub fn setup_data_of_files(
             ..error
         })?;
         for part in data.parts {
-            let start = joined.len();
-            joined.extend_from_slice(&data.bytes[part.range]);
-            if joined.last().is_some_and(|&b| b != b'\n') {
-                joined.push(b'\n');
-            }
-            parts.push(Part {
-                name: part.name,
-                range: start..joined.len(),
-            });
+            parts.push(join(&mut joined, &data.bytes[part.range], part.name));
         }
     }
     Ok(SetupData {

@@ -54,12 +54,11 @@ impl Machine {
 
     /// The records of `source`, a value that names a variable (a GUD
     /// variable, an R parameter: `$TC_CARR5[1]=_RT_HOEHE_Y`) read from
-    /// `known` (the values the user gives).
-    pub fn read_knowing(source: &[u8], reading: Reading, known: &Supplied) -> Machine {
+    /// `supplied` (the values the user gives).
+    pub fn read_knowing(source: &[u8], reading: Reading, supplied: &Supplied) -> Machine {
         let mut fields: BTreeMap<u32, BTreeMap<u32, (Field, Span)>> = BTreeMap::new();
         let mut diagnostics = Vec::new();
         let env = Env::default();
-        let supplied = known;
         for (line, error) in crate::syntax::lines_naming(source, "TC_CARR") {
             diagnostics.extend(error);
             let LineKind::Block(block) = &line.kind else {
