@@ -3,25 +3,28 @@
 //! (Siemens, SINUMERIK 840D sl Job Planning, "Frames"): the programmable
 //! frame (TRANS, ATRANS, ROT, AROT) inside the settable frame (G54 ..
 //! G599, `$P_UIFR`), then the tool's length along the infeed axis of the
-//! plane. A frame moves a point by its rotation, then its translation:
-//! `parent = T + R · child`. Base frames are not read (the machine data
+//! plane. A frame moves a point by its mirror, scale and rotation, then its
+//! translation: `parent = T + R · S · M · child` (the order of a frame's
+//! components in Job Planning, "Frames": translation, rotation, scaling,
+//! mirroring), the linear part kept as one matrix. Base frames are not read (the machine data
 //! hold them where a machine uses them; said in the run's assumptions).
 
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::{Matrix3, Rotation3, Vector3};
 
 /// One frame over the run's axes: a translation per axis (the geometry
-/// axes first) and a rotation of the geometry axes.
+/// axes first) and the rotation, scale and mirror of the geometry axes as
+/// one matrix.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {
     pub translation: Vec<f64>,
-    pub rotation: Rotation3<f64>,
+    pub linear: Matrix3<f64>,
 }
 
 impl Frame {
     pub fn identity(axes: usize) -> Frame {
         Frame {
             translation: vec![0.0; axes],
-            rotation: Rotation3::identity(),
+            linear: Matrix3::identity(),
         }
     }
 
@@ -33,11 +36,11 @@ impl Frame {
             .zip(&self.translation)
             .map(|(p, t)| p.map(|p| p + t))
             .collect();
-        if self.rotation != Rotation3::identity() {
+        if self.linear != Matrix3::identity() {
             let geometry = (point[0], point[1], point[2]);
             let rotated = match geometry {
                 (Some(x), Some(y), Some(z)) => {
-                    let r = self.rotation * Vector3::new(x, y, z);
+                    let r = self.linear * Vector3::new(x, y, z);
                     [Some(r.x), Some(r.y), Some(r.z)]
                 }
                 _ => [None, None, None],
@@ -49,19 +52,60 @@ impl Frame {
         out
     }
 
-    /// The rotation part applied to a direction of the geometry axes.
+    /// The linear part applied to a direction of the geometry axes.
     pub fn turn(&self, direction: Vector3<f64>) -> Vector3<f64> {
-        self.rotation * direction
+        self.linear * direction
+    }
+
+    /// `point` (the run's axes) of the frame's parent in the frame; `None`
+    /// where a coordinate it needs is unknown, or all three geometry axes
+    /// where the frame cannot be undone (a scale of 0).
+    pub fn undo(&self, point: &[Option<f64>]) -> Vec<Option<f64>> {
+        let mut out: Vec<Option<f64>> = point
+            .iter()
+            .zip(&self.translation)
+            .map(|(p, t)| p.map(|p| p - t))
+            .collect();
+        if self.linear != Matrix3::identity() {
+            let back = self.linear.try_inverse();
+            let geometry = match (back, out[0], out[1], out[2]) {
+                (Some(back), Some(x), Some(y), Some(z)) => {
+                    let r = back * Vector3::new(x, y, z);
+                    [Some(r.x), Some(r.y), Some(r.z)]
+                }
+                _ => [None, None, None],
+            };
+            out[..3].copy_from_slice(&geometry);
+        }
+        out
+    }
+
+    /// Whether the frame mixes the geometry axes (a rotation): one of them
+    /// programmed then moves them all.
+    pub fn couples(&self) -> bool {
+        (0..3).any(|r| (0..3).any(|c| r != c && self.linear[(r, c)] != 0.0))
     }
 }
 
 /// The rotation `ROT X=a Y=b Z=c` gives under RPY angles (MD10600 = 1):
 /// about Z, then the new Y, then the new X (degrees).
-pub fn rpy(angles: [f64; 3]) -> Rotation3<f64> {
+pub fn rpy(angles: [f64; 3]) -> Matrix3<f64> {
     let [a, b, c] = angles.map(f64::to_radians);
-    Rotation3::from_axis_angle(&Vector3::z_axis(), c)
+    (Rotation3::from_axis_angle(&Vector3::z_axis(), c)
         * Rotation3::from_axis_angle(&Vector3::y_axis(), b)
-        * Rotation3::from_axis_angle(&Vector3::x_axis(), a)
+        * Rotation3::from_axis_angle(&Vector3::x_axis(), a))
+    .into_inner()
+}
+
+/// A scale of each geometry axis, a mirror where `mirrored` (`SCALE`,
+/// `MIRROR`, a frame's `SC` and `MI`).
+pub fn scale_mirror(scale: [f64; 3], mirrored: [bool; 3]) -> Matrix3<f64> {
+    let sign = |m: bool| if m { -1.0 } else { 1.0 };
+    Matrix3::from_diagonal(&Vector3::new(
+        scale[0] * sign(mirrored[0]),
+        scale[1] * sign(mirrored[1]),
+        scale[2] * sign(mirrored[2]),
+    ))
 }
 
 #[cfg(test)]
@@ -72,7 +116,7 @@ mod tests {
     fn a_frame_turns_then_shifts() {
         let frame = Frame {
             translation: vec![100.0, 0.0, 0.0, 5.0],
-            rotation: rpy([0.0, 0.0, 90.0]),
+            linear: rpy([0.0, 0.0, 90.0]),
         };
         let out = frame.apply(&[Some(10.0), Some(0.0), Some(0.0), Some(1.0)]);
         let out: Vec<f64> = out.into_iter().map(|v| v.expect("known")).collect();

@@ -11,7 +11,7 @@ use calls::is_numbered_call;
 use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap, HashSet};
 
-use nalgebra::Rotation3;
+use nalgebra::Matrix3;
 
 use crate::run::arc::Arc;
 use crate::run::frame::Frame;
@@ -235,8 +235,8 @@ struct Interpreter<'a, 'src> {
     /// Each run axis's position as last programmed, in the work's
     /// coordinates (what G91 adds to).
     programmed: Vec<Option<f64>>,
-    /// The frames' rotation at the last move.
-    last_rotation: Rotation3<f64>,
+    /// The frames' linear part (rotation, scale, mirror) at the last move.
+    last_linear: Matrix3<f64>,
     motion: Motion,
     incremental: bool,
     /// 0: G17 (XY, infeed Z), 1: G18 (ZX, infeed Y), 2: G19 (YZ, infeed X).
@@ -258,7 +258,6 @@ struct Interpreter<'a, 'src> {
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
-    /// The MD10600 rotation order is known (RPY) or a rotation is about one axis.
     report: Report,
     /// What was told, by program, row and text: a loop repeats it.
     told: HashSet<(Option<String>, usize, String)>,
@@ -337,7 +336,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             in_for: HashSet::new(),
             mcs: vec![None; axes],
             programmed: vec![None; axes],
-            last_rotation: Rotation3::identity(),
+            last_linear: Matrix3::identity(),
             motion: Motion::Rapid,
             incremental: false,
             plane: 0,

@@ -4,11 +4,11 @@
 
 use std::collections::HashSet;
 
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 
 use super::{Coordinate, Interpreter, Motion, Word, UNTOLD};
 use crate::run::arc::Arc;
-use crate::run::frame::{rpy, Frame};
+use crate::run::frame::{rpy, scale_mirror, Frame};
 use crate::run::{Side, Violation, MOST_VIOLATIONS};
 use crate::span::Span;
 use crate::syntax::tree::FrameKind;
@@ -43,6 +43,8 @@ impl Interpreter<'_, '_> {
         };
         let mut frame = Frame::identity(self.setup.axes.len());
         let mut angles = [0.0; 3];
+        let mut scale = [1.0; 3];
+        let mut mirrored = [false; 3];
         for (axis, c) in components {
             let Some(at) = self.setup.axis(axis) else {
                 self.unknown(
@@ -53,24 +55,29 @@ impl Interpreter<'_, '_> {
                 continue;
             };
             frame.translation[at] = c.tr.unwrap_or(0.0) + c.fi.unwrap_or(0.0);
-            if let Some(g) = self.setup.axes[at].geometry {
-                angles[g] = c.rt.unwrap_or(0.0);
-            }
-            if c.sc.is_some_and(|s| s != 1.0) || c.mi.is_some_and(|m| m != 0.0) {
-                self.unknown(
-                    row,
-                    span,
-                    format!("{name}: scale and mirror of a frame are not modelled"),
-                );
+            match self.setup.axes[at].geometry {
+                Some(g) => {
+                    angles[g] = c.rt.unwrap_or(0.0);
+                    scale[g] = c.sc.unwrap_or(1.0);
+                    mirrored[g] = c.mi.is_some_and(|m| m != 0.0);
+                }
+                None if c.sc.is_some_and(|s| s != 1.0) || c.mi.is_some_and(|m| m != 0.0) => {
+                    self.unknown(
+                        row,
+                        span,
+                        format!("{name}: the scale or mirror of axis `{axis}` is not modelled"),
+                    );
+                }
+                None => {}
             }
         }
-        frame.rotation = self.rotation(row, span, angles);
+        frame.linear = self.rotation(row, span, angles) * scale_mirror(scale, mirrored);
         self.settable = frame;
     }
 
     /// A rotation by RPY angles; with more than one axis, MD10600 decides
     /// the order, RPY where the data say so.
-    pub(super) fn rotation(&mut self, row: usize, span: Span, angles: [f64; 3]) -> Rotation3<f64> {
+    pub(super) fn rotation(&mut self, row: usize, span: Span, angles: [f64; 3]) -> Matrix3<f64> {
         if angles.iter().filter(|a| **a != 0.0).count() > 1 {
             match self.setup.angles_rpy {
                 Some(true) => {}
@@ -91,6 +98,10 @@ impl Interpreter<'_, '_> {
         let axes = self.setup.axes.len();
         let mut values = vec![0.0; axes];
         let mut angles = [0.0; 3];
+        // SCALE's factors and MIRROR's axes: those of the geometry axes given.
+        let mut scale = [1.0; 3];
+        let mut mirrored = [false; 3];
+        let mut other_axes = false;
         let mut in_plane = None;
         for word in words {
             let Ok(value) = word.value else {
@@ -108,8 +119,13 @@ impl Interpreter<'_, '_> {
             match self.setup.axis(&word.name) {
                 Some(at) => {
                     values[at] = value;
-                    if let Some(g) = self.setup.axes[at].geometry {
-                        angles[g] = value;
+                    match self.setup.axes[at].geometry {
+                        Some(g) => {
+                            angles[g] = value;
+                            scale[g] = value;
+                            mirrored[g] = true;
+                        }
+                        None => other_axes = true,
                     }
                 }
                 None => self.unknown(
@@ -122,6 +138,18 @@ impl Interpreter<'_, '_> {
         if let Some(angle) = in_plane {
             angles = [0.0; 3];
             angles[[2, 1, 0][self.plane]] = angle;
+        }
+        if other_axes
+            && matches!(
+                kind,
+                FrameKind::Scale | FrameKind::AScale | FrameKind::Mirror | FrameKind::AMirror
+            )
+        {
+            self.unknown(
+                row,
+                span,
+                format!("{kind:?} of an axis other than the geometry axes is not modelled"),
+            );
         }
         match kind {
             FrameKind::Trans => {
@@ -137,13 +165,35 @@ impl Interpreter<'_, '_> {
             }
             FrameKind::Rot => {
                 self.programmable = Frame::identity(axes);
-                self.programmable.rotation = self.rotation(row, span, angles);
+                self.programmable.linear = self.rotation(row, span, angles);
             }
             FrameKind::ARot => {
                 let rotation = self.rotation(row, span, angles);
-                self.programmable.rotation *= rotation;
+                self.programmable.linear *= rotation;
             }
-            other => self.unknown(row, span, format!("{other:?} (a frame's scale, mirror or solid-angle rotation) is not modelled: the frame is left as it was")),
+            FrameKind::Scale | FrameKind::Mirror => {
+                self.programmable = Frame::identity(axes);
+                self.programmable.linear = self.scaled_or_mirrored(kind, scale, mirrored);
+            }
+            FrameKind::AScale | FrameKind::AMirror => {
+                let linear = self.scaled_or_mirrored(kind, scale, mirrored);
+                self.programmable.linear *= linear;
+            }
+            other => self.unknown(row, span, format!("{other:?} (a rotation by solid angles) is not modelled: the frame is left as it was")),
+        }
+    }
+
+    /// SCALE's or MIRROR's matrix (MIRROR's values say nothing: the axis
+    /// named is mirrored).
+    fn scaled_or_mirrored(
+        &self,
+        kind: FrameKind,
+        scale: [f64; 3],
+        mirrored: [bool; 3],
+    ) -> Matrix3<f64> {
+        match kind {
+            FrameKind::Scale | FrameKind::AScale => scale_mirror(scale, [false; 3]),
+            _ => scale_mirror([1.0; 3], mirrored),
         }
     }
 
@@ -202,30 +252,7 @@ impl Interpreter<'_, '_> {
         if suppress {
             return at;
         }
-        let back = |frame: &Frame, point: Vec<Option<f64>>| -> Vec<Option<f64>> {
-            let mut out: Vec<Option<f64>> = point
-                .iter()
-                .zip(&frame.translation)
-                .map(|(p, t)| p.map(|p| p - t))
-                .collect();
-            if frame.rotation != Rotation3::identity() {
-                match (out[0], out[1], out[2]) {
-                    (Some(x), Some(y), Some(z)) => {
-                        let r = frame.rotation.inverse() * Vector3::new(x, y, z);
-                        out[0] = Some(r.x);
-                        out[1] = Some(r.y);
-                        out[2] = Some(r.z);
-                    }
-                    _ => {
-                        out[0] = None;
-                        out[1] = None;
-                        out[2] = None;
-                    }
-                }
-            }
-            out
-        };
-        back(&self.programmable, back(&self.settable, at))
+        self.programmable.undo(&self.settable.undo(&at))
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -286,15 +313,19 @@ impl Interpreter<'_, '_> {
         // programmed stays where it is; under a rotation, or where it
         // changed, the geometry axes go together.
         let reached = self.to_machine(&end, suppress, tool);
-        let rotation = if suppress {
-            Rotation3::identity()
+        let linear = if suppress {
+            Matrix3::identity()
         } else {
-            self.settable.rotation * self.programmable.rotation
+            self.settable.linear * self.programmable.linear
         };
         // A rotation couples the geometry axes: one programmed moves them all.
-        let coupled = (rotation != self.last_rotation || rotation != Rotation3::identity())
+        let frames = Frame {
+            translation: Vec::new(),
+            linear,
+        };
+        let coupled = (linear != self.last_linear || frames.couples())
             && targets.iter().take(3).any(Option::is_some);
-        self.last_rotation = rotation;
+        self.last_linear = linear;
         let end_mcs: Vec<Option<f64>> = (0..reached.len())
             .map(|k| {
                 if targets[k].is_some() || (k < 3 && coupled) {
