@@ -480,14 +480,20 @@ impl Interpreter<'_, '_> {
         };
         let origin = to_machine(Vector3::zeros());
         let turn = |d: Vector3<f64>| to_machine(d) - origin;
-        Some(Arc {
+        let on_machine = Arc {
             centre: to_machine(arc.centre),
             u: turn(arc.u),
             v: turn(arc.v),
             normal: turn(arc.normal),
             sweep: arc.sweep,
             rise: arc.rise,
-        })
+        };
+        // Unequal scales make the circle an ellipse: its extremes are still
+        // exact, its length and radius (the time) taken from its start.
+        if (on_machine.u.norm() - on_machine.v.norm()).abs() > 1e-9 * on_machine.u.norm() {
+            self.unknown(row, span, "an arc under unequal scales of its plane's axes: its length and the radius that limits its speed are taken from its start".into());
+        }
+        Some(on_machine)
     }
 
     /// Every position of `point` against its axis's software limits, and
