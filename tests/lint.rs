@@ -414,6 +414,19 @@ proptest::proptest! {
         proptest::prop_assert_eq!(found, reference);
     }
 
+    /// Control bytes are blanks to the parser: a plain line's M words end
+    /// at them as a parsed block's do (an input the check fuzz target found).
+    #[test]
+    fn control_bytes_end_a_plain_lines_words_as_they_end_a_parsed_blocks(gap in 0usize..70) {
+        let source = format!("G1 \nX3 M103 M2 M3 M4{} M2 M3 M4 M5 M6\x05;\"x\n", "\0".repeat(gap));
+        let settings = lint::Settings::default();
+        let kind = program_kind(Some("CONTROL.MPF"), source.as_bytes());
+        let found = lint::check(source.as_bytes(), "CONTROL.MPF", kind, &settings);
+        let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
+        let reference = lint::check_with(every_line, source.as_bytes(), "CONTROL.MPF", kind, &settings);
+        proptest::prop_assert_eq!(found, reference);
+    }
+
     /// Every fix, safe and unsafe, applied to random programs: the fixed
     /// program has no more syntax errors than the original, and after the
     /// safe fixes a second run finds nothing more to fix safely (safe fixes

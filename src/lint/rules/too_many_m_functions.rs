@@ -3,6 +3,7 @@
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{BlockAt, Check, FileContext, PlainLine, Sees};
 use crate::span::Span;
+use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::{Statement, StatementKind, Word};
 
 pub static RULE: RuleInfo = RuleInfo {
@@ -101,9 +102,11 @@ fn check_plain_line(
         .filter(|(_, b)| b.eq_ignore_ascii_case(&b'M'))
         .map(|(at, _)| {
             let start = line.raw.content.start + at;
+            // The word ends at a letter or a blank (control bytes too, as
+            // the parser reads them).
             let length = words[at + 1..]
                 .iter()
-                .take_while(|b| !b.is_ascii_alphabetic() && **b != b' ' && **b != b'\t')
+                .take_while(|&&b| !b.is_ascii_alphabetic() && !is_blank(b))
                 .count();
             Span::new(start, start + 1 + length)
         })
