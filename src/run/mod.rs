@@ -18,7 +18,7 @@ mod programs;
 pub mod setup;
 
 pub use execute::run;
-pub use programs::{called, subprogram_sources, Programs};
+pub use programs::{subprogram_sources, Programs};
 pub use setup::{RunAxis, Setup};
 
 use crate::span::Span;

@@ -42,14 +42,7 @@ impl Trace {
         }
         Trace {
             names: setup.axes.iter().map(|a| a.machine_name()).collect(),
-            limits: setup
-                .axes
-                .iter()
-                .map(|a| match (&a.machine, second_limits) {
-                    (Some(m), true) => m.limits2,
-                    _ => a.limits(),
-                })
-                .collect(),
+            limits: setup.axes.iter().map(|a| a.limits(second_limits)).collect(),
             geometry,
             points: Vec::new(),
             every: 1,

@@ -48,7 +48,7 @@ impl<'s> Programs<'s> {
 /// The names of the subprograms `model` may call: `L105` (the digits as
 /// written), a bare name the control does not know, `NAME(...)`, a cycle
 /// and `CALL "NAME"`; predefined procedures are not among them.
-pub fn called(model: &Model) -> BTreeSet<String> {
+fn called(model: &Model) -> BTreeSet<String> {
     let source = model.source;
     let mut names = BTreeSet::new();
     for (_, line) in model.lines.other_lines() {

@@ -42,10 +42,12 @@ impl RunAxis {
             .unwrap_or(self.geometry.is_none() && matches!(self.name.as_str(), "A" | "B" | "C"))
     }
 
-    /// Its software limits (MD36100, MD36110), none on a modulo axis.
-    pub fn limits(&self) -> [Option<f64>; 2] {
+    /// Its software limits (MD36100, MD36110; with `second`, MD36120,
+    /// MD36130), none on a modulo axis.
+    pub fn limits(&self, second: bool) -> [Option<f64>; 2] {
         match &self.machine {
             Some(axis) if axis.modulo == Some(true) => [None, None],
+            Some(axis) if second => axis.limits2,
             Some(axis) => axis.limits,
             None => [None, None],
         }

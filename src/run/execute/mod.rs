@@ -258,6 +258,8 @@ struct Interpreter<'a, 'src> {
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
+    /// The last tool offset found, by tool, edge and plane.
+    tool_offset: Option<((u32, u32, usize), [f64; 3])>,
     report: Report,
     /// What was told, by program, row and text: a loop repeats it.
     told: HashSet<(Option<String>, usize, String)>,
@@ -353,6 +355,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             preselected: None,
             tool: None,
             edge: None,
+            tool_offset: None,
             report,
             told: HashSet::new(),
             minimum: vec![None; axes],
@@ -1076,11 +1079,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 axis: axis.machine_name(),
                 min: self.minimum[k],
                 max: self.maximum[k],
-                limits: if self.options.second_limits {
-                    axis.machine.as_ref().map_or([None, None], |m| m.limits2)
-                } else {
-                    axis.limits()
-                },
+                limits: axis.limits(self.options.second_limits),
             })
             .collect();
         report.tools = self

@@ -206,6 +206,14 @@ impl Interpreter<'_, '_> {
         if d == 0 {
             return offset;
         }
+        // Asked by every block that moves: the tool's offsets are searched
+        // once a tool, edge and plane.
+        let key = (t, d, self.plane);
+        if let Some((cached, offset)) = self.tool_offset {
+            if cached == key {
+                return offset;
+            }
+        }
         let Some(tool) = self.setup.tool(t, d) else {
             self.unknown(row, span, format!("T{t} D{d}: the machine's data hold no offsets for it (`$TC_DP`): its length taken as 0"));
             return offset;
@@ -217,6 +225,7 @@ impl Interpreter<'_, '_> {
         }
         let length = tool.length[0].unwrap_or(0.0) + tool.length_wear[0].unwrap_or(0.0);
         offset[[2, 1, 0][self.plane]] = length;
+        self.tool_offset = Some((key, offset));
         offset
     }
 
@@ -510,11 +519,7 @@ impl Interpreter<'_, '_> {
             self.minimum[k] = Some(self.minimum[k].map_or(value, |m| m.min(value)));
             self.maximum[k] = Some(self.maximum[k].map_or(value, |m| m.max(value)));
             let axis = &self.setup.axes[k];
-            let limits = if self.options.second_limits {
-                axis.machine.as_ref().map_or([None, None], |m| m.limits2)
-            } else {
-                axis.limits()
-            };
+            let limits = axis.limits(self.options.second_limits);
             for (side, limit) in [(Side::Minus, limits[0]), (Side::Plus, limits[1])] {
                 let Some(limit) = limit else { continue };
                 let past = match side {
