@@ -744,3 +744,283 @@ fn the_times_the_user_gives_are_added() {
     let refused = command(&["run", program.to_str().expect("utf-8")], b"");
     assert_exit(&refused, 2);
 }
+
+/// A five-axis machine's data: X, Y, Z and the rotary axes B and C (their
+/// machine names as the swivel record names them, no limits), with
+/// `records` and `extra` (frames, tools).
+fn five_axis(extra: &str) -> String {
+    let mut text = String::from(
+        "%_N_INITIAL_INI\nN10240 $MN_SCALING_SYSTEM_IS_METRIC=1\nN10600 $MN_FRAME_ANGLE_INPUT_MODE=1\n",
+    );
+    let names = ["X1", "Y1", "Z1", "B", "C"];
+    for (k, name) in names.iter().enumerate() {
+        text.push_str(&format!(
+            "N10000 $MN_AXCONF_MACHAX_NAME_TAB[{k}]=\"{name}\"\n"
+        ));
+    }
+    text.push_str("CHANDATA(1)\nN22550 $MC_TOOL_CHANGE_MODE=1\n");
+    for (k, name) in ["X", "Y", "Z", "B", "C"].iter().enumerate() {
+        text.push_str(&format!(
+            "N20070 $MC_AXCONF_MACHAX_USED[{k}]={}\nN20080 $MC_AXCONF_CHANAX_NAME_TAB[{k}]=\"{name}\"\n",
+            k + 1
+        ));
+    }
+    for (k, name) in names.iter().enumerate() {
+        let rotary = u8::from(k >= 3);
+        text.push_str(&format!(
+            "N30300 $MA_IS_ROT_AX[{name}]={rotary}\nN32000 $MA_MAX_AX_VELO[{name}]=20000.\n\
+N32300 $MA_MAX_AX_ACCEL[0,{name}]=2.\nN32431 $MA_MAX_AX_JERK[0,{name}]=40.\n"
+        ));
+    }
+    text.push_str(extra);
+    text.push_str("M17\n");
+    text
+}
+
+/// `R(v, angle)`, right-handed, degrees: Rodrigues' formula written out,
+/// not the library's.
+fn rodrigues(v: [f64; 3], angle: f64) -> Matrix3<f64> {
+    let k = Vector3::from(v).normalize();
+    let (s, c) = angle.to_radians().sin_cos();
+    let cross = Matrix3::new(0.0, -k.z, k.y, k.z, 0.0, -k.x, -k.y, k.x, 0.0);
+    Matrix3::identity() + cross * s + cross * cross * (1.0 - c)
+}
+
+/// A swivel record's axes and offset vectors as the oracle reads them.
+struct Kinematic {
+    letter: char,
+    vectors: [[f64; 3]; 2],
+    offsets: [[f64; 3]; 4],
+}
+
+/// Where the tool tip is on the workpiece (its unswivelled system), and the
+/// tool's direction there, for the holder at `m` and the rotary axes at
+/// `angles`: each pivot placed in turn from the machine's side, as the
+/// record's offset vectors describe the machine (reference/kinematics.md
+/// §1.2), not through the run's carrier.
+fn forward(
+    k: &Kinematic,
+    m: Vector3<f64>,
+    angles: [f64; 2],
+    length: f64,
+) -> (Vector3<f64>, Vector3<f64>) {
+    let [l1, l2, l3, _] = k.offsets.map(Vector3::from);
+    let (r1, r2) = (
+        rodrigues(k.vectors[0], angles[0]),
+        rodrigues(k.vectors[1], angles[1]),
+    );
+    let tool = Vector3::new(0.0, 0.0, length);
+    match k.letter {
+        'T' => {
+            let pivot_1 = m - l1;
+            let pivot_2 = pivot_1 - r1 * l2;
+            let tip = pivot_2 - r1 * r2 * (l3 + tool);
+            (tip, r1 * r2 * Vector3::z())
+        }
+        'P' => {
+            // A point x of the workpiece at rest goes to p1 + R1 (p2 - p1 +
+            // R2 (x - p2)): turned about axis 2's pivot, then axis 1's.
+            let (p1, p2) = (l2, l2 + l3);
+            let tip = m - tool;
+            let x = p2 + r2.transpose() * (r1.transpose() * (tip - p1) - (p2 - p1));
+            (x, (r1 * r2).transpose() * Vector3::z())
+        }
+        _ => {
+            // Axis 1 turns the head about its pivot, axis 2 the table about its own.
+            let tip = m - l1 - r1 * (l2 + tool);
+            let x = l3 + r2.transpose() * (tip - l3);
+            (x, r2.transpose() * r1 * Vector3::z())
+        }
+    }
+}
+
+/// CYCLE800 on a head, a table and a mixed machine: after the swivel, each
+/// programmed point's machine position, with the rotary axes the run turned
+/// to, puts the tool tip (by the independent chain above) on the point
+/// through G54, the swivel frame (`_X0`, the `_MODE` turns, `_X1`) and the
+/// TRANS inside it, and the tool along the plane's normal.
+#[test]
+fn a_swivel_puts_the_tool_on_the_swivelled_plane() {
+    let kinematics = [
+        Kinematic {
+            letter: 'T',
+            vectors: [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
+            offsets: [
+                [-10.0, 5.0, -320.0],
+                [10.0, 0.0, 120.0],
+                [0.0, -5.0, 200.0],
+                [0.0; 3],
+            ],
+        },
+        Kinematic {
+            letter: 'P',
+            vectors: [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            offsets: [
+                [0.0; 3],
+                [150.0, 200.0, -100.0],
+                [0.0, 20.0, 60.0],
+                [-150.0, -220.0, 40.0],
+            ],
+        },
+        Kinematic {
+            letter: 'M',
+            vectors: [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            offsets: [
+                [0.0, 0.0, -250.0],
+                [0.0, 0.0, 250.0],
+                [120.0, 80.0, -50.0],
+                [-120.0, -80.0, 50.0],
+            ],
+        },
+    ];
+    let modes: [(u32, [usize; 3]); 3] = [(57, [0, 1, 2]), (27, [2, 1, 0]), (39, [2, 0, 1])];
+    let unit = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let mut numbers = Numbers(800);
+    for k in &kinematics {
+        for case in 0..12 {
+            let (code, axes) = modes[case % 3];
+            let angles = [
+                numbers.between(-60.0, 60.0),
+                numbers.between(-60.0, 60.0),
+                numbers.between(-60.0, 60.0),
+            ];
+            let zero = [
+                numbers.between(-50.0, 50.0),
+                numbers.between(-50.0, 50.0),
+                numbers.between(-20.0, 20.0),
+            ];
+            let after = [
+                numbers.between(-10.0, 10.0),
+                numbers.between(-10.0, 10.0),
+                numbers.between(-10.0, 10.0),
+            ];
+            let g54 = [
+                numbers.between(-200.0, 200.0),
+                numbers.between(-200.0, 200.0),
+                numbers.between(-300.0, -100.0),
+            ];
+            let trans = [
+                numbers.between(-5.0, 5.0),
+                numbers.between(-5.0, 5.0),
+                numbers.between(-5.0, 5.0),
+            ];
+            let length = numbers.between(50.0, 150.0);
+            let direction = if case % 2 == 0 { -1 } else { 1 };
+            let points: Vec<[f64; 3]> = (0..3)
+                .map(|_| {
+                    [
+                        numbers.between(-40.0, 40.0),
+                        numbers.between(-40.0, 40.0),
+                        numbers.between(0.0, 30.0),
+                    ]
+                })
+                .collect();
+            let v = |i: usize, j: usize| k.vectors[i][j];
+            let l = |i: usize, j: usize| k.offsets[i][j];
+            let mut records = format!(
+                "$TC_CARR23[1]=\"{}\" $TC_CARR34[1]=\"SWIVEL\" $TC_CARR35[1]=\"{}\" $TC_CARR36[1]=\"{}\"\n",
+                k.letter,
+                if k.vectors[0][2] == 1.0 { "C" } else { "B" },
+                if k.vectors[1][2] == 1.0 { "C" } else { "B" },
+            );
+            for (i, first) in [(0, 7), (1, 10)] {
+                records.push_str(&format!(
+                    "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
+                    first,
+                    v(i, 0),
+                    first + 1,
+                    v(i, 1),
+                    first + 2,
+                    v(i, 2)
+                ));
+            }
+            for (i, first) in [(0, 1), (1, 4), (2, 15), (3, 18)] {
+                records.push_str(&format!(
+                    "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
+                    first,
+                    l(i, 0),
+                    first + 1,
+                    l(i, 1),
+                    first + 2,
+                    l(i, 2)
+                ));
+            }
+            let data = five_axis(&format!(
+                "{records}$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n\
+$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+                g54[0], g54[1], g54[2]
+            ));
+            let mut program = format!(
+                "G54 T1 D1 M6\nTRANS X{} Y{} Z{}\nCYCLE800(0,\"SWIVEL\",0,{code},{},{},{},{},{},{},{},{},{},{direction})\n",
+                trans[0], trans[1], trans[2], zero[0], zero[1], zero[2], angles[0], angles[1], angles[2],
+                after[0], after[1], after[2]
+            );
+            for p in &points {
+                program.push_str(&format!("G1 X{} Y{} Z{} F1000\n", p[0], p[1], p[2]));
+            }
+            program.push_str("M30\n");
+
+            let machine_data = MachineData::read(data.as_bytes());
+            assert!(
+                machine_data.diagnostics.is_empty(),
+                "{:?}",
+                machine_data.diagnostics
+            );
+            let records = sinuprep::semantic::machine::Machine::read(
+                data.as_bytes(),
+                sinuprep::semantic::machine::Reading::default(),
+            );
+            let setup = Setup::of(&machine_data).with_records(&records);
+            let model = Model::of(program.as_bytes());
+            let mut ends = Vec::new();
+            let report = run(
+                &Programs::alone(&model),
+                &setup,
+                &Supplied::default(),
+                &Options::default(),
+                |end| ends.push((end.line, end.mcs.to_vec())),
+            );
+            let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
+            assert!(
+                report.unknown.iter().all(|u| !u.why.contains("CYCLE800")),
+                "{what}"
+            );
+            // The plane: the _MODE turns about the turned axes, in order.
+            let plane = (0..3).fold(Matrix3::identity(), |r, i| {
+                r * rodrigues(unit[axes[i]], angles[i])
+            });
+            let rotary = |mcs: &[Option<f64>], name: &str| {
+                mcs[if name == "B" { 3 } else { 4 }].expect("the rotary axis turned")
+            };
+            for (i, p) in points.iter().enumerate() {
+                let (_, mcs) = ends
+                    .iter()
+                    .find(|(line, _)| *line == 4 + i)
+                    .expect("the move's end");
+                let m = Vector3::new(
+                    mcs[0].expect("known"),
+                    mcs[1].expect("known"),
+                    mcs[2].expect("known"),
+                );
+                let names = [
+                    if k.vectors[0][2] == 1.0 { "C" } else { "B" },
+                    if k.vectors[1][2] == 1.0 { "C" } else { "B" },
+                ];
+                let turned = [rotary(mcs, names[0]), rotary(mcs, names[1])];
+                let (tip, tool) = forward(k, m, turned, length);
+                let expected = Vector3::from(g54)
+                    + Vector3::from(zero)
+                    + plane * (Vector3::from(after) + Vector3::from(trans) + Vector3::from(*p));
+                assert!(
+                    (tip - expected).norm() < 1e-9,
+                    "{what}: tip {tip} != {expected}"
+                );
+                let normal = plane * Vector3::z();
+                assert!(
+                    (tool - normal).norm() < 1e-9,
+                    "{what}: tool {tool} != {normal}"
+                );
+            }
+        }
+    }
+}

@@ -38,7 +38,10 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
     // Without a machine (or its axis data), the geometry axes alone:
     // positions and frames, no limits, no time.
     let data = MachineData::read(on.as_ref().map_or(&b""[..], |on| &on.source[..]));
-    let setup = Setup::of(&data);
+    let setup = match &on {
+        Some(on) => Setup::of(&data).with_records(&on.machine),
+        None => Setup::of(&data),
+    };
     let machine_name = on.as_ref().map(|on| on.name.clone());
     let kind = crate::syntax::program_kind(Some(&file.name), &file.bytes);
     let macros = &resolved.settings.environment.expansions;

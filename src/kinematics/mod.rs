@@ -8,11 +8,13 @@
 //! `reference/kinematics.md`.
 
 pub mod a3200;
+pub mod carrier;
 pub mod record;
 pub mod split;
 pub(crate) mod subproblem;
 pub mod swivel;
 
+pub use carrier::Carrier;
 pub use record::{Hirth, Kinematics, Record, RecordError, RotaryAxis};
 pub use split::{
     split, split_nearest_either_way, Preference, Split, SplitError, TableAngle, TableAsk,

@@ -265,7 +265,7 @@ fn wrap_near(position: f64, current: f64) -> f64 {
 }
 
 /// Model angles of machine positions.
-fn model(record: &Record, positions: [f64; 2]) -> [f64; 2] {
+pub(crate) fn model(record: &Record, positions: [f64; 2]) -> [f64; 2] {
     [0, 1].map(|i| positions[i] - record.axes[i].offset)
 }
 
@@ -291,7 +291,7 @@ pub(crate) fn shift(record: &Record, angles: [f64; 2]) -> Vector3<f64> {
 }
 
 /// `R(v_i, α_i)` of axis `i` (the identity for an axis the record lacks).
-fn turn(record: &Record, i: usize, angles: [f64; 2]) -> Rotation3<f64> {
+pub(crate) fn turn(record: &Record, i: usize, angles: [f64; 2]) -> Rotation3<f64> {
     if record.axes[i].exists() {
         from_axis_angle(record.axes[i].vector, angles[i])
     } else {

@@ -172,7 +172,7 @@ impl<'a, 't> Snapshot<'a, 't> {
     /// past a software limit says so.
     fn run_hover(&self, row: usize) -> Option<lsp::Hover> {
         let machine = self.settings.machine.as_deref()?;
-        let setup = Setup::of(&MachineData::read(&machine.source));
+        let setup = Setup::of(&MachineData::read(&machine.source)).with_records(&machine.machine);
         if setup.axes.iter().all(|a| a.machine.is_none()) {
             return None;
         }

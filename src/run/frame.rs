@@ -80,6 +80,30 @@ impl Frame {
         out
     }
 
+    /// This frame with `child` chained inside it (the control's `self :
+    /// child`): a point of the child's system goes through both.
+    pub fn then(&self, child: &Frame) -> Frame {
+        let inner = Vector3::new(
+            child.translation[0],
+            child.translation[1],
+            child.translation[2],
+        );
+        let turned = self.linear * inner;
+        let mut translation: Vec<f64> = self
+            .translation
+            .iter()
+            .zip(&child.translation)
+            .map(|(a, b)| a + b)
+            .collect();
+        for (k, shift) in turned.iter().enumerate() {
+            translation[k] = self.translation[k] + shift;
+        }
+        Frame {
+            translation,
+            linear: self.linear * child.linear,
+        }
+    }
+
     /// Whether the frame mixes the geometry axes (a rotation): one of them
     /// programmed then moves them all.
     pub fn couples(&self) -> bool {
@@ -127,5 +151,26 @@ mod tests {
         assert_eq!(out[3], 6.0);
         let unknown = frame.apply(&[None, Some(0.0), Some(0.0), Some(1.0)]);
         assert_eq!(unknown[..3], [None, None, None]);
+    }
+
+    #[test]
+    fn a_chained_frame_is_both_applied_in_turn() {
+        let outer = Frame {
+            translation: vec![100.0, 0.0, 0.0, 5.0],
+            linear: rpy([0.0, 0.0, 90.0]),
+        };
+        let inner = Frame {
+            translation: vec![0.0, 10.0, 3.0, 1.0],
+            linear: rpy([30.0, 0.0, 0.0]),
+        };
+        let point = [Some(1.0), Some(2.0), Some(3.0), Some(4.0)];
+        let chained = outer.then(&inner).apply(&point);
+        let in_turn = outer.apply(&inner.apply(&point));
+        for (a, b) in chained.iter().zip(&in_turn) {
+            assert!(
+                (a.expect("known") - b.expect("known")).abs() < 1e-12,
+                "{chained:?} != {in_turn:?}"
+            );
+        }
     }
 }

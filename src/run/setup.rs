@@ -115,6 +115,9 @@ pub struct Setup {
     /// MD10600 `$MN_FRAME_ANGLE_INPUT_MODE`: `Some(true)` for RPY angles
     /// (Z, Y', X''), `Some(false)` for Euler angles.
     pub angles_rpy: Option<bool>,
+    /// The swivel data records CYCLE800 names (`$TC_CARR`), those the
+    /// solver can use.
+    pub records: Vec<crate::kinematics::Record>,
 }
 
 impl Setup {
@@ -204,7 +207,15 @@ impl Setup {
             angles_rpy: nck("$MN_FRAME_ANGLE_INPUT_MODE").map(|n| n == 1.0),
             default_edge: number("$MC_CUTTING_EDGE_DEFAULT", Some(1), &[])
                 .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
+            records: Vec::new(),
         }
+    }
+
+    /// The setup with the swivel data records of `machine`, as read with
+    /// the values the user gives.
+    pub fn with_records(mut self, machine: &crate::semantic::machine::Machine) -> Setup {
+        self.records = machine.usable().cloned().collect();
+        self
     }
 
     /// The axis programs call `name` (upper case).

@@ -4,6 +4,7 @@
 
 mod calls;
 mod motion;
+mod swivel;
 mod timing;
 
 use calls::is_numbered_call;
@@ -255,6 +256,8 @@ struct Interpreter<'a, 'src> {
     rapid_linear: bool,
     settable: Frame,
     programmable: Frame,
+    /// The swivel of the last CYCLE800, until `CYCLE800()`.
+    swivelled: Option<swivel::Swivelled>,
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
@@ -352,6 +355,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             rapid_linear: true,
             settable: Frame::identity(axes),
             programmable: Frame::identity(axes),
+            swivelled: None,
             preselected: None,
             tool: None,
             edge: None,
@@ -1013,7 +1017,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         self.given_times(&content.words, &called);
         for (name, arguments) in called {
             match name.as_str() {
-                "CYCLE800" => self.unknown(row, span, "CYCLE800 (a swivel) is not modelled yet in the run: the rotary axes and frames it sets are not applied".into()),
+                "CYCLE800" => self.cycle800(row, span, &arguments),
                 // What moves nothing: messages, settings, the control's own procedures.
                 "MSG" | "CYCLE832" | "STOPRE" => {}
                 _ if crate::semantic::calls::is_predefined(&name) => {}

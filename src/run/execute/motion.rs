@@ -7,6 +7,7 @@ use std::collections::HashSet;
 use nalgebra::{Matrix3, Vector3};
 
 use super::{Coordinate, Interpreter, Motion, Word, UNTOLD};
+use crate::kinematics::Carrier;
 use crate::run::arc::Arc;
 use crate::run::frame::{rpy, scale_mirror, Frame};
 use crate::run::{Side, Violation, MOST_VIOLATIONS};
@@ -229,20 +230,34 @@ impl Interpreter<'_, '_> {
         offset
     }
 
-    /// The machine position of the programmed point `wcs`.
+    /// The machine position of the programmed point `wcs`: through the
+    /// frames (programmable, the swivel's, settable) unless suppressed,
+    /// then the tool carrier's turn and offsets with the tool.
     pub(super) fn to_machine(
         &self,
         wcs: &[Option<f64>],
         suppress: bool,
         tool: [f64; 3],
     ) -> Vec<Option<f64>> {
-        let mut at = if suppress {
-            wcs.to_vec()
-        } else {
-            self.settable.apply(&self.programmable.apply(wcs))
+        let mut at = match (suppress, &self.swivelled) {
+            (true, _) => wcs.to_vec(),
+            (false, None) => self.settable.apply(&self.programmable.apply(wcs)),
+            (false, Some(swivelled)) => self
+                .settable
+                .apply(&swivelled.frame.apply(&self.programmable.apply(wcs))),
         };
-        for (k, length) in tool.iter().enumerate() {
-            at[k] = at[k].map(|v| v + length);
+        let length = Vector3::from(tool);
+        match (self.carrier(), suppress) {
+            (Some(carrier), false) => on_geometry(&mut at, |p| carrier.machine(p, length)),
+            // G53, SUPA: the machine's axes, the tool as the carrier holds it.
+            (Some(carrier), true) => {
+                on_geometry(&mut at, |p| p + carrier.tool * length + carrier.head)
+            }
+            (None, _) => {
+                for (k, length) in tool.iter().enumerate() {
+                    at[k] = at[k].map(|v| v + length);
+                }
+            }
         }
         at
     }
@@ -255,13 +270,48 @@ impl Interpreter<'_, '_> {
         tool: [f64; 3],
     ) -> Vec<Option<f64>> {
         let mut at = mcs.to_vec();
-        for (k, length) in tool.iter().enumerate() {
-            at[k] = at[k].map(|v| v - length);
+        let length = Vector3::from(tool);
+        match (self.carrier(), suppress) {
+            (Some(carrier), false) => on_geometry(&mut at, |p| carrier.part_point(p, length)),
+            (Some(carrier), true) => {
+                on_geometry(&mut at, |p| p - carrier.tool * length - carrier.head)
+            }
+            (None, _) => {
+                for (k, length) in tool.iter().enumerate() {
+                    at[k] = at[k].map(|v| v - length);
+                }
+            }
         }
         if suppress {
             return at;
         }
-        self.programmable.undo(&self.settable.undo(&at))
+        let at = self.settable.undo(&at);
+        let at = match &self.swivelled {
+            Some(swivelled) => swivelled.frame.undo(&at),
+            None => at,
+        };
+        self.programmable.undo(&at)
+    }
+
+    /// The tool carrier a swivel left active.
+    fn carrier(&self) -> Option<&Carrier> {
+        self.swivelled.as_ref()?.carrier.as_ref()
+    }
+
+    /// The frames' linear part from the program to the machine: what turns,
+    /// scales or mirrors a programmed move.
+    pub(super) fn frames_linear(&self, suppress: bool) -> Matrix3<f64> {
+        if suppress {
+            return Matrix3::identity();
+        }
+        let swivel = self
+            .swivelled
+            .as_ref()
+            .map_or(Matrix3::identity(), |s| s.frame.linear);
+        let part = self
+            .carrier()
+            .map_or(Matrix3::identity(), |c| c.part.into_inner());
+        part * self.settable.linear * swivel * self.programmable.linear
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -322,11 +372,7 @@ impl Interpreter<'_, '_> {
         // programmed stays where it is; under a rotation, or where it
         // changed, the geometry axes go together.
         let reached = self.to_machine(&end, suppress, tool);
-        let linear = if suppress {
-            Matrix3::identity()
-        } else {
-            self.settable.linear * self.programmable.linear
-        };
+        let linear = self.frames_linear(suppress);
         // A rotation couples the geometry axes: one programmed moves them all.
         let frames = Frame {
             translation: Vec::new(),
@@ -580,4 +626,16 @@ impl Interpreter<'_, '_> {
             }
         }
     }
+}
+
+/// `point`'s geometry axes through `map`, all three unknown where one is.
+fn on_geometry(point: &mut [Option<f64>], map: impl Fn(Vector3<f64>) -> Vector3<f64>) {
+    let mapped = match (point[0], point[1], point[2]) {
+        (Some(x), Some(y), Some(z)) => {
+            let p = map(Vector3::new(x, y, z));
+            [Some(p.x), Some(p.y), Some(p.z)]
+        }
+        _ => [None; 3],
+    };
+    point[..3].copy_from_slice(&mapped);
 }
