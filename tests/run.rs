@@ -1024,3 +1024,55 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
         }
     }
 }
+
+/// A swivel the record allows but the machine data's software limits do
+/// not is a K007 finding on the CYCLE800's line; what the run cannot make
+/// of a call is named on it; `CYCLE800()` takes the swivel back.
+#[test]
+fn a_swivel_is_held_to_the_rotary_axes_limits_and_taken_back() {
+    let data = five_axis(
+        "$TC_CARR23[1]=\"T\" $TC_CARR34[1]=\"HEAD\" $TC_CARR35[1]=\"C\" $TC_CARR36[1]=\"B\"\n\
+$TC_CARR9[1]=1 $TC_CARR11[1]=1\n\
+N36100 $MA_POS_LIMIT_MINUS[B]=-30\nN36110 $MA_POS_LIMIT_PLUS[B]=30\n\
+$TC_DP1[1,1]=120\n$TC_DP3[1,1]=100\n",
+    );
+    let program = "T1 D1 M6\nG0 X0 Y0 Z0 B0 C0\nCYCLE800(0,\"HEAD\",0,57,0,0,0,0,45,0,0,0,0,1)\n\
+CYCLE800(1,\"HEAD\",0,57,0,0,0,0,20,0,0,0,0,1)\nCYCLE800()\nG1 X10 Y0 Z0 F1000\nM30\n";
+    let machine_data = MachineData::read(data.as_bytes());
+    let records = sinuprep::semantic::machine::Machine::read(
+        data.as_bytes(),
+        sinuprep::semantic::machine::Reading::default(),
+    );
+    let setup = Setup::of(&machine_data).with_records(&records);
+    let model = Model::of(program.as_bytes());
+    let mut ends = Vec::new();
+    let report = run(
+        &Programs::alone(&model),
+        &setup,
+        &Supplied::default(),
+        &Options::default(),
+        |end| ends.push((end.line, end.mcs.to_vec())),
+    );
+    let found: Vec<(usize, &str, f64)> = (report.violations.iter())
+        .map(|v| (v.line, v.axis.as_str(), v.value))
+        .collect();
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!((found[0].0, found[0].1), (3, "B"), "{found:?}");
+    assert!((found[0].2.abs() - 45.0).abs() < 1e-9, "{found:?}");
+    let retraction = report
+        .unknown
+        .iter()
+        .find(|u| u.line == 4)
+        .expect("the retraction named");
+    assert!(retraction.why.contains("`_FR` 1"), "{}", retraction.why);
+    // Taken back: X10 on the unswivelled plane, the tool along Z, the
+    // rotary axes left where the last swivel put them.
+    let (_, last) = ends.iter().find(|(line, _)| *line == 6).expect("line 6");
+    let known = |k: usize| last[k].expect("known");
+    assert!((known(0) - 10.0).abs() < 1e-9, "{last:?}");
+    assert!(
+        known(1).abs() < 1e-9 && (known(2) - 100.0).abs() < 1e-9,
+        "{last:?}"
+    );
+    assert!((known(3).abs() - 20.0).abs() < 1e-9, "B stays: {last:?}");
+}

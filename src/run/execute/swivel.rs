@@ -34,7 +34,7 @@ pub(super) struct Swivelled {
 }
 
 /// Said once a run that swivels: what the model rests on.
-const ASSUMED: &str = "CYCLE800: the swivel frame between the settable and the programmable frame, the rotary axes turned at rapid each at its own MD32000/MD32300 after the retraction, the linear axes not following (no tool tip tracking), the tool carrier's offset vectors and the table's turn applied to every point after it (TCARR with PAROT); CYCLE800() keeps the rotary axes where they are";
+const ASSUMED: &str = "CYCLE800: the swivel frame between the settable and the programmable frame, the rotary axes turned at rapid each at its own MD32000/MD32300 after the retraction, the linear axes not following (no tool tip tracking), the tool carrier's offset vectors and the table's turn applied to every point after it (TCARR with PAROT); CYCLE800() takes the swivel frame and the carrier's offsets back and keeps the rotary axes where they are (what it resets, no Siemens text found says)";
 
 impl Interpreter<'_, '_> {
     /// A CYCLE800 call with its arguments as evaluated (`None`: unknown
