@@ -90,12 +90,23 @@ impl Nearest {
     /// The name nearest to `word`, at most `most` (at most [`Self::MOST`])
     /// edits away and not `word` itself; of equals, the first given.
     pub fn closest(&mut self, word: &str, most: usize) -> Option<&str> {
+        self.closest_where(word, most, |_| true)
+    }
+
+    /// As [`Self::closest`], of the names `allowed` keeps (upper case).
+    pub fn closest_where(
+        &mut self,
+        word: &str,
+        most: usize,
+        allowed: impl Fn(&str) -> bool,
+    ) -> Option<&str> {
         let most = most.min(Self::MOST);
         self.searches += 1;
         if self.index.is_none()
             && (self.names.len() <= Self::SCAN || self.searches <= Self::SCANNED_SEARCHES)
         {
-            return closest(word, self.names.iter(), most).map(String::as_str);
+            let names = self.names.iter().filter(|name| allowed(name));
+            return closest(word, names, most).map(String::as_str);
         }
         let names = &self.names;
         let index = self.index.get_or_insert_with(|| {
@@ -110,7 +121,8 @@ impl Nearest {
         let mut found: Option<(usize, u32)> = None;
         for form in deletions(&word.to_ascii_uppercase(), most) {
             for &at in index.get(&form).into_iter().flatten() {
-                let Some(d) = within(word, &names[at as usize], most).filter(|&d| d > 0) else {
+                let name = &names[at as usize];
+                let Some(d) = within(word, name, most).filter(|&d| d > 0 && allowed(name)) else {
                     continue;
                 };
                 if found.is_none_or(|best| (d, at) < best) {

@@ -27,8 +27,9 @@ N20 END: M30       ; the label is END
 ```
 
 ## Fix
-Correct the label's spelling (the help suggests the nearest existing label) or add the label.
-The nearest label is offered as an unsafe fix (`check --fix --unsafe-fixes`): it is a guess."#,
+Correct the label's spelling (the help suggests the nearest existing label the jump can reach:
+below it for GOTOF, above it for GOTOB) or add the label. The nearest label is offered as an
+unsafe fix (`check --fix --unsafe-fixes`): it is a guess."#,
 };
 
 /// The labels are the file's ([`FileContext::labels`]).
@@ -45,6 +46,9 @@ struct Jump {
     tolerant: bool,
     /// A label a REPEAT names, not a GOTO's.
     repeat: bool,
+    /// Its line, and the way it searches.
+    row: usize,
+    kind: GotoKind,
 }
 
 impl Check for Checker {
@@ -59,6 +63,8 @@ impl Check for Checker {
                 span: *span,
                 tolerant: at.goto.kind == GotoKind::Conditional,
                 repeat: false,
+                row: at.row,
+                kind: at.goto.kind,
             });
         }
     }
@@ -71,6 +77,8 @@ impl Check for Checker {
                 span: name.span,
                 tolerant: false,
                 repeat: true,
+                row: at.row,
+                kind: GotoKind::Both,
             }));
         }
     }
@@ -83,6 +91,8 @@ impl Check for Checker {
             span,
             tolerant,
             repeat,
+            row,
+            kind,
         } in &self.jumps
         {
             if !file.model().target_rows(target).is_empty() {
@@ -94,7 +104,17 @@ impl Check for Checker {
                 file.labels().names().for_each(|name| nearest.push(&name));
                 nearest
             });
-            let meant = names.closest(&wanted, 2).map(str::to_string);
+            // Only a label the jump finds: a GOTOF searches below it, a
+            // GOTOB above.
+            let reaches = |name: &str| {
+                let mut rows = file.labels().rows(name);
+                match kind {
+                    GotoKind::Forward => rows.any(|r| r > *row),
+                    GotoKind::Backward => rows.any(|r| r < *row),
+                    _ => true,
+                }
+            };
+            let meant = names.closest_where(&wanted, 2, reaches).map(str::to_string);
             let help = match &meant {
                 Some(label) => format!("did you mean `{label}`? Otherwise add the label `{wanted}:` where the jump should land"),
                 None => format!("add the label `{wanted}:` where the jump should land, or correct the jump"),
