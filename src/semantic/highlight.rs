@@ -8,6 +8,7 @@
 use std::ops::Range;
 
 use crate::semantic::uses::{Namespace, Uses};
+use crate::semantic::words::is_language_word;
 use crate::semantic::Model;
 use crate::span::Span;
 use crate::syntax::lexer::{is_name_char, is_name_start, is_one_of, RESERVED};
@@ -184,6 +185,13 @@ impl Line<'_> {
             Class::Macro
         } else if start < letters {
             Class::SystemVariable
+        } else if !is_one_of(word, RESERVED) && is_language_word(word) {
+            // The control's own: a command (STOPRE, SUPA) or a function;
+            // never a user's variable, whatever the walk makes of it.
+            match self.next_non_blank(end) == Some(b'(') {
+                true => Class::Function,
+                false => Class::Keyword,
+            }
         } else if let Some(found) = self.uses.at(start).filter(|u| u.span.start == start) {
             match found.namespace {
                 Namespace::Label => Class::Label,
@@ -295,6 +303,22 @@ mod tests {
                 ("M30", Keyword),
             ]
         );
+    }
+
+    /// The control's commands are keywords, whether or not the walk reads
+    /// them as names; its functions are functions.
+    #[test]
+    fn commands_are_keywords_not_variables() {
+        use Class::*;
+        let found = classes("STOPRE\nSUPA G0 Z0\nTRAFOOF\nR1=TRUNC(2.5)\nM30\n");
+        for (word, class) in [
+            ("STOPRE", Keyword),
+            ("SUPA", Keyword),
+            ("TRAFOOF", Keyword),
+            ("TRUNC", Function),
+        ] {
+            assert!(found.contains(&(word, class)), "{word}: {found:?}");
+        }
     }
 
     #[test]

@@ -11,6 +11,7 @@ pub(crate) mod blocks;
 pub(crate) mod calls;
 pub mod cycle600;
 pub mod cycle800;
+pub mod cycles;
 pub mod env;
 pub mod environment;
 pub mod eval;
@@ -29,6 +30,7 @@ pub(crate) mod structure;
 pub mod swivels;
 pub mod uses;
 pub mod value;
+pub mod vocabulary;
 pub mod walk;
 pub mod words;
 

@@ -10,7 +10,7 @@ use crate::syntax::lexer::{is_one_of, RESERVED};
 /// The control's functions (Siemens, Programming Manual Job Planning,
 /// "Arithmetic functions", "Frame calculation", "String functions") and the
 /// modifiers of a coordinate (`AC`, `IC`, ...).
-const FUNCTIONS: &[&str] = &[
+pub(crate) const FUNCTIONS: &[&str] = &[
     "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN2", "SQRT", "ABS", "POT", "TRUNC", "ROUND", "LN",
     "EXP", "MINVAL", "MAXVAL", "BOUND", "CTRANS", "CROT", "CSCALE", "CMIRROR", "CFINE", "AC", "IC",
     "DC", "ACP", "ACN", "CAC", "CIC", "CACP", "CACN", "AXSTRING", "SPRINT", "SUBSTR", "TOLOWER",

@@ -117,3 +117,22 @@ pub enum SettingsError {
     )]
     Table { origin: String, why: String },
 }
+
+impl SettingsError {
+    /// The file the error is in and, where known, its 1-based line and
+    /// column: for an editor to show the error on that file. `None` for an
+    /// error that names no one file (a flag, two files in a clash).
+    pub fn place(&self) -> Option<(&std::path::Path, usize, usize)> {
+        match self {
+            Self::Config {
+                path, line, column, ..
+            }
+            | Self::Definitions {
+                path, line, column, ..
+            } => Some((path, *line, *column)),
+            Self::Values { path, line, .. } => Some((path, *line, 1)),
+            Self::Read { path, .. } | Self::Archive { path, .. } => Some((path, 1, 1)),
+            _ => None,
+        }
+    }
+}
