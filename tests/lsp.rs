@@ -475,6 +475,76 @@ vim.cmd("qa!")
     );
 }
 
+/// Neovim's own client completes and helps with signatures as a user
+/// sees it: what its omnifunc inserts (its conversion of the items, which
+/// keeps those that go on from the word typed, case and all, and turns a
+/// snippet into text), and the parameter its signature window highlights.
+#[test]
+fn neovim_completes_and_shows_the_parameter_being_written() {
+    let present = std::process::Command::new("nvim")
+        .arg("--version")
+        .output()
+        .is_ok();
+    if !editor_present("Neovim", present) {
+        return;
+    }
+    let script = r#"
+local out = {}
+local id = vim.lsp.start_client({ cmd = { os.getenv("SINUPREP_BIN"), "lsp" },
+                                  root_dir = vim.fn.getcwd(), name = "sinuprep" })
+vim.cmd("edit PART.MPF")
+local buf = vim.api.nvim_get_current_buf()
+vim.api.nvim_buf_set_lines(buf, 0, -1, false, {
+  "START:", "G17", "GOTOB ST", "cycle80", "CYCLE800(0,\"TC1\",200000,", "M30" })
+vim.lsp.buf_attach_client(buf, id)
+local client = vim.lsp.get_client_by_id(id)
+vim.wait(20000, function() return client.initialized end, 50)
+local function at(line)
+  local text = vim.api.nvim_buf_get_lines(buf, line, line + 1, false)[1]
+  return { textDocument = { uri = vim.uri_from_bufnr(buf) },
+           position = { line = line, character = #text } }, text
+end
+for _, line in ipairs({ 2, 3 }) do
+  local params, text = at(line)
+  -- As the omnifunc: the word typed is the keyword before the cursor.
+  local prefix = vim.fn.matchstr(text, "\\k*$")
+  local response = client.request_sync("textDocument/completion", params, 20000, buf)
+  local items = vim.lsp.util.text_document_completion_list_to_complete_items(response.result, prefix)
+  for _, item in ipairs(items) do
+    table.insert(out, "complete " .. line .. " " .. item.word)
+  end
+end
+local params = at(4)
+local response = client.request_sync("textDocument/signatureHelp", params, 20000, buf)
+local lines, hl = vim.lsp.util.convert_signature_help_to_markdown_lines(response.result)
+table.insert(out, "signature " .. lines[1])
+table.insert(out, "active " .. lines[1]:sub(hl[1] + 1, hl[2]))
+vim.fn.writefile(out, "out.txt")
+client.stop()
+vim.wait(5000, function() return vim.lsp.get_client_by_id(id) == nil end, 50)
+vim.cmd("qa!")
+"#;
+    let mut nvim = std::process::Command::new("nvim");
+    nvim.args([
+        "--headless",
+        "--clean",
+        "-u",
+        "NONE",
+        "-c",
+        "luafile test.lua",
+    ]);
+    let (status, shown) = run_editor(nvim, "test.lua", script);
+    assert!(status.status.success(), "{status:?}");
+    assert!(shown.contains("complete 2 START\n"), "{shown}");
+    // Neovim 0.7 takes no snippets: the name and the bracket.
+    assert!(shown.contains("complete 3 cycle800(\n"), "{shown}");
+    assert!(
+        shown.contains("signature CYCLE800(_FR, _TC, _ST, _MODE,"),
+        "{shown}"
+    );
+    assert!(shown.contains("active _MODE"), "{shown}");
+}
+
 /// Emacs with eglot (Debian's `emacs-nox` and `elpa-eglot`, eglot 1.9 or
 /// later) starts the server, opens a program, and reads its findings through
 /// flymake and two hovers: on a CYCLE600 and on a result read after it.
@@ -543,8 +613,8 @@ fn emacs_shows_the_findings_and_a_hover() {
 
 #[test]
 fn a_client_that_pulls_diagnostics_gets_them_once() {
-    let capabilities =
-        json!({ "textDocument": { "diagnostic": { "dynamicRegistration": false } } });
+    let capabilities = json!({ "textDocument": { "diagnostic": { "dynamicRegistration": false } },
+                               "workspace": { "diagnostic": { "refreshSupport": true } } });
     let (mut client, initialized) = Client::start(capabilities);
     assert_eq!(
         initialized["capabilities"]["diagnosticProvider"]["interFileDependencies"],
@@ -565,6 +635,11 @@ fn a_client_that_pulls_diagnostics_gets_them_once() {
     assert_eq!(answer["result"]["kind"], "full", "{answer}");
     let items = answer["result"]["items"].as_array().expect("items");
     assert_eq!(codes(items), ["N001"]);
+    // A settings or definition file changed: the client is asked to pull
+    // again (it said it can be).
+    client.notify("workspace/didChangeWatchedFiles", json!({ "changes": [] }));
+    let asked = client.next(|message| message["method"] == "workspace/diagnostic/refresh");
+    client.send(json!({ "jsonrpc": "2.0", "id": asked["id"], "result": null }));
     client.stop();
 }
 
@@ -734,6 +809,36 @@ fn a_global_variable_goes_to_its_definition_file() {
     assert!(
         shown.contains("defined in `") && shown.contains("GUD7.DEF`"),
         "{shown}"
+    );
+    // The workspace's symbols reach beyond the open documents: the GUD
+    // variable in its definition file, the subprogram beside the program.
+    std::fs::write(
+        dir.join("FACE_OFFSET.SPF"),
+        "PROC FACE_OFFSET(REAL _Z)\nM17\n",
+    )
+    .expect("spf");
+    client.notify("workspace/didChangeWatchedFiles", json!({ "changes": [] }));
+    let found = client.request("workspace/symbol", json!({ "query": "offset" }));
+    let found: Vec<(&str, u64, &str, &str)> = found
+        .as_array()
+        .expect("symbols")
+        .iter()
+        .map(|s| {
+            (
+                s["name"].as_str().expect("a name"),
+                s["kind"].as_u64().expect("a kind"),
+                s["containerName"].as_str().expect("its file"),
+                s["location"]["uri"].as_str().expect("a uri"),
+            )
+        })
+        .collect();
+    let face = format!("file://{}", dir.join("FACE_OFFSET.SPF").display());
+    assert_eq!(
+        found,
+        [
+            ("FACE_OFFSET", 12, "FACE_OFFSET.SPF", face.as_str()),
+            ("_OFFSET_Z", 13, "GUD7.DEF", expected.as_str())
+        ]
     );
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
@@ -1310,6 +1415,214 @@ fn a_variable_hover_names_the_measurement_or_the_values_file() {
     assert!(
         shown.contains("Value here: `0.25`, supplied by ") && shown.contains("probe.values:1"),
         "{shown}"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The labels of each completion at `line`, `character` of `uri`.
+fn completed(client: &mut Client, uri: &str, line: u32, character: u32) -> Vec<Value> {
+    let items = client.request("textDocument/completion", at(uri, line, character));
+    items.as_array().expect("a list of items").clone()
+}
+
+fn labels(items: &[Value]) -> Vec<&str> {
+    items
+        .iter()
+        .map(|item| item["label"].as_str().expect("a label"))
+        .collect()
+}
+
+const JUMPS: &str = "\
+DEF REAL _DEPTH=5, _DEPTH2
+START:
+G17 G90
+R1=$P_U
+GOTOF 
+GOTOB 
+STOP
+G1 Z=-_DE ; GOTOF 
+LATER:
+cycle80
+M30
+";
+
+/// Completion offers what may stand there: the labels a jump reaches in
+/// its direction, the system variables after `$`, the language's words with
+/// their meaning, the program's variables, a cycle as a snippet; nothing in
+/// a comment.
+#[test]
+fn completion_offers_what_may_stand_there() {
+    let snippets = json!({ "textDocument": { "completion": { "completionItem": { "snippetSupport": true } } } });
+    let (mut client, initialized) = Client::start(snippets);
+    let capabilities = &initialized["capabilities"];
+    assert_eq!(
+        capabilities["completionProvider"]["triggerCharacters"],
+        json!(["$"])
+    );
+    client.open(URI, JUMPS);
+
+    assert_eq!(labels(&completed(&mut client, URI, 4, 6)), ["LATER"]);
+    assert_eq!(labels(&completed(&mut client, URI, 5, 6)), ["START"]);
+
+    let system = completed(&mut client, URI, 3, 7);
+    assert!(labels(&system).contains(&"$P_UIFR"), "{system:?}");
+    assert!(
+        labels(&system).iter().all(|l| l.starts_with("$P_U")),
+        "{system:?}"
+    );
+    // The item replaces what is typed, `$` included.
+    let edit = &system[0]["textEdit"];
+    assert_eq!(
+        edit["range"],
+        json!({ "start": { "line": 3, "character": 3 }, "end": { "line": 3, "character": 7 } })
+    );
+
+    let words = completed(&mut client, URI, 6, 4);
+    let stopre = words
+        .iter()
+        .find(|item| item["label"] == "STOPRE")
+        .expect("STOPRE offered");
+    let meaning = stopre["documentation"]["value"].as_str().expect("markdown");
+    assert!(meaning.contains("preprocessing"), "{meaning}");
+
+    let variables = completed(&mut client, URI, 7, 9);
+    assert_eq!(labels(&variables), ["_DEPTH", "_DEPTH2"]);
+    assert!(completed(&mut client, URI, 7, 18).is_empty(), "a comment");
+
+    // Typed in lower case, the cycle comes in lower case, its parameters
+    // as the snippet's placeholders.
+    let cycles = completed(&mut client, URI, 9, 7);
+    let cycle800 = cycles
+        .iter()
+        .find(|item| item["label"] == "CYCLE800")
+        .expect("CYCLE800 offered");
+    assert_eq!(cycle800["insertTextFormat"], 2, "a snippet");
+    let text = cycle800["textEdit"]["newText"].as_str().expect("text");
+    assert!(
+        text.starts_with("cycle800(${1:_FR},${2:_TC},${3:_ST},"),
+        "{text}"
+    );
+    assert!(text.ends_with("${16:_DMODE})$0"), "{text}");
+    client.stop();
+
+    // A client without snippets gets the name and the bracket.
+    let (mut client, _) = Client::start(json!({}));
+    client.open(URI, JUMPS);
+    let cycles = completed(&mut client, URI, 9, 7);
+    let cycle800 = cycles
+        .iter()
+        .find(|item| item["label"] == "CYCLE800")
+        .expect("CYCLE800 offered");
+    assert_eq!(cycle800["textEdit"]["newText"], "cycle800(");
+    assert_eq!(cycle800.get("insertTextFormat"), None);
+    client.stop();
+}
+
+/// Signature help names the parameter being written: a cycle's with its
+/// meaning, a PROC's of this program and of the file beside it as their
+/// headers declare them.
+#[test]
+fn signature_help_names_the_parameter_being_written() {
+    let dir = scratch("lsp-signature");
+    std::fs::write(
+        dir.join("pocket.spf"),
+        ";pocket\nPROC POCKET(REAL _DEPTH, VAR INT _N[2])\nM17\n",
+    )
+    .expect("subprogram");
+    let uri = format!("file://{}", dir.join("MAIN.SPF").display());
+    let offsets = json!({ "textDocument": { "signatureHelp": { "signatureInformation": {
+        "parameterInformation": { "labelOffsetSupport": true } } } } });
+    let (mut client, _) = Client::start(offsets);
+    let text = "PROC MAIN(REAL _A, STRING[8] _B) SAVE\nCYCLE800(0,\"TC1\",SIN(3),\nMAIN(1, \nPOCKET(5, \"a,b\", \nM17\n";
+    client.open(&uri, text);
+    let help = |client: &mut Client, line: u32, character: u32| {
+        client.request("textDocument/signatureHelp", at(&uri, line, character))
+    };
+
+    let cycle = help(&mut client, 1, 24);
+    let signature = &cycle["signatures"][0];
+    let label = signature["label"].as_str().expect("a label");
+    assert!(
+        label.starts_with("CYCLE800(_FR, _TC, _ST, _MODE,"),
+        "{label}"
+    );
+    assert_eq!(cycle["activeParameter"], 3);
+    let third = &signature["parameters"][2];
+    let [start, end] = [0, 1].map(|i| third["label"][i].as_u64().expect("an offset") as usize);
+    assert_eq!(&label[start..end], "_ST");
+    assert!(third["documentation"].as_str().is_some(), "{third}");
+    // Inside SIN( the cycle is still the call shown.
+    let inside = help(&mut client, 1, 22);
+    assert_eq!(inside["activeParameter"], 2);
+
+    let own = help(&mut client, 2, 8);
+    assert_eq!(own["signatures"][0]["label"], "MAIN(REAL _A, STRING[8] _B)");
+    assert_eq!(own["activeParameter"], 1);
+
+    let beside = help(&mut client, 3, 17);
+    assert_eq!(
+        beside["signatures"][0]["label"],
+        "POCKET(REAL _DEPTH, VAR INT _N[2])"
+    );
+    assert_eq!(
+        beside["activeParameter"], 2,
+        "the comma in the string counts not"
+    );
+
+    assert_eq!(help(&mut client, 4, 3), Value::Null, "outside any call");
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A sinuprep.toml that cannot be read is shown on itself, on its line,
+/// and the programs it governs say they are not checked (not findings made
+/// with settings they do not have); mended, both clear.
+#[test]
+fn a_broken_settings_file_is_shown_on_itself() {
+    let dir = scratch("lsp-broken-settings");
+    let broken = "# the rules\nselect = [\"N\"]\nselcet = [\"C\"]\n";
+    std::fs::write(dir.join("sinuprep.toml"), broken).expect("settings");
+    let program = format!("file://{}", dir.join("PART.MPF").display());
+    let settings = format!("file://{}", dir.join("sinuprep.toml").display());
+    let (mut client, _) = Client::start(json!({}));
+    client.notify(
+        "textDocument/didOpen",
+        json!({ "textDocument": { "uri": program, "languageId": "sinumerik", "version": 1,
+                                  "text": "G1 X1 F100\nGOTOB STRAT\nM30\n" } }),
+    );
+    let on_settings = client.diagnostics(&settings);
+    assert_eq!(on_settings.len(), 1, "{on_settings:?}");
+    assert_eq!(
+        on_settings[0]["range"]["start"]["line"], 2,
+        "{on_settings:?}"
+    );
+    let said = on_settings[0]["message"].as_str().expect("a message");
+    assert!(said.contains("selcet"), "{said}");
+    let on_program = client.diagnostics(&program);
+    assert_eq!(on_program.len(), 1, "{on_program:?}");
+    let said = on_program[0]["message"].as_str().expect("a message");
+    assert!(
+        said.starts_with("the settings cannot be read, so this file is not checked: ")
+            && said.contains("sinuprep.toml:3"),
+        "{said}"
+    );
+
+    // Mended and saved: the editor says the file changed.
+    std::fs::write(dir.join("sinuprep.toml"), "select = [\"N\"]\n").expect("settings");
+    client.notify(
+        "workspace/didChangeWatchedFiles",
+        json!({ "changes": [{ "uri": settings, "type": 2 }] }),
+    );
+    assert_eq!(client.diagnostics(&settings), Vec::<Value>::new());
+    let found = client.next(|message| {
+        message["method"] == "textDocument/publishDiagnostics"
+            && message["params"]["uri"] == program.as_str()
+            && message["params"]["diagnostics"][0]["code"] == "N001"
+    });
+    assert_eq!(
+        found["params"]["diagnostics"].as_array().map(Vec::len),
+        Some(1)
     );
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);

@@ -37,14 +37,16 @@ pub const MOST_COLOURED_BYTES: usize = 10_000_000;
 
 /// One version of a document, analysed, for the requests about it.
 pub struct Snapshot<'a, 't> {
-    text: &'t Text,
+    pub(super) text: &'t Text,
     name: &'a str,
-    model: &'a Model<'t>,
+    pub(super) model: &'a Model<'t>,
     walk: Option<&'a Analysis>,
     findings: &'a [Diagnostic],
     analysis: held::Analysis<'a, 't>,
-    unit: ColumnUnit,
-    settings: &'a Settings,
+    pub(super) unit: ColumnUnit,
+    pub(super) settings: &'a Settings,
+    /// Why the document's settings could not be read (it is not checked).
+    refused: Option<&'a str>,
 }
 
 impl<'a, 't> Snapshot<'a, 't> {
@@ -53,6 +55,7 @@ impl<'a, 't> Snapshot<'a, 't> {
         name: &'a str,
         settings: &'a Settings,
         unit: ColumnUnit,
+        refused: Option<&'a str>,
     ) -> Self {
         let analyzed = analysis.analyzed;
         Self {
@@ -64,10 +67,11 @@ impl<'a, 't> Snapshot<'a, 't> {
             analysis,
             unit,
             settings,
+            refused,
         }
     }
 
-    fn uses(&self) -> &Uses {
+    pub(super) fn uses(&self) -> &Uses {
         self.analysis.uses()
     }
 
@@ -79,6 +83,15 @@ impl<'a, 't> Snapshot<'a, 't> {
     /// [`MOST_SHOWN_FINDINGS`] by position, and past those one more that
     /// says how many there are and where every one is listed.
     pub fn diagnostics(&self, uri: &lsp::Uri) -> Vec<lsp::Diagnostic> {
+        if let Some(why) = self.refused {
+            return vec![lsp::Diagnostic {
+                range: lsp::Range::default(),
+                severity: Some(lsp::DiagnosticSeverity::ERROR),
+                source: Some("sinuprep".to_string()),
+                message: why.to_string(),
+                ..lsp::Diagnostic::default()
+            }];
+        }
         let mut shown: Vec<lsp::Diagnostic> = self
             .findings
             .iter()
@@ -106,11 +119,11 @@ impl<'a, 't> Snapshot<'a, 't> {
         shown
     }
 
-    fn offset(&self, position: lsp::Position) -> usize {
+    pub(super) fn offset(&self, position: lsp::Position) -> usize {
         convert::offset(self.text, position, self.unit)
     }
 
-    fn range(&self, span: Span) -> lsp::Range {
+    pub(super) fn range(&self, span: Span) -> lsp::Range {
         convert::range(self.text, span, self.unit)
     }
 
@@ -162,6 +175,16 @@ impl<'a, 't> Snapshot<'a, 't> {
         let text = match found.namespace {
             Namespace::Variable => text + &self.variable_facts(found),
             _ => text,
+        };
+        // An R parameter's value above, what R parameters are below.
+        let r_parameter = found.namespace == Namespace::Variable
+            && crate::semantic::vocabulary::is_r_parameter(found.name.as_bytes());
+        let language = r_parameter
+            .then(|| crate::semantic::vocabulary::word(found.name.as_bytes()))
+            .flatten();
+        let text = match language {
+            Some(word) => format!("{text}\n\n{} ({})", word.meaning, word.manual),
+            None => text,
         };
         Some(markdown(text, self.range(found.span)))
     }
@@ -345,21 +368,51 @@ impl<'a, 't> Snapshot<'a, 't> {
         Some(markdown(text, self.range(statement)))
     }
 
-    /// On a G or M function, what it does; on a system variable, what it
-    /// holds.
+    /// On a word of the language (a keyword, command, function, procedure,
+    /// a G or M function, a system variable), what it does or holds, and
+    /// the manual that says so; on a cycle's name, what it does and its
+    /// parameters. A name the program defines for itself, and an R
+    /// parameter the table of uses holds (whose hover gives its value), are
+    /// left to the hover on names.
     fn function_hover(&self, at: usize) -> Option<lsp::Hover> {
+        use crate::semantic::highlight::Class;
+        use crate::semantic::{cycles, vocabulary};
         let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
         let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), row..row + 1);
         let token = tokens
             .into_iter()
             .find(|t| t.span.start <= at && at < t.span.end.max(t.span.start + 1))?;
         let word = token.span.of(self.text.bytes());
+        let found = self.uses().at(token.span.start);
+        let defined_here =
+            found.is_some_and(|found| self.uses().definition(self.model, found).is_some());
+        // `STOPRE` or `SUPA` alone is coloured as a name: the table of uses
+        // says whether it is one.
         let text = match token.class {
-            crate::semantic::highlight::Class::Keyword => {
-                crate::semantic::functions::describe(word)?
+            Class::Function | Class::Variable if defined_here => return None,
+            Class::SystemVariable if found.is_some() && vocabulary::is_r_parameter(word) => {
+                return None
             }
-            crate::semantic::highlight::Class::SystemVariable => {
-                crate::semantic::functions::system_variable(word)?
+            Class::Function => match cycles::cycle(word) {
+                Some(cycle) => {
+                    let mut text = format!(
+                        "**{}**: {} ({})\n\n| | parameter | meaning |\n|---|---|---|\n",
+                        cycle.name, cycle.what, cycle.manual
+                    );
+                    for (place, parameter) in cycle.parameters.iter().enumerate() {
+                        text.push_str(&format!(
+                            "| {} | `{}` | {} |\n",
+                            place + 1,
+                            parameter.name,
+                            parameter.meaning.replace('|', "\\|")
+                        ));
+                    }
+                    text
+                }
+                None => vocabulary::explain(word)?,
+            },
+            Class::Keyword | Class::SystemVariable | Class::Variable | Class::Address => {
+                vocabulary::explain(word)?
             }
             _ => return None,
         };
@@ -375,12 +428,12 @@ impl<'a, 't> Snapshot<'a, 't> {
                 "{}: PROC in `{}`, {} parameter(s)",
                 self.describe(found),
                 file.display(),
-                procedure.parameters
+                procedure.parameters.len()
             ),
             (Namespace::Subprogram, Some(procedure), None) => format!(
                 "{}: a subprogram of an archive, {} parameter(s)",
                 self.describe(found),
-                procedure.parameters
+                procedure.parameters.len()
             ),
             (_, _, Some((file, _))) => {
                 format!("{}: defined in `{}`", self.describe(found), file.display())

@@ -14,15 +14,18 @@
 #![allow(clippy::mutable_key_type)]
 
 mod answers;
+mod completion;
 mod convert;
+mod cursor;
 mod formatting;
 mod requests;
 mod rule_pages;
+mod signature;
 mod transport;
 mod worker;
+mod workspace_symbols;
 
-use std::collections::HashMap;
-use std::path::Path;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
@@ -59,6 +62,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         .text_document
         .as_ref()
         .is_some_and(|text| text.diagnostic.is_some());
+    let takes = Takes::of(&params.capabilities);
     let capabilities = lsp::ServerCapabilities {
         position_encoding: Some(encoding),
         text_document_sync: Some(lsp::TextDocumentSyncCapability::Options(
@@ -70,6 +74,15 @@ fn serve(connection: &Connection) -> Result<(), String> {
             },
         )),
         hover_provider: Some(lsp::HoverProviderCapability::Simple(true)),
+        completion_provider: Some(lsp::CompletionOptions {
+            trigger_characters: Some(vec!["$".to_string()]),
+            ..lsp::CompletionOptions::default()
+        }),
+        signature_help_provider: Some(lsp::SignatureHelpOptions {
+            trigger_characters: Some(vec!["(".to_string(), ",".to_string()]),
+            retrigger_characters: None,
+            work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
+        }),
         definition_provider: Some(lsp::OneOf::Left(true)),
         references_provider: Some(lsp::OneOf::Left(true)),
         document_symbol_provider: Some(lsp::OneOf::Left(true)),
@@ -124,8 +137,11 @@ fn serve(connection: &Connection) -> Result<(), String> {
         connection,
         documents: HashMap::new(),
         workspace: Workspace::with_buffers(Given::default(), HashMap::new()),
+        settings_errors: HashSet::new(),
+        refreshes: 0,
         unit,
         pull,
+        takes,
         worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),
         requests: requests::Requests::start(connection.sender.clone()),
     };
@@ -184,6 +200,9 @@ struct Open {
     /// The path or URI its settings are found by and its findings named by.
     name: Arc<str>,
     settings: Arc<Settings>,
+    /// Why its settings could not be read: it is then not checked, and
+    /// its findings say only that.
+    refused: Option<Arc<str>>,
 }
 
 impl Open {
@@ -202,7 +221,14 @@ impl Open {
     fn with_snapshot<R>(&self, unit: ColumnUnit, answer: impl FnOnce(&Snapshot) -> R) -> Option<R> {
         self.held
             .with_analysis(&self.name, &self.settings, |analysis| {
-                answer(&Snapshot::new(analysis, &self.name, &self.settings, unit))
+                let refused = self.refused.as_deref();
+                answer(&Snapshot::new(
+                    analysis,
+                    &self.name,
+                    &self.settings,
+                    unit,
+                    refused,
+                ))
             })
     }
 }
@@ -216,6 +242,13 @@ struct Server<'c> {
     unit: ColumnUnit,
     /// The client pulls diagnostics (`textDocument/diagnostic`).
     pull: bool,
+    /// What the client takes beyond the protocol's minimum.
+    takes: Takes,
+    /// The files a settings error was published on (a broken
+    /// sinuprep.toml): cleared when the settings read again.
+    settings_errors: HashSet<lsp::Uri>,
+    /// `workspace/diagnostic/refresh` requests sent, for their ids.
+    refreshes: u64,
     /// Publishes the findings of the documents that change (none for a
     /// client that pulls them).
     worker: Option<worker::Worker>,
@@ -303,6 +336,7 @@ impl Server<'_> {
             })
             .collect();
         self.workspace = Workspace::with_buffers(Given::default(), buffers);
+        let published = std::mem::take(&mut self.settings_errors);
         let open: Vec<(lsp::Uri, Held)> = self
             .documents
             .drain()
@@ -311,14 +345,33 @@ impl Server<'_> {
         for (uri, held) in open {
             self.open(uri, held);
         }
+        for mended in published.difference(&self.settings_errors) {
+            self.publish_on(mended.clone(), Vec::new());
+        }
+        // A client that pulls asks again, where it lets the server say so.
+        if self.pull && self.takes.diagnostic_refresh {
+            self.refreshes += 1;
+            let id = format!("sinuprep-refresh-{}", self.refreshes);
+            let method = lsp::request::WorkspaceDiagnosticRefresh::METHOD.to_string();
+            self.send(Message::Request(Request::new(id.into(), method, ())));
+        }
+    }
+
+    /// Pushes `diagnostics` for `uri` from here (a file the worker does not
+    /// check: a settings file).
+    fn publish_on(&self, uri: lsp::Uri, diagnostics: Vec<lsp::Diagnostic>) {
+        let params = lsp::PublishDiagnosticsParams::new(uri, diagnostics, None);
+        let method = lsp::notification::PublishDiagnostics::METHOD.to_string();
+        self.send(Message::Notification(Notification::new(method, params)));
     }
 
     fn open(&mut self, uri: lsp::Uri, held: Held) {
         let path = convert::path(&uri);
-        let settings = path
-            .as_deref()
-            .map(|path| self.settings(path))
-            .unwrap_or_default();
+        let (settings, refused) = match path.as_deref().map(|p| self.workspace.for_check(p)) {
+            Some(Ok(resolved)) => (resolved.settings, None),
+            Some(Err(error)) => (Settings::default(), Some(self.settings_error(&error))),
+            None => (Settings::default(), None),
+        };
         let name = path.map_or_else(
             || uri.as_str().to_string(),
             |p| p.to_string_lossy().into_owned(),
@@ -327,21 +380,36 @@ impl Server<'_> {
             held: Arc::new(held),
             name: name.into(),
             settings: Arc::new(settings),
+            refused,
         };
         self.documents.insert(uri.clone(), open);
         self.publish(uri);
     }
 
-    /// The settings `check` would use for the file at `path`; the defaults,
-    /// said on stderr, when they cannot be read.
-    fn settings(&self, path: &Path) -> Settings {
-        match self.workspace.for_check(path) {
-            Ok(resolved) => resolved.settings,
-            Err(error) => {
-                eprintln!("sinuprep lsp: {}: {error}", path.display());
-                Settings::default()
-            }
+    /// What a program whose settings cannot be read is told, as `check`
+    /// would say it; the error is also published on the file it is in.
+    fn settings_error(&mut self, error: &crate::workspace::SettingsError) -> Arc<str> {
+        use miette::Diagnostic as _;
+        let help = error.help().map(|h| format!("\n\n{h}")).unwrap_or_default();
+        let said = format!("{error}{help}");
+        let file = error.place().and_then(|(path, line, _)| {
+            let uri: lsp::Uri = crate::cli::render::file_uri(path)?.parse().ok()?;
+            Some((uri, line))
+        });
+        if let Some((uri, line)) = file {
+            // The whole line: the column's unit is not the client's.
+            let row = u32::try_from(line.saturating_sub(1)).unwrap_or(u32::MAX);
+            let diagnostic = lsp::Diagnostic {
+                range: lsp::Range::new(lsp::Position::new(row, 0), lsp::Position::new(row + 1, 0)),
+                severity: Some(lsp::DiagnosticSeverity::ERROR),
+                source: Some("sinuprep".to_string()),
+                message: said.clone(),
+                ..lsp::Diagnostic::default()
+            };
+            self.settings_errors.insert(uri.clone());
+            self.publish_on(uri, vec![diagnostic]);
         }
+        format!("the settings cannot be read, so this file is not checked: {said}").into()
     }
 
     fn change(&mut self, params: lsp::DidChangeTextDocumentParams) {
@@ -416,6 +484,28 @@ impl Server<'_> {
                 self.answer_document(request, Waits::Work, |s, p: lsp::HoverParams| {
                     Ok(s.hover(p.text_document_position_params.position))
                 })
+            }
+            r::Completion::METHOD => {
+                let snippets = self.takes.snippets;
+                self.answer_document(
+                    request,
+                    Waits::Analysis,
+                    move |s, p: lsp::CompletionParams| {
+                        let at = p.text_document_position.position;
+                        Ok(lsp::CompletionResponse::Array(s.completion(at, snippets)))
+                    },
+                )
+            }
+            r::SignatureHelpRequest::METHOD => {
+                let offsets = self.takes.label_offsets;
+                self.answer_document(
+                    request,
+                    Waits::Analysis,
+                    move |s, p: lsp::SignatureHelpParams| {
+                        let at = p.text_document_position_params.position;
+                        Ok(s.signature_help(at, offsets))
+                    },
+                )
             }
             r::GotoDefinition::METHOD => self.answer_document(
                 request,
@@ -514,9 +604,8 @@ impl Server<'_> {
         }
     }
 
-    /// The symbols of every open document whose name holds `query` (any
-    /// case), in the documents' order by URI.
-    #[allow(deprecated)] // `SymbolInformation::deprecated` must still be written.
+    /// The workspace's names that hold the query ([`workspace_symbols`]),
+    /// the open documents' in their order by URI.
     fn workspace_symbols(&self, request: Request) -> Option<Answer> {
         let id = request.id.clone();
         let params: lsp::WorkspaceSymbolParams = match serde_json::from_value(request.params) {
@@ -532,25 +621,8 @@ impl Server<'_> {
         let ready = documents.iter().all(|(_, open)| open.held.is_analysed());
         let unit = self.unit;
         self.answer_when(id, None, ready, move || {
-            let query = params.query.to_uppercase();
-            let mut out = Vec::new();
-            for (uri, open) in documents {
-                let symbols = open
-                    .with_snapshot(unit, |s| s.symbols())
-                    .unwrap_or_default();
-                let matching = symbols
-                    .into_iter()
-                    .filter(|symbol| symbol.name.to_uppercase().contains(&query));
-                out.extend(matching.map(|symbol| lsp::SymbolInformation {
-                    name: symbol.name,
-                    kind: symbol.kind,
-                    tags: None,
-                    deprecated: None,
-                    location: lsp::Location::new(uri.clone(), symbol.selection_range),
-                    container_name: None,
-                }));
-            }
-            serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(out))
+            let found = workspace_symbols::find(&documents, &params.query, unit);
+            serde_json::to_value(lsp::WorkspaceSymbolResponse::Flat(found))
                 .map_err(|e| (ErrorCode::InternalError, e.to_string()))
         })
     }
@@ -662,6 +734,37 @@ impl Server<'_> {
 /// few milliseconds; larger ones by the request threads.
 const FORMATTED_HERE: usize = 1 << 20;
 
+/// What a client takes that the protocol leaves optional.
+#[derive(Clone, Copy, Default)]
+struct Takes {
+    /// Completions as snippets (placeholders to fill).
+    snippets: bool,
+    /// A signature's parameters as offsets into its label.
+    label_offsets: bool,
+    /// `workspace/diagnostic/refresh`: asked to pull diagnostics again.
+    diagnostic_refresh: bool,
+}
+
+impl Takes {
+    fn of(capabilities: &lsp::ClientCapabilities) -> Self {
+        let text = capabilities.text_document.as_ref();
+        let completion = text.and_then(|t| t.completion.as_ref()?.completion_item.as_ref());
+        let signature = text.and_then(|t| {
+            let information = t.signature_help.as_ref()?.signature_information.as_ref()?;
+            information.parameter_information.as_ref()
+        });
+        let refresh = capabilities
+            .workspace
+            .as_ref()
+            .and_then(|w| w.diagnostic.as_ref());
+        Self {
+            diagnostic_refresh: refresh.and_then(|d| d.refresh_support) == Some(true),
+            snippets: completion.and_then(|c| c.snippet_support) == Some(true),
+            label_offsets: signature.and_then(|p| p.label_offset_support) == Some(true),
+        }
+    }
+}
+
 /// What answering a request may wait for.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Waits {
@@ -729,6 +832,8 @@ macro_rules! has_document {
 
 has_document! {
     lsp::HoverParams => |p| &p.text_document_position_params.text_document.uri;
+    lsp::CompletionParams => |p| &p.text_document_position.text_document.uri;
+    lsp::SignatureHelpParams => |p| &p.text_document_position_params.text_document.uri;
     lsp::GotoDefinitionParams => |p| &p.text_document_position_params.text_document.uri;
     lsp::ReferenceParams => |p| &p.text_document_position.text_document.uri;
     lsp::DocumentSymbolParams => |p| &p.text_document.uri;

@@ -46,8 +46,9 @@ pub struct Environment {
 /// A subprogram a program can call without defining it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Procedure {
-    /// How many parameters its PROC declares.
-    pub parameters: usize,
+    /// The parameters its PROC declares, each as written (`REAL _X`,
+    /// `VAR INT _N[3]`), for the editor's signature help.
+    pub parameters: Vec<String>,
     /// Its file and the span of the PROC's name in it; `None` for a member
     /// of an archive.
     pub defined: Option<(PathBuf, Span)>,
@@ -312,7 +313,11 @@ impl Environment {
                 if let StatementKind::Proc(proc) = &statement.kind {
                     let name = crate::syntax::tree::upper(proc.name.text(source));
                     let procedure = Procedure {
-                        parameters: proc.parameters.len(),
+                        parameters: proc
+                            .parameters
+                            .iter()
+                            .map(|p| String::from_utf8_lossy(p.span.of(source)).into_owned())
+                            .collect(),
                         defined: file.map(|file| (file.to_path_buf(), proc.name.span)),
                     };
                     Arc::make_mut(&mut self.procedures).insert(name, procedure);
@@ -414,7 +419,7 @@ $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n$MN_AXCONF_LOGIC_MACHAX_TAB[0]=\"NC1_AX1\"
     }
 
     #[test]
-    fn a_cycle_directory_gives_procedures_with_their_parameter_counts() {
+    fn a_cycle_directory_gives_procedures_with_their_parameters() {
         let mut environment = Environment::default();
         environment.read_procedure(
             b";cycle\n\nPROC Align(REAL _A, VAR REAL _B[3], INT _N) SAVE\nM17\n",
@@ -423,12 +428,12 @@ $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n$MN_AXCONF_LOGIC_MACHAX_TAB[0]=\"NC1_AX1\"
         environment.read_procedure(b"PROC NOARGS\nRET\n", None);
         environment.read_procedure(b"N10 G0 X0\nM30\n", None);
         let align = &environment.procedures["ALIGN"];
-        assert_eq!(align.parameters, 3);
+        assert_eq!(align.parameters, ["REAL _A", "VAR REAL _B[3]", "INT _N"]);
         assert_eq!(
             align.defined,
             Some((PathBuf::from("ALIGN.SPF"), Span::new(13, 18)))
         );
-        assert_eq!(environment.procedures["NOARGS"].parameters, 0);
+        assert!(environment.procedures["NOARGS"].parameters.is_empty());
         assert_eq!(environment.procedures.len(), 2);
     }
 }

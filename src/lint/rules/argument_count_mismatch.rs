@@ -69,7 +69,11 @@ impl Check for Checker {
         let procedures = &file.environment.procedures;
         for (name, count, span) in &self.calls {
             // The program's own declarations first, then the cycle directories'.
-            let machine = || procedures.get(name).map(|procedure| procedure.parameters);
+            let machine = || {
+                procedures
+                    .get(name)
+                    .map(|procedure| procedure.parameters.len())
+            };
             let Some(parameters) = self.declared.get(name).copied().or_else(machine) else {
                 // The control's commands and cycles are not looked for.
                 if !is_predefined(name) {
