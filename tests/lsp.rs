@@ -1627,3 +1627,140 @@ fn a_broken_settings_file_is_shown_on_itself() {
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A subprogram's and a GUD variable's references and rename reach every
+/// file of the workspace: the PROC, the calls in programs not open, the
+/// DEF in the definition file; the subprogram's file is renamed with it
+/// (the control calls it by that name), where the editor can rename files.
+#[test]
+fn shared_names_are_found_and_renamed_across_the_workspace() {
+    let dir = scratch("lsp-across");
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).expect(name);
+    write("POCKET.SPF", "PROC POCKET(REAL _D)\nG1 Z=-_D F100\nM17\n");
+    write("DRILL.SPF", "PROC DRILL\nM17\n");
+    write("OTHER.MPF", "G0 X0\nPOCKET(2)\nM30\n");
+    write("GUD7.DEF", "DEF NCK REAL _OFFSET_Z\nM30\n");
+    write("sinuprep.toml", "definitions = [\"GUD7.DEF\"]\n");
+    let uri = |name: &str| format!("file://{}", dir.join(name).display());
+    let main = uri("MAIN.MPF");
+    let renames = json!({ "workspace": { "workspaceEdit": {
+        "documentChanges": true, "resourceOperations": ["create", "rename", "delete"] } } });
+    let (mut client, _) = Client::start(renames);
+    client.open(&main, "POCKET(5)\nG1 Z=_OFFSET_Z F100\nPOCKET(7)\nM30\n");
+
+    let references = |client: &mut Client, line: u32, character: u32, declaration: bool| {
+        let found = client.request(
+            "textDocument/references",
+            json!({ "textDocument": { "uri": main }, "position": { "line": line, "character": character },
+                    "context": { "includeDeclaration": declaration } }),
+        );
+        let mut places: Vec<(String, u64)> = (found.as_array().expect("locations").iter())
+            .map(|l| {
+                let file = l["uri"]
+                    .as_str()
+                    .expect("a uri")
+                    .rsplit('/')
+                    .next()
+                    .expect("a name");
+                (
+                    file.to_string(),
+                    l["range"]["start"]["line"].as_u64().expect("a line"),
+                )
+            })
+            .collect();
+        places.sort();
+        places
+    };
+    let place = |file: &str, line: u64| (file.to_string(), line);
+    assert_eq!(
+        references(&mut client, 0, 2, true),
+        [
+            place("MAIN.MPF", 0),
+            place("MAIN.MPF", 2),
+            place("OTHER.MPF", 1),
+            place("POCKET.SPF", 0)
+        ]
+    );
+    assert_eq!(
+        references(&mut client, 0, 2, false),
+        [
+            place("MAIN.MPF", 0),
+            place("MAIN.MPF", 2),
+            place("OTHER.MPF", 1)
+        ]
+    );
+    assert_eq!(
+        references(&mut client, 1, 8, true),
+        [place("GUD7.DEF", 0), place("MAIN.MPF", 1)]
+    );
+
+    let prepared = client.request("textDocument/prepareRename", at(&main, 0, 2));
+    assert_eq!(
+        prepared["start"],
+        json!({ "line": 0, "character": 0 }),
+        "{prepared}"
+    );
+    let rename = |client: &mut Client, line: u32, character: u32, name: &str| {
+        client.request(
+            "textDocument/rename",
+            json!({ "textDocument": { "uri": main }, "position": { "line": line, "character": character },
+                    "newName": name }),
+        )
+    };
+    let taken = rename(&mut client, 0, 2, "DRILL");
+    assert!(
+        taken["error"]["message"]
+            .as_str()
+            .is_some_and(|m| m.contains("already a name")),
+        "{taken}"
+    );
+    let edit = rename(&mut client, 0, 2, "FACE");
+    let operations = edit["documentChanges"].as_array().expect("operations");
+    let mut edited: Vec<(String, usize)> = operations
+        .iter()
+        .filter(|o| o.get("textDocument").is_some())
+        .map(|o| {
+            let file = o["textDocument"]["uri"]
+                .as_str()
+                .expect("a uri")
+                .rsplit('/')
+                .next()
+                .expect("a name");
+            (file.to_string(), o["edits"].as_array().map_or(0, Vec::len))
+        })
+        .collect();
+    edited.sort();
+    assert_eq!(
+        edited,
+        [
+            ("MAIN.MPF".to_string(), 2),
+            ("OTHER.MPF".to_string(), 1),
+            ("POCKET.SPF".to_string(), 1)
+        ]
+    );
+    let renamed = operations.last().expect("the file renamed");
+    assert_eq!(renamed["kind"], "rename");
+    assert_eq!(renamed["oldUri"], uri("POCKET.SPF").as_str());
+    assert_eq!(renamed["newUri"], uri("FACE.SPF").as_str());
+
+    let edit = rename(&mut client, 1, 8, "_ZERO_Z");
+    let changes = edit["changes"].as_object().expect("changes");
+    assert_eq!(
+        changes[&uri("GUD7.DEF")][0]["range"]["start"],
+        json!({ "line": 0, "character": 13 })
+    );
+    assert_eq!(changes[&main][0]["newText"], "_ZERO_Z");
+    client.stop();
+
+    // An editor that cannot rename files is told which file to rename.
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&main, "POCKET(5)\nM30\n");
+    let refused = rename(&mut client, 0, 2, "FACE");
+    let said = refused["error"]["message"].as_str().expect("refused");
+    assert!(
+        said.contains("cannot rename files") && said.contains("POCKET.SPF"),
+        "{said}"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}

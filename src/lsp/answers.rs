@@ -716,6 +716,9 @@ impl<'a, 't> Snapshot<'a, 't> {
 impl Snapshot<'_, '_> {
     /// The name under the cursor, if it can be renamed here.
     pub fn prepare_rename(&self, position: lsp::Position) -> Result<lsp::Range, String> {
+        if let Some(shared) = self.shared_name(position) {
+            return Ok(self.range(shared.span));
+        }
         let found = self
             .uses()
             .at(self.offset(position))
@@ -725,8 +728,8 @@ impl Snapshot<'_, '_> {
     }
 
     /// Every use of the name under the cursor renamed `new_name`: refused
-    /// for a name defined outside this program (the other files would keep
-    /// the old one), for a block number (renumbering is no rename), for a
+    /// for a name defined outside this program that the programs do not
+    /// share (a shared one is [`Self::rename_across`]'s), for a block number (renumbering is no rename), for a
     /// name the control would not take, and for one this program already
     /// uses for another thing of the same kind.
     pub fn rename(
@@ -740,18 +743,7 @@ impl Snapshot<'_, '_> {
             .at(self.offset(position))
             .ok_or("no name of this program here")?;
         self.renamable(found)?;
-        if !is_user_name(new_name) {
-            return Err(format!(
-                "`{new_name}` is not a name the control takes: up to 31 letters, digits and \
-                 underscores, the first two letters or underscores"
-            ));
-        }
-        if is_language_word(new_name.as_bytes()) || is_machine_axis(new_name.as_bytes()) {
-            return Err(format!(
-                "`{new_name}` is a word of the language (a keyword, function, command, cycle \
-                 or machine axis), not a name the control takes for a user's"
-            ));
-        }
+        refuse_new_name(new_name)?;
         let upper = new_name.to_ascii_uppercase();
         if upper != found.name
             && self
@@ -893,6 +885,23 @@ impl Snapshot<'_, '_> {
 /// A name the control takes for a variable or a label: 2 to 31 characters,
 /// letters, digits and underscores, the first two letters or underscores
 /// (Programming Manual Fundamentals, "Variables": user-defined names).
+/// Why `new_name` cannot be a user's name, if it cannot.
+pub(super) fn refuse_new_name(new_name: &str) -> Result<(), String> {
+    if !is_user_name(new_name) {
+        return Err(format!(
+            "`{new_name}` is not a name the control takes: up to 31 letters, digits and \
+             underscores, the first two letters or underscores"
+        ));
+    }
+    if is_language_word(new_name.as_bytes()) || is_machine_axis(new_name.as_bytes()) {
+        return Err(format!(
+            "`{new_name}` is a word of the language (a keyword, function, command, cycle \
+             or machine axis), not a name the control takes for a user's"
+        ));
+    }
+    Ok(())
+}
+
 fn is_user_name(name: &str) -> bool {
     let bytes = name.as_bytes();
     (2..=31).contains(&bytes.len())

@@ -13,6 +13,7 @@
 // read only its text, so it is a sound key.
 #![allow(clippy::mutable_key_type)]
 
+mod across_files;
 mod answers;
 mod completion;
 mod convert;
@@ -24,6 +25,7 @@ mod signature;
 mod transport;
 mod worker;
 mod workspace_symbols;
+mod workspace_uses;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
@@ -327,15 +329,7 @@ impl Server<'_> {
     /// Reads the settings of every open document again, the open
     /// documents' unsaved text in place of their files, and reports anew.
     fn refresh_settings(&mut self) {
-        let buffers = self
-            .documents
-            .iter()
-            .filter_map(|(uri, open)| {
-                let path = convert::path(uri)?;
-                Some((path, std::sync::Arc::from(open.held.text().bytes())))
-            })
-            .collect();
-        self.workspace = Workspace::with_buffers(Given::default(), buffers);
+        self.workspace = Workspace::with_buffers(Given::default(), self.buffers());
         let published = std::mem::take(&mut self.settings_errors);
         let open: Vec<(lsp::Uri, Held)> = self
             .documents
@@ -355,6 +349,17 @@ impl Server<'_> {
             let method = lsp::request::WorkspaceDiagnosticRefresh::METHOD.to_string();
             self.send(Message::Request(Request::new(id.into(), method, ())));
         }
+    }
+
+    /// The open documents' texts by path, in place of their files.
+    fn buffers(&self) -> workspace_uses::Buffers {
+        self.documents
+            .iter()
+            .filter_map(|(uri, open)| {
+                let path = convert::path(uri)?;
+                Some((path, Arc::from(open.held.text().bytes())))
+            })
+            .collect()
     }
 
     /// Pushes `diagnostics` for `uri` from here (a file the worker does not
@@ -515,11 +520,19 @@ impl Server<'_> {
                     Ok(s.definition(&at.text_document.uri, at.position))
                 },
             ),
+            // A shared name's references and rename read the workspace's
+            // other files.
             r::References::METHOD => {
-                self.answer_document(request, Waits::Analysis, |s, p: lsp::ReferenceParams| {
-                    let at = p.text_document_position;
+                let buffers = self.buffers();
+                self.answer_document(request, Waits::Work, move |s, p: lsp::ReferenceParams| {
+                    let (uri, at) = (
+                        &p.text_document_position.text_document.uri,
+                        p.text_document_position.position,
+                    );
                     let with_declaration = p.context.include_declaration;
-                    Ok(s.references(&at.text_document.uri, at.position, with_declaration))
+                    let mut found = s.references(uri, at, with_declaration);
+                    found.extend(s.references_elsewhere(uri, at, with_declaration, &buffers));
+                    Ok(found)
                 })
             }
             r::DocumentSymbolRequest::METHOD => self.answer_document(
@@ -585,9 +598,17 @@ impl Server<'_> {
                 },
             ),
             r::Rename::METHOD => {
-                self.answer_document(request, Waits::Analysis, |s, p: lsp::RenameParams| {
-                    let at = p.text_document_position;
-                    s.rename(&at.text_document.uri, at.position, &p.new_name)
+                let buffers = self.buffers();
+                let renames_files = self.takes.file_renames;
+                self.answer_document(request, Waits::Work, move |s, p: lsp::RenameParams| {
+                    let (uri, at) = (
+                        &p.text_document_position.text_document.uri,
+                        p.text_document_position.position,
+                    );
+                    match s.shared_name(at) {
+                        Some(_) => s.rename_across(uri, at, &p.new_name, &buffers, renames_files),
+                        None => s.rename(uri, at, &p.new_name),
+                    }
                 })
             }
             r::Formatting::METHOD => self.format(request, |p: lsp::DocumentFormattingParams| {
@@ -743,6 +764,8 @@ struct Takes {
     label_offsets: bool,
     /// `workspace/diagnostic/refresh`: asked to pull diagnostics again.
     diagnostic_refresh: bool,
+    /// A workspace edit that renames a file.
+    file_renames: bool,
 }
 
 impl Takes {
@@ -757,7 +780,17 @@ impl Takes {
             .workspace
             .as_ref()
             .and_then(|w| w.diagnostic.as_ref());
+        let edits = capabilities
+            .workspace
+            .as_ref()
+            .and_then(|w| w.workspace_edit.as_ref());
+        let file_renames = edits.is_some_and(|e| {
+            e.document_changes == Some(true)
+                && (e.resource_operations.iter().flatten())
+                    .any(|op| *op == lsp::ResourceOperationKind::Rename)
+        });
         Self {
+            file_renames,
             diagnostic_refresh: refresh.and_then(|d| d.refresh_support) == Some(true),
             snippets: completion.and_then(|c| c.snippet_support) == Some(true),
             label_offsets: signature.and_then(|p| p.label_offset_support) == Some(true),
@@ -770,8 +803,9 @@ impl Takes {
 enum Waits {
     /// Only the document's analysis.
     Analysis,
-    /// Work of its own as long as the program: a hover's walk, the
-    /// classes of every word.
+    /// Work of its own as long as the program, or through other files: a
+    /// hover's walk, the classes of every word, a shared name's uses in
+    /// the workspace.
     Work,
 }
 
