@@ -2080,7 +2080,7 @@ fn statistics_count_the_findings_of_each_rule() {
     assert_exit(&output, 1);
     assert_eq!(
         stdout(&output),
-        "3\tN001\t[ ] undefined-label\n3\tN099\t[*] unused-suppression\n2\tN005\t[ ] undefined-variable\n"
+        "4\tN001\t[ ] undefined-label\n3\tN099\t[*] unused-suppression\n2\tN005\t[ ] undefined-variable\n"
     );
     let output = run(
         &[&["check", "--statistics", "--format", "json"][..], &files].concat(),
@@ -2088,7 +2088,7 @@ fn statistics_count_the_findings_of_each_rule() {
     );
     let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON");
     assert_eq!(json[0]["code"], "N001");
-    assert_eq!(json[0]["count"], 3);
+    assert_eq!(json[0]["count"], 4);
     assert_eq!(json[1]["fixable"], true);
 }
 
