@@ -614,7 +614,7 @@ fn emacs_shows_the_findings_and_a_hover() {
 #[test]
 fn a_client_that_pulls_diagnostics_gets_them_once() {
     let capabilities = json!({ "textDocument": { "diagnostic": { "dynamicRegistration": false } },
-                               "workspace": { "diagnostic": { "refreshSupport": true } } });
+                               "workspace": { "diagnostics": { "refreshSupport": true } } });
     let (mut client, initialized) = Client::start(capabilities);
     assert_eq!(
         initialized["capabilities"]["diagnosticProvider"]["interFileDependencies"],
@@ -1444,6 +1444,9 @@ STOP
 G1 Z=-_DE ; GOTOF 
 LATER:
 cycle80
+AGAIN: R1=R1+1 GOTOB 
+REPEAT 
+GOTOB LAxx
 M30
 ";
 
@@ -1462,8 +1465,22 @@ fn completion_offers_what_may_stand_there() {
     );
     client.open(URI, JUMPS);
 
-    assert_eq!(labels(&completed(&mut client, URI, 4, 6)), ["LATER"]);
+    assert_eq!(
+        labels(&completed(&mut client, URI, 4, 6)),
+        ["LATER", "AGAIN"]
+    );
     assert_eq!(labels(&completed(&mut client, URI, 5, 6)), ["START"]);
+    // A GOTOB finds a label on its own line; a REPEAT those above it.
+    let back = ["START", "LATER", "AGAIN"];
+    assert_eq!(labels(&completed(&mut client, URI, 10, 21)), back);
+    assert_eq!(labels(&completed(&mut client, URI, 11, 7)), back);
+    // In the middle of a word, the item replaces all of it.
+    let inside = completed(&mut client, URI, 12, 8);
+    assert_eq!(labels(&inside), ["LATER"]);
+    assert_eq!(
+        inside[0]["textEdit"]["range"],
+        json!({ "start": { "line": 12, "character": 6 }, "end": { "line": 12, "character": 10 } })
+    );
 
     let system = completed(&mut client, URI, 3, 7);
     assert!(labels(&system).contains(&"$P_UIFR"), "{system:?}");
@@ -1552,9 +1569,11 @@ fn signature_help_names_the_parameter_being_written() {
     let [start, end] = [0, 1].map(|i| third["label"][i].as_u64().expect("an offset") as usize);
     assert_eq!(&label[start..end], "_ST");
     assert!(third["documentation"].as_str().is_some(), "{third}");
-    // Inside SIN( the cycle is still the call shown.
+    // Inside SIN( the cycle is still the call shown, and inside a string.
     let inside = help(&mut client, 1, 22);
     assert_eq!(inside["activeParameter"], 2);
+    let in_string = help(&mut client, 1, 13);
+    assert_eq!(in_string["activeParameter"], 1);
 
     let own = help(&mut client, 2, 8);
     assert_eq!(own["signatures"][0]["label"], "MAIN(REAL _A, STRING[8] _B)");

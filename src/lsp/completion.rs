@@ -8,15 +8,15 @@
 
 use lsp_types as lsp;
 
-use crate::semantic::cycles;
+use std::collections::HashSet;
+
 use crate::semantic::functions::{g_function, m_function, system_variable};
 use crate::semantic::uses::{Namespace, Role};
 use crate::semantic::vocabulary::{self, Kind};
-use crate::span::{ColumnUnit, Span};
+use crate::semantic::{cycles, jumps};
 use crate::syntax::tree::GotoKind;
 
 use super::answers::Snapshot;
-use super::cursor;
 
 /// How the items sort before the client's own ranking by the typed word:
 /// the program's own names first, the control's last.
@@ -32,24 +32,22 @@ impl Snapshot<'_, '_> {
     /// The completions at `position`; `snippets`: the client inserts
     /// snippets (a cycle's parameters as placeholders).
     pub fn completion(&self, position: lsp::Position, snippets: bool) -> Vec<lsp::CompletionItem> {
-        let at = self.offset(position);
-        let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
-        let line_start = self.model.lines.raw(row).content.start;
-        let source = self.text.bytes();
-        let before = cursor::read(&source[line_start..at.max(line_start)]);
-        if before.in_text {
+        let cursor = self.cursor(position);
+        let before = &cursor.before;
+        if before.in_comment_or_string {
             return Vec::new();
         }
-        let typed = Span::new(line_start + before.word_start, at);
+        // The item replaces the whole word, the part after the cursor too.
         let mut items = Items {
             typed: before.word,
-            range: self.range(typed),
+            range: self.range(cursor.word),
             lower: before.word.iter().any(u8::is_ascii_alphabetic)
                 && !before.word.iter().any(u8::is_ascii_uppercase),
+            seen: HashSet::new(),
             out: Vec::new(),
         };
-        if let Some(jump) = before.previous.and_then(jump_kind) {
-            self.labels(&mut items, row, jump);
+        if let Some(search) = before.previous.and_then(label_search) {
+            self.labels(&mut items, cursor.row, search);
         } else if before.word.first() == Some(&b'$') {
             system_variables(&mut items);
         } else {
@@ -59,15 +57,19 @@ impl Snapshot<'_, '_> {
         items.out
     }
 
-    /// The labels a jump of `kind` on line `row` can reach.
-    fn labels(&self, items: &mut Items, row: usize, kind: GotoKind) {
-        let reaches = |label_row: usize| match kind {
-            GotoKind::Forward => label_row > row,
-            GotoKind::Backward => label_row < row,
-            _ => true,
+    /// The labels a word searching as `search` does on line `row` finds,
+    /// each once (the first it would land on).
+    fn labels(&self, items: &mut Items, row: usize, search: Search) {
+        let finds = |label: usize| match search {
+            Search::Jump(kind) => jumps::reaches(kind, label, row),
+            // A REPEAT searches from the line before it.
+            Search::Repeat => label < row,
         };
         let labels = self.uses().all().iter().filter(|u| {
-            u.namespace == Namespace::Label && u.role == Role::Defines && reaches(u.row)
+            u.namespace == Namespace::Label
+                && u.role == Role::Defines
+                && !is_block_number(&u.name)
+                && finds(u.row)
         });
         for label in labels {
             let written = label.span.of(self.text.bytes());
@@ -80,15 +82,12 @@ impl Snapshot<'_, '_> {
     /// holds outside it: GUD variables, macros, subprograms, axes.
     fn names(&self, items: &mut Items) {
         let source = self.text.bytes();
-        let mut seen = std::collections::HashSet::new();
         for symbol in self.model.symbols.iter() {
-            if seen.insert(&symbol.name) {
-                let what = if symbol.parameter { "parameter" } else { "DEF" };
-                let written = String::from_utf8_lossy(symbol.data_type.span.of(source));
-                let detail = format!("{what} {written}, line {}", symbol.row + 1);
-                let kind = lsp::CompletionItemKind::VARIABLE;
-                items.own(symbol.span.of(source), kind, detail);
-            }
+            let what = if symbol.parameter { "parameter" } else { "DEF" };
+            let written = String::from_utf8_lossy(symbol.data_type.span.of(source));
+            let detail = format!("{what} {written}, line {}", symbol.row + 1);
+            let kind = lsp::CompletionItemKind::VARIABLE;
+            items.own(symbol.span.of(source), kind, detail);
         }
         let environment = &self.settings.environment;
         for name in &environment.variables {
@@ -99,7 +98,10 @@ impl Snapshot<'_, '_> {
             let detail = format!("macro: {}", expansion.text);
             items.own(name.as_bytes(), lsp::CompletionItemKind::CONSTANT, detail);
         }
-        for (name, procedure) in environment.procedures.iter() {
+        // A cycle is offered with its parameters, below.
+        let subprograms = (environment.procedures.iter())
+            .filter(|(name, _)| cycles::cycle(name.as_bytes()).is_none());
+        for (name, procedure) in subprograms {
             let detail = format!("subprogram ({})", procedure.parameters.join(", "));
             items.own(name.as_bytes(), lsp::CompletionItemKind::FUNCTION, detail);
         }
@@ -110,18 +112,32 @@ impl Snapshot<'_, '_> {
     }
 }
 
-/// What a jump word searches.
-fn jump_kind(word: &[u8]) -> Option<GotoKind> {
-    let kinds = [
-        ("GOTOF", GotoKind::Forward),
-        ("GOTOB", GotoKind::Backward),
-        ("GOTO", GotoKind::Both),
-        ("GOTOC", GotoKind::Conditional),
+/// How the word before a label searches for it.
+#[derive(Clone, Copy)]
+enum Search {
+    Jump(GotoKind),
+    Repeat,
+}
+
+/// How the word `before` searches the label after it, if it names one.
+fn label_search(before: &[u8]) -> Option<Search> {
+    let words = [
+        ("GOTOF", Search::Jump(GotoKind::Forward)),
+        ("GOTOB", Search::Jump(GotoKind::Backward)),
+        ("GOTO", Search::Jump(GotoKind::Both)),
+        ("GOTOC", Search::Jump(GotoKind::Conditional)),
+        ("REPEAT", Search::Repeat),
     ];
-    kinds
+    words
         .into_iter()
-        .find(|(name, _)| name.as_bytes().eq_ignore_ascii_case(word))
-        .map(|(_, kind)| kind)
+        .find(|(name, _)| name.as_bytes().eq_ignore_ascii_case(before))
+        .map(|(_, search)| search)
+}
+
+/// `N100`: a block number, which completion does not offer (a jump names
+/// a label far more often, and every block may have one).
+fn is_block_number(name: &str) -> bool {
+    name.len() > 1 && name.starts_with('N') && name[1..].bytes().all(|b| b.is_ascii_digit())
 }
 
 /// The language's words, G and M functions and cycles.
@@ -194,6 +210,8 @@ struct Items<'l> {
     range: lsp::Range,
     /// The word is typed in lower case: the language's words are offered so.
     lower: bool,
+    /// The labels offered so far: a name is offered once, its first.
+    seen: HashSet<String>,
     out: Vec<lsp::CompletionItem>,
 }
 
@@ -285,6 +303,9 @@ impl Items<'_> {
         documentation: Option<lsp::Documentation>,
         rank: &str,
     ) {
+        if !self.seen.insert(label.to_ascii_uppercase()) {
+            return;
+        }
         self.out.push(lsp::CompletionItem {
             sort_text: Some(format!("{rank}{label}")),
             filter_text: Some(label.clone()),

@@ -1,21 +1,56 @@
 //! What the text of a line before the cursor says about what is being
 //! typed: the word under way, the word before it, and the calls whose
 //! argument lists are open. Read from the bytes themselves, not from the
-//! parse: a line being typed is seldom a valid block yet.
+//! parse: a line being typed is seldom a valid block yet. What it reads is
+//! the line alone (an NC block is one line): strings in `"` or `'` (a
+//! `'H..'` constant reads as one), `;` comments, brackets; the rest of the
+//! language is the parser's.
+
+use lsp_types as lsp;
+
+use super::answers::Snapshot;
+use crate::span::{ColumnUnit, Span};
 
 /// The line before the cursor, read.
 #[derive(Debug, PartialEq, Eq)]
 pub struct Before<'l> {
     /// The cursor is in a comment or a string: nothing is completed there.
-    pub in_text: bool,
+    pub in_comment_or_string: bool,
     /// Where the word being typed starts, from the line's start.
     pub word_start: usize,
     /// The word being typed (empty right after a space or a bracket).
     pub word: &'l [u8],
     /// The word before it, with only blanks between.
     pub previous: Option<&'l [u8]>,
-    /// The calls whose argument lists are open, the innermost first.
+    /// The calls whose argument lists are open, the innermost first (in a
+    /// string too: an argument may be one).
     pub calls: Vec<OpenCall<'l>>,
+}
+
+/// Where the cursor is and what the line before it says.
+pub struct Cursor<'l> {
+    /// The line's 0-based row.
+    pub row: usize,
+    /// The word being typed, to its end (after the cursor too).
+    pub word: Span,
+    pub before: Before<'l>,
+}
+
+impl<'a, 't> Snapshot<'a, 't> {
+    /// The cursor at `position`, read.
+    pub(super) fn cursor(&self, position: lsp::Position) -> Cursor<'t> {
+        let at = self.offset(position);
+        let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
+        let line = self.model.lines.raw(row).content;
+        let source: &'t [u8] = self.text.bytes();
+        let at = at.clamp(line.start, line.end);
+        let before = read(&source[line.start..at]);
+        let rest = source[at..line.end]
+            .iter()
+            .take_while(|&&b| is_word_byte(b));
+        let word = Span::new(line.start + before.word_start, at + rest.count());
+        Cursor { row, word, before }
+    }
 }
 
 /// A call whose argument list the cursor is in.
@@ -43,7 +78,7 @@ pub fn read(line: &[u8]) -> Before<'_> {
             (Some(q), _) if byte == q => quote = None,
             (Some(_), _) => {}
             (None, b'"' | b'\'') => quote = Some(byte),
-            (None, b';') => return in_text(line),
+            (None, b';') => return in_comment(line),
             (None, b'(' | b'[') => {
                 let name = match byte {
                     b'(' => word_ending(line, trim_end(line, at)).1,
@@ -62,9 +97,6 @@ pub fn read(line: &[u8]) -> Before<'_> {
             _ => {}
         }
     }
-    if quote.is_some() {
-        return in_text(line);
-    }
     let (word_start, word) = word_ending(line, line.len());
     let before_word = trim_end(line, word_start);
     let previous = Some(word_ending(line, before_word).1)
@@ -76,7 +108,7 @@ pub fn read(line: &[u8]) -> Before<'_> {
         .map(|(name, argument)| OpenCall { name, argument })
         .collect();
     Before {
-        in_text: false,
+        in_comment_or_string: quote.is_some(),
         word_start,
         word,
         previous,
@@ -84,9 +116,9 @@ pub fn read(line: &[u8]) -> Before<'_> {
     }
 }
 
-fn in_text(line: &[u8]) -> Before<'_> {
+fn in_comment(line: &[u8]) -> Before<'_> {
     Before {
-        in_text: true,
+        in_comment_or_string: true,
         word_start: line.len(),
         word: &[],
         previous: None,
@@ -118,7 +150,7 @@ mod tests {
     #[test]
     fn the_word_under_way_and_the_one_before() {
         let before = read(b"N10 GOTOF  LA");
-        assert!(!before.in_text);
+        assert!(!before.in_comment_or_string);
         assert_eq!((before.word_start, before.word), (11, &b"LA"[..]));
         assert_eq!(before.previous, Some(&b"GOTOF"[..]));
         let before = read(b"R1=$P_U");
@@ -148,8 +180,12 @@ mod tests {
 
     #[test]
     fn comments_and_strings_are_text() {
-        assert!(read(b"G1 X1 ; GOTOF LA").in_text);
-        assert!(read(b"MSG(\"GOTOF ").in_text);
-        assert!(!read(b"MSG(\"a;b\") GOTOF ").in_text);
+        assert!(read(b"G1 X1 ; GOTOF LA").in_comment_or_string);
+        assert!(read(b"G1 X1 ; CYCLE800(").calls.is_empty());
+        assert!(!read(b"MSG(\"a;b\") GOTOF ").in_comment_or_string);
+        // In a string argument, its call is still open.
+        let before = read(b"CYCLE800(1,\"TC");
+        assert!(before.in_comment_or_string);
+        assert_eq!(before.calls[0].argument, 1);
     }
 }

@@ -53,9 +53,10 @@ pub fn run() -> Result<(), String> {
 }
 
 fn serve(connection: &Connection) -> Result<(), String> {
-    let (id, params) = connection.initialize_start().map_err(|e| e.to_string())?;
+    let (id, raw) = connection.initialize_start().map_err(|e| e.to_string())?;
+    let supports = ClientSupports::of(&raw);
     let params: lsp::InitializeParams =
-        serde_json::from_value(params).map_err(|e| format!("initialize: {e}"))?;
+        serde_json::from_value(raw).map_err(|e| format!("initialize: {e}"))?;
     let (encoding, unit) = convert::encoding(&params.capabilities);
     // A client that asks for diagnostics is answered, not also pushed to:
     // it would show each finding twice.
@@ -64,7 +65,6 @@ fn serve(connection: &Connection) -> Result<(), String> {
         .text_document
         .as_ref()
         .is_some_and(|text| text.diagnostic.is_some());
-    let takes = Takes::of(&params.capabilities);
     let capabilities = lsp::ServerCapabilities {
         position_encoding: Some(encoding),
         text_document_sync: Some(lsp::TextDocumentSyncCapability::Options(
@@ -143,7 +143,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         refreshes: 0,
         unit,
         pull,
-        takes,
+        supports,
         worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),
         requests: requests::Requests::start(connection.sender.clone()),
     };
@@ -245,7 +245,7 @@ struct Server<'c> {
     /// The client pulls diagnostics (`textDocument/diagnostic`).
     pull: bool,
     /// What the client takes beyond the protocol's minimum.
-    takes: Takes,
+    supports: ClientSupports,
     /// The files a settings error was published on (a broken
     /// sinuprep.toml): cleared when the settings read again.
     settings_errors: HashSet<lsp::Uri>,
@@ -340,10 +340,12 @@ impl Server<'_> {
             self.open(uri, held);
         }
         for mended in published.difference(&self.settings_errors) {
-            self.publish_on(mended.clone(), Vec::new());
+            if !self.documents.contains_key(mended) {
+                self.publish_on(mended.clone(), Vec::new());
+            }
         }
         // A client that pulls asks again, where it lets the server say so.
-        if self.pull && self.takes.diagnostic_refresh {
+        if self.pull && self.supports.diagnostic_refresh {
             self.refreshes += 1;
             let id = format!("sinuprep-refresh-{}", self.refreshes);
             let method = lsp::request::WorkspaceDiagnosticRefresh::METHOD.to_string();
@@ -411,8 +413,11 @@ impl Server<'_> {
                 message: said.clone(),
                 ..lsp::Diagnostic::default()
             };
-            self.settings_errors.insert(uri.clone());
-            self.publish_on(uri, vec![diagnostic]);
+            // Once a reading, and not on an open document: its own findings
+            // (this error) are the worker's to publish.
+            if !self.documents.contains_key(&uri) && self.settings_errors.insert(uri.clone()) {
+                self.publish_on(uri, vec![diagnostic]);
+            }
         }
         format!("the settings cannot be read, so this file is not checked: {said}").into()
     }
@@ -490,22 +495,20 @@ impl Server<'_> {
                     Ok(s.hover(p.text_document_position_params.position))
                 })
             }
+            // Completion and signature help read the table of uses, made
+            // once a version over the whole program: off the main loop.
             r::Completion::METHOD => {
-                let snippets = self.takes.snippets;
-                self.answer_document(
-                    request,
-                    Waits::Analysis,
-                    move |s, p: lsp::CompletionParams| {
-                        let at = p.text_document_position.position;
-                        Ok(lsp::CompletionResponse::Array(s.completion(at, snippets)))
-                    },
-                )
+                let snippets = self.supports.snippets;
+                self.answer_document(request, Waits::Work, move |s, p: lsp::CompletionParams| {
+                    let at = p.text_document_position.position;
+                    Ok(lsp::CompletionResponse::Array(s.completion(at, snippets)))
+                })
             }
             r::SignatureHelpRequest::METHOD => {
-                let offsets = self.takes.label_offsets;
+                let offsets = self.supports.label_offsets;
                 self.answer_document(
                     request,
-                    Waits::Analysis,
+                    Waits::Work,
                     move |s, p: lsp::SignatureHelpParams| {
                         let at = p.text_document_position_params.position;
                         Ok(s.signature_help(at, offsets))
@@ -599,7 +602,7 @@ impl Server<'_> {
             ),
             r::Rename::METHOD => {
                 let buffers = self.buffers();
-                let renames_files = self.takes.file_renames;
+                let renames_files = self.supports.file_renames;
                 self.answer_document(request, Waits::Work, move |s, p: lsp::RenameParams| {
                     let (uri, at) = (
                         &p.text_document_position.text_document.uri,
@@ -757,7 +760,7 @@ const FORMATTED_HERE: usize = 1 << 20;
 
 /// What a client takes that the protocol leaves optional.
 #[derive(Clone, Copy, Default)]
-struct Takes {
+struct ClientSupports {
     /// Completions as snippets (placeholders to fill).
     snippets: bool,
     /// A signature's parameters as offsets into its label.
@@ -768,32 +771,25 @@ struct Takes {
     file_renames: bool,
 }
 
-impl Takes {
-    fn of(capabilities: &lsp::ClientCapabilities) -> Self {
-        let text = capabilities.text_document.as_ref();
-        let completion = text.and_then(|t| t.completion.as_ref()?.completion_item.as_ref());
-        let signature = text.and_then(|t| {
-            let information = t.signature_help.as_ref()?.signature_information.as_ref()?;
-            information.parameter_information.as_ref()
-        });
-        let refresh = capabilities
-            .workspace
-            .as_ref()
-            .and_then(|w| w.diagnostic.as_ref());
-        let edits = capabilities
-            .workspace
-            .as_ref()
-            .and_then(|w| w.workspace_edit.as_ref());
-        let file_renames = edits.is_some_and(|e| {
-            e.document_changes == Some(true)
-                && (e.resource_operations.iter().flatten())
-                    .any(|op| *op == lsp::ResourceOperationKind::Rename)
-        });
+impl ClientSupports {
+    /// Read from the `initialize` request's parameters as sent: lsp-types
+    /// reads `workspace.diagnostic`, where the protocol (3.17) and the
+    /// clients write `workspace.diagnostics`.
+    fn of(initialize: &serde_json::Value) -> Self {
+        let capabilities = &initialize["capabilities"];
+        let text = &capabilities["textDocument"];
+        let workspace = &capabilities["workspace"];
+        let yes = |value: &serde_json::Value| value == &serde_json::Value::Bool(true);
+        let edit = &workspace["workspaceEdit"];
+        let operations = edit["resourceOperations"].as_array();
         Self {
-            file_renames,
-            diagnostic_refresh: refresh.and_then(|d| d.refresh_support) == Some(true),
-            snippets: completion.and_then(|c| c.snippet_support) == Some(true),
-            label_offsets: signature.and_then(|p| p.label_offset_support) == Some(true),
+            snippets: yes(&text["completion"]["completionItem"]["snippetSupport"]),
+            label_offsets: yes(&text["signatureHelp"]["signatureInformation"]
+                ["parameterInformation"]["labelOffsetSupport"]),
+            diagnostic_refresh: yes(&workspace["diagnostics"]["refreshSupport"])
+                || yes(&workspace["diagnostic"]["refreshSupport"]),
+            file_renames: yes(&edit["documentChanges"])
+                && operations.is_some_and(|o| o.iter().any(|op| op == "rename")),
         }
     }
 }

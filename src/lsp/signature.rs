@@ -12,7 +12,6 @@ use crate::span::ColumnUnit;
 use crate::syntax::tree::{upper, StatementKind};
 
 use super::answers::Snapshot;
-use super::cursor;
 
 impl Snapshot<'_, '_> {
     /// The signature of the call the cursor at `position` is in; its
@@ -23,11 +22,8 @@ impl Snapshot<'_, '_> {
         position: lsp::Position,
         offsets: bool,
     ) -> Option<lsp::SignatureHelp> {
-        let at = self.offset(position);
-        let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
-        let line_start = self.model.lines.raw(row).content.start;
-        let before = cursor::read(&self.text.bytes()[line_start..at.max(line_start)]);
-        before.calls.iter().find_map(|call| {
+        let cursor = self.cursor(position);
+        cursor.before.calls.iter().find_map(|call| {
             let name = upper(call.name);
             let (signature, argument) = match cycles::cycle(call.name) {
                 Some(cycle) => (self.of_cycle(cycle, offsets), call.argument),

@@ -181,18 +181,23 @@ impl Line<'_> {
         if start == letters && (word.len() == 1 || !is_name_start(word[1])) {
             return self.address(start, first_word);
         }
+        let found = self.uses.at(start).filter(|u| u.span.start == start);
         let class = if self.is_macro(start) {
             Class::Macro
         } else if start < letters {
             Class::SystemVariable
-        } else if !is_one_of(word, RESERVED) && is_language_word(word) {
+        } else if !is_one_of(word, RESERVED)
+            && is_language_word(word)
+            && found.is_none_or(|u| u.namespace == Namespace::Variable)
+        {
             // The control's own: a command (STOPRE, SUPA) or a function;
-            // never a user's variable, whatever the walk makes of it.
+            // never a user's variable, whatever the walk makes of it (a
+            // user's PROC named CYCLE123 stays a call).
             match self.next_non_blank(end) == Some(b'(') {
                 true => Class::Function,
                 false => Class::Keyword,
             }
-        } else if let Some(found) = self.uses.at(start).filter(|u| u.span.start == start) {
+        } else if let Some(found) = found {
             match found.namespace {
                 Namespace::Label => Class::Label,
                 Namespace::Subprogram => Class::Function,

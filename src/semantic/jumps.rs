@@ -46,11 +46,24 @@ pub(crate) fn named_number(source: &[u8], target: Option<&GotoTarget>, named: &m
     }
 }
 
+/// Whether a jump of `kind` on line `from` can land on line `row`: GOTOF
+/// searches the lines after it, GOTOB its own and those before, GOTO and
+/// GOTOC both ways.
+pub(crate) fn reaches(kind: GotoKind, row: usize, from: usize) -> bool {
+    match kind {
+        GotoKind::Forward => row > from,
+        GotoKind::Backward => row <= from,
+        GotoKind::Both | GotoKind::Conditional => true,
+        GotoKind::Start => row == 0,
+    }
+}
+
 /// The line a search of `kind` from line `from` finds among `rows` (the
 /// lines holding the target, in order).
 pub(crate) fn search(rows: &[usize], kind: GotoKind, from: usize) -> Option<usize> {
-    let forward = || rows.iter().copied().find(|&row| row > from);
-    let backward = || rows.iter().copied().rev().find(|&row| row <= from);
+    let forward = || (rows.iter().copied()).find(|&row| reaches(GotoKind::Forward, row, from));
+    let backward =
+        || (rows.iter().copied().rev()).find(|&row| reaches(GotoKind::Backward, row, from));
     match kind {
         GotoKind::Forward => forward(),
         GotoKind::Backward => backward(),

@@ -3,6 +3,7 @@
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, JumpAt, Sees, StatementAt};
 use crate::lint::rules::support::*;
+use crate::semantic::jumps;
 use crate::span::Span;
 use crate::suggest::Nearest;
 use crate::syntax::tree::{GotoKind, StatementKind};
@@ -46,7 +47,7 @@ struct Jump {
     tolerant: bool,
     /// A label a REPEAT names, not a GOTO's.
     repeat: bool,
-    /// Its line, and the way it searches.
+    /// Its line, and how it searches (a REPEAT's labels: both ways).
     row: usize,
     kind: GotoKind,
 }
@@ -104,15 +105,10 @@ impl Check for Checker {
                 file.labels().names().for_each(|name| nearest.push(&name));
                 nearest
             });
-            // Only a label the jump finds: a GOTOF searches below it, a
-            // GOTOB above.
+            // Only a label the jump finds, searching as it searches.
             let reaches = |name: &str| {
                 let mut rows = file.labels().rows(name);
-                match kind {
-                    GotoKind::Forward => rows.any(|r| r > *row),
-                    GotoKind::Backward => rows.any(|r| r < *row),
-                    _ => true,
-                }
+                rows.any(|label| jumps::reaches(*kind, label, *row))
             };
             let meant = names.closest_where(&wanted, 2, reaches).map(str::to_string);
             let help = match &meant {
