@@ -5,8 +5,9 @@
 //! the minimum, median and maximum of: an incremental change to its
 //! diagnostics published, then a hover on a variable (whose values at its
 //! uses the first hover on it in a version walks the program for) and one
-//! on another use of it, a hover on the CYCLE600 answered, the document's
-//! symbols answered.
+//! on another use of it, a label completion after a jump (the labels it
+//! reaches), a hover on the CYCLE600 answered, a word's completion and the
+//! signature help inside the CYCLE600, the document's symbols answered.
 //!
 //! Then the large programs an editor may be given (size in MB:
 //! `SINUPREP_BENCH_LSP_MB`, default 100): a CAM program opened while a
@@ -94,6 +95,7 @@ fn main() {
     let mut changes = Vec::new();
     let mut first_hovers = Vec::new();
     let mut next_hovers = Vec::new();
+    let mut label_completions = Vec::new();
     // `_Z=_Z-_STEP` in the first pocket: the variable read, then written.
     let variable = |character: u32| json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": character } });
     for round in 0..ROUNDS {
@@ -124,10 +126,18 @@ fn main() {
         let asked = Instant::now();
         client.request("textDocument/hover", variable(0));
         next_hovers.push(asked.elapsed().as_secs_f64());
+        // `IF _COUNT<3 GOTOB P` in the first pocket: the labels it reaches.
+        let asked = Instant::now();
+        client.request(
+            "textDocument/completion",
+            json!({ "textDocument": { "uri": URI }, "position": { "line": 13, "character": 19 } }),
+        );
+        label_completions.push(asked.elapsed().as_secs_f64());
     }
     figures("change to diagnostics", changes);
     figures("variable hover, first of the version", first_hovers);
     figures("variable hover, another use of it", next_hovers);
+    figures("label completion after a hover", label_completions);
     let timed = |client: &mut Client, method: &str, params: Value| {
         (0..ROUNDS)
             .map(|_| {
@@ -142,6 +152,17 @@ fn main() {
     figures(
         "hover on the CYCLE600",
         timed(&mut client, "textDocument/hover", at),
+    );
+    // `_Z=_Z-_S`: a variable, the language's words, the cycles.
+    let word = json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": 8 } });
+    figures(
+        "completion of a word",
+        timed(&mut client, "textDocument/completion", word),
+    );
+    let inside = json!({ "textDocument": { "uri": URI }, "position": { "line": cycle600, "character": 30 } });
+    figures(
+        "signature help in the CYCLE600",
+        timed(&mut client, "textDocument/signatureHelp", inside),
     );
     let document = json!({ "textDocument": { "uri": URI } });
     figures(

@@ -713,6 +713,16 @@ fn a_cycle800_hover_says_what_the_call_asks_for() {
         assert!(shown.contains(expected), "{expected}\n{shown}");
     }
     assert_eq!(hover["range"]["start"]["character"], 0);
+    // The call without arguments takes the plane back: not a swivel whose
+    // arguments are all 0.
+    client.open(&uri, "CYCLE800()\nM30\n");
+    let hover = client.request("textDocument/hover", at(&uri, 0, 3));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(
+        shown.starts_with("**CYCLE800()**, without arguments: takes the swivel plane back"),
+        "{shown}"
+    );
+    assert!(!shown.contains("_MODE"), "{shown}");
     // A CYCLE600 on the same machine: eval's table, and where the axes go.
     client.open(
         &uri,

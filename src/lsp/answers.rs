@@ -342,6 +342,13 @@ impl<'a, 't> Snapshot<'a, 't> {
                     }
                     _ => None,
                 })?;
+        if call.arguments.items.iter().all(|a| a.value.is_none()) {
+            let text = "**CYCLE800()**, without arguments: takes the swivel plane back, as CAM \
+                        post-processors write it to end a tilted plane (no Siemens text found \
+                        says exactly what it resets; `sinuprep run` takes the swivel frame and \
+                        the tool carrier's offsets back and leaves the rotary axes where they are)";
+            return Some(markdown(text.to_string(), self.range(statement)));
+        }
         let mut text =
             String::from("**CYCLE800**, swivel plane\n\n| | argument | meaning |\n|---|---|---|\n");
         for parameter in cycle800::describe(source, call) {
