@@ -10,11 +10,14 @@
 //!       -> emit, format (text edits) and lint (findings with their fixes)
 //!       -> document (one program's analysis, over the settings `workspace` resolved)
 //!       -> run (the program executed offline on the machine: positions, limits, time)
+//!       -> report (a call and a swivel in words, for either front end)
 //!       -> cli, lsp (the command line prints it, the server answers from it)
 //! ```
 //!
 //! Modules:
 //! - [`span`]: byte ranges and their line/column positions.
+//! - [`number`]: numbers as the control reads them (fixed point, never an exponent).
+//! - [`uri`]: paths as `file` URIs, as SARIF and an editor name files.
 //! - [`diagnostic`]: the one diagnostic type for syntax errors, findings and refusals,
 //!   with the fix a finding may carry.
 //! - [`edit`]: text edits (span, new bytes) and applying them.
@@ -49,6 +52,8 @@
 //!   HEAD_DEF and definition files, resolved once for the command line and a server alike.
 //! - [`archive`]: the members of archives in text (`%_N_PART_MPF` sections) and binary form
 //!   (`.arc`); a member's change as edits of the archive, headers included.
+//! - [`report`]: what a CYCLE600 call evaluates to and where a swivel takes the axes, in words
+//!   and as JSON: the tables `eval` and `axes` print and an editor's hover shows.
 //! - [`cli`]: the command line (options, files, reports); the only place that prints.
 //! - [`lsp`]: the language server (`sinuprep lsp`): protocol messages on stdout, its log
 //!   on stderr, every answer from the analysis the command line uses.
@@ -65,11 +70,14 @@ pub mod lint;
 pub mod lsp;
 pub mod machine;
 pub mod measure;
+pub mod number;
 pub mod registry;
+pub mod report;
 pub mod rotation;
 pub mod run;
 pub mod semantic;
 pub mod span;
 pub mod suggest;
 pub mod syntax;
+pub mod uri;
 pub mod workspace;

@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use sinuprep::emit::apply;
 use sinuprep::emit::cycle600::{rewrite, Options};
-use sinuprep::emit::number::format;
+use sinuprep::number::format;
 use sinuprep::rotation::{convert, decompose, matrix, Kind, Sequence};
 use sinuprep::semantic::value::Value;
 use sinuprep::semantic::walk::run;

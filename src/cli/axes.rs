@@ -8,21 +8,21 @@
 
 use std::path::{Path, PathBuf};
 
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::Vector3;
 
 use crate::cli::analysis::MachinesTold;
 use crate::cli::args::{AxesArgs, Export, MessageFormat, Prefer};
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
-use crate::emit::number::format;
 use crate::emit::split::{
-    about_tool, about_tool_line, describe, head_frame_document, head_frame_line, n, positioning,
-    table_line,
+    about_tool_line, describe, head_frame_document, head_frame_line, n, positioning, table_line,
 };
 use crate::kinematics::{
     a3200, solve, split, split_nearest_either_way, Direction, Preference, Record, Request, Split,
-    Swivel, TableAngle, TableAsk,
+    Swivel, TableAsk,
 };
+use crate::number::format;
+use crate::report::swivel::{document, table_document};
 use crate::rotation::{matrix, Kind, Sequence};
 use crate::semantic::machine::Machine;
 use crate::workspace::{Config, Given, Workspace};
@@ -354,31 +354,6 @@ fn vector(v: &Vector3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-pub(crate) fn table_document(table: &Record, split: &Split) -> serde_json::Value {
-    let (found, prefer, beyond, nearest) = match split.found {
-        TableAngle::Fixed => ("fixed", None, None, None),
-        TableAngle::Chosen(prefer) => ("chosen", Some(prefer.name()), None, None),
-        TableAngle::Beyond {
-            solution,
-            beyond_deg,
-        } => ("beyond", None, Some(beyond_deg), Some(solution)),
-        TableAngle::Unreachable => ("unreachable", None, None, None),
-    };
-    serde_json::json!({
-        "record": table.name,
-        "number": table.number,
-        "axis": table.axes[0].label(0),
-        "position": split.table,
-        "within_limits": split.table_within_limits,
-        "fixed": split.found == TableAngle::Fixed,
-        "found": found,
-        "prefer": prefer,
-        "beyond_deg": beyond,
-        "nearest_solution": nearest,
-        "block": positioning(table, split),
-    })
-}
-
 /// The record asked for, or the only one with rotary axes.
 fn pick<'m>(
     machine: &'m Machine,
@@ -512,82 +487,9 @@ fn table_text(
     out
 }
 
-/// The swivel in one line: the record and the positions taken.
-pub fn taken(record: &Record, swivel: &Swivel) -> String {
-    let count = record.axis_count();
-    let head = describe(record);
-    if swivel.solutions.is_empty() {
-        return format!("record {head}: unreachable, no position of the rotary axes turns the tool onto the frame's Z axis");
-    }
-    let Some(index) = swivel.chosen else {
-        return format!("record {head}: no solution inside the limits");
-    };
-    let solution = &swivel.solutions[index];
-    let positions: Vec<String> = (0..count)
-        .map(|i| format!("{}={}", record.axes[i].label(i), n(solution.positions[i])))
-        .collect();
-    let hirth = if solution.hirth_error_deg > 0.0 {
-        format!(
-            ", Hirth grid turns the tool {}°",
-            format(solution.hirth_error_deg, 6)
-        )
-    } else {
-        String::new()
-    };
-    format!(
-        "record {head}: {} (solution {} of {}{hirth})",
-        positions.join(" "),
-        index + 1,
-        swivel.solutions.len()
-    )
-}
-
 fn json(record: &Record, swivel: &Swivel) -> String {
     format!(
         "{}\n",
         serde_json::to_string_pretty(&document(record, swivel)).unwrap_or_default()
     )
-}
-
-/// The swivel as the JSON object `axes --json` prints.
-pub fn document(record: &Record, swivel: &Swivel) -> serde_json::Value {
-    let count = record.axis_count();
-    let axes = |positions: [f64; 2]| {
-        let mut map = serde_json::Map::new();
-        for (i, position) in positions.iter().enumerate().take(count) {
-            map.insert(record.axes[i].label(i), serde_json::json!(position));
-        }
-        serde_json::Value::Object(map)
-    };
-    let solutions: Vec<serde_json::Value> = swivel
-        .solutions
-        .iter()
-        .map(|s| {
-            serde_json::json!({
-                "axes": axes(s.positions),
-                "exact": axes(s.exact),
-                "reachable": true,
-                "within_limits": s.within_limits,
-                "hirth_error_deg": s.hirth_error_deg,
-            })
-        })
-        .collect();
-    let rows = |m: &Rotation3<f64>| {
-        (0..3)
-            .map(|r| (0..3).map(|c| m.matrix()[(r, c)]).collect::<Vec<f64>>())
-            .collect::<Vec<_>>()
-    };
-    let vector = |v: &Vector3<f64>| [v.x, v.y, v.z];
-    serde_json::json!({
-        "record": record.name,
-        "number": record.number,
-        "kinematics": record.kinematics.letter().to_string(),
-        "direction_reference": record.axes[record.direction_reference()].label(record.direction_reference()),
-        "reachable": !swivel.solutions.is_empty(),
-        "solutions": solutions,
-        "chosen": swivel.chosen,
-        "residual": swivel.residual.as_ref().map(rows),
-        "about_tool_deg": swivel.residual.as_ref().map(about_tool),
-        "shift": swivel.shift.as_ref().map(vector),
-    })
 }

@@ -9,9 +9,9 @@ use nalgebra::{Point3, Vector3};
 use crate::cli::args::AxisArgs;
 use crate::cli::error::CliError;
 use crate::cli::{write_stdout, ExitStatus};
-use crate::emit::number::format;
 use crate::measure::circle::{self, CircleError, Found};
 use crate::measure::turn::{self, Every, NoAxis};
+use crate::number::format;
 
 pub fn run(args: &AxisArgs) -> Result<ExitStatus, CliError> {
     let text = match (&args.positions, args.before, args.after, args.angle) {

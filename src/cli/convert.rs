@@ -8,7 +8,7 @@ use crate::cli::args::ConvertArgs;
 use crate::cli::error::CliError;
 use crate::cli::notation::{self, Notation};
 use crate::cli::{write_stdout, ExitStatus};
-use crate::emit::number::format as fixed;
+use crate::number::format as fixed;
 use crate::rotation::forms::Pose;
 use crate::rotation::{convert, convert_all, decompose, Angles, Conversion, Sequence};
 

@@ -12,7 +12,7 @@ use std::str::FromStr;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde_json::{json, Value};
 
-use crate::emit::number::format as fixed;
+use crate::number::format as fixed;
 use crate::rotation::forms::{
     axis_angle, chain_angles, chain_sequence, from_axis_angle, from_chain, from_gibbs,
     from_quaternion, gibbs, matrix_of_pose, pose, pose_of_matrix, quaternion, rotation_of_matrix,

@@ -208,25 +208,3 @@ pub fn file_behind(stream: &impl Stream) -> std::io::Result<File> {
     let owned = stream.as_handle().try_clone_to_owned()?;
     Ok(File::from(owned))
 }
-
-/// A path's bytes as the file system holds them: on Unix the name's own
-/// bytes, which need not be UTF-8 (a `Kühl.MPF` saved in Latin-1), so that
-/// a SARIF URI can name the very file; elsewhere its text (Windows names
-/// are UTF-16, read as Unicode, an unpaired surrogate replaced).
-#[cfg(unix)]
-pub fn path_bytes(path: &Path) -> std::borrow::Cow<'_, [u8]> {
-    use std::os::unix::ffi::OsStrExt;
-    std::borrow::Cow::Borrowed(path.as_os_str().as_bytes())
-}
-
-#[cfg(not(unix))]
-pub fn path_bytes(path: &Path) -> std::borrow::Cow<'_, [u8]> {
-    match path.to_string_lossy() {
-        std::borrow::Cow::Borrowed(text) => std::borrow::Cow::Borrowed(text.as_bytes()),
-        std::borrow::Cow::Owned(text) => std::borrow::Cow::Owned(text.into_bytes()),
-    }
-}
-
-/// Whether paths are Windows paths here: `\` separates their parts, and
-/// they may begin with a drive (`C:\`) or a server (`\\server\share`).
-pub const WINDOWS_PATHS: bool = cfg!(windows);

@@ -7,8 +7,8 @@
 //! kept as a comment line above, and added lines use the file's line ending.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::emit::number::format;
 use crate::emit::{runtime, Edit};
+use crate::number::format;
 use crate::registry;
 use crate::rotation::Kind;
 use crate::semantic::cycle600::{no_cycle800_form, Evaluation, Parameters};

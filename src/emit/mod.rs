@@ -5,7 +5,6 @@
 pub mod axes;
 pub mod cycle600;
 pub(crate) mod diff;
-pub mod number;
 pub(crate) mod runtime;
 pub mod split;
 

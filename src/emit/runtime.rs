@@ -15,7 +15,7 @@ use nalgebra::Matrix3;
 
 use crate::diagnostic::Diagnostic;
 use crate::emit::cycle600::{Form, Options};
-use crate::emit::number::format;
+use crate::number::format;
 use crate::registry;
 use crate::rotation::euler::GIMBAL_TOLERANCE;
 use crate::rotation::trig::sin_cos_degrees;

@@ -8,8 +8,8 @@
 use nalgebra::Rotation3;
 
 use crate::diagnostic::Diagnostic;
-use crate::emit::number::format;
 use crate::kinematics::{Preference, Record, Split, Swivel, TableAngle};
+use crate::number::format;
 use crate::registry::cycle600_split_over_table;
 use crate::rotation::{decompose, Sequence};
 use crate::semantic::swivels::{Asked, OverTable};

@@ -59,7 +59,7 @@ impl Snapshot<'_, '_> {
         let files = workspace_uses::files(&path, &self.settings.environment);
         let mut out = Vec::new();
         for file in workspace_uses::uses_of(&found.name, found.namespace, &files, buffers) {
-            let Some(file_uri) = uri_of(&file.path) else {
+            let Some(file_uri) = convert::uri(&file.path) else {
                 continue;
             };
             out.extend(
@@ -139,7 +139,7 @@ impl Snapshot<'_, '_> {
             here.iter().map(|u| edit(self.range(u.span))).collect(),
         ));
         for file in &elsewhere {
-            let file_uri = uri_of(&file.path).ok_or("a file of the workspace has no URI")?;
+            let file_uri = convert::uri(&file.path).ok_or("a file of the workspace has no URI")?;
             let ranges = file
                 .uses
                 .iter()
@@ -167,7 +167,7 @@ impl Snapshot<'_, '_> {
                     .into_owned())
             ));
         }
-        let (old_uri, new_uri) = match (uri_of(&old), uri_of(&new)) {
+        let (old_uri, new_uri) = match (convert::uri(&old), convert::uri(&new)) {
             (Some(old), Some(new)) => (old, new),
             _ => return Err("the subprogram's file has no URI".to_string()),
         };
@@ -231,8 +231,4 @@ fn renamed_file(
 fn same_file_in_other_case(old: &Path, new: &Path) -> bool {
     old.to_string_lossy()
         .eq_ignore_ascii_case(&new.to_string_lossy())
-}
-
-fn uri_of(path: &Path) -> Option<lsp::Uri> {
-    crate::cli::render::file_uri(path)?.parse().ok()
 }

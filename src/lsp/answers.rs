@@ -139,12 +139,17 @@ impl<'a, 't> Snapshot<'a, 't> {
         let source = self.text.bytes();
         if let Some(site) = self.calls().find(|site| contains(site.statement, at)) {
             let machine = self.settings.machine.as_deref();
-            let table =
-                crate::cli::eval::call_table(site, self.name, source, &self.settings.emit, machine);
+            let table = crate::report::call::call_table(
+                site,
+                self.name,
+                source,
+                &self.settings.emit,
+                machine,
+            );
             let mut text = format!("```\n{table}```");
             // As `eval --machine` adds: where the head's axes go.
             let on_machine = self.settings.machine.as_ref().and_then(|machine| {
-                let positions = crate::cli::eval::swivel_text(site, machine)?;
+                let positions = crate::report::swivel::swivel_text(site, machine)?;
                 Some(format!("\n\nOn `{}`: {positions}", machine.name))
             });
             text.extend(on_machine);
@@ -225,7 +230,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 Some(format!(
                     "{} {}",
                     axis.machine_name(),
-                    crate::emit::number::format((*v)?, 3)
+                    crate::number::format((*v)?, 3)
                 ))
             })
             .collect();
@@ -236,7 +241,7 @@ impl<'a, 't> Snapshot<'a, 't> {
             "Dry run on `{}`, at the block's end (its first pass): {}; {} s so far",
             machine.name,
             positions.join(" · "),
-            crate::emit::number::format(t, 3)
+            crate::number::format(t, 3)
         );
         for violation in report
             .violations
@@ -246,8 +251,8 @@ impl<'a, 't> Snapshot<'a, 't> {
             text.push_str(&format!(
                 "\n\n**{} past its software limit** {} (reaches {})",
                 violation.axis,
-                crate::emit::number::format(violation.limit, 3),
-                crate::emit::number::format(violation.value, 3)
+                crate::number::format(violation.limit, 3),
+                crate::number::format(violation.value, 3)
             ));
         }
         let line = self.model.lines.raw(row).content;
@@ -284,7 +289,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 origin,
                 ..
             } => {
-                let shown = crate::cli::eval::value_text(&Ok(value));
+                let shown = crate::report::call::value_text(&Ok(value));
                 match origin {
                     Some(origin) => format!("`{shown}`, {origin}"),
                     None => format!("`{shown}`"),
@@ -360,7 +365,7 @@ impl<'a, 't> Snapshot<'a, 't> {
         }
         if let Some(asked) = crate::semantic::swivels::of_cycle800(source, call) {
             let z = asked.rotation * nalgebra::Vector3::z();
-            let n = |v: f64| crate::emit::number::format(v, 6);
+            let n = |v: f64| crate::number::format(v, 6);
             text.push_str(&format!(
                 "\nTool axis of the new plane, in the frame before it: ({}, {}, {})\n",
                 n(z.x),
@@ -368,7 +373,7 @@ impl<'a, 't> Snapshot<'a, 't> {
                 n(z.z)
             ));
             if let Some(machine) = &self.settings.machine {
-                let positions = crate::cli::eval::swivel_on(&asked, machine);
+                let positions = crate::report::swivel::swivel_on(&asked, machine);
                 text.push_str(&format!("\nOn `{}`: {positions}\n", machine.name));
             }
         }
@@ -469,7 +474,7 @@ impl<'a, 't> Snapshot<'a, 't> {
             None => {
                 let (file, span) = self.defined_elsewhere(found)?;
                 let text = Text::new(crate::workspace::file::read(file).ok()?);
-                let uri = crate::cli::render::file_uri(file)?.parse().ok()?;
+                let uri = convert::uri(file)?;
                 Some(lsp::Location::new(
                     uri,
                     convert::range(&text, *span, self.unit),
@@ -827,7 +832,7 @@ impl Snapshot<'_, '_> {
     pub fn inlay_hints(&self, range: lsp::Range) -> Vec<lsp::InlayHint> {
         let wanted = convert::span(self.text, range, self.unit);
         let precision = self.settings.emit.precision.min(4);
-        let n = |v: f64| crate::emit::number::format(v, precision);
+        let n = |v: f64| crate::number::format(v, precision);
         let mut hints: Vec<lsp::InlayHint> = self
             .calls()
             .filter(|site| wanted.start <= site.statement.end && site.statement.start <= wanted.end)

@@ -2,7 +2,7 @@
 //! the client and server agreed on, `file:` URIs and paths, diagnostics,
 //! semantic tokens.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use lsp_types as lsp;
 
@@ -160,6 +160,12 @@ pub fn semantic_tokens(text: &Text, tokens: &[Token], unit: ColumnUnit) -> Vec<l
         (line, character) = (start.line, start.character);
     }
     out
+}
+
+/// The `file:` URI of an absolute path (`None` for a relative one), as
+/// the client is told of another file of the workspace.
+pub fn uri(path: &Path) -> Option<lsp::Uri> {
+    crate::uri::file_uri(path)?.parse().ok()
 }
 
 /// The file a `file:` URI names; `None` for another scheme (an unsaved

@@ -400,7 +400,7 @@ impl Server<'_> {
         let help = error.help().map(|h| format!("\n\n{h}")).unwrap_or_default();
         let said = format!("{error}{help}");
         let file = error.place().and_then(|(path, line, _)| {
-            let uri: lsp::Uri = crate::cli::render::file_uri(path)?.parse().ok()?;
+            let uri = convert::uri(path)?;
             Some((uri, line))
         });
         if let Some((uri, line)) = file {

@@ -44,7 +44,7 @@ fn write_page(dir: &Path, code: &str, text: &str) -> Option<lsp::Uri> {
             return None;
         }
     }
-    crate::cli::render::file_uri(&path)?.parse().ok()
+    super::convert::uri(&path)
 }
 
 /// `sinuprep/VERSION/rules` in the user's cache folder: `%LOCALAPPDATA%`

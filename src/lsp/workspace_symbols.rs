@@ -81,7 +81,7 @@ pub fn find(
         let Ok(bytes) = crate::workspace::file::read(&file) else {
             continue;
         };
-        let uri = crate::cli::render::file_uri(&file).and_then(|u| u.parse::<lsp::Uri>().ok());
+        let uri = convert::uri(&file);
         let Some(uri) = uri else {
             continue;
         };

@@ -343,7 +343,7 @@ fn count(n: u64, one: &str, many: &str) -> String {
 }
 
 fn number(value: f64) -> String {
-    crate::emit::number::format(value, 3)
+    crate::number::format(value, 3)
 }
 
 fn seconds(s: f64) -> String {

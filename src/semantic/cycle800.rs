@@ -242,7 +242,7 @@ fn direction(dir: f64) -> String {
 }
 
 fn number_text(value: f64) -> String {
-    crate::emit::number::format(value, 6)
+    crate::number::format(value, 6)
 }
 
 #[cfg(test)]

@@ -15,7 +15,6 @@ mod statistics;
 pub use github::github;
 pub use human::human;
 pub use json::{json_end, json_failed, json_file, JSON_BETWEEN, JSON_START};
-pub(crate) use sarif::file_uri;
 pub use sarif::Sarif;
 pub use short::short;
 pub use statistics::Statistics;

@@ -1,4 +1,5 @@
-//! Numbers as the control reads them: fixed point, never an exponent.
+//! Numbers as the control reads them: fixed point, never an exponent. A
+//! leaf: the rewrite, the model's texts and the reports all print numbers so.
 
 /// `value` rounded to `precision` decimals, trailing zeros and a trailing
 /// point removed; `-0` prints as `0`. Rounding moves the value by at most
