@@ -7,7 +7,9 @@
 //! uses the first hover on it in a version walks the program for) and one
 //! on another use of it, a label completion after a jump (the labels it
 //! reaches), a hover on the CYCLE600 answered, a word's completion and the
-//! signature help inside the CYCLE600, the document's symbols answered.
+//! signature help inside the CYCLE600, the semantic tokens after each change
+//! as what changed (and their size) and whole, the document's symbols
+//! answered.
 //!
 //! Then the large programs an editor may be given (size in MB:
 //! `SINUPREP_BENCH_LSP_MB`, default 100): a CAM program opened while a
@@ -96,6 +98,14 @@ fn main() {
     let mut first_hovers = Vec::new();
     let mut next_hovers = Vec::new();
     let mut label_completions = Vec::new();
+    let mut token_deltas = Vec::new();
+    let mut delta_bytes = Vec::new();
+    let whole = client.request(
+        "textDocument/semanticTokens/full",
+        json!({ "textDocument": { "uri": URI } }),
+    );
+    let whole_bytes = whole.to_string().len();
+    let mut token_id = whole["resultId"].clone();
     // `_Z=_Z-_STEP` in the first pocket: the variable read, then written.
     let variable = |character: u32| json!({ "textDocument": { "uri": URI }, "position": { "line": 5, "character": character } });
     for round in 0..ROUNDS {
@@ -133,11 +143,20 @@ fn main() {
             json!({ "textDocument": { "uri": URI }, "position": { "line": 13, "character": 19 } }),
         );
         label_completions.push(asked.elapsed().as_secs_f64());
+        let asked = Instant::now();
+        let delta = client.request(
+            "textDocument/semanticTokens/full/delta",
+            json!({ "textDocument": { "uri": URI }, "previousResultId": token_id }),
+        );
+        token_deltas.push(asked.elapsed().as_secs_f64());
+        delta_bytes.push(delta.to_string().len() as f64 / 1e3);
+        token_id = delta["resultId"].clone();
     }
     figures("change to diagnostics", changes);
     figures("variable hover, first of the version", first_hovers);
     figures("variable hover, another use of it", next_hovers);
     figures("label completion after a hover", label_completions);
+    figures("semantic tokens, what changed", token_deltas);
     let timed = |client: &mut Client, method: &str, params: Value| {
         (0..ROUNDS)
             .map(|_| {
@@ -165,6 +184,23 @@ fn main() {
         timed(&mut client, "textDocument/signatureHelp", inside),
     );
     let document = json!({ "textDocument": { "uri": URI } });
+    figures(
+        "semantic tokens, whole",
+        timed(
+            &mut client,
+            "textDocument/semanticTokens/full",
+            document.clone(),
+        ),
+    );
+    let median = |mut kb: Vec<f64>| {
+        kb.sort_by(f64::total_cmp);
+        kb[kb.len() / 2]
+    };
+    println!(
+        "semantic tokens: {:.1} KB of JSON whole, {:.2} KB (median) for what changed",
+        whole_bytes as f64 / 1e3,
+        median(delta_bytes)
+    );
     figures(
         "document symbols",
         timed(&mut client, "textDocument/documentSymbol", document),

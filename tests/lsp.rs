@@ -939,6 +939,77 @@ fn findings_past_the_most_shown_are_counted_not_sent() {
     client.stop();
 }
 
+/// After a change the client is sent what changed in the words' colours
+/// (`semanticTokens/full/delta`): applied to the tokens it had, the edits
+/// give exactly the tokens a whole request gives, and they are a few
+/// tokens, not the program's. A result id that is not the last sent gets
+/// every token.
+#[test]
+fn semantic_tokens_after_a_change_are_sent_as_what_changed() {
+    let (mut client, initialized) = Client::start(json!({}));
+    let full = &initialized["capabilities"]["semanticTokensProvider"]["full"];
+    assert_eq!(full, &json!({ "delta": true }));
+    let lines: String = (0..2_000)
+        .map(|i| format!("N{i} G1 X=R{} Y{i} F800 ; pass {i}\n", i % 90))
+        .collect();
+    client.open(URI, &lines);
+    let tokens = |client: &mut Client, method: &str, previous: Option<&str>| {
+        let mut params = json!({ "textDocument": { "uri": URI } });
+        if let Some(previous) = previous {
+            params["previousResultId"] = json!(previous);
+        }
+        client.request(&format!("textDocument/semanticTokens/{method}"), params)
+    };
+    let first = tokens(&mut client, "full", None);
+    let mut id = first["resultId"].as_str().expect("a result id").to_string();
+    let mut data: Vec<Value> = first["data"].as_array().expect("tokens").clone();
+    let stale = id.clone();
+    for (version, line) in [(2, 700), (3, 0), (4, 2_000), (5, 1_200)] {
+        let change = if version == 5 {
+            // A line's words removed.
+            json!({ "range": { "start": { "line": line, "character": 0 },
+                               "end": { "line": line + 1, "character": 0 } }, "text": "" })
+        } else {
+            json!({ "range": { "start": { "line": line, "character": 0 },
+                               "end": { "line": line, "character": 0 } },
+                    "text": "DEF REAL _NEW=1\nIF _NEW>R3 GOTOF END\n" })
+        };
+        client.notify(
+            "textDocument/didChange",
+            json!({ "textDocument": { "uri": URI, "version": version },
+                    "contentChanges": [change] }),
+        );
+        let delta = tokens(&mut client, "full/delta", Some(&id));
+        let edits = delta["edits"].as_array().expect("edits, not every token");
+        let mut sent = 0;
+        for edit in edits.iter().rev() {
+            let start = edit["start"].as_u64().expect("start") as usize;
+            let deleted = edit["deleteCount"].as_u64().expect("count") as usize;
+            let inserted = edit["data"].as_array().cloned().unwrap_or_default();
+            sent += inserted.len();
+            data.splice(start..start + deleted, inserted);
+        }
+        assert!(
+            sent <= 5 * 20,
+            "{sent} integers sent for a change of two lines"
+        );
+        let whole = tokens(&mut client, "full", None);
+        assert_eq!(
+            Some(&data),
+            whole["data"].as_array(),
+            "the delta after version {version} applied"
+        );
+        id = whole["resultId"].as_str().expect("a result id").to_string();
+    }
+    let again = tokens(&mut client, "full/delta", Some(&stale));
+    assert_eq!(
+        again["data"].as_array(),
+        Some(&data),
+        "every token for a stale id"
+    );
+    client.stop();
+}
+
 /// Past 10 MB the words are not coloured at once: the request is refused
 /// with the reason, and a range of lines is still coloured; one long line
 /// counts by its bytes.

@@ -22,6 +22,7 @@ mod formatting;
 mod requests;
 mod rule_pages;
 mod signature;
+mod tokens_sent;
 mod transport;
 mod worker;
 mod workspace_symbols;
@@ -109,7 +110,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
             lsp::SemanticTokensServerCapabilities::SemanticTokensOptions(
                 lsp::SemanticTokensOptions {
                     legend: convert::legend(),
-                    full: Some(lsp::SemanticTokensFullOptions::Bool(true)),
+                    full: Some(lsp::SemanticTokensFullOptions::Delta { delta: Some(true) }),
                     range: Some(true),
                     work_done_progress_options: lsp::WorkDoneProgressOptions::default(),
                 },
@@ -146,6 +147,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         supports,
         worker: (!pull).then(|| worker::Worker::start(connection.sender.clone())),
         requests: requests::Requests::start(connection.sender.clone()),
+        tokens_sent: Arc::default(),
     };
     let served = serve_messages(&mut server);
     // What is queued is published before the connection closes.
@@ -256,6 +258,8 @@ struct Server<'c> {
     worker: Option<worker::Worker>,
     /// Answers the requests that wait for an analysis or work of their own.
     requests: requests::Requests,
+    /// The semantic tokens last sent per document, for a delta from them.
+    tokens_sent: Arc<tokens_sent::TokensSent>,
 }
 
 impl Server<'_> {
@@ -296,6 +300,7 @@ impl Server<'_> {
                 if let Some(params) = extract::<lsp::DidCloseTextDocumentParams>(notification) {
                     let uri = params.text_document.uri;
                     self.documents.remove(&uri);
+                    self.tokens_sent.forget(&uri);
                     // Its findings cleared, after any still queued.
                     if let Some(worker) = &self.worker {
                         let (uri, unit) = (uri.clone(), self.unit);
@@ -575,14 +580,35 @@ impl Server<'_> {
                 })
             }
             r::SemanticTokensFullRequest::METHOD => {
-                self.answer_document(request, Waits::Work, |s, _: lsp::SemanticTokensParams| {
-                    s.semantic_tokens(None)
-                })
+                let sent = self.tokens_sent.clone();
+                self.answer_document(
+                    request,
+                    Waits::Work,
+                    move |s, p: lsp::SemanticTokensParams| {
+                        Ok(sent.full(&p.text_document.uri, s.semantic_tokens(None)?))
+                    },
+                )
+            }
+            r::SemanticTokensFullDeltaRequest::METHOD => {
+                let sent = self.tokens_sent.clone();
+                self.answer_document(
+                    request,
+                    Waits::Work,
+                    move |s, p: lsp::SemanticTokensDeltaParams| {
+                        let tokens = s.semantic_tokens(None)?;
+                        Ok(sent.delta(&p.text_document.uri, &p.previous_result_id, tokens))
+                    },
+                )
             }
             r::SemanticTokensRangeRequest::METHOD => self.answer_document(
                 request,
                 Waits::Work,
-                |s, p: lsp::SemanticTokensRangeParams| s.semantic_tokens(Some(p.range)),
+                |s, p: lsp::SemanticTokensRangeParams| {
+                    Ok(lsp::SemanticTokens {
+                        result_id: None,
+                        data: s.semantic_tokens(Some(p.range))?,
+                    })
+                },
             ),
             // Edits are made on the version the request names, whenever
             // they are answered: the client applies them to that version.
@@ -875,6 +901,7 @@ has_document! {
     lsp::DocumentDiagnosticParams => |p| &p.text_document.uri;
     lsp::SemanticTokensParams => |p| &p.text_document.uri;
     lsp::SemanticTokensRangeParams => |p| &p.text_document.uri;
+    lsp::SemanticTokensDeltaParams => |p| &p.text_document.uri;
 }
 
 /// A notification's parameters; one that does not parse is said on stderr

@@ -1,4 +1,6 @@
-//! `textDocument/semanticTokens`: each word's class, for the client to colour.
+//! `textDocument/semanticTokens` (whole, a range, or what changed since the
+//! tokens last sent, `tokens_sent.rs`): each word's class, for the client
+//! to colour.
 
 use lsp_types as lsp;
 
@@ -12,7 +14,7 @@ impl Snapshot<'_, '_> {
     pub fn semantic_tokens(
         &self,
         range: Option<lsp::Range>,
-    ) -> Result<lsp::SemanticTokens, String> {
+    ) -> Result<Vec<lsp::SemanticToken>, String> {
         let lines = self.model.lines.len();
         let rows = match range {
             Some(range) => range.start.line as usize..(range.end.line as usize + 1).min(lines),
@@ -33,9 +35,6 @@ impl Snapshot<'_, '_> {
             ));
         }
         let tokens = crate::semantic::highlight::tokens(self.model, self.uses(), rows);
-        Ok(lsp::SemanticTokens {
-            result_id: None,
-            data: convert::semantic_tokens(self.text, &tokens, self.unit),
-        })
+        Ok(convert::semantic_tokens(self.text, &tokens, self.unit))
     }
 }
