@@ -1,5 +1,6 @@
 //! The language server as an editor meets it: the release binary's
 //! `sinuprep lsp` over its pipes, on a hand-written program of 10,000 lines
+//! (`SINUPREP_BENCH_LSP_LINES`)
 //! (DEF, IF/ELSE/ENDIF, WHILE, R-parameter arithmetic, labels and jumps,
 //! subprogram calls, a CYCLE600 in the middle). Prints, over 40 rounds each,
 //! the minimum, median and maximum of: an incremental change to its
@@ -80,7 +81,12 @@ fn figures(name: &str, mut times: Vec<f64>) {
 }
 
 fn main() {
-    let (text, cycle600) = program(10_000);
+    // `SINUPREP_BENCH_LSP_LINES`: the hand-written program's length.
+    let lines = std::env::var("SINUPREP_BENCH_LSP_LINES")
+        .ok()
+        .and_then(|lines| lines.parse().ok())
+        .unwrap_or(10_000);
+    let (text, cycle600) = program(lines);
     let (mut client, _) = Client::start(json!({}));
     let started = Instant::now();
     client.open(URI, &text);

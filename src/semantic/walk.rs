@@ -74,7 +74,22 @@ pub struct Analysis {
 
 /// Walks the program its model describes.
 pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Analysis {
-    run(model, supplied, heads).0
+    let analysis = run_probed(model, supplied, heads, &[], None, Walked::AsFarAsAsked);
+    analysis.expect("only a stop ends a walk early").0
+}
+
+/// How far a walk goes.
+#[derive(Clone, Copy, PartialEq)]
+enum Walked {
+    /// To the program's end: the state it ends in is wanted.
+    Whole,
+    /// To the last line whose walk can change what was asked: the last
+    /// CYCLE600, the last read of a `_CYC600_` result, the last probe. The
+    /// walk follows no jump backwards (a loop's start forgets what the
+    /// loop may write, from the structure, not from the walk), so the lines
+    /// after those change nothing before them: a CAM program's thousands of
+    /// blocks after its one CYCLE600 are not walked.
+    AsFarAsAsked,
 }
 
 /// The walk, and the state it ends in: what the program leaves in its
@@ -88,8 +103,8 @@ pub fn analyze(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> Ana
 /// rewrite idempotent. Each repetition learns at least one more line, so there
 /// are at most as many as there are CYCLE600 calls (in practice one or two).
 pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analysis, Env) {
-    let (analysis, env, _) =
-        run_probed(model, supplied, heads, &[], None).expect("only a stop ends a walk early");
+    let (analysis, env, _) = run_probed(model, supplied, heads, &[], None, Walked::Whole)
+        .expect("only a stop ends a walk early");
     (analysis, env)
 }
 
@@ -107,7 +122,17 @@ pub fn analyze_until(
     heads: Option<&Heads>,
     stop: Stop,
 ) -> Option<Analysis> {
-    Some(run_probed(model, supplied, heads, &[], Some(stop))?.0)
+    Some(
+        run_probed(
+            model,
+            supplied,
+            heads,
+            &[],
+            Some(stop),
+            Walked::AsFarAsAsked,
+        )?
+        .0,
+    )
 }
 
 /// Where a value is looked at on the walk: the variable named at `name` (a
@@ -147,7 +172,7 @@ pub fn values_at(
     probes: &[Probe],
     stop: Option<Stop>,
 ) -> Option<Vec<Seen>> {
-    Some(run_probed(model, supplied, heads, probes, stop)?.2)
+    Some(run_probed(model, supplied, heads, probes, stop, Walked::AsFarAsAsked)?.2)
 }
 
 fn run_probed(
@@ -156,10 +181,15 @@ fn run_probed(
     heads: Option<&Heads>,
     probes: &[Probe],
     stop: Option<Stop>,
+    walked: Walked,
 ) -> Option<(Analysis, Env, Vec<Seen>)> {
+    let end = match walked {
+        Walked::Whole => model.lines.len(),
+        Walked::AsFarAsAsked => asked_end(model, probes),
+    };
     let mut modes = HashMap::new();
     loop {
-        let (walker, env) = walk_once(model, supplied, heads, &modes, probes, stop);
+        let (walker, env) = walk_once(model, supplied, heads, &modes, probes, stop, end);
         if walker.stopped {
             return None;
         }
@@ -190,6 +220,7 @@ fn walk_once<'a>(
     modes: &'a HashMap<usize, Mode>,
     probes: &'a [Probe],
     stop: Option<Stop<'a>>,
+    end: usize,
 ) -> (Walker<'a>, Env) {
     let structure = model.structure();
     let mut calls = [Vec::new(), Vec::new(), Vec::new()];
@@ -221,10 +252,46 @@ fn walk_once<'a>(
         stop,
         lines_walked: 0,
         stopped: false,
+        asked_end: end,
     };
     let mut env = Env::of_program(Arc::clone(&structure.writers));
     walker.walk(0, model.lines.len(), &mut env);
     (walker, env)
+}
+
+/// The line after the last that a walk [`Walked::AsFarAsAsked`] must reach.
+fn asked_end(model: &Model, probes: &[Probe]) -> usize {
+    let source = model.source;
+    let last_result = memchr::memrchr_iter(b'_', source)
+        .find(|&at| {
+            source[at..]
+                .get(..8)
+                .is_some_and(|name| name.eq_ignore_ascii_case(b"_CYC600_"))
+        })
+        .map(|at| row_of(model, at));
+    let last_call = model.structure().cycle600_lines.iter().max().copied();
+    let last_probe = probes.iter().map(|probe| probe.row).max();
+    let last = [last_result, last_call, last_probe]
+        .into_iter()
+        .flatten()
+        .max();
+    last.map_or(0, |row| (row + 1).min(model.lines.len()))
+}
+
+/// The line holding byte `offset`.
+fn row_of(model: &Model, offset: usize) -> usize {
+    let lines = &model.lines;
+    // The first line starting after `offset`, less one.
+    let (mut low, mut high) = (0, lines.len());
+    while low < high {
+        let middle = (low + high) / 2;
+        if lines.raw(middle).content.start <= offset {
+            low = middle + 1;
+        } else {
+            high = middle;
+        }
+    }
+    low.saturating_sub(1)
 }
 
 /// The uses a walk is asked about, by line, and what it found at each.
@@ -364,6 +431,8 @@ struct Walker<'a> {
     stop: Option<Stop<'a>>,
     lines_walked: usize,
     stopped: bool,
+    /// The top-level walk ends here ([`Walked`]).
+    asked_end: usize,
 }
 
 /// Blocks nested deeper than this are not walked into: what they write
@@ -420,6 +489,12 @@ impl<'a> Walker<'a> {
     fn walk_region(&mut self, start: usize, end: usize, env: &mut Env) {
         let mut pc = start;
         while pc < end {
+            // Past what was asked the program's own lines are left; a block
+            // begun before is walked to its end, and a jump lands as in the
+            // whole walk.
+            if self.depth == 1 && pc >= self.asked_end {
+                return;
+            }
             if self.stop.is_some() && self.stops() {
                 return;
             }
@@ -1301,6 +1376,66 @@ mod tests {
         };
         assert_eq!(value(&seen[1]), Some(Value::Number(11.0)), "{:?}", seen[1]);
         assert_eq!(value(&seen[2]), Some(Value::Number(11.0)), "{:?}", seen[2]);
+    }
+
+    /// A walk that ends after the last line asked about finds what the
+    /// whole walk finds: the calls (inside a block that closes later, met
+    /// again by a jump back from past them) and the reads of their results
+    /// (spelt out; through a macro, none), on constructed programs and on
+    /// every program of the samples, the fixtures and the corpus.
+    #[test]
+    fn a_walk_ended_after_what_was_asked_finds_what_the_whole_walk_finds() {
+        let tail = "G1 X1 Y2\nR5=R5+1\nIF R5>3\nR6=1\nENDIF\n".repeat(50);
+        // Recalculation only: its results are known offline.
+        let recalculates =
+            "CYCLE600 (0, \"UFK600\", 1, 57, 0, 0, 0, R1000, 45, 60, 0, 0, 0, 0, 1, 39, 0, 0, 0)\n";
+        let constructed = [
+            format!("R1000=30\n{recalculates}{tail}R2=_CYC600_2*2\n{tail}M30\n"),
+            format!("R1000=30\nWHILE R7<2\n{CALL}R7=R7+1\n{tail}ENDWHILE\n{tail}M30\n"),
+            format!("START:\nR1000=R1000+5\n{CALL}{tail}IF R1000<60 GOTOB START\n{tail}M30\n"),
+            format!("DEFINE SECOND AS _CYC600_2\nR1000=30\n{recalculates}{tail}R2=SECOND\nM30\n"),
+            format!("R1000=30\n{tail}M30\n"),
+        ];
+        let mut programs: Vec<Vec<u8>> =
+            constructed.iter().map(|p| p.clone().into_bytes()).collect();
+        let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let mut folders = vec![manifest.join("samples"), manifest.join("tests/fixtures")];
+        folders.push(manifest.join("../shared/corpus"));
+        while let Some(folder) = folders.pop() {
+            let Ok(entries) = std::fs::read_dir(&folder) else {
+                continue;
+            };
+            for entry in entries.flatten() {
+                let path = entry.path();
+                if path.is_dir() {
+                    folders.push(path);
+                } else if let Ok(bytes) = std::fs::read(&path) {
+                    if crate::semantic::mentions_cycle600(&bytes) {
+                        programs.push(bytes);
+                    }
+                }
+            }
+        }
+        assert!(
+            programs.len() > constructed.len() + 10,
+            "{} programs",
+            programs.len()
+        );
+        for program in &programs {
+            let model = Model::of(program);
+            let asked = analyze(&model, &Supplied::default(), None);
+            let whole = run(&model, &Supplied::default(), None).0;
+            let text = String::from_utf8_lossy(&program[..program.len().min(200)]);
+            assert_eq!(format!("{asked:?}"), format!("{whole:?}"), "{text}");
+        }
+        // The read after the call is found; one through a macro is not a
+        // read the rewrite can replace (its line spells no `_CYC600_`), in
+        // the whole walk as in the shorter one.
+        for (index, reads) in [(0, 1), (3, 0)] {
+            let model = Model::of(constructed[index].as_bytes());
+            let asked = analyze(&model, &Supplied::default(), None);
+            assert_eq!(asked.result_reads.len(), reads, "program {index}");
+        }
     }
 
     /// Forgetting what nested loops write costs the program's length times
