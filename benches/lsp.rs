@@ -15,7 +15,7 @@
 //! Then the large programs an editor may be given (size in MB:
 //! `SINUPREP_BENCH_LSP_MB`, default 100): a CAM program opened while a
 //! hover on the small program is asked (how long the hover waits), its
-//! findings, its symbols and its semantic tokens (refused past 10 MB); and
+//! findings, a change to them and the memory held after, its symbols and its semantic tokens (refused past 10 MB); and
 //! a program with a finding on each line (a twelfth of that size): how long
 //! its findings take and how large they are; the server's peak memory.
 //! `cargo bench --bench lsp`; nothing is asserted.
@@ -242,6 +242,24 @@ fn large_programs(client: &mut Client) {
         let answer = client.request(method, document.clone());
         (asked.elapsed().as_secs_f64(), answer.to_string().len())
     };
+    // A comment typed into the middle and taken out again.
+    let middle = cam.lines().count() / 2;
+    let changes: Vec<f64> = (0..6)
+        .map(|round| {
+            let (end, new) = if round % 2 == 0 { (0, "; ") } else { (2, "") };
+            let started = Instant::now();
+            client.notify(
+                "textDocument/didChange",
+                json!({ "textDocument": { "uri": uri, "version": round + 2 },
+                        "contentChanges": [{ "range": {
+                            "start": { "line": middle, "character": 0 },
+                            "end": { "line": middle, "character": end } }, "text": new }] }),
+            );
+            client.diagnostics(uri);
+            started.elapsed().as_secs_f64()
+        })
+        .collect();
+    let resident = client.memory_kib();
     let (symbols, symbols_size) = once(client, "textDocument/documentSymbol");
     let (tokens, tokens_size) = once(client, "textDocument/semanticTokens/full");
     let row = |what: String, figure: String| println!("  {what:<60} {figure:>12}");
@@ -257,6 +275,23 @@ fn large_programs(client: &mut Client) {
         format!("open to its findings ({findings})"),
         format!("{analysed:.2} s"),
     );
+    let mut changes = changes;
+    changes.sort_by(f64::total_cmp);
+    row(
+        "a change to its findings (6 changes: min, median, max)".to_string(),
+        format!(
+            "{:.0} {:.0} {:.0} ms",
+            changes[0] * 1e3,
+            changes[3] * 1e3,
+            changes[5] * 1e3
+        ),
+    );
+    if let Some(resident) = resident {
+        row(
+            "the server's memory after them".to_string(),
+            format!("{} MiB", resident / 1024),
+        );
+    }
     row(
         format!("document symbols ({symbols_size} bytes)"),
         format!("{:.1} ms", symbols * 1e3),
