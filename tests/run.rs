@@ -716,6 +716,64 @@ fn subprograms_are_followed() {
     );
 }
 
+/// `MCALL` calls its subprogram after each block that moves, with the
+/// arguments it was given, until `MCALL` alone ends it; not after the
+/// block that sets it, nor after the subprogram's own moves. A modal call
+/// of a program that is not there is named once, at the MCALL.
+#[test]
+fn a_modal_call_follows_each_block_that_moves() {
+    let dir = scratch("run_mcall");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "G0 X0 Y0 Z10\nR1=5\nMCALL DRILL(R1)\nR1=7\nX10 Y10\nX20\nM5\nX30 Y20\n\
+         MCALL\nX40\nMCALL NOWHERE(1)\nX50\nX60\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("DRILL.SPF"),
+        "PROC DRILL(REAL _DEPTH)\nG91 G1 Z=-_DEPTH F100\nG0 Z=_DEPTH\nG90\nRET\n",
+    )
+    .expect("write");
+    let json = command(
+        &[
+            "run",
+            "--machine",
+            dir.join("MACHINE.INI").to_str().expect("utf-8"),
+            "--format",
+            "json",
+            "--blocks",
+            dir.join("MAIN.MPF").to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    let blocks = read["blocks"].as_array().expect("blocks");
+    // Each drilling, at the X it follows: the depth given at the MCALL (5),
+    // not R1's later value.
+    let drilled: Vec<f64> = blocks
+        .iter()
+        .filter(|b| b["program"] == "DRILL" && b["line"] == 2)
+        .map(|b| {
+            assert_eq!(b["mcs"]["Z1"], 5.0, "{b}");
+            b["mcs"]["X1"].as_f64().expect("X1")
+        })
+        .collect();
+    assert_eq!(drilled, [10.0, 20.0, 30.0], "{blocks:?}");
+    assert_eq!(read["axes"]["Z1"]["min"], 5.0);
+    assert_eq!(read["axes"]["X1"]["max"], 60.0);
+    let unknown = read["unknown"].as_array().expect("unknown");
+    let nowhere: Vec<&serde_json::Value> = unknown
+        .iter()
+        .filter(|u| u["why"].as_str().is_some_and(|w| w.contains("`NOWHERE`")))
+        .collect();
+    assert_eq!(nowhere.len(), 1, "{unknown:?}");
+    assert_eq!(nowhere[0]["line"], 11);
+    // Each drilling's time is in the run: 5 mm down at 100 mm/min, three times.
+    let time = read["time_s"].as_f64().expect("time");
+    assert!(time > 3.0 * 5.0 / 100.0 * 60.0, "{time}");
+}
+
 /// What the NC cannot know takes the seconds sinuprep.toml gives it, each
 /// time it runs; a time that is no number of seconds is refused.
 #[test]

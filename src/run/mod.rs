@@ -14,7 +14,7 @@ mod execute;
 pub mod frame;
 pub mod plot;
 pub mod profile;
-mod programs;
+pub(crate) mod programs;
 pub mod setup;
 
 pub use execute::run;

@@ -7,8 +7,9 @@ use std::sync::Arc;
 
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::Model;
+use crate::span::Span;
 use crate::syntax::macros::Macros;
-use crate::syntax::tree::{upper, LineKind, StatementKind, WordValue};
+use crate::syntax::tree::{upper, LineKind, Statement, StatementKind, WordValue};
 use crate::syntax::ProgramKind;
 
 /// The programs of a run: the main program, and the subprograms it may
@@ -59,6 +60,13 @@ fn called(model: &Model) -> BTreeSet<String> {
             let name = match &statement.kind {
                 StatementKind::Call(call) => call.name.upper(source),
                 StatementKind::Command(name) => name.upper(source),
+                StatementKind::IndirectCall {
+                    keyword,
+                    target: Some(target),
+                } if keyword.is(source, "MCALL") => match modal_call(source, *target) {
+                    Some((name, _)) => name,
+                    None => continue,
+                },
                 StatementKind::IndirectCall { keyword, target } if keyword.is(source, "CALL") => {
                     let Some(target) = target else { continue };
                     let text = String::from_utf8_lossy(target.of(source))
@@ -101,6 +109,33 @@ fn called(model: &Model) -> BTreeSet<String> {
         }
     }
     names
+}
+
+/// What `MCALL` names (`MCALL CYCLE81(10,0,2,-5)`, `MCALL L10`, `MCALL
+/// BOHR`): the subprogram, upper case as the control looks it up, and the
+/// statement that calls it, read from the text after the keyword with
+/// spans into `source`; `None` for a target read only at run time (a path,
+/// an expression).
+pub(crate) fn modal_call(source: &[u8], target: Span) -> Option<(String, Statement)> {
+    let (kind, error) =
+        crate::syntax::parse_line_kind(target.of(source), target.start, &mut Vec::new());
+    let LineKind::Block(block) = kind else {
+        return None;
+    };
+    let [statement] = <[Statement; 1]>::try_from(block.statements).ok()?;
+    if error.is_some() {
+        return None;
+    }
+    let name = match &statement.kind {
+        StatementKind::Call(call) => call.name.upper(source),
+        StatementKind::Command(name) => name.upper(source),
+        StatementKind::Word(word) if word.address.is(source, "L") => match &word.value {
+            WordValue::Number(n) => format!("L{}", upper(n.span.of(source))),
+            WordValue::Expr(_) => return None,
+        },
+        _ => return None,
+    };
+    Some((name, statement))
 }
 
 /// The texts of the subprograms `main` calls, and those they call in turn,

@@ -153,6 +153,9 @@ struct Content {
     commands: Vec<String>,
     /// Subprograms and cycles called.
     calls: Vec<(String, Vec<Option<Value>>)>,
+    /// `MCALL NAME(...)`: a modal call from the next block on; `MCALL`
+    /// alone (`Some(None)`) ends it.
+    modal: Option<Option<ModalCall>>,
 }
 
 impl Content {
@@ -193,6 +196,15 @@ struct Calling {
     times: u32,
 }
 
+/// A modal call (`MCALL`): the subprogram called after each block that
+/// moves, at the program level it was set on.
+#[derive(Clone)]
+struct ModalCall {
+    name: String,
+    arguments: Vec<Option<Value>>,
+    level: usize,
+}
+
 /// Where a subprogram returns to, and what the caller had.
 struct Return<'a, 'src> {
     model: &'a Model<'src>,
@@ -221,6 +233,8 @@ struct Interpreter<'a, 'src> {
     program: Option<String>,
     /// The call the block just run makes, entered after it.
     calling: Option<Calling>,
+    /// The modal call in force (`MCALL`).
+    modal_call: Option<ModalCall>,
     /// The arc the block just run moves along, for [`BlockEnd::arc`].
     last_arc: Option<Arc>,
     source: &'src [u8],
@@ -329,6 +343,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             stack: Vec::new(),
             program: None,
             calling: None,
+            modal_call: None,
             last_arc: None,
             source: model.source,
             setup,
@@ -555,6 +570,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         .collect();
                     content.calls.push((call.name.upper(source), arguments));
                 }
+                StatementKind::IndirectCall { keyword, target } if keyword.is(source, "MCALL") => {
+                    content.modal = Some(match target {
+                        None => None,
+                        Some(target) => self.modal_call(row, statement.span, *target),
+                    });
+                }
                 StatementKind::IndirectCall { keyword, target } => {
                     let keyword = keyword.upper(source);
                     // `CALL "NAME"`: the name as a string written out.
@@ -564,7 +585,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         Some(name) if keyword == "CALL" => {
                             content.calls.push((name.to_ascii_uppercase(), Vec::new()));
                         }
-                        _ => self.unknown(row, statement.span, format!("{keyword} is not followed (a modal, external or computed call): what it moves, and its time, are not in the run")),
+                        _ => self.unknown(row, statement.span, format!("{keyword} is not followed (an external or computed call): what it moves, and its time, are not in the run")),
                     }
                 }
                 StatementKind::If { condition: expr } => {
@@ -1063,11 +1084,60 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 exact_here,
             );
         }
+        // The modal call follows a block that moves (Siemens, Programming
+        // Manual, "Subprogram technique", "Modal subprogram call (MCALL)":
+        // after each block with path motion), not the block that sets it,
+        // and not the moves of the subprogram it calls.
+        if let Some(modal) = &self.modal_call {
+            if moves && self.calling.is_none() && self.level() == modal.level {
+                self.calling = Some(Calling {
+                    name: modal.name.clone(),
+                    arguments: modal.arguments.clone(),
+                    times: 1,
+                });
+            }
+        }
+        if let Some(modal) = content.modal {
+            self.modal_call = modal;
+        }
         if ends {
             Flow::End
         } else {
             Flow::Next
         }
+    }
+
+    /// The modal call `MCALL` sets with the text at `target`, its arguments
+    /// evaluated now; `None`, named, where it is not followed.
+    fn modal_call(&mut self, row: usize, span: Span, target: Span) -> Option<ModalCall> {
+        let Some((name, statement)) = crate::run::programs::modal_call(self.source, target) else {
+            self.unknown(row, span, "MCALL's program is read at run time (a path or an expression): the modal call is not followed".into());
+            return None;
+        };
+        if !self.programs.subprograms.contains_key(&name) {
+            self.unknown(row, span, format!("`{name}`, called by MCALL after each block that moves, is not followed: no subprogram of that name beside the program or in the cycle directories (--cycles); what it moves, and its time, are not in the run"));
+            return None;
+        }
+        let arguments = match &statement.kind {
+            StatementKind::Call(call) => call
+                .arguments
+                .items
+                .iter()
+                .map(|a| evaluate(self.source, a.value.as_ref()?, &self.variables).ok())
+                .collect(),
+            _ => Vec::new(),
+        };
+        Some(ModalCall {
+            name,
+            arguments,
+            level: self.level(),
+        })
+    }
+
+    /// The program level running: the subprograms entered, not the
+    /// sections of a program repeated (REPEAT), which run at its level.
+    fn level(&self) -> usize {
+        self.stack.iter().filter(|r| r.section.is_none()).count()
     }
 
     fn finish(mut self) -> Report {
