@@ -111,6 +111,71 @@ fn under_a_rotation_one_axis_moves_the_machine_axes_together() {
     );
 }
 
+/// Polar coordinates (Programming Manual Fundamentals, "Travel commands
+/// with polar coordinates"): a pole by G111 (in the work's coordinates) and
+/// G112 (from the last pole), moves by AP (from the plane's horizontal
+/// axis, counter-clockwise, AC/IC) and RP (kept until a new one), an arc
+/// about the pole, a new plane measuring from its own horizontal axis.
+#[test]
+fn polar_coordinates_move_about_the_pole() {
+    let program = "G17 G0 X10 Y30 Z10\n\
+                   G111 X10 Y20\n\
+                   G1 AP=0 RP=30 F1000\n\
+                   AP=90\n\
+                   AP=IC(90)\n\
+                   G112 X5 Y0\n\
+                   AP=AC(180) RP=5\n\
+                   G3 AP=0\n\
+                   G1 G18 AP=0 RP=1\n\
+                   G91 AP=45\n\
+                   M30\n";
+    let data = MachineData::read(machine("").as_bytes());
+    let setup = Setup::of(&data);
+    let model = Model::of(program.as_bytes());
+    let programs = Programs::alone(&model);
+    let mut ends: Vec<(usize, [f64; 3])> = Vec::new();
+    let report = run(
+        &programs,
+        &setup,
+        &Supplied::default(),
+        &Options::default(),
+        |end| {
+            let at = |k: usize| end.mcs[k].expect("known");
+            ends.push((end.line, [at(0), at(1), at(2)]));
+        },
+    );
+    let at = |line: usize| {
+        ends.iter()
+            .rev()
+            .find(|(l, _)| *l == line)
+            .map(|(_, p)| *p)
+            .expect("the block's end")
+    };
+    let near = |a: [f64; 3], b: [f64; 3], what: &str| {
+        for k in 0..3 {
+            assert_near(a[k], b[k], 1e-9, what);
+        }
+    };
+    near(at(3), [40.0, 20.0, 10.0], "AP=0 RP=30 about (10, 20)");
+    near(at(4), [10.0, 50.0, 10.0], "AP=90, the radius kept");
+    near(at(5), [-20.0, 20.0, 10.0], "AP=IC(90) from 90");
+    near(at(7), [10.0, 20.0, 10.0], "AP=AC(180) RP=5 about (15, 20)");
+    near(at(8), [20.0, 20.0, 10.0], "G3 to AP=0 about the pole");
+    // The arc from 180 degrees counter-clockwise to 0 passes 270: Y 15.
+    assert_near(
+        report.axes[1].min.expect("Y"),
+        15.0,
+        1e-9,
+        "the arc's lowest point",
+    );
+    // G18: the horizontal axis is Z, the vertical X; the pole's Z is 0.
+    near(at(9), [15.0, 20.0, 1.0], "G18 AP=0 RP=1");
+    // AP under G91 without AC or IC is named, not guessed.
+    let unknown = format!("{:?}", report.unknown);
+    assert!(unknown.contains("AP= under G91"), "{unknown}");
+    assert!(!unknown.contains("polar coordinates"), "{unknown}");
+}
+
 /// SCALE and MIRROR replace the programmable frame as TRANS and ROT do;
 /// ASCALE and AMIRROR add to it: X5 under TRANS X10 then ASCALE X2 is 20,
 /// under SCALE X2 alone 10, mirrored -10.
@@ -636,6 +701,23 @@ fn every_real_program_runs_without_a_panic() {
     }
 }
 
+/// `run --format json --blocks` of `MAIN.MPF` on `MACHINE.INI` in `dir`.
+fn run_with_blocks(dir: &std::path::Path) -> serde_json::Value {
+    let json = command(
+        &[
+            "run",
+            "--machine",
+            dir.join("MACHINE.INI").to_str().expect("utf-8"),
+            "--format",
+            "json",
+            "--blocks",
+            dir.join("MAIN.MPF").to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    serde_json::from_str(&stdout(&json)).expect("JSON")
+}
+
 /// Subprograms are followed as the control runs them: found beside the
 /// program in any case, `L105` with `P` repetitions, a PROC given its
 /// arguments by value, R parameters shared by every level, DEF variables
@@ -659,19 +741,7 @@ fn subprograms_are_followed() {
         "PROC POCKET(REAL _WIDTH, REAL _DEPTH)\nG1 X=_WIDTH Z=-_DEPTH F300\nRET\n",
     )
     .expect("write");
-    let json = command(
-        &[
-            "run",
-            "--machine",
-            dir.join("MACHINE.INI").to_str().expect("utf-8"),
-            "--format",
-            "json",
-            "--blocks",
-            dir.join("MAIN.MPF").to_str().expect("utf-8"),
-        ],
-        b"",
-    );
-    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    let read = run_with_blocks(&dir);
     // Three runs of L105 take X to 30, POCKET to 40 and Z -5; R1 counts the runs.
     assert_eq!(read["axes"]["X1"]["max"], 40.0, "{read}");
     assert_eq!(read["axes"]["Z1"]["min"], -5.0);
@@ -735,19 +805,7 @@ fn a_modal_call_follows_each_block_that_moves() {
         "PROC DRILL(REAL _DEPTH)\nG91 G1 Z=-_DEPTH F100\nG0 Z=_DEPTH\nG90\nRET\n",
     )
     .expect("write");
-    let json = command(
-        &[
-            "run",
-            "--machine",
-            dir.join("MACHINE.INI").to_str().expect("utf-8"),
-            "--format",
-            "json",
-            "--blocks",
-            dir.join("MAIN.MPF").to_str().expect("utf-8"),
-        ],
-        b"",
-    );
-    let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+    let read = run_with_blocks(&dir);
     let blocks = read["blocks"].as_array().expect("blocks");
     // Each drilling, at the X it follows: the depth given at the MCALL (5),
     // not R1's later value.

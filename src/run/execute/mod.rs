@@ -4,6 +4,7 @@
 
 mod calls;
 mod motion;
+mod polar;
 mod swivel;
 mod timing;
 
@@ -235,6 +236,8 @@ struct Interpreter<'a, 'src> {
     calling: Option<Calling>,
     /// The modal call in force (`MCALL`).
     modal_call: Option<ModalCall>,
+    /// The pole and the polar words last programmed (G110-G112, AP, RP).
+    polar: polar::Polar,
     /// The arc the block just run moves along, for [`BlockEnd::arc`].
     last_arc: Option<Arc>,
     source: &'src [u8],
@@ -344,6 +347,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             program: None,
             calling: None,
             modal_call: None,
+            polar: polar::Polar::default(),
             last_arc: None,
             source: model.source,
             setup,
@@ -890,6 +894,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut dwell_value = None;
         let mut called: Vec<(String, Vec<Option<Value>>)> = Vec::new();
         let mut times = 1;
+        let (mut ap, mut rp, mut pole): (polar::Given, polar::Given, Option<u32>) =
+            (None, None, None);
         for word in &content.words {
             let value = &word.value;
             match word.name.as_ref() {
@@ -905,9 +911,13 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         3 => self.motion = Motion::Counterclockwise,
                         4 => dwell = true,
                         9 => exact_here = true,
-                        17 => self.plane = 0,
-                        18 => self.plane = 1,
-                        19 => self.plane = 2,
+                        17..=19 => {
+                            let plane = *g as usize - 17;
+                            if plane != self.plane {
+                                self.plane = plane;
+                                self.polar.plane_changed();
+                            }
+                        }
                         41 | 42 => self.note("cutter radius compensation (G41/G42) is not modelled: positions are the programmed contour's".into()),
                         53 | 153 => suppress_frames = true,
                         500 => self.settable = Frame::identity(self.setup.axes.len()),
@@ -920,7 +930,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         93 => self.feed_mode = FeedMode::InverseTime,
                         94 => self.feed_mode = FeedMode::PerMinute,
                         95 => self.feed_mode = FeedMode::PerRevolution,
-                        110..=112 => self.unknown(row, span, "polar coordinates (G110-G112) are not modelled".into()),
+                        110..=112 => pole = Some(*g as u32),
                         _ => {}
                     }
                 }
@@ -985,13 +995,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     centre[k] = Some((value.clone(), word.coordinate));
                 }
                 "CR" => radius = Some(value.clone()),
-                "AR" | "AP" | "RP" => self.unknown(
+                "AP" => ap = Some((value.clone(), word.coordinate)),
+                "RP" => rp = Some((value.clone(), word.coordinate)),
+                "AR" => self.unknown(
                     row,
                     span,
-                    format!(
-                        "`{}` (an arc by its angle, polar coordinates) is not modelled",
-                        word.name
-                    ),
+                    "`AR` (an arc by its opening angle) is not modelled".into(),
                 ),
                 "TURN" => self.unknown(
                     row,
@@ -1071,6 +1080,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 Some(Err(why)) => self.unknown(row, span, format!("the dwell's time: {why}")),
                 None => {}
             }
+        }
+        if let Some(kind) = pole {
+            self.define_pole(row, span, kind, &mut targets, (&ap, &rp));
+        } else if ap.is_some() || rp.is_some() {
+            self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
         }
         let moves = targets.iter().any(Option::is_some);
         if moves {
