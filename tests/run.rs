@@ -176,6 +176,56 @@ fn polar_coordinates_move_about_the_pole() {
     assert!(!unknown.contains("polar coordinates"), "{unknown}");
 }
 
+/// An arc by its end and opening angle (`AR=`: the centre on the side its
+/// direction and angle give, past 180 degrees the long way) and a helix's
+/// full turns more (`TURN=`: their length in its time).
+#[test]
+fn an_arc_by_its_opening_angle_and_a_helix_by_its_turns() {
+    let travel = |program: &str| {
+        let report = dry_run(&machine(""), program);
+        let (x, y) = (&report.axes[0], &report.axes[1]);
+        let pair = |a: Option<f64>, b: Option<f64>| [a.expect("min"), b.expect("max")];
+        (pair(x.min, x.max), pair(y.min, y.max), report)
+    };
+    let near = |a: [f64; 2], b: [f64; 2], what: &str| {
+        assert_near(a[0], b[0], 1e-9, what);
+        assert_near(a[1], b[1], 1e-9, what);
+    };
+    // A half turn counter-clockwise from (0, 0) to (20, 0): about (10, 0), down to Y -10.
+    let (x, y, _) = travel("G17 G0 X0 Y0 Z0\nG3 X20 Y0 AR=180 F600\nM30\n");
+    near(x, [0.0, 20.0], "AR=180 X");
+    near(y, [-10.0, 0.0], "AR=180 Y");
+    // Three quarters clockwise from (0, 0) to (10, 10): radius 10 about (0, 10).
+    let (x, y, _) = travel("G17 G0 X0 Y0 Z0\nG2 X10 Y10 AR=270 F600\nM30\n");
+    near(x, [-10.0, 10.0], "AR=270 X");
+    near(y, [0.0, 20.0], "AR=270 Y");
+    // A quarter the short way is the same arc as CR=+radius.
+    let (x, y, _) = travel("G17 G0 X0 Y0 Z0\nG2 X10 Y10 AR=90 F600\nM30\n");
+    let (cx, cy, _) = travel("G17 G0 X0 Y0 Z0\nG2 X10 Y10 CR=10 F600\nM30\n");
+    near(x, cx, "AR=90 as CR=10, X");
+    near(y, cy, "AR=90 as CR=10, Y");
+    // One full turn down 6 mm, and the same with two turns more: each
+    // takes the closed form d/v + v/a at the feed (10 mm/s), `a` MD32300
+    // (2,500 mm/s²) over the geometry axes' largest share of the path
+    // (the circle's: its length in the plane over the helix's).
+    let helix = |turns: &str| {
+        let program = format!("G17 G0 X10 Y0 Z0\nG3 X10 Y0 Z-6 I-10 J0 {turns} F600\nM30\n");
+        let (x, _, report) = travel(&program);
+        near(x, [-10.0, 10.0], "the helix's X");
+        report.time_s
+    };
+    let in_plane = |turns: f64| 10.0 * turns * std::f64::consts::TAU;
+    let time = |turns: f64| {
+        let length = in_plane(turns).hypot(6.0);
+        length / 10.0 + 10.0 / (2500.0 / (in_plane(turns) / length))
+    };
+    let extra = helix("TURN=2") - helix("");
+    assert_near(extra, time(3.0) - time(1.0), 1e-9, "two turns more");
+    // What is not modelled is named.
+    let (_, _, report) = travel("G17 G0 X0 Y0 Z0\nG3 I10 J0 AR=90 F600\nM30\n");
+    assert!(format!("{:?}", report.unknown).contains("centre and opening angle"));
+}
+
 /// SCALE and MIRROR replace the programmable frame as TRANS and ROT do;
 /// ASCALE and AMIRROR add to it: X5 under TRANS X10 then ASCALE X2 is 20,
 /// under SCALE X2 alone 10, mirrored -10.

@@ -890,7 +890,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut targets: Vec<Option<(Result<f64, String>, Coordinate)>> =
             vec![None; self.setup.axes.len()];
         let mut centre: [Option<(Result<f64, String>, Coordinate)>; 3] = [None, None, None];
-        let mut radius = None;
+        let mut shape = motion::ArcShape::default();
         let mut dwell_value = None;
         let mut called: Vec<(String, Vec<Option<Value>>)> = Vec::new();
         let mut times = 1;
@@ -994,19 +994,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     let k = (word.name.as_bytes()[0] - b'I') as usize;
                     centre[k] = Some((value.clone(), word.coordinate));
                 }
-                "CR" => radius = Some(value.clone()),
+                "CR" => shape.radius = Some(value.clone()),
+                "AR" => shape.opening = Some(value.clone()),
+                "TURN" => shape.turns = Some(value.clone()),
                 "AP" => ap = Some((value.clone(), word.coordinate)),
                 "RP" => rp = Some((value.clone(), word.coordinate)),
-                "AR" => self.unknown(
-                    row,
-                    span,
-                    "`AR` (an arc by its opening angle) is not modelled".into(),
-                ),
-                "TURN" => self.unknown(
-                    row,
-                    span,
-                    "TURN (a helix's full turns) is not modelled".into(),
-                ),
                 name if is_numbered_call(name) => called.push((name.to_string(), Vec::new())),
                 "P" => match value {
                     Ok(p) if *p >= 1.0 && p.fract() == 0.0 => times = *p as u32,
@@ -1086,6 +1078,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         } else if ap.is_some() || rp.is_some() {
             self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
         }
+        if shape.opening.is_some() && centre.iter().any(Option::is_some) {
+            self.unknown(row, span, "an arc by its centre and opening angle (AR=) is not modelled: its end is not computed, and its move is left out".into());
+            targets.iter_mut().take(3).for_each(|target| *target = None);
+            centre = [None, None, None];
+        }
         let moves = targets.iter().any(Option::is_some);
         if moves {
             self.motion_block(
@@ -1093,7 +1090,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 span,
                 &targets,
                 &centre,
-                radius,
+                &shape,
                 suppress_frames,
                 exact_here,
             );

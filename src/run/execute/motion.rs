@@ -13,6 +13,7 @@ use crate::run::frame::{rpy, scale_mirror, Frame};
 use crate::run::{Side, Violation, MOST_VIOLATIONS};
 use crate::span::Span;
 use crate::syntax::tree::FrameKind;
+use std::f64::consts::TAU;
 
 impl Interpreter<'_, '_> {
     pub(super) fn units(&mut self, row: usize, span: Span, g: u32) {
@@ -321,7 +322,7 @@ impl Interpreter<'_, '_> {
         span: Span,
         targets: &[Option<(Result<f64, String>, Coordinate)>],
         centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
-        radius: Option<Result<f64, String>>,
+        shape: &ArcShape,
         suppress: bool,
         exact_here: bool,
     ) {
@@ -398,7 +399,7 @@ impl Interpreter<'_, '_> {
         // The arc, in the machine's coordinates.
         let arc = match self.motion {
             Motion::Clockwise | Motion::Counterclockwise => {
-                self.arc(row, span, &start, &end, centre, radius, suppress, tool)
+                self.arc(row, span, &start, &end, centre, shape, suppress, tool)
             }
             _ => None,
         };
@@ -461,7 +462,7 @@ impl Interpreter<'_, '_> {
         start: &[Option<f64>],
         end: &[Option<f64>],
         centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
-        radius: Option<Result<f64, String>>,
+        shape: &ArcShape,
         suppress: bool,
         tool: [f64; 3],
     ) -> Option<Arc> {
@@ -481,7 +482,20 @@ impl Interpreter<'_, '_> {
         } else {
             1.0
         };
-        let c = match (centre.iter().any(Option::is_some), radius) {
+        let given_centre = centre.iter().any(Option::is_some);
+        let radius = match (&shape.radius, &shape.opening) {
+            (Some(radius), _) => Some(radius.clone()),
+            (None, Some(Ok(opening))) => match radius_of_opening(s, e, *opening, normal) {
+                Some(radius) => Some(Ok(radius / self.length_scale)),
+                None => {
+                    self.unknown(row, span, format!("an opening angle AR={opening} outside 0..360 degrees, or an arc whose end is its start: not modelled"));
+                    return None;
+                }
+            },
+            (None, Some(Err(why))) => Some(Err(format!("by its opening angle AR, {why}"))),
+            (None, None) => None,
+        };
+        let c = match (given_centre, radius) {
             (true, _) => {
                 let mut c = s;
                 for (k, given) in centre.iter().enumerate() {
@@ -519,7 +533,20 @@ impl Interpreter<'_, '_> {
                 return None;
             }
         };
-        let arc = Arc::through(s, e, c, normal)?;
+        let mut arc = Arc::through(s, e, c, normal)?;
+        // TURN=n: n full turns more, the helix's rise spread over them all.
+        match &shape.turns {
+            Some(Ok(turns)) if *turns >= 0.0 && turns.fract() == 0.0 && *turns <= 999.0 => {
+                arc.sweep += turns * TAU;
+            }
+            Some(Ok(turns)) => {
+                self.unknown(row, span, format!("TURN={turns} is no whole number of turns from 0 to 999: the turns are not added"));
+            }
+            Some(Err(why)) => {
+                self.unknown(row, span, format!("TURN is {why}: the turns are not added"))
+            }
+            None => {}
+        }
         // Into the machine: the frames turn and shift the arc, the tool shifts it.
         let to_machine = |p: Vector3<f64>| -> Vector3<f64> {
             let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
@@ -638,4 +665,35 @@ fn on_geometry(point: &mut [Option<f64>], map: impl Fn(Vector3<f64>) -> Vector3<
         _ => [None; 3],
     };
     point[..3].copy_from_slice(&mapped);
+}
+
+/// What a circular block gives of its arc beyond its end and centre: its
+/// radius (`CR=`), its opening angle (`AR=`, degrees), the full turns it
+/// adds (`TURN=`).
+#[derive(Default)]
+pub(super) struct ArcShape {
+    pub radius: Option<Result<f64, String>>,
+    pub opening: Option<Result<f64, String>>,
+    pub turns: Option<Result<f64, String>>,
+}
+
+/// The signed radius (`CR=`'s sign: negative past a half turn) of the arc
+/// from `start` to `end` about `normal` that opens by `opening` degrees;
+/// `None` outside (0, 360) or where the chord is empty.
+fn radius_of_opening(
+    start: Vector3<f64>,
+    end: Vector3<f64>,
+    opening: f64,
+    normal: Vector3<f64>,
+) -> Option<f64> {
+    if !(opening > 0.0 && opening < 360.0) {
+        return None;
+    }
+    let d = end - start;
+    let chord = (d - normal * d.dot(&normal)).norm();
+    if chord < 1e-12 {
+        return None;
+    }
+    let radius = chord / 2.0 / (opening.to_radians() / 2.0).sin();
+    Some(if opening <= 180.0 { radius } else { -radius })
 }
