@@ -221,9 +221,23 @@ fn an_arc_by_its_opening_angle_and_a_helix_by_its_turns() {
     };
     let extra = helix("TURN=2") - helix("");
     assert_near(extra, time(3.0) - time(1.0), 1e-9, "two turns more");
-    // What is not modelled is named.
-    let (_, _, report) = travel("G17 G0 X0 Y0 Z0\nG3 I10 J0 AR=90 F600\nM30\n");
-    assert!(format!("{:?}", report.unknown).contains("centre and opening angle"));
+    // By its centre and opening: a quarter counter-clockwise from (0, 0)
+    // about (10, 0) ends at (10, -10); clockwise, at (10, 10).
+    let (x, y, _) = travel("G17 G0 X0 Y0 Z0\nG3 I10 J0 AR=90 F600\nM30\n");
+    near(x, [0.0, 10.0], "I J AR=90 counter-clockwise, X");
+    near(y, [-10.0, 0.0], "I J AR=90 counter-clockwise, Y");
+    let (x, y, _) = travel("G17 G0 X0 Y0 Z0\nG2 I=AC(10) J0 AR=270 F600\nM30\n");
+    near(x, [0.0, 20.0], "I=AC J AR=270 clockwise, X");
+    near(y, [-10.0, 10.0], "I=AC J AR=270 clockwise, Y");
+    // G18: the plane's horizontal axis is Z, its vertical X.
+    let (x, _, report) = travel("G18 G0 X0 Y0 Z0\nG3 K10 I0 AR=90 F600\nM30\n");
+    near(x, [-10.0, 0.0], "G18 K I AR=90, X");
+    let z = &report.axes[2];
+    near(
+        [z.min.expect("Z"), z.max.expect("Z")],
+        [0.0, 10.0],
+        "G18 K I AR=90, Z",
+    );
 }
 
 /// SCALE and MIRROR replace the programmable frame as TRANS and ROT do;

@@ -1078,10 +1078,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         } else if ap.is_some() || rp.is_some() {
             self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
         }
-        if shape.opening.is_some() && centre.iter().any(Option::is_some) {
-            self.unknown(row, span, "an arc by its centre and opening angle (AR=) is not modelled: its end is not computed, and its move is left out".into());
-            targets.iter_mut().take(3).for_each(|target| *target = None);
-            centre = [None, None, None];
+        let circular = matches!(self.motion, Motion::Clockwise | Motion::Counterclockwise);
+        if circular && shape.opening.is_some() && centre.iter().any(Option::is_some) {
+            if !self.end_of_opening(row, span, &mut targets, &centre, &mut shape) {
+                targets.iter_mut().take(3).for_each(|target| *target = None);
+                centre = [None, None, None];
+            }
         }
         let moves = targets.iter().any(Option::is_some);
         if moves {

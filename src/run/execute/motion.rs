@@ -454,6 +454,63 @@ impl Interpreter<'_, '_> {
         self.time(row, span, &moved, arc.as_ref(), exact_here);
     }
 
+    /// An arc by its centre and opening angle (`G2/G3 I.. J.. AR=..`): its
+    /// end in the plane, set among `targets` as the end a block writes; the
+    /// opening is then spent. `false`, named, where the start, the centre
+    /// or the angle is unknown.
+    pub(super) fn end_of_opening(
+        &mut self,
+        row: usize,
+        span: Span,
+        targets: &mut [Option<(Result<f64, String>, Coordinate)>],
+        centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
+        shape: &mut ArcShape,
+    ) -> bool {
+        let Some(opening) = shape.opening.take() else {
+            return true;
+        };
+        let (h, v) = plane_axes(self.plane);
+        let scale = self.length_scale;
+        let start = [h, v].map(|k| self.programmed.get(k).copied().flatten());
+        let centre_of = |k: usize, start: Option<f64>| match &centre[k] {
+            Some((Ok(c), Coordinate::Absolute)) => Some(c * scale),
+            Some((Ok(c), _)) => start.map(|s| s + c * scale),
+            Some((Err(_), _)) => None,
+            None => start,
+        };
+        let (Ok(opening), [Some(sh), Some(sv)]) = (opening, start) else {
+            self.unknown(row, span, "an arc by its centre and opening angle (AR=) from a start or with an angle unknown offline: its move is left out".into());
+            return false;
+        };
+        let (Some(ch), Some(cv)) = (centre_of(h, Some(sh)), centre_of(v, Some(sv))) else {
+            self.unknown(
+                row,
+                span,
+                "the arc's centre is unknown offline: its move is left out".into(),
+            );
+            return false;
+        };
+        if !(opening > 0.0 && opening <= 360.0) {
+            self.unknown(
+                row,
+                span,
+                format!(
+                    "an opening angle AR={opening} outside 0..360 degrees: its move is left out"
+                ),
+            );
+            return false;
+        }
+        let turn = match self.motion {
+            Motion::Clockwise => -opening,
+            _ => opening,
+        };
+        let (sin, cos) = turn.to_radians().sin_cos();
+        let (dh, dv) = (sh - ch, sv - cv);
+        targets[h] = Some((Ok((ch + dh * cos - dv * sin) / scale), Coordinate::Absolute));
+        targets[v] = Some((Ok((cv + dh * sin + dv * cos) / scale), Coordinate::Absolute));
+        true
+    }
+
     #[allow(clippy::too_many_arguments)]
     pub(super) fn arc(
         &mut self,
@@ -696,4 +753,11 @@ fn radius_of_opening(
     }
     let radius = chord / 2.0 / (opening.to_radians() / 2.0).sin();
     Some(if opening <= 180.0 { radius } else { -radius })
+}
+
+/// The horizontal and vertical axis of plane `plane` (0: G17 X Y, 1: G18
+/// Z X, 2: G19 Y Z), as geometry axis indices: a turn from the first
+/// towards the second is counter-clockwise about the plane's normal.
+pub(super) fn plane_axes(plane: usize) -> (usize, usize) {
+    [(0, 1), (2, 0), (1, 2)][plane]
 }

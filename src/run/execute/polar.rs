@@ -7,6 +7,7 @@
 //! G2/G3 turn about the pole. Without a pole, the work's zero is the pole.
 //! The angle is kept until a new pole or plane; the radius until a new one.
 
+use super::motion::plane_axes;
 use super::{Coordinate, Interpreter};
 use crate::span::Span;
 
@@ -30,12 +31,6 @@ impl Polar {
     pub(super) fn plane_changed(&mut self) {
         self.angle = None;
     }
-}
-
-/// The horizontal and vertical axis of plane `plane` (0: G17 X Y, 1: G18
-/// Z X, 2: G19 Y Z), as geometry axis indices.
-fn plane_axes(plane: usize) -> (usize, usize) {
-    [(0, 1), (2, 0), (1, 2)][plane]
 }
 
 impl Interpreter<'_, '_> {
