@@ -1079,11 +1079,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
         }
         let circular = matches!(self.motion, Motion::Clockwise | Motion::Counterclockwise);
-        if circular && shape.opening.is_some() && centre.iter().any(Option::is_some) {
-            if !self.end_of_opening(row, span, &mut targets, &centre, &mut shape) {
-                targets.iter_mut().take(3).for_each(|target| *target = None);
-                centre = [None, None, None];
-            }
+        let by_centre = circular && shape.opening.is_some() && centre.iter().any(Option::is_some);
+        if by_centre && !self.end_of_opening(row, span, &mut targets, &centre, &mut shape) {
+            targets.iter_mut().take(3).for_each(|target| *target = None);
+            centre = [None, None, None];
         }
         let moves = targets.iter().any(Option::is_some);
         if moves {
