@@ -896,6 +896,32 @@ fn a_modal_call_follows_each_block_that_moves() {
     assert!(time > 3.0 * 5.0 / 100.0 * 60.0, "{time}");
 }
 
+/// `EXTCALL` runs the program it names as a subprogram where the name is
+/// written out: a path's last part, with or without `_N_` and `_SPF`, or
+/// a file's name; one that is not there is named.
+#[test]
+fn an_external_call_is_followed_where_its_program_is_beside() {
+    let dir = scratch("run_extcall");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "G0 X0 Y0 Z0\nEXTCALL \"/_N_WKS_DIR/_N_PART_WPD/_N_ROUGH_SPF\"\n\
+         EXTCALL(\"finish.spf\")\nEXTCALL \"NOTHERE\"\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(dir.join("ROUGH.SPF"), "G1 X10 F600\nM17\n").expect("write");
+    std::fs::write(dir.join("finish.spf"), "G1 Y5 F600\nM17\n").expect("write");
+    let read = run_with_blocks(&dir);
+    assert_eq!(read["axes"]["X1"]["max"], 10.0, "{read}");
+    assert_eq!(read["axes"]["Y1"]["max"], 5.0, "{read}");
+    let unknown = read["unknown"].to_string();
+    assert!(unknown.contains("`NOTHERE` is not followed"), "{unknown}");
+    assert!(
+        !unknown.contains("ROUGH") && !unknown.contains("FINISH"),
+        "{unknown}"
+    );
+}
+
 /// What the NC cannot know takes the seconds sinuprep.toml gives it, each
 /// time it runs; a time that is no number of seconds is refused.
 #[test]

@@ -67,6 +67,13 @@ fn called(model: &Model) -> BTreeSet<String> {
                     Some((name, _)) => name,
                     None => continue,
                 },
+                StatementKind::IndirectCall {
+                    keyword,
+                    target: Some(target),
+                } if keyword.is(source, "EXTCALL") => match external_call(source, *target) {
+                    Some(name) => name,
+                    None => continue,
+                },
                 StatementKind::IndirectCall { keyword, target } if keyword.is(source, "CALL") => {
                     let Some(target) = target else { continue };
                     let text = String::from_utf8_lossy(target.of(source))
@@ -136,6 +143,29 @@ pub(crate) fn modal_call(source: &[u8], target: Span) -> Option<(String, Stateme
         _ => return None,
     };
     Some((name, statement))
+}
+
+/// The program `EXTCALL "..."` names, as the control reads the name (Job
+/// Planning, "Execute external subprogram (EXTCALL)"): the last part of a
+/// path, with or without `_N_` and `_SPF`/`_MPF` (or a file's `.SPF`,
+/// `.MPF`), upper case; `None` for a name computed at run time.
+pub(crate) fn external_call(source: &[u8], target: Span) -> Option<String> {
+    let text = String::from_utf8_lossy(target.of(source));
+    let mut text = text.trim();
+    while let Some(inner) = text.strip_prefix('(').and_then(|t| t.strip_suffix(')')) {
+        text = inner.trim();
+    }
+    let path = text.strip_prefix('"')?.strip_suffix('"')?;
+    if path.contains('"') {
+        return None;
+    }
+    let name = path.rsplit(['/', '\\']).next()?.to_ascii_uppercase();
+    let name = name.strip_prefix("_N_").unwrap_or(&name);
+    let name = ["_SPF", "_MPF", ".SPF", ".MPF"]
+        .iter()
+        .find_map(|end| name.strip_suffix(end))
+        .unwrap_or(name);
+    (!name.is_empty()).then(|| name.to_string())
 }
 
 /// The texts of the subprograms `main` calls, and those they call in turn,
