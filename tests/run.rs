@@ -240,6 +240,61 @@ fn an_arc_by_its_opening_angle_and_a_helix_by_its_turns() {
     );
 }
 
+/// DYNNORM..DYNFINISH choose the dynamic response group whose MD32300 a
+/// block takes, and CYCLE832 chooses one by its machining type as the
+/// standard cycle does (said among the assumptions): a 100 mm move at
+/// 100 mm/s, exact stop, takes d/v + v/a of the group chosen.
+#[test]
+fn the_dynamic_response_follows_the_program() {
+    let machine =
+        machine("N32300 $MA_MAX_AX_ACCEL[2,AX1]=1.\nN32300 $MA_MAX_AX_ACCEL[4,AX1]=0.5\n");
+    let program = "G0 X0 Y0 Z0\nG1 X100 F6000\nDYNFINISH\nG1 X0\n\
+                   CYCLE832(0.01, 3, 1)\nG1 X100\nCYCLE832(0.01, 1001, 1)\nG1 X0\n\
+                   CYCLE832()\nG1 X100\nM30\n";
+    let data = MachineData::read(machine.as_bytes());
+    let setup = Setup::of(&data);
+    let model = Model::of(program.as_bytes());
+    let programs = Programs::alone(&model);
+    let mut times: Vec<(usize, f64)> = Vec::new();
+    let report = run(
+        &programs,
+        &setup,
+        &Supplied::default(),
+        &Options::default(),
+        |end| times.push((end.line, end.t_s)),
+    );
+    let took = |line: usize| {
+        let at = times
+            .iter()
+            .position(|(l, _)| *l == line)
+            .expect("the block");
+        times[at].1 - times[at - 1].1
+    };
+    let closed = |a: f64| 100.0 / 100.0 + 100.0 / a;
+    assert_near(took(2), closed(2500.0), 1e-9, "DYNNORM, MD32300[0]");
+    assert_near(took(4), closed(500.0), 1e-9, "DYNFINISH, MD32300[4]");
+    assert_near(
+        took(6),
+        closed(1000.0),
+        1e-9,
+        "CYCLE832 roughing: DYNROUGH, MD32300[2]",
+    );
+    assert_near(
+        took(8),
+        closed(500.0),
+        1e-9,
+        "CYCLE832 finishing (units digit 1): DYNFINISH",
+    );
+    assert_near(took(10), closed(2500.0), 1e-9, "CYCLE832(): DYNNORM");
+    assert!(
+        report.assumptions.iter().any(|a| a.contains("CUST_832")),
+        "{:?}",
+        report.assumptions
+    );
+    let unknown = format!("{:?}", report.unknown);
+    assert!(!unknown.contains("DYNFINISH"), "{unknown}");
+}
+
 /// SCALE and MIRROR replace the programmable frame as TRANS and ROT do;
 /// ASCALE and AMIRROR add to it: X5 under TRANS X10 then ASCALE X2 is 20,
 /// under SCALE X2 alone 10, mirrored -10.

@@ -242,6 +242,12 @@ pub(crate) const BUILTINS: &[&str] = &[
     "SOFT",
     "BRISK",
     "DRIVE",
+    // The dynamic response of the path (G group 59).
+    "DYNNORM",
+    "DYNPOS",
+    "DYNROUGH",
+    "DYNSEMIFIN",
+    "DYNFINISH",
     "ORIWKS",
     "ORIMKS",
     "ORIAXES",

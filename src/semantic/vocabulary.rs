@@ -49,6 +49,9 @@ const SYNCHRONIZED_ACTIONS: &str = "Function Manual Synchronized Actions";
 /// The List Manual System Variables.
 const SYSTEM_VARIABLES: &str = "List Manual System Variables";
 
+/// Where the dynamic response groups (technology G group 59) are described.
+const BASIC_FUNCTIONS: &str = "Function Manual Basic Functions (B2, Acceleration)";
+
 /// One row of [`WORDS`], on one line each.
 const fn entry(
     name: &'static str,
@@ -226,6 +229,11 @@ pub const WORDS: &[Word] = &[
     entry("BRISK", Command, "The path axes accelerate with their full acceleration at once (no jerk limit).", JOB_PLANNING),
     entry("SOFT", Command, "The path axes accelerate with limited jerk, for smoother motion.", JOB_PLANNING),
     entry("DRIVE", Command, "The path axes accelerate with less acceleration at higher speeds (a knee-shaped characteristic).", JOB_PLANNING),
+    entry("DYNNORM", Command, "The path takes the axes' standard dynamic response: the acceleration and jerk of dynamic response group 0 (MD32300, MD32431).", BASIC_FUNCTIONS),
+    entry("DYNPOS", Command, "The path takes the dynamic response for positioning and tapping: group 1 of MD32300 and MD32431.", BASIC_FUNCTIONS),
+    entry("DYNROUGH", Command, "The path takes the dynamic response for roughing: group 2 of MD32300 and MD32431.", BASIC_FUNCTIONS),
+    entry("DYNSEMIFIN", Command, "The path takes the dynamic response for finishing: group 3 of MD32300 and MD32431.", BASIC_FUNCTIONS),
+    entry("DYNFINISH", Command, "The path takes the dynamic response for smooth finishing: group 4 of MD32300 and MD32431.", BASIC_FUNCTIONS),
     entry("ACC", Command, "The acceleration of the axis or spindle named, in percent of its machine data value.", FUNDAMENTALS),
     entry("FFWON", Command, "Feedforward control on: the following error of the axes is reduced, so the path keeps closer to the contour at speed.", JOB_PLANNING),
     entry("FFWOF", Command, "Feedforward control off.", JOB_PLANNING),

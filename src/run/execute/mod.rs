@@ -222,6 +222,9 @@ struct Return<'a, 'src> {
     section: Option<(usize, usize)>,
 }
 
+/// G group 59 in its order, which is MD32300's and MD32431's index.
+const DYNAMIC_GROUPS: [&str; 5] = ["DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN", "DYNFINISH"];
+
 /// The most program levels the control nests: the main program and 15
 /// subprograms (Siemens, Programming Manual Fundamentals, "Nesting depth").
 const MOST_LEVELS: usize = 16;
@@ -238,6 +241,10 @@ struct Interpreter<'a, 'src> {
     modal_call: Option<ModalCall>,
     /// The pole and the polar words last programmed (G110-G112, AP, RP).
     polar: polar::Polar,
+    /// The dynamic response group whose MD32300/MD32431 the path takes
+    /// (G group 59: 0 DYNNORM, 1 DYNPOS, 2 DYNROUGH, 3 DYNSEMIFIN, 4
+    /// DYNFINISH), from `--dynamic-group` until the program chooses one.
+    dynamic_group: usize,
     /// The arc the block just run moves along, for [`BlockEnd::arc`].
     last_arc: Option<Arc>,
     source: &'src [u8],
@@ -348,6 +355,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             calling: None,
             modal_call: None,
             polar: polar::Polar::default(),
+            dynamic_group: options.dynamic_group,
             last_arc: None,
             source: model.source,
             setup,
@@ -1032,7 +1040,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "RTLIOF" => self.rapid_linear = false,
                 "TRAORI" | "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
                 "TRAFOOF" => {}
-                _ => {}
+                name => {
+                    if let Some(group) = DYNAMIC_GROUPS.iter().position(|g| *g == name) {
+                        self.dynamic_group = group;
+                    }
+                }
             }
         }
         // A bare name calls a subprogram unless the control knows it.
@@ -1047,7 +1059,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             match name.as_str() {
                 "CYCLE800" => self.cycle800(row, span, &arguments),
                 // What moves nothing: messages, settings, the control's own procedures.
-                "MSG" | "CYCLE832" | "STOPRE" => {}
+                "CYCLE832" => self.cycle832(row, span, &arguments),
+                "MSG" | "STOPRE" => {}
                 _ if crate::semantic::calls::is_predefined(&name) => {}
                 _ if self.calling.is_some() => self.unknown(
                     row,
@@ -1122,6 +1135,36 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             Flow::End
         } else {
             Flow::Next
+        }
+    }
+
+    /// CYCLE832's machining type (`S_TOLM`'s units digit) as the dynamic
+    /// response the standard cycle selects: 0 (or no arguments) DYNNORM,
+    /// 1 finishing DYNFINISH, 2 semi-finishing DYNSEMIFIN, 3 roughing
+    /// DYNROUGH; said among the assumptions, since a machine builder's
+    /// CUST_832 may choose otherwise.
+    fn cycle832(&mut self, row: usize, span: Span, arguments: &[Option<Value>]) {
+        const ASSUMED: &str = "CYCLE832 selects the dynamic response as the standard cycle does (S_TOLM 0 DYNNORM, 1 DYNFINISH, 2 DYNSEMIFIN, 3 DYNROUGH); a machine builder's CUST_832 may choose otherwise";
+        let machining = match arguments.get(1) {
+            None => Some(0.0),
+            Some(Some(Value::Number(tolm))) => Some(tolm.abs() % 10.0),
+            Some(_) => None,
+        };
+        let group = match machining.map(|m| m as u32) {
+            Some(0) => Some(0),
+            Some(1) => Some(4),
+            Some(2) => Some(3),
+            Some(3) => Some(2),
+            _ => None,
+        };
+        match group {
+            Some(group) => {
+                self.dynamic_group = group;
+                if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
+                    self.report.assumptions.push(ASSUMED.to_string());
+                }
+            }
+            None => self.unknown(row, span, "CYCLE832's machining type (S_TOLM) is unknown offline or not 0 to 3: the dynamic response is left as it was".into()),
         }
     }
 

@@ -68,7 +68,7 @@ impl Interpreter<'_, '_> {
                 (FeedMode::InverseTime, Some(_)) => f64::INFINITY,
             },
         };
-        let group = self.options.dynamic_group;
+        let group = self.dynamic_group;
         let mut acceleration = f64::INFINITY;
         let mut jerk = f64::INFINITY;
         let mut complete = true;
@@ -182,7 +182,7 @@ impl Interpreter<'_, '_> {
     /// G0 under RTLIOF: each axis at its own velocity, acceleration and
     /// jerk, the block as long as its slowest axis.
     pub(super) fn single_axis_rapid(&mut self, moved: &[(usize, f64)], exact_here: bool) {
-        let group = self.options.dynamic_group;
+        let group = self.dynamic_group;
         let (mut lower, mut upper) = (0.0f64, Some(0.0f64));
         for &(k, d) in moved {
             let axis = &self.setup.axes[k];
