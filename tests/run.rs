@@ -6,7 +6,7 @@ mod support;
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use sinuprep::machine::MachineData;
-use sinuprep::run::{run, Options, Programs, Report, Setup, Side};
+use sinuprep::run::{run, BlockEnd, Options, Programs, Report, Setup, Side};
 use sinuprep::semantic::{Model, Supplied};
 use support::{assert_exit, run as command, scratch, stdout};
 
@@ -38,6 +38,11 @@ N32300 $MA_MAX_AX_ACCEL[0,AX{axis}]=2.5\nN32431 $MA_MAX_AX_JERK[0,AX{axis}]=40.\
 }
 
 fn dry_run(machine_text: &str, program: &str) -> Report {
+    dry_run_each(machine_text, program, |_| {})
+}
+
+/// [`dry_run`], each block's end handed to `each` as the run passes it.
+fn dry_run_each(machine_text: &str, program: &str, each: impl FnMut(BlockEnd)) -> Report {
     let data = MachineData::read(machine_text.as_bytes());
     assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
     let setup = Setup::of(&data);
@@ -48,7 +53,7 @@ fn dry_run(machine_text: &str, program: &str) -> Report {
         &setup,
         &Supplied::default(),
         &Options::default(),
-        |_| {},
+        each,
     )
 }
 
@@ -129,21 +134,11 @@ fn polar_coordinates_move_about_the_pole() {
                    G1 G18 AP=0 RP=1\n\
                    G91 AP=45\n\
                    M30\n";
-    let data = MachineData::read(machine("").as_bytes());
-    let setup = Setup::of(&data);
-    let model = Model::of(program.as_bytes());
-    let programs = Programs::alone(&model);
     let mut ends: Vec<(usize, [f64; 3])> = Vec::new();
-    let report = run(
-        &programs,
-        &setup,
-        &Supplied::default(),
-        &Options::default(),
-        |end| {
-            let at = |k: usize| end.mcs[k].expect("known");
-            ends.push((end.line, [at(0), at(1), at(2)]));
-        },
-    );
+    let report = dry_run_each(&machine(""), program, |end| {
+        let at = |k: usize| end.mcs[k].expect("known");
+        ends.push((end.line, [at(0), at(1), at(2)]));
+    });
     let at = |line: usize| {
         ends.iter()
             .rev()
@@ -251,18 +246,8 @@ fn the_dynamic_response_follows_the_program() {
     let program = "G0 X0 Y0 Z0\nG1 X100 F6000\nDYNFINISH\nG1 X0\n\
                    CYCLE832(0.01, 3, 1)\nG1 X100\nCYCLE832(0.01, 1001, 1)\nG1 X0\n\
                    CYCLE832()\nG1 X100\nM30\n";
-    let data = MachineData::read(machine.as_bytes());
-    let setup = Setup::of(&data);
-    let model = Model::of(program.as_bytes());
-    let programs = Programs::alone(&model);
     let mut times: Vec<(usize, f64)> = Vec::new();
-    let report = run(
-        &programs,
-        &setup,
-        &Supplied::default(),
-        &Options::default(),
-        |end| times.push((end.line, end.t_s)),
-    );
+    let report = dry_run_each(&machine, program, |end| times.push((end.line, end.t_s)));
     let took = |line: usize| {
         let at = times
             .iter()
