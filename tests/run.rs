@@ -131,6 +131,9 @@ fn polar_coordinates_move_about_the_pole() {
                    G112 X5 Y0\n\
                    AP=AC(180) RP=5\n\
                    G3 AP=0\n\
+                   G110 X-5 Y5\n\
+                   G1 AP=270\n\
+                   G110 AP=45 RP=10\n\
                    G1 G18 AP=0 RP=1\n\
                    G91 AP=45\n\
                    M30\n";
@@ -163,11 +166,20 @@ fn polar_coordinates_move_about_the_pole() {
         1e-9,
         "the arc's lowest point",
     );
-    // G18: the horizontal axis is Z, the vertical X; the pole's Z is 0.
-    near(at(9), [15.0, 20.0, 1.0], "G18 AP=0 RP=1");
-    // AP under G91 without AC or IC is named, not guessed.
+    // G110: from the last position (20, 20), a new pole (15, 25), the
+    // angle forgotten, the radius kept.
+    near(at(10), [15.0, 20.0, 10.0], "G110 X-5 Y5, then AP=270");
+    // G18: the horizontal axis is Z, the vertical X; the pole's Z is the
+    // position's where G110 set it.
+    near(at(12), [15.0, 20.0, 11.0], "G18 AP=0 RP=1");
+    // AP under G91 without AC or IC, and a pole by G110 with AP and RP,
+    // are named, not guessed.
     let unknown = format!("{:?}", report.unknown);
     assert!(unknown.contains("AP= under G91"), "{unknown}");
+    assert!(
+        unknown.contains("a pole by G110 with AP= and RP="),
+        "{unknown}"
+    );
     assert!(!unknown.contains("polar coordinates"), "{unknown}");
 }
 

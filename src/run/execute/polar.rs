@@ -45,6 +45,8 @@ impl Interpreter<'_, '_> {
         targets: &mut [Given],
         (ap, rp): (&Given, &Given),
     ) {
+        // The block's geometry axis words name the pole: none is moved to.
+        let written: Vec<Given> = targets.iter_mut().take(3).map(Option::take).collect();
         let scale = self.length_scale;
         let here = |k: usize| self.programmed.get(k).copied().flatten();
         let base: [Option<f64>; 3] = match kind {
@@ -67,8 +69,8 @@ impl Interpreter<'_, '_> {
                 }
             }
         }
-        for (k, target) in targets.iter_mut().take(3).enumerate() {
-            let Some((value, coordinate)) = target.take() else {
+        for (k, word) in written.into_iter().enumerate() {
+            let Some((value, coordinate)) = word else {
                 continue;
             };
             pole[k] = match (value, coordinate) {
