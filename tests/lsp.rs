@@ -765,6 +765,40 @@ fn a_block_hover_shows_the_dry_run() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A folder of the control's data files named by sinuprep.toml is one
+/// machine to the server as to `check` and `run`: the axis file read after
+/// INITIAL_INI wins (Z1's limit 1.5, not 0.5), and a program's read of a
+/// machine datum has the value the data give.
+#[test]
+fn a_folder_of_machine_data_is_read_as_the_command_line_reads_it() {
+    let dir = scratch("lsp-machine-folder");
+    let folder =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/machine/folder");
+    std::fs::create_dir_all(dir.join("data")).expect("folder");
+    for entry in std::fs::read_dir(&folder).expect("fixture") {
+        let path = entry.expect("entry").path();
+        std::fs::copy(
+            &path,
+            dir.join("data").join(path.file_name().expect("name")),
+        )
+        .expect("copy");
+    }
+    std::fs::write(dir.join("sinuprep.toml"), "machine = \"data\"\n").expect("toml");
+    let uri = format!("file://{}", dir.join("P.MPF").display());
+    let (mut client, _) = Client::start(json!({}));
+    let found = client.open(&uri, "R3=$MA_POS_LIMIT_PLUS[AX2]\nG0 X10 Z1\nM30\n");
+    assert!(found.is_empty(), "{found:?}");
+    let hover = client.request("textDocument/hover", at(&uri, 1, 4));
+    let shown = hover["contents"]["value"].as_str().expect("markdown");
+    assert!(shown.contains("X1 10") && shown.contains("Z1 1"), "{shown}");
+    assert!(!shown.contains("past its software limit"), "{shown}");
+    let value = client.request("textDocument/hover", at(&uri, 0, 0));
+    let shown = value["contents"]["value"].as_str().expect("markdown");
+    assert!(shown.contains("1.5"), "{shown}");
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A call of a subprogram the program does not define goes to the PROC of
 /// the file beside it, as the control finds it (any case).
 #[test]
