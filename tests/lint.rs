@@ -427,6 +427,23 @@ proptest::proptest! {
         proptest::prop_assert_eq!(found, reference);
     }
 
+    /// An archive's `;$PATH=` line is no comment line to the plain scan
+    /// either: a long one is no block too long (N008) on either path (an
+    /// input the check fuzz target found).
+    #[test]
+    fn an_archive_path_line_is_read_alike_on_both_paths(
+        case in "(;\\$PATH=|;\\$path=|; \\$PATH=|;\\$PAT)",
+        fill in 500usize..700,
+    ) {
+        let source = format!("%_N_MGUD_DEF\r\n{case}/_N_{}\r\nDEF NCK REAL _X\r\nM30\r\n", "\0".repeat(fill));
+        let settings = lint::Settings::default();
+        let kind = program_kind(Some("GUD.DEF"), source.as_bytes());
+        let found = lint::check(source.as_bytes(), "GUD.DEF", kind, &settings);
+        let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
+        let reference = lint::check_with(every_line, source.as_bytes(), "GUD.DEF", kind, &settings);
+        proptest::prop_assert_eq!(found, reference);
+    }
+
     /// Every fix, safe and unsafe, applied to random programs: the fixed
     /// program has no more syntax errors than the original, and after the
     /// safe fixes a second run finds nothing more to fix safely (safe fixes

@@ -315,17 +315,27 @@ fn read_line_kind(
             header_error(content, start),
         );
     }
-    const PATH: &[u8] = b";$PATH=";
-    if content.len() >= PATH.len() && content[..PATH.len()].eq_ignore_ascii_case(PATH) {
+    if is_archive_path(content) {
         return (
             LineKind::Path {
-                directory: Span::new(start + PATH.len(), start + content.len()),
+                directory: Span::new(start + ARCHIVE_PATH.len(), start + content.len()),
             },
             None,
         );
     }
     let (block, error) = block::parse_block_gathered(Input::new(content, start), scratch);
     (LineKind::Block(block), error)
+}
+
+/// How an archive's line naming its target directory begins
+/// (`;$PATH=/_N_MPF_DIR`): a line of its own to the parser, not a comment.
+const ARCHIVE_PATH: &[u8] = b";$PATH=";
+
+/// Whether a line's content is an archive's `;$PATH=` line (any case).
+pub(crate) fn is_archive_path(content: &[u8]) -> bool {
+    content
+        .get(..ARCHIVE_PATH.len())
+        .is_some_and(|start| start.eq_ignore_ascii_case(ARCHIVE_PATH))
 }
 
 /// A character the control's name in a header `%_N_<name>_<type>` cannot

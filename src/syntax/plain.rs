@@ -343,6 +343,10 @@ fn scan_words(bytes: &[u8]) -> Option<Words> {
     }) {
         return None;
     }
+    // `;$PATH=` is an archive's line to the parser, not a comment.
+    if bytes.first() == Some(&b';') && super::is_archive_path(bytes) {
+        return None;
+    }
     #[cfg(target_arch = "x86_64")]
     if let Some(words) = bytes.first_chunk().and_then(wide::scan_words) {
         return words;
