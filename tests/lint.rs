@@ -315,6 +315,19 @@ fn configuration_is_found_upward_and_unknown_keys_are_named() {
 
 /// `check` against `check` parsing every line, all rules on.
 fn assert_shortcut_agrees(name: &str, source: &[u8]) {
+    let (fast, reference) = on_both_paths(source, name);
+    assert_eq!(fast, reference, "{name}");
+}
+
+/// The findings of `check` and of `check` parsing every line, all rules on.
+fn on_both_paths(
+    source: impl AsRef<[u8]>,
+    name: &str,
+) -> (
+    Vec<sinuprep::diagnostic::Diagnostic>,
+    Vec<sinuprep::diagnostic::Diagnostic>,
+) {
+    let source = source.as_ref();
     let kind = program_kind(Some(name), source);
     let settings = lint::Settings {
         heads: Some(sample_heads()),
@@ -323,7 +336,7 @@ fn assert_shortcut_agrees(name: &str, source: &[u8]) {
     let fast = lint::check(source, name, kind, &settings);
     let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
     let reference = lint::check_with(every_line, source, name, kind, &settings);
-    assert_eq!(fast, reference, "{name}");
+    (fast, reference)
 }
 
 /// Plain lines (`N10 G1 X5`) skip the parser and most rules: that must change
@@ -419,11 +432,7 @@ proptest::proptest! {
     #[test]
     fn control_bytes_end_a_plain_lines_words_as_they_end_a_parsed_blocks(gap in 0usize..70) {
         let source = format!("G1 \nX3 M103 M2 M3 M4{} M2 M3 M4 M5 M6\x05;\"x\n", "\0".repeat(gap));
-        let settings = lint::Settings::default();
-        let kind = program_kind(Some("CONTROL.MPF"), source.as_bytes());
-        let found = lint::check(source.as_bytes(), "CONTROL.MPF", kind, &settings);
-        let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
-        let reference = lint::check_with(every_line, source.as_bytes(), "CONTROL.MPF", kind, &settings);
+        let (found, reference) = on_both_paths(&source, "CONTROL.MPF");
         proptest::prop_assert_eq!(found, reference);
     }
 
@@ -436,11 +445,7 @@ proptest::proptest! {
         fill in 500usize..700,
     ) {
         let source = format!("%_N_MGUD_DEF\r\n{case}/_N_{}\r\nDEF NCK REAL _X\r\nM30\r\n", "\0".repeat(fill));
-        let settings = lint::Settings::default();
-        let kind = program_kind(Some("GUD.DEF"), source.as_bytes());
-        let found = lint::check(source.as_bytes(), "GUD.DEF", kind, &settings);
-        let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
-        let reference = lint::check_with(every_line, source.as_bytes(), "GUD.DEF", kind, &settings);
+        let (found, reference) = on_both_paths(&source, "GUD.DEF");
         proptest::prop_assert_eq!(found, reference);
     }
 

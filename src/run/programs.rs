@@ -58,37 +58,17 @@ fn called(model: &Model) -> BTreeSet<String> {
         };
         for statement in &block.statements {
             let name = match &statement.kind {
-                StatementKind::Call(call) => call.name.upper(source),
-                StatementKind::Command(name) => name.upper(source),
                 StatementKind::IndirectCall {
                     keyword,
                     target: Some(target),
-                } if keyword.is(source, "MCALL") => match modal_call(source, *target) {
-                    Some((name, _)) => name,
-                    None => continue,
-                },
-                StatementKind::IndirectCall {
-                    keyword,
-                    target: Some(target),
-                } if keyword.is(source, "EXTCALL") => match external_call(source, *target) {
+                } => match indirect_call(source, &keyword.upper(source), *target) {
                     Some(name) => name,
                     None => continue,
                 },
-                StatementKind::IndirectCall { keyword, target } if keyword.is(source, "CALL") => {
-                    let Some(target) = target else { continue };
-                    let text = String::from_utf8_lossy(target.of(source))
-                        .trim()
-                        .to_string();
-                    match text.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
-                        Some(name) => name.to_ascii_uppercase(),
-                        None => continue,
-                    }
-                }
-                StatementKind::Word(word) if word.address.is(source, "L") => match &word.value {
-                    WordValue::Number(n) => format!("L{}", upper(n.span.of(source))),
-                    WordValue::Expr(_) => continue,
+                kind => match called_name(source, kind) {
+                    Some(name) => name,
+                    None => continue,
                 },
-                _ => continue,
             };
             // A cycle is followed too where its file is given (the
             // control's cycle directories, --cycles).
@@ -133,23 +113,44 @@ pub(crate) fn modal_call(source: &[u8], target: Span) -> Option<(String, Stateme
     if error.is_some() {
         return None;
     }
-    let name = match &statement.kind {
-        StatementKind::Call(call) => call.name.upper(source),
-        StatementKind::Command(name) => name.upper(source),
+    Some((called_name(source, &statement.kind)?, statement))
+}
+
+/// The program a statement calls by its name: `NAME(...)`, `NAME`, `L105`
+/// (the digits as written), upper case as the control looks it up.
+fn called_name(source: &[u8], kind: &StatementKind) -> Option<String> {
+    match kind {
+        StatementKind::Call(call) => Some(call.name.upper(source)),
+        StatementKind::Command(name) => Some(name.upper(source)),
         StatementKind::Word(word) if word.address.is(source, "L") => match &word.value {
-            WordValue::Number(n) => format!("L{}", upper(n.span.of(source))),
-            WordValue::Expr(_) => return None,
+            WordValue::Number(n) => Some(format!("L{}", upper(n.span.of(source)))),
+            WordValue::Expr(_) => None,
         },
-        _ => return None,
-    };
-    Some((name, statement))
+        _ => None,
+    }
+}
+
+/// The program `keyword` (upper case) calls with the text at `target`
+/// where its name is written out: `CALL "NAME"`, `EXTCALL "/.../_N_NAME_SPF"`,
+/// `MCALL NAME(...)`; `None` for a name computed at run time.
+pub(crate) fn indirect_call(source: &[u8], keyword: &str, target: Span) -> Option<String> {
+    match keyword {
+        "CALL" => {
+            let text = String::from_utf8_lossy(target.of(source));
+            let name = text.trim().strip_prefix('"')?.strip_suffix('"')?;
+            Some(name.to_ascii_uppercase())
+        }
+        "EXTCALL" => external_call(source, target),
+        "MCALL" => Some(modal_call(source, target)?.0),
+        _ => None,
+    }
 }
 
 /// The program `EXTCALL "..."` names, as the control reads the name (Job
 /// Planning, "Execute external subprogram (EXTCALL)"): the last part of a
 /// path, with or without `_N_` and `_SPF`/`_MPF` (or a file's `.SPF`,
 /// `.MPF`), upper case; `None` for a name computed at run time.
-pub(crate) fn external_call(source: &[u8], target: Span) -> Option<String> {
+fn external_call(source: &[u8], target: Span) -> Option<String> {
     let text = String::from_utf8_lossy(target.of(source));
     let mut text = text.trim();
     while let Some(inner) = text.strip_prefix('(').and_then(|t| t.strip_suffix(')')) {

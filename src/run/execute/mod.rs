@@ -590,20 +590,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 }
                 StatementKind::IndirectCall { keyword, target } => {
                     let keyword = keyword.upper(source);
-                    // `CALL "NAME"`: the name as a string written out.
-                    let named =
-                        target.map(|t| String::from_utf8_lossy(t.of(source)).trim().to_string());
-                    let external = target
-                        .filter(|_| keyword == "EXTCALL")
-                        .and_then(|t| crate::run::programs::external_call(source, t));
-                    match named.as_deref().and_then(|t| t.strip_prefix('"')?.strip_suffix('"')) {
-                        _ if external.is_some() => {
-                            content.calls.extend(external.map(|name| (name, Vec::new())));
-                        }
-                        Some(name) if keyword == "CALL" => {
-                            content.calls.push((name.to_ascii_uppercase(), Vec::new()));
-                        }
-                        _ => self.unknown(row, statement.span, format!("{keyword} is not followed (a call whose program is computed at run time): what it moves, and its time, are not in the run")),
+                    let name = target
+                        .and_then(|t| crate::run::programs::indirect_call(source, &keyword, t));
+                    match name {
+                        Some(name) => content.calls.push((name, Vec::new())),
+                        None => self.unknown(row, statement.span, format!("{keyword} is not followed (a call whose program is computed at run time): what it moves, and its time, are not in the run")),
                     }
                 }
                 StatementKind::If { condition: expr } => {
