@@ -59,7 +59,7 @@ impl Active {
 /// Where each name is written: what a region of lines makes unknown when a
 /// loop or a jump forgets it. A site is one name one statement writes; its
 /// position orders the sites of one line as the statements stand.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, PartialEq)]
 pub(crate) struct Writers {
     /// Every site, in program order: its line.
     lines: Vec<usize>,

@@ -18,7 +18,7 @@ use crate::semantic::blocks::{BlockMatcher, Blocks};
 use crate::semantic::jumps::{self, Target};
 use crate::semantic::labels::Labels;
 use crate::semantic::line_order;
-use crate::semantic::structure::Structure;
+use crate::semantic::structure::{LineFacts, Structure};
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
 use crate::syntax::macros::{Macros, Use};
@@ -383,6 +383,9 @@ pub struct ModelBuilder<'src> {
     /// program has defined so far.
     macros: Arc<Macros>,
     macro_uses: Vec<Use>,
+    /// What the walk's [`Structure`] reads of each line, taken while its
+    /// tree is at hand (when the trees are kept for the walk).
+    line_facts: Option<LineFacts>,
 }
 
 impl<'src> ModelBuilder<'src> {
@@ -407,6 +410,7 @@ impl<'src> ModelBuilder<'src> {
             declarations_end: None,
             macros: Arc::default(),
             macro_uses: Vec::new(),
+            line_facts: keep_trees.then(LineFacts::default),
         }
     }
 
@@ -485,6 +489,9 @@ impl<'src> ModelBuilder<'src> {
                 self.first_executable = Some((row, view.raw.content.start));
             }
         }
+        if let Some(facts) = &mut self.line_facts {
+            facts.line(source, row, block);
+        }
         if view.plain {
             return;
         }
@@ -556,10 +563,14 @@ impl<'src> ModelBuilder<'src> {
 
     pub fn finish(self, kind: ProgramKind) -> Model<'src> {
         let mut lines = self.table.finish(self.source);
+        // A line parsed again is read with the macros defined at the
+        // program's end, not those of its own line: the facts taken on the
+        // way stand for the lines only where there are none.
+        let line_facts = self.line_facts.filter(|_| self.macros.is_empty());
         if !self.macros.is_empty() {
             lines.read_with(self.macros);
         }
-        Model {
+        let model = Model {
             source: self.source,
             kind,
             lines,
@@ -575,7 +586,11 @@ impl<'src> ModelBuilder<'src> {
             jump_numbers: self.jump_numbers,
             block_numbers: OnceLock::new(),
             structure: OnceLock::new(),
+        };
+        if let Some(facts) = line_facts {
+            let _ = model.structure.set(Structure::of(facts, &model));
         }
+        model
     }
 }
 

@@ -13,7 +13,9 @@ use crate::semantic::env::Writers;
 use crate::semantic::eval::key;
 use crate::semantic::frames;
 use crate::semantic::model::Model;
-use crate::syntax::tree::{upper, Block, Call, Expr, Statement, StatementKind, SyncAction};
+use crate::syntax::tree::{
+    upper, Block, Call, Expr, Goto, GotoKind, Statement, StatementKind, SyncAction,
+};
 use crate::syntax::visit::gotos;
 use crate::syntax::Lines;
 
@@ -71,11 +73,10 @@ pub(crate) fn sync_writes<'s>(
 }
 
 /// What one block may write: variables, arrays a measuring cycle fills, R
-/// parameters a subprogram may change, the swivel rotation, frames (not
-/// those of a block sinuprep `emitted`).
-fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Written {
+/// parameters a subprogram may change, the swivel rotation, frames.
+fn block_writes(source: &[u8], block: &Block, line: usize) -> Written {
     let mut written = Written {
-        frames: !emitted && frames::frame_effect(source, block).is_some(),
+        frames: frames::frame_effect(source, block).is_some(),
         ..Written::default()
     };
     for statement in &block.statements {
@@ -113,6 +114,7 @@ fn block_writes(source: &[u8], block: &Block, line: usize, emitted: bool) -> Wri
 }
 
 /// What the walk follows beyond the model: backward jumps, writers, marks.
+#[derive(Debug, PartialEq)]
 pub(crate) struct Structure {
     /// First line of a region a backward jump repeats -> its last line.
     pub(crate) loop_starts: HashMap<usize, usize>,
@@ -130,53 +132,78 @@ pub(crate) struct Structure {
     pub(crate) emitted: HashSet<usize>,
 }
 
+/// What [`Structure`] reads of each line that is not plain, taken line by
+/// line: by the model's pass while it holds each tree (no line is parsed
+/// again for it), or by [`Structure::build`] from the line table.
+#[derive(Default)]
+pub(crate) struct LineFacts {
+    writers: Writers,
+    rotation_lines: Vec<usize>,
+    /// Lines with a frame statement, those sinuprep emitted among them.
+    frame_lines: Vec<usize>,
+    cycle600_lines: Vec<usize>,
+    jumps: Vec<(usize, Goto)>,
+}
+
+impl LineFacts {
+    /// The facts of `block`, on line `line` (lines in order).
+    pub(crate) fn line(&mut self, source: &[u8], line: usize, block: &Block) {
+        let writes = block_writes(source, block, line);
+        for name in writes.names {
+            self.writers.push(line, name);
+        }
+        if writes.rotation {
+            self.rotation_lines.push(line);
+        }
+        if writes.frames {
+            self.frame_lines.push(line);
+        }
+        self.cycle600_lines.extend(writes.cycle600_lines);
+        self.jumps
+            .extend(gotos(block).into_iter().map(|goto| (line, goto.clone())));
+    }
+}
+
 impl Structure {
+    /// The structure of `model`, its lines read from its line table.
     pub(crate) fn build(model: &Model) -> Structure {
         let lines = &model.lines;
-        let source = lines.source;
-        let mut structure = Structure {
-            loop_starts: HashMap::new(),
-            writers: Arc::default(),
-            rotation_lines: Vec::new(),
-            frame_lines: Vec::new(),
-            cycle600_lines: Vec::new(),
-            marked: HashMap::new(),
-            emitted: HashSet::new(),
-        };
-        structure.find_emitted(lines);
-        // Jumps, resolved once every label is known.
-        let mut jumps: Vec<(usize, crate::syntax::tree::Goto)> = Vec::new();
-        let mut writers = Writers::default();
+        let mut facts = LineFacts::default();
         for line in 0..lines.len() {
-            if structure.marked.contains_key(&line) {
-                // The call it keeps may swivel or recalculate, as it did.
-                structure.cycle600_lines.push(line);
-            }
             if lines.is_plain(line) {
                 continue;
             }
-            let Some(block) = lines.block(line) else {
-                continue;
-            };
-            let block = &*block;
-            let writes = block_writes(source, block, line, structure.is_emitted(line));
-            for name in writes.names {
-                writers.push(line, name);
+            if let Some(block) = lines.block(line) {
+                facts.line(lines.source, line, &block);
             }
-            if writes.rotation {
-                structure.rotation_lines.push(line);
-            }
-            if writes.frames {
-                structure.frame_lines.push(line);
-            }
-            structure.cycle600_lines.extend(writes.cycle600_lines);
-            jumps.extend(gotos(block).into_iter().map(|goto| (line, goto.clone())));
         }
-        structure.writers = Arc::new(writers);
+        Self::of(facts, model)
+    }
+
+    /// The structure of `model` from the facts of its lines.
+    pub(crate) fn of(facts: LineFacts, model: &Model) -> Structure {
+        let mut structure = Structure {
+            loop_starts: HashMap::new(),
+            writers: Arc::new(facts.writers),
+            rotation_lines: facts.rotation_lines,
+            frame_lines: facts.frame_lines,
+            cycle600_lines: facts.cycle600_lines,
+            marked: HashMap::new(),
+            emitted: HashSet::new(),
+        };
+        structure.find_emitted(&model.lines);
+        if !structure.marked.is_empty() {
+            // A marked call may swivel or recalculate, as it did; the
+            // frames emitted for it are the call's, not the program's own.
+            structure.cycle600_lines.extend(structure.marked.keys());
+            structure.cycle600_lines.sort_unstable();
+            let emitted = &structure.emitted;
+            structure.frame_lines.retain(|line| !emitted.contains(line));
+        }
         // Backward jumps make loops: GOTOB/GOTO/GOTOC to a label above, and GOTOS.
-        for (line, goto) in jumps {
+        for (line, goto) in facts.jumps {
             let target = match (&goto.kind, &goto.target) {
-                (crate::syntax::tree::GotoKind::Start, _) => Some(0),
+                (GotoKind::Start, _) => Some(0),
                 (kind, Some(target)) => model.landing(target, *kind, line),
                 _ => None,
             };
@@ -262,5 +289,32 @@ pub(crate) fn control(block: &Block) -> Control<'_> {
             Control::Else
         }
         None => Control::None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The structure made of the facts the model's pass took is the one
+    /// made from the line table: loops, writers, swivels, the program's
+    /// frames and not those emitted for a marked call, CYCLE600 lines.
+    #[test]
+    fn the_structure_taken_on_the_way_is_the_one_read_from_the_lines() {
+        let program = "DEF REAL _Z\nSTART:\nN10 AROT Z=5\n_Z=_Z-1 R3=2\n\
+            WHILE _Z>-5\nG1 X=_Z F800\nENDWHILE\nCYCLE800(1,\"TC1\",200000,57,0,0,0,30,0,0,0,0,0,1,100,1)\n\
+            ; sinuprep: CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n\
+            N40 TRANS X0 Y0 Z0\nAROT Z=37.792346\nAROT X=20.704811\nAROT Y=49.106605\nATRANS X0 Y0 Z0\n\
+            N50 CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n\
+            CYCLE977(101,1,,1,20)\nSUB1\nIF _Z<0 GOTOB START\nGOTOS\nM30\n";
+        let model = Model::of(program.as_bytes());
+        let taken = model.structure();
+        let read = Structure::build(&model);
+        assert_eq!(*taken, read);
+        assert_eq!(read.frame_lines, [2]);
+        assert_eq!(read.rotation_lines, [7]);
+        assert_eq!(read.cycle600_lines, [8, 14]);
+        assert_eq!(read.loop_starts, HashMap::from([(0, 18), (1, 17)]));
+        assert!(read.writers.writes("_OVR", 15, 16) && read.writers.writes("R", 16, 17));
     }
 }

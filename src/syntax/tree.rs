@@ -69,7 +69,11 @@ pub struct Name {
 /// A name as the control compares it: in upper case, since the control
 /// ignores case (bytes that are not UTF-8 become the replacement character).
 pub fn upper(text: &[u8]) -> String {
-    String::from_utf8_lossy(text).to_ascii_uppercase()
+    // Names are ASCII: one check and one copy, not the lossy decoder's walk.
+    match std::str::from_utf8(text) {
+        Ok(text) => text.to_ascii_uppercase(),
+        Err(_) => String::from_utf8_lossy(text).to_ascii_uppercase(),
+    }
 }
 
 impl Name {
