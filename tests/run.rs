@@ -1092,14 +1092,9 @@ fn forward(
     }
 }
 
-/// CYCLE800 on a head, a table and a mixed machine: after the swivel, each
-/// programmed point's machine position, with the rotary axes the run turned
-/// to, puts the tool tip (by the independent chain above) on the point
-/// through G54, the swivel frame (`_X0`, the `_MODE` turns, `_X1`) and the
-/// TRANS inside it, and the tool along the plane's normal.
-#[test]
-fn a_swivel_puts_the_tool_on_the_swivelled_plane() {
-    let kinematics = [
+/// A head, a table and a mixed machine, their axes and offset vectors.
+fn oracle_kinematics() -> [Kinematic; 3] {
+    [
         Kinematic {
             letter: 'T',
             vectors: [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
@@ -1130,7 +1125,61 @@ fn a_swivel_puts_the_tool_on_the_swivelled_plane() {
                 [-120.0, -80.0, 50.0],
             ],
         },
-    ];
+    ]
+}
+
+/// The swivel data record 1 ("SWIVEL") of `k`, as the control's files write it.
+fn record_text(k: &Kinematic) -> String {
+    let v = |i: usize, j: usize| k.vectors[i][j];
+    let l = |i: usize, j: usize| k.offsets[i][j];
+    let mut records = format!(
+        "$TC_CARR23[1]=\"{}\" $TC_CARR34[1]=\"SWIVEL\" $TC_CARR35[1]=\"{}\" $TC_CARR36[1]=\"{}\"\n",
+        k.letter,
+        rotary_name(k, 0),
+        rotary_name(k, 1),
+    );
+    for (i, first) in [(0, 7), (1, 10)] {
+        records.push_str(&format!(
+            "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
+            first,
+            v(i, 0),
+            first + 1,
+            v(i, 1),
+            first + 2,
+            v(i, 2)
+        ));
+    }
+    for (i, first) in [(0, 1), (1, 4), (2, 15), (3, 18)] {
+        records.push_str(&format!(
+            "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
+            first,
+            l(i, 0),
+            first + 1,
+            l(i, 1),
+            first + 2,
+            l(i, 2)
+        ));
+    }
+    records
+}
+
+/// The name of `k`'s rotary axis `i`: C about Z, else B.
+fn rotary_name(k: &Kinematic, i: usize) -> &'static str {
+    if k.vectors[i][2] == 1.0 {
+        "C"
+    } else {
+        "B"
+    }
+}
+
+/// CYCLE800 on a head, a table and a mixed machine: after the swivel, each
+/// programmed point's machine position, with the rotary axes the run turned
+/// to, puts the tool tip (by the independent chain above) on the point
+/// through G54, the swivel frame (`_X0`, the `_MODE` turns, `_X1`) and the
+/// TRANS inside it, and the tool along the plane's normal.
+#[test]
+fn a_swivel_puts_the_tool_on_the_swivelled_plane() {
+    let kinematics = oracle_kinematics();
     let modes: [(u32, [usize; 3]); 3] = [(57, [0, 1, 2]), (27, [2, 1, 0]), (39, [2, 0, 1])];
     let unit = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     let mut numbers = Numbers(800);
@@ -1173,36 +1222,7 @@ fn a_swivel_puts_the_tool_on_the_swivelled_plane() {
                     ]
                 })
                 .collect();
-            let v = |i: usize, j: usize| k.vectors[i][j];
-            let l = |i: usize, j: usize| k.offsets[i][j];
-            let mut records = format!(
-                "$TC_CARR23[1]=\"{}\" $TC_CARR34[1]=\"SWIVEL\" $TC_CARR35[1]=\"{}\" $TC_CARR36[1]=\"{}\"\n",
-                k.letter,
-                if k.vectors[0][2] == 1.0 { "C" } else { "B" },
-                if k.vectors[1][2] == 1.0 { "C" } else { "B" },
-            );
-            for (i, first) in [(0, 7), (1, 10)] {
-                records.push_str(&format!(
-                    "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
-                    first,
-                    v(i, 0),
-                    first + 1,
-                    v(i, 1),
-                    first + 2,
-                    v(i, 2)
-                ));
-            }
-            for (i, first) in [(0, 1), (1, 4), (2, 15), (3, 18)] {
-                records.push_str(&format!(
-                    "$TC_CARR{}[1]={} $TC_CARR{}[1]={} $TC_CARR{}[1]={}\n",
-                    first,
-                    l(i, 0),
-                    first + 1,
-                    l(i, 1),
-                    first + 2,
-                    l(i, 2)
-                ));
-            }
+            let records = record_text(k);
             let data = five_axis(&format!(
                 "{records}$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n\
 $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
@@ -1260,10 +1280,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
                     mcs[1].expect("known"),
                     mcs[2].expect("known"),
                 );
-                let names = [
-                    if k.vectors[0][2] == 1.0 { "C" } else { "B" },
-                    if k.vectors[1][2] == 1.0 { "C" } else { "B" },
-                ];
+                let names = [rotary_name(k, 0), rotary_name(k, 1)];
                 let turned = [rotary(mcs, names[0]), rotary(mcs, names[1])];
                 let (tip, tool) = forward(k, m, turned, length);
                 let expected = Vector3::from(g54)
@@ -1277,6 +1294,221 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
                 assert!(
                     (tool - normal).norm() < 1e-9,
                     "{what}: tool {tool} != {normal}"
+                );
+            }
+        }
+    }
+}
+
+/// Where `forward` puts the holder for the tool tip on the workpiece's
+/// point `x` with the rotary axes at `angles`: its chain solved for the
+/// holder, in closed form.
+fn holder(k: &Kinematic, x: Vector3<f64>, angles: [f64; 2], length: f64) -> Vector3<f64> {
+    let [l1, l2, l3, _] = k.offsets.map(Vector3::from);
+    let (r1, r2) = (
+        rodrigues(k.vectors[0], angles[0]),
+        rodrigues(k.vectors[1], angles[1]),
+    );
+    let tool = Vector3::new(0.0, 0.0, length);
+    match k.letter {
+        'T' => x + l1 + r1 * l2 + r1 * r2 * (l3 + tool),
+        'P' => {
+            let (p1, p2) = (l2, l2 + l3);
+            p1 + r1 * (r2 * (x - p2) + p2 - p1) + tool
+        }
+        _ => l3 + r2 * (x - l3) + l1 + r1 * (l2 + tool),
+    }
+}
+
+/// TRAORI with the kinematics of a swivel data record (MD24100 type 72,
+/// the record MD24582 names) on a head, a table and a mixed machine: at
+/// each block's end the rotary axes stand where programmed and the holder
+/// puts the tool tip (by the independent chain) on the point through G54;
+/// along a block, where the linear axes follow curves, the run's travel of
+/// each machine axis is the one a fine sampling of the chain finds.
+#[test]
+fn under_traori_the_tip_stays_on_the_programmed_point() {
+    let mut numbers = Numbers(900);
+    for k in &oracle_kinematics() {
+        for case in 0..16 {
+            let g54 = [
+                numbers.between(-200.0, 200.0),
+                numbers.between(-200.0, 200.0),
+                numbers.between(-300.0, -100.0),
+            ];
+            let length = numbers.between(50.0, 150.0);
+            let mut point = || {
+                (
+                    [
+                        numbers.between(-40.0, 40.0),
+                        numbers.between(-40.0, 40.0),
+                        numbers.between(0.0, 30.0),
+                    ],
+                    [numbers.between(-60.0, 60.0), numbers.between(-90.0, 90.0)],
+                )
+            };
+            let points = [point(), point()];
+            let vector = [numbers.between(-0.6, 0.6), numbers.between(-0.6, 0.6), 1.0];
+            let last = [
+                numbers.between(-40.0, 40.0),
+                numbers.between(-40.0, 40.0),
+                numbers.between(0.0, 30.0),
+            ];
+            let data = |limits: &str| {
+                five_axis(&format!(
+                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n\
+$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+                    record_text(k),
+                    g54[0],
+                    g54[1],
+                    g54[2]
+                ))
+            };
+            let names = [rotary_name(k, 0), rotary_name(k, 1)];
+            let mut program = String::from("G54 T1 D1 M6\nTRAORI\n");
+            for (p, angles) in &points {
+                program.push_str(&format!(
+                    "G1 X{} Y{} Z{} {}{} {}{} F1000\n",
+                    p[0], p[1], p[2], names[0], angles[0], names[1], angles[1]
+                ));
+            }
+            program.push_str(&format!(
+                "G1 X{} Y{} Z{} A3={} B3={} C3={}\nM30\n",
+                last[0], last[1], last[2], vector[0], vector[1], vector[2]
+            ));
+            let model = Model::of(program.as_bytes());
+            let dry = |limits: &str| {
+                let data = data(limits);
+                let machine_data = MachineData::read(data.as_bytes());
+                assert!(
+                    machine_data.diagnostics.is_empty(),
+                    "{:?}",
+                    machine_data.diagnostics
+                );
+                let records = sinuprep::semantic::machine::Machine::read(
+                    data.as_bytes(),
+                    sinuprep::semantic::machine::Reading::default(),
+                );
+                let setup = Setup::of(&machine_data).with_records(&records);
+                let mut ends = Vec::new();
+                let report = run(
+                    &Programs::alone(&model),
+                    &setup,
+                    &Supplied::default(),
+                    &Options::default(),
+                    |end| ends.push((end.line, end.mcs.to_vec())),
+                );
+                (report, ends)
+            };
+            let (report, ends) = dry("");
+            let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
+            assert!(
+                report.unknown.iter().all(|u| !u.why.contains("TRAORI")),
+                "{what}"
+            );
+            let index = |name: &str| if name == "B" { 3 } else { 4 };
+            for (i, (p, angles)) in points.iter().enumerate() {
+                let (_, mcs) = ends
+                    .iter()
+                    .find(|(line, _)| *line == 3 + i)
+                    .expect("the move's end");
+                let m = Vector3::new(
+                    mcs[0].expect("known"),
+                    mcs[1].expect("known"),
+                    mcs[2].expect("known"),
+                );
+                let turned = names.map(|name| mcs[index(name)].expect("the rotary axis"));
+                assert_near(turned[0], angles[0], 1e-12, &what);
+                assert_near(turned[1], angles[1], 1e-12, &what);
+                let (tip, _) = forward(k, m, turned, length);
+                let expected = Vector3::from(g54) + Vector3::from(*p);
+                assert!(
+                    (tip - expected).norm() < 1e-9,
+                    "{what}: tip {tip} != {expected}"
+                );
+            }
+            // A direction by its vector: the tool along it, the tip on the point.
+            let (_, mcs) = ends
+                .iter()
+                .find(|(line, _)| *line == 5)
+                .expect("the vector's block");
+            let m = Vector3::new(
+                mcs[0].expect("known"),
+                mcs[1].expect("known"),
+                mcs[2].expect("known"),
+            );
+            let turned = names.map(|name| mcs[index(name)].expect("the rotary axis"));
+            let (tip, tool) = forward(k, m, turned, length);
+            let expected = Vector3::from(g54) + Vector3::from(last);
+            assert!(
+                (tip - expected).norm() < 1e-9,
+                "{what}: tip {tip} != {expected}"
+            );
+            let direction = Vector3::from(vector).normalize();
+            assert!(
+                (tool - direction).norm() < 1e-9,
+                "{what}: tool {tool} != {direction}"
+            );
+            // The second and third blocks' ways: the tip on the line between
+            // their ends, the axes turning linearly; the first block's end is
+            // where they start.
+            let ways = [
+                (points[0].0, points[0].1, points[1].0, points[1].1),
+                (points[1].0, points[1].1, last, turned),
+            ];
+            let mut lowest = [f64::INFINITY; 3];
+            let mut highest = [f64::NEG_INFINITY; 3];
+            for (from, from_angles, to, to_angles) in ways {
+                for i in 0..=20_000 {
+                    let s = f64::from(i) / 20_000.0;
+                    let x = Vector3::from(g54)
+                        + Vector3::from(from)
+                        + (Vector3::from(to) - Vector3::from(from)) * s;
+                    let angles =
+                        [0, 1].map(|j| from_angles[j] + (to_angles[j] - from_angles[j]) * s);
+                    let m = holder(k, x, angles, length);
+                    let (tip, _) = forward(k, m, angles, length);
+                    assert!((tip - x).norm() < 1e-9, "the oracle's own round trip");
+                    for a in 0..3 {
+                        lowest[a] = lowest[a].min(m[a]);
+                        highest[a] = highest[a].max(m[a]);
+                    }
+                }
+            }
+            // A limit a micrometre inside the way's extreme is passed, one a
+            // micrometre outside it is not, on either side.
+            for (a, name) in ["X1", "Y1", "Z1"].iter().enumerate() {
+                for (side, extreme, sign, md) in [
+                    (Side::Plus, highest[a], 1.0, "N36110 $MA_POS_LIMIT_PLUS"),
+                    (Side::Minus, lowest[a], -1.0, "N36100 $MA_POS_LIMIT_MINUS"),
+                ] {
+                    let inside = format!("{md}[{name}]={}\n", extreme - sign * 1e-3);
+                    let (limited, _) = dry(&inside);
+                    assert!(
+                        limited
+                            .violations
+                            .iter()
+                            .any(|v| v.axis == *name && v.side == side),
+                        "{what}: {inside} {:?}",
+                        limited.violations
+                    );
+                    let outside = format!("{md}[{name}]={}\n", extreme + sign * 1e-3);
+                    let (clear, _) = dry(&outside);
+                    assert!(
+                        clear.violations.is_empty(),
+                        "{what}: {outside} {:?}",
+                        clear.violations
+                    );
+                }
+            }
+            for a in 0..3 {
+                let travel = &report.axes[a];
+                assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
+                assert_near(
+                    travel.max.expect("max"),
+                    highest[a],
+                    1e-6,
+                    &format!("{what} axis {a} {program}"),
                 );
             }
         }

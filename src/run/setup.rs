@@ -118,6 +118,44 @@ pub struct Setup {
     /// The swivel data records CYCLE800 names (`$TC_CARR`), those the
     /// solver can use.
     pub records: Vec<crate::kinematics::Record>,
+    /// The channel's orientation transformations, in the order `TRAORI(n)`
+    /// numbers them.
+    pub orientations: Vec<Orientation>,
+}
+
+/// An orientation transformation of the channel (TRAORI): one of MD24100
+/// `$MC_TRAFO_TYPE_1..10` from 16 to 255 (a 3-, 4- or 5-axis
+/// transformation: 16 the tool turns, 32 the workpiece, 48 both, 8 generic,
+/// 72 the vectors of a swivel data record).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Orientation {
+    /// MD24100.
+    pub trafo_type: u32,
+    /// For type 72, the swivel data record whose vectors it takes: MD24582
+    /// `$MC_TRAFO5_TCARR_NO_1` (`_2` for the channel's second).
+    pub record: Option<u32>,
+}
+
+/// Transformations a channel holds, at most (MD24100 `_1` to `_10`).
+const TRANSFORMATIONS: u32 = 10;
+
+/// The channel's orientation transformations in order (see [`Orientation`]).
+fn orientations(data: &MachineData) -> Vec<Orientation> {
+    let number = |name: String| match data.get(&name, Some(1), &[]) {
+        Some(Value::Number(n)) if *n >= 0.0 && n.fract() == 0.0 => Some(*n as u32),
+        _ => None,
+    };
+    (1..=TRANSFORMATIONS)
+        .filter_map(|x| number(format!("$MC_TRAFO_TYPE_{x}")))
+        .filter(|t| (16..256).contains(t))
+        .enumerate()
+        .map(|(n, trafo_type)| Orientation {
+            trafo_type,
+            record: (trafo_type == 72)
+                .then(|| number(format!("$MC_TRAFO5_TCARR_NO_{}", n + 1)))
+                .flatten(),
+        })
+        .collect()
 }
 
 impl Setup {
@@ -208,6 +246,7 @@ impl Setup {
             default_edge: number("$MC_CUTTING_EDGE_DEFAULT", Some(1), &[])
                 .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
             records: Vec::new(),
+            orientations: orientations(data),
         }
     }
 

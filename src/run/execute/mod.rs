@@ -7,6 +7,7 @@ mod motion;
 mod polar;
 mod swivel;
 mod timing;
+mod traori;
 
 use calls::is_numbered_call;
 
@@ -282,6 +283,8 @@ struct Interpreter<'a, 'src> {
     programmable: Frame,
     /// The swivel of the last CYCLE800, until `CYCLE800()`.
     swivelled: Option<swivel::Swivelled>,
+    /// The orientation transformation TRAORI made active, until TRAFOOF.
+    transformed: Option<traori::Transformed>,
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
@@ -383,6 +386,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             settable: Frame::identity(axes),
             programmable: Frame::identity(axes),
             swivelled: None,
+            transformed: None,
             preselected: None,
             tool: None,
             edge: None,
@@ -901,6 +905,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut times = 1;
         let (mut ap, mut rp, mut pole): (polar::Given, polar::Given, Option<u32>) =
             (None, None, None);
+        let mut orientation: [Option<Result<f64, String>>; 3] = [None, None, None];
         for word in &content.words {
             let value = &word.value;
             match word.name.as_ref() {
@@ -1004,6 +1009,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "TURN" => shape.turns = Some(value.clone()),
                 "AP" => ap = Some((value.clone(), word.coordinate)),
                 "RP" => rp = Some((value.clone(), word.coordinate)),
+                "A3" | "B3" | "C3" => {
+                    orientation[(word.name.as_bytes()[0] - b'A') as usize] = Some(value.clone());
+                }
                 name if is_numbered_call(name) => called.push((name.to_string(), Vec::new())),
                 "P" => match value {
                     Ok(p) if *p >= 1.0 && p.fract() == 0.0 => times = *p as u32,
@@ -1029,8 +1037,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "SUPA" => suppress_frames = true,
                 "RTLION" => self.rapid_linear = true,
                 "RTLIOF" => self.rapid_linear = false,
-                "TRAORI" | "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
-                "TRAFOOF" => {}
+                "TRAORI" => self.traori(row, span, &[]),
+                "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
+                "TRAFOOF" => self.trafoof(row, span),
                 name => {
                     if let Some(group) = DYNAMIC_GROUPS.iter().position(|g| *g == name) {
                         self.dynamic_group = group;
@@ -1049,6 +1058,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         for (name, arguments) in called {
             match name.as_str() {
                 "CYCLE800" => self.cycle800(row, span, &arguments),
+                "TRAORI" => self.traori(row, span, &arguments),
                 // What moves nothing: messages, settings, the control's own procedures.
                 "CYCLE832" => self.cycle832(row, span, &arguments),
                 "MSG" | "STOPRE" => {}
@@ -1087,6 +1097,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             self.define_pole(row, span, kind, &mut targets, (&ap, &rp));
         } else if ap.is_some() || rp.is_some() {
             self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
+        }
+        if orientation.iter().any(Option::is_some) {
+            self.orientation_vector(row, span, &orientation, &mut targets);
         }
         let circular = matches!(self.motion, Motion::Clockwise | Motion::Counterclockwise);
         let by_centre = circular && shape.opening.is_some() && centre.iter().any(Option::is_some);

@@ -240,14 +240,17 @@ impl Interpreter<'_, '_> {
         suppress: bool,
         tool: [f64; 3],
     ) -> Vec<Option<f64>> {
-        let mut at = match (suppress, &self.swivelled) {
-            (true, _) => wcs.to_vec(),
-            (false, None) => self.settable.apply(&self.programmable.apply(wcs)),
-            (false, Some(swivelled)) => self
-                .settable
-                .apply(&swivelled.frame.apply(&self.programmable.apply(wcs))),
-        };
+        let mut at = self.frames_only(wcs, suppress);
         let length = Vector3::from(tool);
+        // TRAORI: the chain at the rotary axes' positions, frames suppressed
+        // or not (G53 and SUPA leave the transformation on).
+        if let Some(transformed) = &self.transformed {
+            match transformed.carrier(&at) {
+                Some(carrier) => on_geometry(&mut at, |p| carrier.machine(p, length)),
+                None => at[..3].fill(None),
+            }
+            return at;
+        }
         match (self.carrier(), suppress) {
             (Some(carrier), false) => on_geometry(&mut at, |p| carrier.machine(p, length)),
             // G53, SUPA: the machine's axes, the tool as the carrier holds it.
@@ -272,7 +275,12 @@ impl Interpreter<'_, '_> {
     ) -> Vec<Option<f64>> {
         let mut at = mcs.to_vec();
         let length = Vector3::from(tool);
+        let transformed = self.transformed.as_ref().map(|t| t.carrier(mcs));
         match (self.carrier(), suppress) {
+            _ if transformed.is_some() => match transformed.flatten() {
+                Some(carrier) => on_geometry(&mut at, |p| carrier.part_point(p, length)),
+                None => at[..3].fill(None),
+            },
             (Some(carrier), false) => on_geometry(&mut at, |p| carrier.part_point(p, length)),
             (Some(carrier), true) => {
                 on_geometry(&mut at, |p| p - carrier.tool * length - carrier.head)
@@ -292,6 +300,18 @@ impl Interpreter<'_, '_> {
             None => at,
         };
         self.programmable.undo(&at)
+    }
+
+    /// The programmed point `wcs` through the frames (programmable, the
+    /// swivel's, settable), unless suppressed.
+    pub(super) fn frames_only(&self, wcs: &[Option<f64>], suppress: bool) -> Vec<Option<f64>> {
+        match (suppress, &self.swivelled) {
+            (true, _) => wcs.to_vec(),
+            (false, None) => self.settable.apply(&self.programmable.apply(wcs)),
+            (false, Some(swivelled)) => self
+                .settable
+                .apply(&swivelled.frame.apply(&self.programmable.apply(wcs))),
+        }
     }
 
     /// The tool carrier a swivel left active.
@@ -379,8 +399,11 @@ impl Interpreter<'_, '_> {
             translation: Vec::new(),
             linear,
         };
-        let coupled = (linear != self.last_linear || frames.couples())
-            && targets.iter().take(3).any(Option::is_some);
+        // Under TRAORI the tip stays where it is programmed: every geometry
+        // axis follows the rotary axes.
+        let coupled = self.transformed.is_some()
+            || ((linear != self.last_linear || frames.couples())
+                && targets.iter().take(3).any(Option::is_some));
         self.last_linear = linear;
         let end_mcs: Vec<Option<f64>> = (0..reached.len())
             .map(|k| {
@@ -398,6 +421,10 @@ impl Interpreter<'_, '_> {
         };
         // The arc, in the machine's coordinates.
         let arc = match self.motion {
+            Motion::Clockwise | Motion::Counterclockwise if self.transformed.is_some() => {
+                self.unknown(row, span, "an arc under TRAORI: its travel is checked at its ends alone and its time taken on its chord".into());
+                None
+            }
             Motion::Clockwise | Motion::Counterclockwise => {
                 self.arc(row, span, &start, &end, centre, shape, suppress, tool)
             }
@@ -409,6 +436,9 @@ impl Interpreter<'_, '_> {
         // one too: the path lies between the arc under the old offset and
         // under the new, which holds its extremes.
         let mut points = vec![end_mcs.clone()];
+        if self.transformed.is_some() {
+            points.extend(self.transformed_way(&start, &end, suppress, tool));
+        }
         if let Some(arc) = &arc {
             for k in 0..3 {
                 let start = std::iter::once(arc.point(0.0));
@@ -451,7 +481,11 @@ impl Interpreter<'_, '_> {
         if moved.is_empty() && arc.is_none() {
             return;
         }
-        self.time(row, span, &moved, arc.as_ref(), exact_here);
+        let tip = self
+            .transformed
+            .is_some()
+            .then(|| self.tip_way(&start, &end, suppress));
+        self.time(row, span, &moved, arc.as_ref(), tip, exact_here);
     }
 
     /// An arc by its centre and opening angle (`G2/G3 I.. J.. AR=..`): its

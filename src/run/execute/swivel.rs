@@ -43,6 +43,9 @@ impl Interpreter<'_, '_> {
         if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
             self.report.assumptions.push(ASSUMED.to_string());
         }
+        if self.transformed.is_some() {
+            return self.unknown(row, span, "CYCLE800 with TRAORI active is not modelled (the control refuses a swivel under a transformation unless its machine data allow it): the swivel is not made".into());
+        }
         if arguments.is_empty() {
             self.swivelled = None;
             return;

@@ -17,6 +17,7 @@ impl Interpreter<'_, '_> {
         span: Span,
         moved: &[(usize, f64)],
         arc: Option<&Arc>,
+        tip: Option<f64>,
         exact_here: bool,
     ) {
         let geometry: f64 = moved
@@ -31,10 +32,13 @@ impl Interpreter<'_, '_> {
             .map(|(_, d)| d * d)
             .sum::<f64>()
             .sqrt();
-        let length = match arc {
-            Some(arc) => arc.length(),
-            None if geometry > 0.0 => geometry,
-            None => others,
+        // The path the feed is programmed for: the tool tip's under TRAORI,
+        // where the machine's linear axes go another way.
+        let length = match (arc, tip) {
+            (Some(arc), _) => arc.length(),
+            (None, Some(tip)) if tip > 0.0 => tip,
+            (None, _) if geometry > 0.0 => geometry,
+            (None, _) => others,
         };
         if length <= 0.0 {
             return;

@@ -1,0 +1,302 @@
+//! TRAORI in the run: the orientation transformation keeps the tool tip on
+//! the programmed point while the rotary axes turn. Modelled where the
+//! machine's data say the transformation's kinematics are those of a swivel
+//! data record (MD24100 `$MC_TRAFO_TYPE_n` = 72, the record MD24582
+//! `$MC_TRAFO5_TCARR_NO_n` names; Commissioning Manual IM9, "Swiveling",
+//! TOOLCARRIER and 5-axis transformation): the record's chain
+//! ([`crate::kinematics::Carrier`]) at the rotary axes' positions takes each
+//! programmed point, through the frames, to the linear axes. The rotary
+//! axes are programmed by their names (machine axis positions); a block is
+//! checked against the limits along its way, where the linear axes follow
+//! curves between its ends.
+
+use nalgebra::Vector3;
+
+use super::{Coordinate, Interpreter};
+use crate::kinematics::swivel::solutions;
+use crate::kinematics::{Carrier, Record, Solution};
+use crate::semantic::value::Value;
+use crate::span::Span;
+
+/// The transformation TRAORI made active.
+#[derive(Clone, Debug)]
+pub(super) struct Transformed {
+    record: Record,
+    /// The run axes of the record's two rotary axes.
+    axes: [usize; 2],
+}
+
+/// Said once a run that transforms: what the model rests on.
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions (ORIAXES: each interpolated linearly between a block's ends), the tool's length along its turned direction; the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+
+/// A transformed block is sampled at a point every this many degrees of
+/// its rotary axes' turn, before the extremes between the samples are
+/// searched: over so short a turn a linear axis's way has one extreme at
+/// most. A block whose axes do not turn is a line: its ends hold its extremes.
+const DEGREES_PER_SAMPLE: f64 = 4.0;
+
+/// Samples a block at most (a turn of 360 degrees, 5.6 degrees apart).
+const MOST_SAMPLES: usize = 64;
+
+impl Transformed {
+    /// The carrier at the machine positions `at` (every run axis), `None`
+    /// where a rotary axis's position is unknown.
+    pub(super) fn carrier(&self, at: &[Option<f64>]) -> Option<Carrier> {
+        let [a, b] = self.axes;
+        Some(Carrier::at(&self.record, [at[a]?, at[b]?]))
+    }
+}
+
+impl Interpreter<'_, '_> {
+    /// `TRAORI` or `TRAORI(n, ...)`, its arguments as evaluated.
+    pub(super) fn traori(&mut self, row: usize, span: Span, arguments: &[Option<Value>]) {
+        if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
+            self.report.assumptions.push(ASSUMED.to_string());
+        }
+        let number = match arguments.first() {
+            None | Some(None) if arguments.len() <= 1 => 1,
+            Some(Some(Value::Number(n))) if *n >= 1.0 && n.fract() == 0.0 => *n as usize,
+            _ => {
+                return self.unknown(row, span, "TRAORI's transformation number is unknown offline or no whole number from 1: the positions after it are of the axes as programmed".into());
+            }
+        };
+        if arguments.len() > 1 {
+            return self.unknown(row, span, "TRAORI with a base orientation or rotary axis offsets (its second and later arguments) is not modelled: the positions after it are of the axes as programmed".into());
+        }
+        if self.swivelled.is_some() {
+            return self.unknown(row, span, "TRAORI with a CYCLE800 swivel active is not modelled: the positions after it are of the axes as programmed".into());
+        }
+        let Some(orientation) = self.setup.orientations.get(number - 1) else {
+            return self.unknown(row, span, format!("TRAORI({number}): the machine's data hold no orientation transformation {number} (MD24100 `$MC_TRAFO_TYPE_n` from 16 to 255): the positions after it are of the axes as programmed"));
+        };
+        let (trafo_type, record) = (orientation.trafo_type, orientation.record);
+        let Some(record) = record else {
+            return self.unknown(row, span, match trafo_type {
+                72 => format!("TRAORI({number}): transformation type 72 without the swivel data record it takes (MD24582 `$MC_TRAFO5_TCARR_NO_{number}`): the positions after it are of the axes as programmed"),
+                other => format!("TRAORI({number}): transformation type {other} (its kinematics in the TRAFO5 machine data) is not modelled, type 72 (a swivel data record's) is: the positions after it are of the axes as programmed"),
+            });
+        };
+        let Some(record) = self
+            .setup
+            .records
+            .iter()
+            .find(|r| r.number == record)
+            .cloned()
+        else {
+            return self.unknown(row, span, format!("TRAORI({number}) takes the swivel data record {record} (MD24582), which the machine's data do not hold as a usable record ($TC_CARR): the positions after it are of the axes as programmed"));
+        };
+        let axes = [0, 1].map(|i| self.setup.axis(&record.axes[i].name.to_ascii_uppercase()));
+        let [Some(a), Some(b)] = axes else {
+            return self.unknown(row, span, format!("TRAORI({number}): the record's rotary axes ($TC_CARR35/36) are not both axes of the machine's channel: the positions after it are of the axes as programmed"));
+        };
+        let tool = self.tool_offset(row, span);
+        self.transformed = Some(Transformed {
+            record,
+            axes: [a, b],
+        });
+        // The work's position of where the axes stand, as the tip now counts.
+        self.programmed = self.to_program(&self.mcs.clone(), false, tool);
+    }
+
+    /// A tool direction programmed as a vector (`A3= B3= C3=`: from the
+    /// tip toward the holder, its length of no account, a component not
+    /// written 0; Programming Manual Job Planning, "Programming of
+    /// orientation vector"), in the work's coordinates (ORIWKS, the
+    /// control's default): the rotary axes' positions that turn the tool
+    /// onto it, set among `targets` as programmed positions.
+    pub(super) fn orientation_vector(
+        &mut self,
+        row: usize,
+        span: Span,
+        vector: &[Option<Result<f64, String>>; 3],
+        targets: &mut [Option<(Result<f64, String>, Coordinate)>],
+    ) {
+        let Some(transformed) = self.transformed.clone() else {
+            return self.unknown(row, span, "an orientation vector (A3, B3, C3) without TRAORI: the control stops with an alarm; the block's orientation is left out".into());
+        };
+        let mut given = Vector3::zeros();
+        for (k, component) in vector.iter().enumerate() {
+            match component {
+                Some(Ok(value)) => given[k] = *value,
+                Some(Err(why)) => {
+                    return self.unknown(row, span, format!("the orientation vector's {} is {why}: the block's orientation is left out", ["A3", "B3", "C3"][k]));
+                }
+                None => {}
+            }
+        }
+        let turn = self.settable.linear * self.programmable.linear;
+        let direction = turn * given;
+        if direction.norm() < 1e-12 {
+            return self.unknown(
+                row,
+                span,
+                "an orientation vector of length 0: the block's orientation is left out".into(),
+            );
+        }
+        let [a, b] = transformed.axes;
+        let current = [a, b].map(|k| self.mcs[k]);
+        let [Some(ca), Some(cb)] = current else {
+            return self.unknown(row, span, "an orientation vector while the rotary axes' positions are unknown (the two solutions are told apart by them): the block's orientation is left out".into());
+        };
+        let found = solutions(&transformed.record, &direction.normalize(), [ca, cb]);
+        // The solution the control takes is not in a Siemens text found:
+        // one inside the record's limits, the one whose farther axis turns
+        // less, then the one that turns both less.
+        let travel = |s: &Solution| {
+            let [da, db] = [(s.positions[0] - ca).abs(), (s.positions[1] - cb).abs()];
+            (!s.within_limits, da.max(db), da + db)
+        };
+        let chosen = found.iter().min_by(|x, y| {
+            travel(x)
+                .partial_cmp(&travel(y))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        let Some(chosen) = chosen else {
+            return self.unknown(row, span, "the rotary axes cannot turn the tool onto this orientation vector (the control stops with an alarm): the block's orientation is left out".into());
+        };
+        // Machine positions, as programmed positions: the frames' offsets
+        // on the rotary axes taken off.
+        let mut machine = self.mcs.clone();
+        machine[a] = Some(chosen.positions[0]);
+        machine[b] = Some(chosen.positions[1]);
+        let programmed = self.programmable.undo(&self.settable.undo(&machine));
+        for k in [a, b] {
+            if let Some(value) = programmed[k] {
+                targets[k] = Some((Ok(value), Coordinate::Absolute));
+            }
+        }
+    }
+
+    /// `TRAFOOF`: the axes are programmed as the machine's again.
+    pub(super) fn trafoof(&mut self, row: usize, span: Span) {
+        if self.transformed.take().is_some() {
+            let tool = self.tool_offset(row, span);
+            self.programmed = self.to_program(&self.mcs.clone(), false, tool);
+        }
+    }
+
+    /// The machine positions along a transformed block from `start` to
+    /// `end` (programmed, every run axis): every axis at the sampled
+    /// points, and each geometry axis at its extremes between them, found
+    /// by a golden-section search on the bracket a sampled extreme lies in.
+    pub(super) fn transformed_way(
+        &self,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Vec<Vec<Option<f64>>> {
+        let at = |s: f64| -> Vec<Option<f64>> {
+            let between: Vec<Option<f64>> = start
+                .iter()
+                .zip(end)
+                .map(|(a, b)| match (a, b) {
+                    (Some(a), Some(b)) => Some(a + (b - a) * s),
+                    _ => *b,
+                })
+                .collect();
+            self.to_machine(&between, suppress, tool)
+        };
+        let turn = self.transformed.as_ref().map_or(0.0, |t| {
+            t.axes
+                .iter()
+                .filter_map(|&k| Some((end[k]? - start[k]?).abs()))
+                .fold(0.0, f64::max)
+        });
+        if turn == 0.0 {
+            return vec![at(0.0), at(1.0)];
+        }
+        let count = ((turn / DEGREES_PER_SAMPLE).ceil() as usize).clamp(1, MOST_SAMPLES);
+        let samples: Vec<Vec<Option<f64>>> =
+            (0..=count).map(|i| at(i as f64 / count as f64)).collect();
+        let mut way = samples.clone();
+        for k in 0..3 {
+            for sign in [1.0, -1.0] {
+                let value = |point: &[Option<f64>]| point[k].map(|v| sign * v);
+                // A sampled extreme, at an end too: the largest value lies
+                // within a sample of it.
+                for i in 0..=count {
+                    let neighbour = |j: Option<usize>| match j.and_then(|j| samples.get(j)) {
+                        Some(point) => value(point),
+                        None => Some(f64::NEG_INFINITY),
+                    };
+                    let (Some(before), Some(here), Some(after)) = (
+                        neighbour(i.checked_sub(1)),
+                        value(&samples[i]),
+                        neighbour(Some(i + 1)),
+                    ) else {
+                        continue;
+                    };
+                    // Not where the axis stands still.
+                    if here >= before && here >= after && (here > before || here > after) {
+                        let step = 1.0 / count as f64;
+                        let s = golden_maximum(
+                            |s| value(&at(s)).unwrap_or(f64::NEG_INFINITY),
+                            i.saturating_sub(1) as f64 * step,
+                            (i + 1).min(count) as f64 * step,
+                        );
+                        way.push(at(s));
+                    }
+                }
+            }
+        }
+        way
+    }
+
+    /// The length of the tool tip's way from `start` to `end` (programmed),
+    /// through the frames: the path the feed is programmed for.
+    pub(super) fn tip_way(
+        &self,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        suppress: bool,
+    ) -> f64 {
+        let point = |p: &[Option<f64>]| -> Option<Vector3<f64>> {
+            let at = self.frames_only(p, suppress);
+            Some(Vector3::new(at[0]?, at[1]?, at[2]?))
+        };
+        match (point(start), point(end)) {
+            (Some(a), Some(b)) => (b - a).norm(),
+            _ => 0.0,
+        }
+    }
+}
+
+/// The argument in `low..high` at which the unimodal `f` is largest, to a
+/// millionth of the bracket.
+fn golden_maximum(f: impl Fn(f64) -> f64, mut low: f64, mut high: f64) -> f64 {
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let mut a = high - ratio * (high - low);
+    let mut b = low + ratio * (high - low);
+    let (mut fa, mut fb) = (f(a), f(b));
+    for _ in 0..30 {
+        if fa < fb {
+            low = a;
+            a = b;
+            fa = fb;
+            b = low + ratio * (high - low);
+            fb = f(b);
+        } else {
+            high = b;
+            b = a;
+            fb = fa;
+            a = high - ratio * (high - low);
+            fa = f(a);
+        }
+    }
+    (low + high) / 2.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_golden_section_finds_a_maximum_inside_its_bracket() {
+        let s = golden_maximum(|s| -(s - 0.3137).powi(2), 0.2, 0.5);
+        assert!((s - 0.3137).abs() < 1e-6, "{s}");
+        // At the bracket's edge: the edge.
+        let edge = golden_maximum(|s| s, 0.0, 1.0);
+        assert!((edge - 1.0).abs() < 1e-6, "{edge}");
+    }
+}
