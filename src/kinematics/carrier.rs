@@ -25,7 +25,7 @@
 use nalgebra::{Rotation3, Vector3};
 
 use crate::kinematics::record::{Kinematics, Record};
-use crate::kinematics::swivel::{model, shift, turn};
+use crate::kinematics::swivel::{model, shift_of_turns, turn};
 
 /// The carrier's motion at one set of axis positions, as an affine map.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,7 +50,7 @@ impl Carrier {
         let angles = model(record, positions);
         let (r1, r2) = (turn(record, 0, angles), turn(record, 1, angles));
         let [l1, l2, l3, _] = record.offsets;
-        let part_shift = shift(record, angles);
+        let part_shift = shift_of_turns(record, r1, r2);
         match record.kinematics {
             Kinematics::Head => Carrier {
                 part: Rotation3::identity(),

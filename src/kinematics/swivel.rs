@@ -281,8 +281,16 @@ pub fn orientation(record: &Record, angles: [f64; 2]) -> Rotation3<f64> {
 
 /// The zero-point shift of model `angles` (see [`Swivel::shift`]).
 pub(crate) fn shift(record: &Record, angles: [f64; 2]) -> Vector3<f64> {
+    shift_of_turns(record, turn(record, 0, angles), turn(record, 1, angles))
+}
+
+/// [`shift`] of the axes' turns `r1`, `r2` (see [`turn`]).
+pub(crate) fn shift_of_turns(
+    record: &Record,
+    r1: Rotation3<f64>,
+    r2: Rotation3<f64>,
+) -> Vector3<f64> {
     let [_, l2, l3, l4] = record.offsets;
-    let (r1, r2) = (turn(record, 0, angles), turn(record, 1, angles));
     match record.kinematics {
         Kinematics::Head => Vector3::zeros(),
         Kinematics::Table => (l2 + r1 * (l3 + r2 * l4)) - (l2 + l3 + l4),

@@ -38,6 +38,10 @@ const DEGREES_PER_SAMPLE: f64 = 4.0;
 /// Samples a block at most (a turn of 360 degrees, 5.6 degrees apart).
 const MOST_SAMPLES: usize = 64;
 
+/// How far inside a block's ends (a share of the block) the run looks
+/// whether an axis goes on past its value at the end.
+const NEAR_END: f64 = 1e-6;
+
 impl Transformed {
     /// The carrier at the machine positions `at` (every run axis), `None`
     /// where a rotary axis's position is unknown.
@@ -207,29 +211,32 @@ impl Interpreter<'_, '_> {
             return vec![at(0.0), at(1.0)];
         }
         let count = ((turn / DEGREES_PER_SAMPLE).ceil() as usize).clamp(1, MOST_SAMPLES);
-        let samples: Vec<Vec<Option<f64>>> =
-            (0..=count).map(|i| at(i as f64 / count as f64)).collect();
+        let step = 1.0 / count as f64;
+        let samples: Vec<Vec<Option<f64>>> = (0..=count).map(|i| at(i as f64 * step)).collect();
+        // Just inside each end: whether an axis goes on rising (or falling)
+        // into the block from an end where it is at its sampled extreme.
+        let inside = [at(NEAR_END), at(1.0 - NEAR_END)];
         let mut way = samples.clone();
         for k in 0..3 {
             for sign in [1.0, -1.0] {
                 let value = |point: &[Option<f64>]| point[k].map(|v| sign * v);
-                // A sampled extreme, at an end too: the largest value lies
-                // within a sample of it.
                 for i in 0..=count {
-                    let neighbour = |j: Option<usize>| match j.and_then(|j| samples.get(j)) {
-                        Some(point) => value(point),
-                        None => Some(f64::NEG_INFINITY),
-                    };
-                    let (Some(before), Some(here), Some(after)) = (
-                        neighbour(i.checked_sub(1)),
-                        value(&samples[i]),
-                        neighbour(Some(i + 1)),
-                    ) else {
+                    let neighbour = |j: Option<usize>| samples.get(j?).and_then(|p| value(p));
+                    let Some(here) = value(&samples[i]) else {
                         continue;
                     };
-                    // Not where the axis stands still.
-                    if here >= before && here >= after && (here > before || here > after) {
-                        let step = 1.0 / count as f64;
+                    let (before, after) = (neighbour(i.checked_sub(1)), neighbour(Some(i + 1)));
+                    let sampled_extreme = before.is_none_or(|b| here >= b)
+                        && after.is_none_or(|a| here >= a)
+                        && (before.is_some_and(|b| here > b) || after.is_some_and(|a| here > a));
+                    // At an end the extreme lies inside only where the axis
+                    // goes on past the end's value into the block.
+                    let rises_inside = match (i == 0, i == count) {
+                        (true, _) => value(&inside[0]).is_some_and(|v| v > here),
+                        (_, true) => value(&inside[1]).is_some_and(|v| v > here),
+                        _ => true,
+                    };
+                    if sampled_extreme && rises_inside {
                         let s = golden_maximum(
                             |s| value(&at(s)).unwrap_or(f64::NEG_INFINITY),
                             i.saturating_sub(1) as f64 * step,
