@@ -103,6 +103,28 @@ fn a_single_block_at_exact_stop_takes_the_closed_form_time() {
     assert_near(dwell.time_s, 2.5, 1e-12, "G4");
 }
 
+/// A lathe's channel has no Y (MD20050 `[1]` = 0): its travel is not
+/// reported, unless a program moves it.
+#[test]
+fn a_geometry_axis_the_channel_lacks_is_not_reported() {
+    let lathe = "%_N_INITIAL_INI\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n\
+N10000 $MN_AXCONF_MACHAX_NAME_TAB[1]=\"Z1\"\nCHANDATA(1)\n\
+N20050 $MC_AXCONF_GEOAX_ASSIGN_TAB[0]=1\nN20050 $MC_AXCONF_GEOAX_ASSIGN_TAB[1]=0\n\
+N20050 $MC_AXCONF_GEOAX_ASSIGN_TAB[2]=2\nN20060 $MC_AXCONF_GEOAX_NAME_TAB[0]=\"X\"\n\
+N20060 $MC_AXCONF_GEOAX_NAME_TAB[1]=\"Y\"\nN20060 $MC_AXCONF_GEOAX_NAME_TAB[2]=\"Z\"\n\
+N20070 $MC_AXCONF_MACHAX_USED[0]=1\nN20070 $MC_AXCONF_MACHAX_USED[1]=2\n\
+N20080 $MC_AXCONF_CHANAX_NAME_TAB[0]=\"X\"\nN20080 $MC_AXCONF_CHANAX_NAME_TAB[1]=\"Z\"\nM17\n";
+    let axes = |program: &str| -> Vec<String> {
+        dry_run(lathe, program)
+            .axes
+            .into_iter()
+            .map(|t| t.axis)
+            .collect()
+    };
+    assert_eq!(axes("G0 X20 Z5\nG1 X10 Z-30 F200\nM30\n"), ["X1", "Z1"]);
+    assert_eq!(axes("G0 X20 Y3 Z5\nM30\n"), ["X1", "Y", "Z1"]);
+}
+
 /// Under a rotated frame an axis programmed alone moves the machine's
 /// geometry axes together: X20, then X30, after ROT Z90 is machine Y 20, then 30.
 #[test]

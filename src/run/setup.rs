@@ -121,6 +121,9 @@ pub struct Setup {
     /// The channel's orientation transformations, in the order `TRAORI(n)`
     /// numbers them.
     pub orientations: Vec<Orientation>,
+    /// Geometry axes the channel does not have (MD20050 0: a lathe's Y):
+    /// kept in their place, left out of the report unless a program moves them.
+    pub absent_geometry: [bool; 3],
 }
 
 /// An orientation transformation of the channel (TRAORI): one of MD24100
@@ -184,13 +187,17 @@ impl Setup {
                 .cloned()
         };
         let mut run_axes = Vec::new();
+        let mut absent_geometry = [false; 3];
         for g in 0..3u32 {
             let name = text("$MC_AXCONF_GEOAX_NAME_TAB", g)
                 .unwrap_or_else(|| ["X", "Y", "Z"][g as usize].to_string());
             let assigned = number("$MC_AXCONF_GEOAX_ASSIGN_TAB", Some(1), &[Index::Number(g)]);
             let machine = match assigned {
                 Some(k) if k >= 1.0 => channel_name(k as u32).and_then(|c| machine_of(&c)),
-                Some(_) => None,
+                Some(_) => {
+                    absent_geometry[g as usize] = true;
+                    None
+                }
                 None => machine_of(&name),
             };
             run_axes.push(RunAxis {
@@ -247,6 +254,7 @@ impl Setup {
                 .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
             records: Vec::new(),
             orientations: orientations(data),
+            absent_geometry,
         }
     }
 

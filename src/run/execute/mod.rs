@@ -1214,6 +1214,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             .axes
             .iter()
             .enumerate()
+            .filter(|&(k, _)| {
+                let absent = self.setup.absent_geometry.get(k).copied().unwrap_or(false);
+                !absent || self.minimum[k].is_some()
+            })
             .map(|(k, axis)| Travel {
                 axis: axis.machine_name(),
                 min: self.minimum[k],
