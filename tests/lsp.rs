@@ -1597,6 +1597,21 @@ fn completion_offers_what_may_stand_there() {
         json!({ "start": { "line": 12, "character": 6 }, "end": { "line": 12, "character": 10 } })
     );
 
+    // Block numbers once an `N` is typed, those the jump reaches.
+    let numbered = "untitled:NUMBERED.MPF";
+    client.open(
+        numbered,
+        "N10 G0 X0\nN20 NEXT: GOTOF N\n/N30 G1 X10\nN40 GOTOB N\nM30\n",
+    );
+    assert_eq!(
+        labels(&completed(&mut client, numbered, 1, 17)),
+        ["N30", "N40"]
+    );
+    assert_eq!(
+        labels(&completed(&mut client, numbered, 3, 11)),
+        ["NEXT", "N10", "N20", "N30", "N40"]
+    );
+
     let system = completed(&mut client, URI, 3, 7);
     assert!(labels(&system).contains(&"$P_UIFR"), "{system:?}");
     assert!(

@@ -1,5 +1,6 @@
 //! `textDocument/completion`: what may be written where the cursor is.
-//! After a jump, the labels it can reach (GOTOF forward, GOTOB backward);
+//! After a jump, the labels it can reach (GOTOF forward, GOTOB backward),
+//! and the block numbers once an `N` is typed;
 //! after `$`, the control's system variables; elsewhere the language's
 //! words ([`crate::semantic::vocabulary`]), the G and M functions, the
 //! cycles with their parameters as a snippet, the program's variables, the
@@ -14,6 +15,7 @@ use crate::semantic::functions::{g_function, m_function, system_variable};
 use crate::semantic::uses::{Namespace, Role};
 use crate::semantic::vocabulary::{self, Kind};
 use crate::semantic::{cycles, jumps};
+use crate::syntax::block::block_number_digits;
 use crate::syntax::tree::GotoKind;
 
 use super::answers::Snapshot;
@@ -76,6 +78,27 @@ impl Snapshot<'_, '_> {
             let detail = format!("label, line {}", label.row + 1);
             items.own(written, lsp::CompletionItemKind::REFERENCE, detail);
         }
+        // Block numbers once one is being typed (`GOTOF N2`): every block
+        // may have one, and a jump names a label far more often.
+        let typed = items.typed;
+        if typed.first().is_some_and(|n| n.eq_ignore_ascii_case(&b'N'))
+            && typed[1..].iter().all(u8::is_ascii_digit)
+        {
+            let (source, lines) = (self.text.bytes(), &self.model.lines);
+            for row in (0..lines.len()).filter(|&row| finds(row)) {
+                let line = lines.raw(row).content.of(source);
+                let first = line.trim_ascii_start();
+                let first = first.strip_prefix(b"/").unwrap_or(first);
+                if let Some(digits) = block_number_digits(first).filter(|_| first[0] != b':') {
+                    let detail = format!("block number, line {}", row + 1);
+                    items.own(
+                        &first[..1 + digits],
+                        lsp::CompletionItemKind::REFERENCE,
+                        detail,
+                    );
+                }
+            }
+        }
     }
 
     /// The program's variables and PROC parameters, and what the control
@@ -134,8 +157,7 @@ fn label_search(before: &[u8]) -> Option<Search> {
         .map(|(_, search)| search)
 }
 
-/// `N100`: a block number, which completion does not offer (a jump names
-/// a label far more often, and every block may have one).
+/// `N100`: a block number, which completion offers only once one is typed.
 fn is_block_number(name: &str) -> bool {
     name.len() > 1 && name.starts_with('N') && name[1..].bytes().all(|b| b.is_ascii_digit())
 }
