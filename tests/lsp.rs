@@ -795,6 +795,17 @@ fn a_folder_of_machine_data_is_read_as_the_command_line_reads_it() {
     let value = client.request("textDocument/hover", at(&uri, 0, 0));
     let shown = value["contents"]["value"].as_str().expect("markdown");
     assert!(shown.contains("1.5"), "{shown}");
+    // A block past a software limit is a K007 finding on it, as `run` says.
+    let beyond = format!("file://{}", dir.join("BEYOND.MPF").display());
+    let found = client.open(&beyond, "G0 X10 Z1\nG0 Z3\nM30\n");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(found[0]["code"], "K007", "{found:?}");
+    assert_eq!(found[0]["range"]["start"]["line"], 1, "{found:?}");
+    let message = found[0]["message"].as_str().expect("a message");
+    assert!(
+        message.contains("Z1 reaches 3, 1.5 past its plus software limit 1.5"),
+        "{message}"
+    );
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -16,8 +16,7 @@ use crate::cli::{write_stdout, write_stdout_with, ExitStatus};
 use crate::diagnostic::Diagnostic;
 use crate::machine::MachineData;
 use crate::number::format;
-use crate::registry::axis_beyond_limit::RULE;
-use crate::run::{Options, Programs, Report, Setup, Side, Violation};
+use crate::run::{Options, Programs, Report, Setup};
 use crate::semantic::Model;
 use crate::workspace::{Given, Workspace};
 
@@ -171,7 +170,7 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
                 }
             },
         };
-        by_file[at].diagnostics.push(diagnostic(violation));
+        by_file[at].diagnostics.push(violation.diagnostic());
     }
     match args.format {
         RunFormat::Json if args.blocks => {}
@@ -216,29 +215,6 @@ struct Findings<'a> {
     path: std::path::PathBuf,
     source: &'a [u8],
     diagnostics: Vec<Diagnostic>,
-}
-
-/// A limit passed, as a finding on its block.
-fn diagnostic(violation: &Violation) -> Diagnostic {
-    let (side, datum) = match violation.side {
-        Side::Plus => ("plus", "MD36110 $MA_POS_LIMIT_PLUS"),
-        Side::Minus => ("minus", "MD36100 $MA_POS_LIMIT_MINUS"),
-    };
-    let by = (violation.value - violation.limit).abs();
-    let stays = match violation.last_line {
-        last if last > violation.line => format!(" (beyond it up to line {last})"),
-        _ => String::new(),
-    };
-    RULE.at(violation.span)
-        .message(format!(
-            "machine axis {} reaches {}, {} past its {side} software limit {} ({datum}){stays}: the control stops here with alarm 10720",
-            violation.axis,
-            format(violation.value, 3),
-            format(by, 3),
-            format(violation.limit, 3),
-        ))
-        .label("beyond the travel")
-        .help("program the move within the travel, or check the zero offset, the tool and the machine data given")
 }
 
 /// The JSON contract (docs/guide.md).

@@ -21,6 +21,9 @@ pub use execute::run;
 pub use programs::{subprogram_sources, Programs};
 pub use setup::{RunAxis, Setup};
 
+use crate::diagnostic::Diagnostic;
+use crate::number::format;
+use crate::registry::axis_beyond_limit::RULE;
 use crate::span::Span;
 
 /// At most this many excursions past a limit are listed (the rest are
@@ -80,6 +83,31 @@ pub struct Violation {
     pub value: f64,
     pub limit: f64,
     pub side: Side,
+}
+
+impl Violation {
+    /// The limit passed, as a finding (K007) on its block.
+    pub fn diagnostic(&self) -> Diagnostic {
+        let (side, datum) = match self.side {
+            Side::Plus => ("plus", "MD36110 $MA_POS_LIMIT_PLUS"),
+            Side::Minus => ("minus", "MD36100 $MA_POS_LIMIT_MINUS"),
+        };
+        let by = (self.value - self.limit).abs();
+        let stays = match self.last_line {
+            last if last > self.line => format!(" (beyond it up to line {last})"),
+            _ => String::new(),
+        };
+        RULE.at(self.span)
+            .message(format!(
+                "machine axis {} reaches {}, {} past its {side} software limit {} ({datum}){stays}: the control stops here with alarm 10720",
+                self.axis,
+                format(self.value, 3),
+                format(by, 3),
+                format(self.limit, 3),
+            ))
+            .label("beyond the travel")
+            .help("program the move within the travel, or check the zero offset, the tool and the machine data given")
+    }
 }
 
 /// Something the run could not know, and what it did instead.

@@ -1,9 +1,11 @@
 //! `textDocument/publishDiagnostics` and `textDocument/diagnostic`: the document's
-//! findings, at most [`MOST_SHOWN_FINDINGS`] of them.
+//! findings and, on the machine the settings name, the software limits its
+//! dry run passes (K007); at most [`MOST_SHOWN_FINDINGS`] of them.
 
 use lsp_types as lsp;
 
 use super::{Snapshot, MOST_SHOWN_FINDINGS};
+use crate::diagnostic::Diagnostic;
 use crate::lsp::convert;
 
 impl Snapshot<'_, '_> {
@@ -20,13 +22,19 @@ impl Snapshot<'_, '_> {
                 ..lsp::Diagnostic::default()
             }];
         }
-        let mut shown: Vec<lsp::Diagnostic> = self
-            .findings
+        // The analysis's findings, and the limits the dry run finds passed
+        // where the settings name a machine, in the order of the text.
+        let limits = self.limit_findings();
+        let mut findings: Vec<&Diagnostic> = self.findings.iter().chain(&limits).collect();
+        if !limits.is_empty() {
+            findings.sort_by_key(|found| found.span.start);
+        }
+        let mut shown: Vec<lsp::Diagnostic> = findings
             .iter()
             .take(MOST_SHOWN_FINDINGS)
             .map(|found| convert::diagnostic(self.text, uri, found, self.unit))
             .collect();
-        if let Some(first_unshown) = self.findings.get(MOST_SHOWN_FINDINGS) {
+        if let Some(first_unshown) = findings.get(MOST_SHOWN_FINDINGS) {
             let start = self.range(first_unshown.span).start;
             let check = match convert::path(uri) {
                 Some(path) => format!("`sinuprep check {}`", path.display()),
@@ -39,7 +47,7 @@ impl Snapshot<'_, '_> {
                 message: format!(
                     "{MOST_SHOWN_FINDINGS} of the {} findings are shown, those before here; \
                      {check} lists every one",
-                    self.findings.len(),
+                    findings.len(),
                 ),
                 ..lsp::Diagnostic::default()
             });

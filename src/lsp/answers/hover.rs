@@ -4,8 +4,6 @@
 
 use lsp_types as lsp;
 
-use crate::machine::MachineData;
-use crate::run::{Programs, Setup};
 use crate::semantic::uses::{Namespace, Role, Use};
 use crate::semantic::{cycle800, walk};
 use crate::span::ColumnUnit;
@@ -80,27 +78,12 @@ impl Snapshot<'_, '_> {
     /// past a software limit says so.
     fn run_hover(&self, row: usize) -> Option<lsp::Hover> {
         let machine = self.settings.machine.as_deref()?;
-        let setup = Setup::of(&MachineData::read(&machine.source)).with_records(&machine.machine);
-        if setup.axes.iter().all(|a| a.machine.is_none()) {
-            return None;
-        }
-        let options = crate::run::Options {
-            block_limit: 1_000_000,
-            ..crate::run::Options::default()
-        };
-        let programs = Programs::alone(self.model);
         let mut passed: Option<(Vec<Option<f64>>, f64)> = None;
-        let report = crate::run::run(
-            &programs,
-            &setup,
-            &self.settings.supplied,
-            &options,
-            |end| {
-                if passed.is_none() && end.program.is_none() && end.line == row + 1 {
-                    passed = Some((end.mcs.to_vec(), end.t_s));
-                }
-            },
-        );
+        let (setup, report) = self.dry_run(|end| {
+            if passed.is_none() && end.program.is_none() && end.line == row + 1 {
+                passed = Some((end.mcs.to_vec(), end.t_s));
+            }
+        })?;
         let (mcs, t) = passed?;
         let positions: Vec<String> = setup
             .axes
