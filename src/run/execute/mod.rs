@@ -1040,6 +1040,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "TRAORI" => self.traori(row, span, &[]),
                 "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
                 "TRAFOOF" => self.trafoof(row, span),
+                "ORIVECT" | "ORIPLANE" | "ORICONCW" | "ORICONCCW" | "ORICONIO" | "ORICONTO"
+                | "ORICURVE" => self.unknown(row, span, format!("{command}: the control turns the tool on a great circle or a cone between a block's ends; the run turns the rotary axes linearly (ORIAXES), so the way between the ends may differ")),
+                "ORIMKS" => self.unknown(row, span, "ORIMKS: orientation vectors in the machine's coordinates are not modelled; the run reads them in the work's (ORIWKS)".into()),
                 name => {
                     if let Some(group) = DYNAMIC_GROUPS.iter().position(|g| *g == name) {
                         self.dynamic_group = group;

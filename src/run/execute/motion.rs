@@ -437,6 +437,9 @@ impl Interpreter<'_, '_> {
         // under the new, which holds its extremes.
         let mut points = vec![end_mcs.clone()];
         if self.transformed.is_some() {
+            if self.motion == Motion::Rapid && !self.rapid_linear {
+                self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
+            }
             points.extend(self.transformed_way(&start, &end, suppress, tool));
         }
         if let Some(arc) = &arc {
