@@ -1537,6 +1537,58 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
     }
 }
 
+/// What TRAORI cannot follow is named on its block: no orientation
+/// transformation in the data, a type whose kinematics are the TRAFO5 data,
+/// a great-circle orientation (ORIVECT); TRAFOOF ends the transformation.
+#[test]
+fn traori_names_what_it_does_not_follow() {
+    let head = &oracle_kinematics()[0];
+    let whys = |trafo: &str, program: &str| -> Vec<(usize, String)> {
+        let data = five_axis(&format!("{}CHANDATA(1)\n{trafo}", record_text(head)));
+        let machine_data = MachineData::read(data.as_bytes());
+        let records = sinuprep::semantic::machine::Machine::read(
+            data.as_bytes(),
+            sinuprep::semantic::machine::Reading::default(),
+        );
+        let setup = Setup::of(&machine_data).with_records(&records);
+        let model = Model::of(program.as_bytes());
+        let report = run(
+            &Programs::alone(&model),
+            &setup,
+            &Supplied::default(),
+            &Options::default(),
+            |_| {},
+        );
+        report
+            .unknown
+            .into_iter()
+            .map(|u| (u.line, u.why))
+            .collect()
+    };
+    let program = "G0 X0 Y0 Z0 B0 C0\nTRAORI\nORIVECT\nG1 X10 B10 F100\nTRAFOOF\nM30\n";
+    let none = whys("", program);
+    assert!(
+        none.iter()
+            .any(|(line, why)| *line == 2 && why.contains("no orientation transformation 1")),
+        "{none:?}"
+    );
+    let generic = whys("$MC_TRAFO_TYPE_1=24\n", program);
+    assert!(
+        generic.iter().any(|(line, why)| *line == 2
+            && why.contains("type 24")
+            && why.contains("not modelled")),
+        "{generic:?}"
+    );
+    let carrier = whys("$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n", program);
+    assert!(carrier.iter().all(|(line, _)| *line != 2), "{carrier:?}");
+    assert!(
+        carrier
+            .iter()
+            .any(|(line, why)| *line == 3 && why.contains("great circle")),
+        "{carrier:?}"
+    );
+}
+
 /// A swivel the record allows but the machine data's software limits do
 /// not is a K007 finding on the CYCLE800's line; what the run cannot make
 /// of a call is named on it; `CYCLE800()` takes the swivel back.
