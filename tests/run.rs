@@ -1347,7 +1347,8 @@ fn holder(k: &Kinematic, x: Vector3<f64>, angles: [f64; 2], length: f64) -> Vect
 /// each block's end the rotary axes stand where programmed and the holder
 /// puts the tool tip (by the independent chain) on the point through G54;
 /// along a block, where the linear axes follow curves, the run's travel of
-/// each machine axis is the one a fine sampling of the chain finds.
+/// each machine axis is the one a fine sampling of the chain finds, the
+/// rotary axes turning linearly (ORIAXES, G group 51 chosen by MD21104).
 #[test]
 fn under_traori_the_tip_stays_on_the_programmed_point() {
     let mut numbers = Numbers(900);
@@ -1378,7 +1379,7 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
             ];
             let data = |limits: &str| {
                 five_axis(&format!(
-                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n\
+                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n$MC_ORI_IPO_WITH_G_CODE=1\n\
 $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
                     record_text(k),
                     g54[0],
@@ -1387,7 +1388,7 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 ))
             };
             let names = [rotary_name(k, 0), rotary_name(k, 1)];
-            let mut program = String::from("G54 T1 D1 M6\nTRAORI\n");
+            let mut program = String::from("G54 T1 D1 M6\nTRAORI ORIAXES\n");
             for (p, angles) in &points {
                 program.push_str(&format!(
                     "G1 X{} Y{} Z{} {}{} {}{} F1000\n",
@@ -1537,9 +1538,127 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
     }
 }
 
+/// Under ORIWKS (the basic setting, MD21104 not in the data) the tool
+/// turns on the great circle between its directions at a block's ends: on a
+/// head (C about Z, then B about Y, tool `Rz(C) Ry(B) Z`), the run's travel
+/// of each linear axis is the one the independent chain finds with the
+/// direction slerped and the axes solved for it in closed form (the
+/// solution nearest the axes' linear way), sampled 20,000 times and,
+/// where the axes turn more than 0.005 degrees between two samples (near
+/// the pole C turns fast), finer.
+#[test]
+fn under_oriwks_the_tool_turns_on_a_great_circle() {
+    const SAMPLES: u32 = 20_000;
+    let head = &oracle_kinematics()[0];
+    let mut numbers = Numbers(1000);
+    for case in 0..12 {
+        let length = numbers.between(50.0, 150.0);
+        let mut point = || {
+            (
+                [
+                    numbers.between(-40.0, 40.0),
+                    numbers.between(-40.0, 40.0),
+                    numbers.between(0.0, 30.0),
+                ],
+                // C, B.
+                [numbers.between(-90.0, 90.0), numbers.between(10.0, 60.0)],
+            )
+        };
+        let (from, to) = (point(), point());
+        let data = five_axis(&format!(
+            "{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n\
+$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+            record_text(head)
+        ));
+        let mut program = String::from("T1 D1 M6\nTRAORI\n");
+        for (p, [c, b]) in [&from, &to] {
+            program.push_str(&format!(
+                "G1 X{} Y{} Z{} C{c} B{b} F1000\n",
+                p[0], p[1], p[2]
+            ));
+        }
+        program.push_str("M30\n");
+        let machine_data = MachineData::read(data.as_bytes());
+        let records = sinuprep::semantic::machine::Machine::read(
+            data.as_bytes(),
+            sinuprep::semantic::machine::Reading::default(),
+        );
+        let setup = Setup::of(&machine_data).with_records(&records);
+        let model = Model::of(program.as_bytes());
+        let report = run(
+            &Programs::alone(&model),
+            &setup,
+            &Supplied::default(),
+            &Options::default(),
+            |_| {},
+        );
+        let what = format!("case {case}: {program}{:?}", report.unknown);
+        let direction = |[c, b]: [f64; 2]| {
+            let (c, b) = (c.to_radians(), b.to_radians());
+            Vector3::new(b.sin() * c.cos(), b.sin() * c.sin(), b.cos())
+        };
+        let (d0, d1) = (direction(from.1), direction(to.1));
+        let angle = d0.dot(&d1).clamp(-1.0, 1.0).acos();
+        // The axes and the holder at share `s` of the block.
+        let at = |s: f64| {
+            let d = (d0 * ((1.0 - s) * angle).sin() + d1 * (s * angle).sin()) / angle.sin();
+            let linear = [0, 1].map(|j| from.1[j] + (to.1[j] - from.1[j]) * s);
+            let b = d.z.clamp(-1.0, 1.0).acos().to_degrees();
+            let c = d.y.atan2(d.x).to_degrees();
+            let near = |c: f64| c + 360.0 * ((linear[0] - c) / 360.0).round();
+            let solutions = [[near(c), b], [near(c + 180.0), -b]];
+            let off = |x: &[f64; 2]| (x[0] - linear[0]).abs().max((x[1] - linear[1]).abs());
+            let turned = if off(&solutions[0]) <= off(&solutions[1]) {
+                solutions[0]
+            } else {
+                solutions[1]
+            };
+            assert!(
+                (direction(turned) - d.normalize()).norm() < 1e-9,
+                "the oracle's own solution"
+            );
+            let x = Vector3::from(from.0) + (Vector3::from(to.0) - Vector3::from(from.0)) * s;
+            (turned, holder(head, x, turned, length))
+        };
+        let mut lowest = [f64::INFINITY; 3];
+        let mut highest = [f64::NEG_INFINITY; 3];
+        let mut seen = |m: Vector3<f64>| {
+            for a in 0..3 {
+                lowest[a] = lowest[a].min(m[a]);
+                highest[a] = highest[a].max(m[a]);
+            }
+        };
+        // Evenly, and finer where the axes turn more than 0.005 degrees
+        // between two samples (near the pole C turns fast).
+        let mut previous = at(0.0);
+        seen(previous.1);
+        for i in 1..=SAMPLES {
+            let (s0, s1) = (
+                f64::from(i - 1) / f64::from(SAMPLES),
+                f64::from(i) / f64::from(SAMPLES),
+            );
+            let next = at(s1);
+            let turn = (0..2)
+                .map(|j| (next.0[j] - previous.0[j]).abs())
+                .fold(0.0, f64::max);
+            let finer = (turn / 0.005).ceil().clamp(1.0, 100_000.0) as u32;
+            for k in 1..finer {
+                seen(at(s0 + (s1 - s0) * f64::from(k) / f64::from(finer)).1);
+            }
+            seen(next.1);
+            previous = next;
+        }
+        for a in 0..3 {
+            let travel = &report.axes[a];
+            assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
+            assert_near(travel.max.expect("max"), highest[a], 1e-6, &what);
+        }
+    }
+}
+
 /// What TRAORI cannot follow is named on its block: no orientation
 /// transformation in the data, a type whose kinematics are the TRAFO5 data,
-/// a great-circle orientation (ORIVECT); TRAFOOF ends the transformation.
+/// an orientation on a cone (ORICONCW); TRAFOOF ends the transformation.
 #[test]
 fn traori_names_what_it_does_not_follow() {
     let head = &oracle_kinematics()[0];
@@ -1565,7 +1684,7 @@ fn traori_names_what_it_does_not_follow() {
             .map(|u| (u.line, u.why))
             .collect()
     };
-    let program = "G0 X0 Y0 Z0 B0 C0\nTRAORI\nORIVECT\nG1 X10 B10 F100\nTRAFOOF\nM30\n";
+    let program = "G0 X0 Y0 Z0 B0 C0\nTRAORI\nORICONCW\nG1 X10 B10 F100\nTRAFOOF\nM30\n";
     let none = whys("", program);
     assert!(
         none.iter()
@@ -1584,7 +1703,7 @@ fn traori_names_what_it_does_not_follow() {
     assert!(
         carrier
             .iter()
-            .any(|(line, why)| *line == 3 && why.contains("great circle")),
+            .any(|(line, why)| *line == 3 && why.contains("a cone or a curve")),
         "{carrier:?}"
     );
 }

@@ -121,6 +121,10 @@ pub struct Setup {
     /// The channel's orientation transformations, in the order `TRAORI(n)`
     /// numbers them.
     pub orientations: Vec<Orientation>,
+    /// MD21104 `$MC_ORI_IPO_WITH_G_CODE`: `Some(true)` where G group 51
+    /// (ORIAXES, ORIVECT, ...) chooses how the orientation turns, else
+    /// ORIWKS/ORIMKS do.
+    pub orientation_by_g_code: Option<bool>,
     /// Geometry axes the channel does not have (MD20050 0: a lathe's Y):
     /// kept in their place, left out of the report unless a program moves them.
     pub absent_geometry: [bool; 3],
@@ -254,6 +258,8 @@ impl Setup {
                 .and_then(|n| (n >= 0.0 && n.fract() == 0.0).then_some(n as u32)),
             records: Vec::new(),
             orientations: orientations(data),
+            orientation_by_g_code: number("$MC_ORI_IPO_WITH_G_CODE", Some(1), &[])
+                .map(|n| n != 0.0),
             absent_geometry,
         }
     }

@@ -285,6 +285,8 @@ struct Interpreter<'a, 'src> {
     swivelled: Option<swivel::Swivelled>,
     /// The orientation transformation TRAORI made active, until TRAFOOF.
     transformed: Option<traori::Transformed>,
+    /// How the tool turns between a block's ends under TRAORI.
+    turning: traori::Turning,
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
@@ -387,6 +389,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             programmable: Frame::identity(axes),
             swivelled: None,
             transformed: None,
+            turning: traori::Turning::default(),
             preselected: None,
             tool: None,
             edge: None,
@@ -1040,9 +1043,14 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "TRAORI" => self.traori(row, span, &[]),
                 "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
                 "TRAFOOF" => self.trafoof(row, span),
-                "ORIVECT" | "ORIPLANE" | "ORICONCW" | "ORICONCCW" | "ORICONIO" | "ORICONTO"
-                | "ORICURVE" => self.unknown(row, span, format!("{command}: the control turns the tool on a great circle or a cone between a block's ends; the run turns the rotary axes linearly (ORIAXES), so the way between the ends may differ")),
-                "ORIMKS" => self.unknown(row, span, "ORIMKS: orientation vectors in the machine's coordinates are not modelled; the run reads them in the work's (ORIWKS)".into()),
+                "ORIWKS" => self.turning.workpiece = true,
+                "ORIMKS" => {
+                    self.turning.workpiece = false;
+                    self.unknown(row, span, "ORIMKS: orientation vectors in the machine's coordinates are not modelled; the run reads them in the work's (ORIWKS)".into());
+                }
+                "ORIAXES" => self.turning.g_code = Some(traori::Way::Axes),
+                "ORIVECT" | "ORIPLANE" => self.turning.g_code = Some(traori::Way::GreatCircle),
+                "ORICONCW" | "ORICONCCW" | "ORICONIO" | "ORICONTO" | "ORICURVE" => self.unknown(row, span, format!("{command}: the control turns the tool on a cone or a curve between a block's ends; the run turns it on a great circle")),
                 name => {
                     if let Some(group) = DYNAMIC_GROUPS.iter().position(|g| *g == name) {
                         self.dynamic_group = group;

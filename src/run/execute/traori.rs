@@ -26,8 +26,39 @@ pub(super) struct Transformed {
     axes: [usize; 2],
 }
 
+/// How the tool turns between a block's ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Way {
+    /// Each rotary axis linearly (ORIAXES; ORIMKS where MD21104 is 0).
+    Axes,
+    /// The tool's direction on the great circle between its ends (ORIVECT,
+    /// ORIPLANE; ORIWKS where MD21104 is 0), the axes following it.
+    GreatCircle,
+}
+
+/// What decides the [`Way`]: ORIWKS/ORIMKS (G group 25), or G group 51
+/// where MD21104 `$MC_ORI_IPO_WITH_G_CODE` says so (Function Manual F2,
+/// "Orientation": "FALSE: the reference is provided by the G commands
+/// ORIWKS and ORIMKS").
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Turning {
+    /// ORIWKS, the control's basic setting (until ORIMKS).
+    pub workpiece: bool,
+    /// The G group 51 function programmed last.
+    pub g_code: Option<Way>,
+}
+
+impl Default for Turning {
+    fn default() -> Self {
+        Self {
+            workpiece: true,
+            g_code: None,
+        }
+    }
+}
+
 /// Said once a run that transforms: what the model rests on.
-const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions (ORIAXES: each interpolated linearly between a block's ends), the tool's length along its turned direction; the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, ORIPLANE) or each rotary axis linearly (ORIMKS; ORIAXES with MD21104 1), the axes' positions for a direction the solution nearest their linear way; the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
 
 /// A transformed block is sampled at a point every this many degrees of
 /// its rotary axes' turn, before the extremes between the samples are
@@ -171,6 +202,20 @@ impl Interpreter<'_, '_> {
         }
     }
 
+    /// How the tool turns in the block about to move (see [`Turning`]).
+    pub(super) fn way(&mut self, row: usize, span: Span) -> Way {
+        let by_g_code = self.setup.orientation_by_g_code == Some(true);
+        match (by_g_code, self.turning.g_code) {
+            (true, Some(way)) => way,
+            (true, None) => {
+                self.unknown(row, span, "MD21104 has G group 51 choose how the tool turns, and none is programmed yet (its reset value, MD20150[50], is not read): taken as ORIVECT".into());
+                Way::GreatCircle
+            }
+            (false, _) if self.turning.workpiece => Way::GreatCircle,
+            (false, _) => Way::Axes,
+        }
+    }
+
     /// `TRAFOOF`: the axes are programmed as the machine's again.
     pub(super) fn trafoof(&mut self, row: usize, span: Span) {
         if self.transformed.take().is_some() {
@@ -189,9 +234,16 @@ impl Interpreter<'_, '_> {
         end: &[Option<f64>],
         suppress: bool,
         tool: [f64; 3],
+        way: Way,
     ) -> Vec<Vec<Option<f64>>> {
+        let circle = match (way, &self.transformed) {
+            (Way::GreatCircle, Some(transformed)) => {
+                self.great_circle(transformed, start, end, suppress)
+            }
+            _ => None,
+        };
         let at = |s: f64| -> Vec<Option<f64>> {
-            let between: Vec<Option<f64>> = start
+            let mut between: Vec<Option<f64>> = start
                 .iter()
                 .zip(end)
                 .map(|(a, b)| match (a, b) {
@@ -199,6 +251,10 @@ impl Interpreter<'_, '_> {
                     _ => *b,
                 })
                 .collect();
+            if let Some(circle) = &circle {
+                let machine = self.frames_only(&between, suppress);
+                circle.turn(s, &mut between, &machine);
+            }
             self.to_machine(&between, suppress, tool)
         };
         let turn = self.transformed.as_ref().map_or(0.0, |t| {
@@ -207,22 +263,54 @@ impl Interpreter<'_, '_> {
                 .filter_map(|&k| Some((end[k]? - start[k]?).abs()))
                 .fold(0.0, f64::max)
         });
+        let turn = circle
+            .as_ref()
+            .map_or(turn, |c| turn.max(c.angle.to_degrees()));
         if turn == 0.0 {
             return vec![at(0.0), at(1.0)];
         }
         let count = ((turn / DEGREES_PER_SAMPLE).ceil() as usize).clamp(1, MOST_SAMPLES);
-        let step = 1.0 / count as f64;
-        let samples: Vec<Vec<Option<f64>>> = (0..=count).map(|i| at(i as f64 * step)).collect();
+        let mut samples: Vec<(f64, Vec<Option<f64>>)> = (0..=count)
+            .map(|i| {
+                let s = i as f64 / count as f64;
+                (s, at(s))
+            })
+            .collect();
+        // Where the axes turn faster than the samples assumed (near a pole
+        // of a great circle), halved until they turn no more than
+        // DEGREES_PER_SAMPLE between two samples, or MOST_SAMPLES are added.
+        if let Some(transformed) = self.transformed.as_ref().filter(|_| circle.is_some()) {
+            let turned = |p: &[Option<f64>], q: &[Option<f64>]| {
+                transformed
+                    .axes
+                    .iter()
+                    .filter_map(|&k| Some((q[k]? - p[k]?).abs()))
+                    .fold(0.0, f64::max)
+            };
+            let mut added = 0;
+            let mut i = 0;
+            while i + 1 < samples.len() && added < MOST_SAMPLES {
+                let (s0, s1) = (samples[i].0, samples[i + 1].0);
+                if turned(&samples[i].1, &samples[i + 1].1) > DEGREES_PER_SAMPLE && s1 - s0 > 1e-6 {
+                    let middle = (s0 + s1) / 2.0;
+                    samples.insert(i + 1, (middle, at(middle)));
+                    added += 1;
+                } else {
+                    i += 1;
+                }
+            }
+        }
+        let last = samples.len() - 1;
         // Just inside each end: whether an axis goes on rising (or falling)
         // into the block from an end where it is at its sampled extreme.
         let inside = [at(NEAR_END), at(1.0 - NEAR_END)];
-        let mut way = samples.clone();
+        let mut way: Vec<Vec<Option<f64>>> = samples.iter().map(|(_, p)| p.clone()).collect();
         for k in 0..3 {
             for sign in [1.0, -1.0] {
                 let value = |point: &[Option<f64>]| point[k].map(|v| sign * v);
-                for i in 0..=count {
-                    let neighbour = |j: Option<usize>| samples.get(j?).and_then(|p| value(p));
-                    let Some(here) = value(&samples[i]) else {
+                for i in 0..=last {
+                    let neighbour = |j: Option<usize>| samples.get(j?).and_then(|(_, p)| value(p));
+                    let Some(here) = value(&samples[i].1) else {
                         continue;
                     };
                     let (before, after) = (neighbour(i.checked_sub(1)), neighbour(Some(i + 1)));
@@ -231,7 +319,7 @@ impl Interpreter<'_, '_> {
                         && (before.is_some_and(|b| here > b) || after.is_some_and(|a| here > a));
                     // At an end the extreme lies inside only where the axis
                     // goes on past the end's value into the block.
-                    let rises_inside = match (i == 0, i == count) {
+                    let rises_inside = match (i == 0, i == last) {
                         (true, _) => value(&inside[0]).is_some_and(|v| v > here),
                         (_, true) => value(&inside[1]).is_some_and(|v| v > here),
                         _ => true,
@@ -239,8 +327,8 @@ impl Interpreter<'_, '_> {
                     if sampled_extreme && rises_inside {
                         let s = golden_maximum(
                             |s| value(&at(s)).unwrap_or(f64::NEG_INFINITY),
-                            i.saturating_sub(1) as f64 * step,
-                            (i + 1).min(count) as f64 * step,
+                            samples[i.saturating_sub(1)].0,
+                            samples[(i + 1).min(last)].0,
                         );
                         way.push(at(s));
                     }
@@ -248,6 +336,39 @@ impl Interpreter<'_, '_> {
             }
         }
         way
+    }
+
+    /// The great circle the tool turns on from `start` to `end`
+    /// (programmed), `None` where the axes turn linearly instead: an end
+    /// unknown, no turn of the direction, or opposite directions (no one
+    /// great circle between them).
+    fn great_circle(
+        &self,
+        transformed: &Transformed,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        suppress: bool,
+    ) -> Option<GreatCircle> {
+        let [a, b] = transformed.axes;
+        let (from, to) = (
+            self.frames_only(start, suppress),
+            self.frames_only(end, suppress),
+        );
+        let positions = |at: &[Option<f64>]| Some([at[a]?, at[b]?]);
+        let (from_positions, to_positions) = (positions(&from)?, positions(&to)?);
+        let from_direction = transformed.carrier(&from)?.tool_direction();
+        let to_direction = transformed.carrier(&to)?.tool_direction();
+        let angle = from_direction.dot(&to_direction).clamp(-1.0, 1.0).acos();
+        if angle < 1e-12 || std::f64::consts::PI - angle < 1e-9 {
+            return None;
+        }
+        Some(GreatCircle {
+            record: transformed.record.clone(),
+            axes: transformed.axes,
+            from: (from_direction, from_positions),
+            to: (to_direction, to_positions),
+            angle,
+        })
     }
 
     /// The length of the tool tip's way from `start` to `end` (programmed),
@@ -265,6 +386,45 @@ impl Interpreter<'_, '_> {
         match (point(start), point(end)) {
             (Some(a), Some(b)) => (b - a).norm(),
             _ => 0.0,
+        }
+    }
+}
+
+/// The tool's way on the great circle between two directions, and the
+/// rotary axes' positions at its ends.
+struct GreatCircle {
+    record: Record,
+    axes: [usize; 2],
+    from: (Vector3<f64>, [f64; 2]),
+    to: (Vector3<f64>, [f64; 2]),
+    /// Between the directions, radians.
+    angle: f64,
+}
+
+impl GreatCircle {
+    /// Sets the rotary axes of `between` (programmed, at share `s` of the
+    /// block; `machine` the same through the frames) to the positions that
+    /// turn the tool onto the circle's direction there: of the solutions,
+    /// the one nearest the axes' linear way between their ends.
+    fn turn(&self, s: f64, between: &mut [Option<f64>], machine: &[Option<f64>]) {
+        let ((d0, p0), (d1, p1)) = (self.from, self.to);
+        let direction =
+            (d0 * ((1.0 - s) * self.angle).sin() + d1 * (s * self.angle).sin()) / self.angle.sin();
+        let linear = [0, 1].map(|i| p0[i] + (p1[i] - p0[i]) * s);
+        let off = |x: &Solution| {
+            (0..2)
+                .map(|i| (x.positions[i] - linear[i]).abs())
+                .fold(0.0, f64::max)
+        };
+        let found = solutions(&self.record, &direction.normalize(), linear);
+        let Some(nearest) = found.iter().min_by(|x, y| off(x).total_cmp(&off(y))) else {
+            return;
+        };
+        for (i, k) in self.axes.into_iter().enumerate() {
+            // The frames' offset on the axis, as programmed positions take it.
+            if let (Some(programmed), Some(turned)) = (between[k], machine[k]) {
+                between[k] = Some(nearest.positions[i] - (turned - programmed));
+            }
         }
     }
 }
