@@ -1538,9 +1538,10 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
     }
 }
 
-/// Under ORIWKS (the basic setting, MD21104 not in the data) the tool
-/// turns on the great circle between its directions at a block's ends: on a
-/// head (C about Z, then B about Y, tool `Rz(C) Ry(B) Z`), the run's travel
+/// Under ORIWKS (the basic setting, MD21104 not in the data) a tool
+/// direction programmed as a vector is reached on the great circle from the
+/// one before: on a head (C about Z, then B about Y, tool `Rz(C) Ry(B) Z`),
+/// the axes turned onto the vector, and the run's travel
 /// of each linear axis is the one the independent chain finds with the
 /// direction slerped and the axes solved for it in closed form (the
 /// solution nearest the axes' linear way), sampled 20,000 times and,
@@ -1570,14 +1571,21 @@ fn under_oriwks_the_tool_turns_on_a_great_circle() {
 $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             record_text(head)
         ));
-        let mut program = String::from("T1 D1 M6\nTRAORI\n");
-        for (p, [c, b]) in [&from, &to] {
-            program.push_str(&format!(
-                "G1 X{} Y{} Z{} C{c} B{b} F1000\n",
-                p[0], p[1], p[2]
-            ));
-        }
-        program.push_str("M30\n");
+        let direction = |[c, b]: [f64; 2]| {
+            let (c, b) = (c.to_radians(), b.to_radians());
+            Vector3::new(b.sin() * c.cos(), b.sin() * c.sin(), b.cos())
+        };
+        // The first end by the axes' positions, the second by a vector.
+        let (p, [c, b]) = &from;
+        let mut program = format!(
+            "T1 D1 M6\nTRAORI\nG1 X{} Y{} Z{} C{c} B{b} F1000\n",
+            p[0], p[1], p[2]
+        );
+        let (p, d1) = (&to.0, direction(to.1));
+        program.push_str(&format!(
+            "G1 X{} Y{} Z{} A3={} B3={} C3={}\nM30\n",
+            p[0], p[1], p[2], d1.x, d1.y, d1.z
+        ));
         let machine_data = MachineData::read(data.as_bytes());
         let records = sinuprep::semantic::machine::Machine::read(
             data.as_bytes(),
@@ -1585,19 +1593,24 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
         );
         let setup = Setup::of(&machine_data).with_records(&records);
         let model = Model::of(program.as_bytes());
+        let mut ends = Vec::new();
         let report = run(
             &Programs::alone(&model),
             &setup,
             &Supplied::default(),
             &Options::default(),
-            |_| {},
+            |end| ends.push((end.line, end.mcs.to_vec())),
         );
         let what = format!("case {case}: {program}{:?}", report.unknown);
-        let direction = |[c, b]: [f64; 2]| {
-            let (c, b) = (c.to_radians(), b.to_radians());
-            Vector3::new(b.sin() * c.cos(), b.sin() * c.sin(), b.cos())
-        };
-        let (d0, d1) = (direction(from.1), direction(to.1));
+        // Where the run turned the axes for the vector: onto it.
+        let (_, mcs) = ends
+            .iter()
+            .find(|(line, _)| *line == 4)
+            .expect("the vector's block");
+        let turned = [mcs[4].expect("C"), mcs[3].expect("B")];
+        assert!((direction(turned) - d1).norm() < 1e-9, "{what}");
+        let to = (to.0, turned);
+        let d0 = direction(from.1);
         let angle = d0.dot(&d1).clamp(-1.0, 1.0).acos();
         // The axes and the holder at share `s` of the block.
         let at = |s: f64| {

@@ -287,6 +287,8 @@ struct Interpreter<'a, 'src> {
     transformed: Option<traori::Transformed>,
     /// How the tool turns between a block's ends under TRAORI.
     turning: traori::Turning,
+    /// The block moving now programs the orientation as a vector.
+    by_vector: bool,
     preselected: Option<u32>,
     tool: Option<u32>,
     edge: Option<u32>,
@@ -390,6 +392,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             swivelled: None,
             transformed: None,
             turning: traori::Turning::default(),
+            by_vector: false,
             preselected: None,
             tool: None,
             edge: None,
@@ -1109,7 +1112,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         } else if ap.is_some() || rp.is_some() {
             self.polar_move(row, span, (&ap, &rp), &mut targets, &mut centre);
         }
-        if orientation.iter().any(Option::is_some) {
+        self.by_vector = orientation.iter().any(Option::is_some);
+        if self.by_vector {
             self.orientation_vector(row, span, &orientation, &mut targets);
         }
         let circular = matches!(self.motion, Motion::Clockwise | Motion::Counterclockwise);

@@ -440,7 +440,7 @@ impl Interpreter<'_, '_> {
             if self.motion == Motion::Rapid && !self.rapid_linear {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
-            let way = self.way(row, span);
+            let way = self.way(self.by_vector);
             points.extend(self.transformed_way(&start, &end, suppress, tool, way));
         }
         if let Some(arc) = &arc {

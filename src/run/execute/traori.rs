@@ -58,7 +58,7 @@ impl Default for Turning {
 }
 
 /// Said once a run that transforms: what the model rests on.
-const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, ORIPLANE) or each rotary axis linearly (ORIMKS; ORIAXES with MD21104 1), the axes' positions for a direction the solution nearest their linear way; the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
 
 /// A transformed block is sampled at a point every this many degrees of
 /// its rotary axes' turn, before the extremes between the samples are
@@ -202,17 +202,20 @@ impl Interpreter<'_, '_> {
         }
     }
 
-    /// How the tool turns in the block about to move (see [`Turning`]).
-    pub(super) fn way(&mut self, row: usize, span: Span) -> Way {
-        let by_g_code = self.setup.orientation_by_g_code == Some(true);
-        match (by_g_code, self.turning.g_code) {
-            (true, Some(way)) => way,
-            (true, None) => {
-                self.unknown(row, span, "MD21104 has G group 51 choose how the tool turns, and none is programmed yet (its reset value, MD20150[50], is not read): taken as ORIVECT".into());
-                Way::GreatCircle
-            }
-            (false, _) if self.turning.workpiece => Way::GreatCircle,
-            (false, _) => Way::Axes,
+    /// How the tool turns in the block about to move: with the rotary
+    /// axes' positions programmed (or none), each axis linearly; with an
+    /// orientation vector, as [`Turning`] says (Programming Manual,
+    /// "Reference of the orientation axes (ORIWKS, ORIMKS)": for
+    /// orientation programmed by angles or a vector; G group 51's
+    /// default is ORIVECT, Programming Manual, "G commands").
+    pub(super) fn way(&self, by_vector: bool) -> Way {
+        if !by_vector {
+            return Way::Axes;
+        }
+        match self.setup.orientation_by_g_code {
+            Some(true) => self.turning.g_code.unwrap_or(Way::GreatCircle),
+            _ if self.turning.workpiece => Way::GreatCircle,
+            _ => Way::Axes,
         }
     }
 
