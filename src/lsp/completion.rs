@@ -87,8 +87,16 @@ impl Snapshot<'_, '_> {
             let (source, lines) = (self.text.bytes(), &self.model.lines);
             for row in (0..lines.len()).filter(|&row| finds(row)) {
                 let line = lines.raw(row).content.of(source);
+                // After the blanks and a skip level (`/`, `/1`), the number.
                 let first = line.trim_ascii_start();
-                let first = first.strip_prefix(b"/").unwrap_or(first);
+                let first = match first.strip_prefix(b"/") {
+                    Some(skipped) => match skipped.split_first() {
+                        Some((level, rest)) if level.is_ascii_digit() => rest,
+                        _ => skipped,
+                    }
+                    .trim_ascii_start(),
+                    None => first,
+                };
                 if let Some(digits) = block_number_digits(first).filter(|_| first[0] != b':') {
                     let detail = format!("block number, line {}", row + 1);
                     items.own(

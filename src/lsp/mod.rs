@@ -556,9 +556,11 @@ impl Server<'_> {
                     Ok(s.folding())
                 })
             }
+            // With a machine in the settings the findings include a dry run
+            // as long as the program: made off the main loop.
             r::DocumentDiagnosticRequest::METHOD => self.answer_document(
                 request,
-                Waits::Analysis,
+                Waits::Work,
                 |s, p: lsp::DocumentDiagnosticParams| {
                     let report = lsp::FullDocumentDiagnosticReport {
                         result_id: None,

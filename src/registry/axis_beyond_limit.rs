@@ -1,5 +1,6 @@
 //! K007 `axis-beyond-limit`: found by the dry run (`run::execute`,
-//! `sinuprep run`); this file documents it.
+//! `sinuprep run`, and the language server where a machine is set); this
+//! file documents it.
 
 use crate::diagnostic::{RuleInfo, Severity};
 
@@ -15,8 +16,10 @@ block reaches, the limit and by how much. The position is the machine axis's (MC
 point through the settable frame (G54..G599 from `$P_UIFR`), the programmable frame (TRANS,
 ATRANS, ROT, AROT) and the tool's length (`$TC_DP3` of the active T and D along the plane's infeed
 axis). An arc is checked at its ends and at the points where an axis turns inside it; a straight
-move (G0 as G1) reaches its furthest points at its ends. A modulo rotary axis (MD30310) has no
-limits.
+move (G0 as G1) reaches its furthest points at its ends, except under TRAORI, where the linear
+axes follow curves as the tool turns and the way is sampled and its extremes searched. A modulo
+rotary axis (MD30310) has no limits. The language server shows the finding too, where its settings
+name the machine.
 
 The limits and every other datum come from the machine's own data; an axis without them is not
 checked, and the run says so.

@@ -132,8 +132,8 @@ pub struct Setup {
 
 /// An orientation transformation of the channel (TRAORI): one of MD24100
 /// `$MC_TRAFO_TYPE_1..10` from 16 to 255 (a 3-, 4- or 5-axis
-/// transformation: 16 the tool turns, 32 the workpiece, 48 both, 8 generic,
-/// 72 the vectors of a swivel data record).
+/// transformation: 16 the tool turns, 32 the workpiece, 48 both, 8 more
+/// for a generic one, 72 the vectors of a swivel data record).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Orientation {
     /// MD24100.

@@ -28,7 +28,7 @@ use crate::semantic::structure::{control, sync_writes, Control, Structure};
 use crate::semantic::value::{Binding, Origin, Unknown, Value};
 use crate::span::Span;
 use crate::syntax::lexer::is_blank;
-use crate::syntax::tree::upper;
+use crate::syntax::tree::{starts_with_upper, upper};
 use crate::syntax::tree::{Block, Call, Expr, Initializer, Statement, StatementKind, TypeKind};
 use crate::syntax::visit::{collect_variables, for_each_expression};
 
@@ -1238,10 +1238,11 @@ impl<'a> Walker<'a> {
             collect_variables(expr, &mut reads)
         });
         for variable in reads {
-            let name = upper(variable.name.text(self.source));
-            if !name.starts_with("_CYC600_") || !variable.indices.is_empty() {
+            let text = variable.name.text(self.source);
+            if !starts_with_upper(text, "_CYC600_") || !variable.indices.is_empty() {
                 continue;
             }
+            let name = upper(text);
             if let Some(Binding::Known {
                 value,
                 origin: Origin::Cycle600 { .. },

@@ -76,6 +76,13 @@ pub fn upper(text: &[u8]) -> String {
     }
 }
 
+/// Whether `text` starts with the upper-case `prefix` in any case, as the
+/// control compares names; without making the name's upper case.
+pub fn starts_with_upper(text: &[u8], prefix: &str) -> bool {
+    text.get(..prefix.len())
+        .is_some_and(|start| start.eq_ignore_ascii_case(prefix.as_bytes()))
+}
+
 impl Name {
     pub fn text(self, source: &[u8]) -> &[u8] {
         self.span.of(source)

@@ -2,9 +2,8 @@
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
-use crate::lint::rules::support::*;
 use crate::semantic::model::is_stopre;
-use crate::syntax::tree::StatementKind;
+use crate::syntax::tree::{starts_with_upper, StatementKind};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "C614",
@@ -51,7 +50,7 @@ impl Check for Checker {
                 };
                 let mut reads = at.reads();
                 if let Some(variable) =
-                    reads.find(|v| upper(source, v.name.span).starts_with("_CYC600_"))
+                    reads.find(|v| starts_with_upper(v.name.text(source), "_CYC600_"))
                 {
                     out.push(
                         RULE.at(variable.span)

@@ -37,8 +37,13 @@ impl Snapshot<'_, '_> {
         if let Some(first_unshown) = findings.get(MOST_SHOWN_FINDINGS) {
             let start = self.range(first_unshown.span).start;
             let check = match convert::path(uri) {
-                Some(path) => format!("`sinuprep check {}`", path.display()),
-                None => "`sinuprep check` of the saved file".to_string(),
+                Some(path) => format!(
+                    "`sinuprep check {}` (and `sinuprep run` for K007)",
+                    path.display()
+                ),
+                None => {
+                    "`sinuprep check` of the saved file (and `sinuprep run` for K007)".to_string()
+                }
             };
             shown.push(lsp::Diagnostic {
                 range: lsp::Range::new(start, start),

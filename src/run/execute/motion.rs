@@ -441,7 +441,9 @@ impl Interpreter<'_, '_> {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
             let way = self.way(self.by_vector);
-            points.extend(self.transformed_way(&start, &end, suppress, tool, way));
+            // From where the machine stands, under the frames and tool now.
+            let from = self.to_program(&start_mcs, suppress, tool);
+            points.extend(self.transformed_way(&from, &end, suppress, tool, way));
         }
         if let Some(arc) = &arc {
             for k in 0..3 {
@@ -485,10 +487,10 @@ impl Interpreter<'_, '_> {
         if moved.is_empty() && arc.is_none() {
             return;
         }
-        let tip = self
-            .transformed
-            .is_some()
-            .then(|| self.tip_way(&start, &end, suppress));
+        let tip = self.transformed.is_some().then(|| {
+            let from = self.to_program(&start_mcs, suppress, tool);
+            self.tip_way(&from, &end, suppress)
+        });
         self.time(row, span, &moved, arc.as_ref(), tip, exact_here);
     }
 

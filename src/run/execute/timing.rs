@@ -33,12 +33,14 @@ impl Interpreter<'_, '_> {
             .sum::<f64>()
             .sqrt();
         // The path the feed is programmed for: the tool tip's under TRAORI,
-        // where the machine's linear axes go another way.
+        // where the machine's linear axes go another way (a block that only
+        // turns the tool: the rotary axes' turn, as without TRAORI).
         let length = match (arc, tip) {
             (Some(arc), _) => arc.length(),
             (None, Some(tip)) if tip > 0.0 => tip,
-            (None, _) if geometry > 0.0 => geometry,
-            (None, _) => others,
+            (None, Some(_)) => others,
+            (None, None) if geometry > 0.0 => geometry,
+            (None, None) => others,
         };
         if length <= 0.0 {
             return;

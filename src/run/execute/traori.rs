@@ -6,9 +6,9 @@
 //! TOOLCARRIER and 5-axis transformation): the record's chain
 //! ([`crate::kinematics::Carrier`]) at the rotary axes' positions takes each
 //! programmed point, through the frames, to the linear axes. The rotary
-//! axes are programmed by their names (machine axis positions); a block is
-//! checked against the limits along its way, where the linear axes follow
-//! curves between its ends.
+//! axes are programmed by their names (machine axis positions) or the tool
+//! by a direction (`A3= B3= C3=`); a block is checked against the limits
+//! along its way, where the linear axes follow curves between its ends.
 
 use nalgebra::Vector3;
 
@@ -58,7 +58,7 @@ impl Default for Turning {
 }
 
 /// Said once a run that transforms: what the model rests on.
-const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 at most) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 evenly at most, as many again where a great circle turns them faster) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
 
 /// A transformed block is sampled at a point every this many degrees of
 /// its rotary axes' turn, before the extremes between the samples are
@@ -66,7 +66,8 @@ const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 
 /// most. A block whose axes do not turn is a line: its ends hold its extremes.
 const DEGREES_PER_SAMPLE: f64 = 4.0;
 
-/// Samples a block at most (a turn of 360 degrees, 5.6 degrees apart).
+/// Even samples of a block at most (a turn of 360 degrees, 5.6 degrees
+/// apart); as many again at most where a great circle turns the axes faster.
 const MOST_SAMPLES: usize = 64;
 
 /// How far inside a block's ends (a share of the block) the run looks
@@ -80,14 +81,23 @@ impl Transformed {
         let [a, b] = self.axes;
         Some(Carrier::at(&self.record, [at[a]?, at[b]?]))
     }
+
+    /// The larger turn of the rotary axes from `p` to `q` (degrees; 0
+    /// where a position is unknown).
+    fn turn(&self, p: &[Option<f64>], q: &[Option<f64>]) -> f64 {
+        self.axes
+            .iter()
+            .filter_map(|&k| Some((q[k]? - p[k]?).abs()))
+            .fold(0.0, f64::max)
+    }
 }
 
 impl Interpreter<'_, '_> {
     /// `TRAORI` or `TRAORI(n, ...)`, its arguments as evaluated.
+    /// A TRAORI the run cannot make leaves no transformation on: the
+    /// positions after it are of the axes as programmed, as it says.
     pub(super) fn traori(&mut self, row: usize, span: Span, arguments: &[Option<Value>]) {
-        if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
-            self.report.assumptions.push(ASSUMED.to_string());
-        }
+        self.trafoof(row, span);
         let number = match arguments.first() {
             None | Some(None) if arguments.len() <= 1 => 1,
             Some(Some(Value::Number(n))) if *n >= 1.0 && n.fract() == 0.0 => *n as usize,
@@ -124,6 +134,9 @@ impl Interpreter<'_, '_> {
         let [Some(a), Some(b)] = axes else {
             return self.unknown(row, span, format!("TRAORI({number}): the record's rotary axes ($TC_CARR35/36) are not both axes of the machine's channel: the positions after it are of the axes as programmed"));
         };
+        if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
+            self.report.assumptions.push(ASSUMED.to_string());
+        }
         let tool = self.tool_offset(row, span);
         self.transformed = Some(Transformed {
             record,
@@ -260,12 +273,10 @@ impl Interpreter<'_, '_> {
             }
             self.to_machine(&between, suppress, tool)
         };
-        let turn = self.transformed.as_ref().map_or(0.0, |t| {
-            t.axes
-                .iter()
-                .filter_map(|&k| Some((end[k]? - start[k]?).abs()))
-                .fold(0.0, f64::max)
-        });
+        let turn = self
+            .transformed
+            .as_ref()
+            .map_or(0.0, |t| t.turn(start, end));
         let turn = circle
             .as_ref()
             .map_or(turn, |c| turn.max(c.angle.to_degrees()));
@@ -283,18 +294,13 @@ impl Interpreter<'_, '_> {
         // of a great circle), halved until they turn no more than
         // DEGREES_PER_SAMPLE between two samples, or MOST_SAMPLES are added.
         if let Some(transformed) = self.transformed.as_ref().filter(|_| circle.is_some()) {
-            let turned = |p: &[Option<f64>], q: &[Option<f64>]| {
-                transformed
-                    .axes
-                    .iter()
-                    .filter_map(|&k| Some((q[k]? - p[k]?).abs()))
-                    .fold(0.0, f64::max)
-            };
             let mut added = 0;
             let mut i = 0;
             while i + 1 < samples.len() && added < MOST_SAMPLES {
                 let (s0, s1) = (samples[i].0, samples[i + 1].0);
-                if turned(&samples[i].1, &samples[i + 1].1) > DEGREES_PER_SAMPLE && s1 - s0 > 1e-6 {
+                if transformed.turn(&samples[i].1, &samples[i + 1].1) > DEGREES_PER_SAMPLE
+                    && s1 - s0 > 1e-6
+                {
                     let middle = (s0 + s1) / 2.0;
                     samples.insert(i + 1, (middle, at(middle)));
                     added += 1;
