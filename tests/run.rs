@@ -45,7 +45,11 @@ fn dry_run(machine_text: &str, program: &str) -> Report {
 fn dry_run_each(machine_text: &str, program: &str, each: impl FnMut(BlockEnd)) -> Report {
     let data = MachineData::read(machine_text.as_bytes());
     assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
-    let setup = Setup::of(&data);
+    let records = sinuprep::semantic::machine::Machine::read(
+        machine_text.as_bytes(),
+        sinuprep::semantic::machine::Reading::default(),
+    );
+    let setup = Setup::of(&data).with_records(&records);
     let model = Model::of(program.as_bytes());
     let programs = Programs::alone(&model);
     run(
@@ -55,6 +59,18 @@ fn dry_run_each(machine_text: &str, program: &str, each: impl FnMut(BlockEnd)) -
         &Options::default(),
         each,
     )
+}
+
+/// Each block's line and machine positions at its end.
+type Ends = Vec<(usize, Vec<Option<f64>>)>;
+
+/// [`dry_run`], with each block's end.
+fn dry_run_ends(machine_text: &str, program: &str) -> (Report, Ends) {
+    let mut ends = Vec::new();
+    let report = dry_run_each(machine_text, program, |end| {
+        ends.push((end.line, end.mcs.to_vec()))
+    });
+    (report, ends)
 }
 
 fn assert_near(a: f64, b: f64, tolerance: f64, what: &str) {
@@ -1260,26 +1276,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             }
             program.push_str("M30\n");
 
-            let machine_data = MachineData::read(data.as_bytes());
-            assert!(
-                machine_data.diagnostics.is_empty(),
-                "{:?}",
-                machine_data.diagnostics
-            );
-            let records = sinuprep::semantic::machine::Machine::read(
-                data.as_bytes(),
-                sinuprep::semantic::machine::Reading::default(),
-            );
-            let setup = Setup::of(&machine_data).with_records(&records);
-            let model = Model::of(program.as_bytes());
-            let mut ends = Vec::new();
-            let report = run(
-                &Programs::alone(&model),
-                &setup,
-                &Supplied::default(),
-                &Options::default(),
-                |end| ends.push((end.line, end.mcs.to_vec())),
-            );
+            let (report, ends) = dry_run_ends(&data, &program);
             let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
             assert!(
                 report.unknown.iter().all(|u| !u.why.contains("CYCLE800")),
@@ -1399,29 +1396,9 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 "G1 X{} Y{} Z{} A3={} B3={} C3={}\nM30\n",
                 last[0], last[1], last[2], vector[0], vector[1], vector[2]
             ));
-            let model = Model::of(program.as_bytes());
             let dry = |limits: &str| {
                 let data = data(limits);
-                let machine_data = MachineData::read(data.as_bytes());
-                assert!(
-                    machine_data.diagnostics.is_empty(),
-                    "{:?}",
-                    machine_data.diagnostics
-                );
-                let records = sinuprep::semantic::machine::Machine::read(
-                    data.as_bytes(),
-                    sinuprep::semantic::machine::Reading::default(),
-                );
-                let setup = Setup::of(&machine_data).with_records(&records);
-                let mut ends = Vec::new();
-                let report = run(
-                    &Programs::alone(&model),
-                    &setup,
-                    &Supplied::default(),
-                    &Options::default(),
-                    |end| ends.push((end.line, end.mcs.to_vec())),
-                );
-                (report, ends)
+                dry_run_ends(&data, &program)
             };
             let (report, ends) = dry("");
             let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
@@ -1586,21 +1563,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             "G1 X{} Y{} Z{} A3={} B3={} C3={}\nM30\n",
             p[0], p[1], p[2], d1.x, d1.y, d1.z
         ));
-        let machine_data = MachineData::read(data.as_bytes());
-        let records = sinuprep::semantic::machine::Machine::read(
-            data.as_bytes(),
-            sinuprep::semantic::machine::Reading::default(),
-        );
-        let setup = Setup::of(&machine_data).with_records(&records);
-        let model = Model::of(program.as_bytes());
-        let mut ends = Vec::new();
-        let report = run(
-            &Programs::alone(&model),
-            &setup,
-            &Supplied::default(),
-            &Options::default(),
-            |end| ends.push((end.line, end.mcs.to_vec())),
-        );
+        let (report, ends) = dry_run_ends(&data, &program);
         let what = format!("case {case}: {program}{:?}", report.unknown);
         // Where the run turned the axes for the vector: onto it.
         let (_, mcs) = ends
@@ -1677,20 +1640,7 @@ fn traori_names_what_it_does_not_follow() {
     let head = &oracle_kinematics()[0];
     let whys = |trafo: &str, program: &str| -> Vec<(usize, String)> {
         let data = five_axis(&format!("{}CHANDATA(1)\n{trafo}", record_text(head)));
-        let machine_data = MachineData::read(data.as_bytes());
-        let records = sinuprep::semantic::machine::Machine::read(
-            data.as_bytes(),
-            sinuprep::semantic::machine::Reading::default(),
-        );
-        let setup = Setup::of(&machine_data).with_records(&records);
-        let model = Model::of(program.as_bytes());
-        let report = run(
-            &Programs::alone(&model),
-            &setup,
-            &Supplied::default(),
-            &Options::default(),
-            |_| {},
-        );
+        let report = dry_run(&data, program);
         report
             .unknown
             .into_iter()
@@ -1734,21 +1684,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]=100\n",
     );
     let program = "T1 D1 M6\nG0 X0 Y0 Z0 B0 C0\nCYCLE800(0,\"HEAD\",0,57,0,0,0,0,45,0,0,0,0,1)\n\
 CYCLE800(1,\"HEAD\",0,57,0,0,0,0,20,0,0,0,0,1)\nCYCLE800()\nG1 X10 Y0 Z0 F1000\nM30\n";
-    let machine_data = MachineData::read(data.as_bytes());
-    let records = sinuprep::semantic::machine::Machine::read(
-        data.as_bytes(),
-        sinuprep::semantic::machine::Reading::default(),
-    );
-    let setup = Setup::of(&machine_data).with_records(&records);
-    let model = Model::of(program.as_bytes());
-    let mut ends = Vec::new();
-    let report = run(
-        &Programs::alone(&model),
-        &setup,
-        &Supplied::default(),
-        &Options::default(),
-        |end| ends.push((end.line, end.mcs.to_vec())),
-    );
+    let (report, ends) = dry_run_ends(&data, program);
     let found: Vec<(usize, &str, f64)> = (report.violations.iter())
         .map(|v| (v.line, v.axis.as_str(), v.value))
         .collect();

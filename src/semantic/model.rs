@@ -417,6 +417,10 @@ impl<'src> ModelBuilder<'src> {
     /// The lines read with `macros` expanded (the machine's definition
     /// files'); the program's own DEFINEs add to them from their line on.
     pub fn with_macros(mut self, macros: Arc<Macros>) -> Self {
+        if !macros.is_empty() {
+            // Their lines are read again with the macros (see `finish`).
+            self.line_facts = None;
+        }
         self.macros = macros;
         self
     }
@@ -534,6 +538,7 @@ impl<'src> ModelBuilder<'src> {
                         self.syntax.push(macro_redefines_keyword(source, name.span));
                     } else {
                         Arc::make_mut(&mut self.macros).define(name.text(source), body.of(source));
+                        self.line_facts = None;
                     }
                 }
                 _ if is_stopre(source, statement) => self.stopre.push(row),

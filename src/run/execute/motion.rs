@@ -435,15 +435,20 @@ impl Interpreter<'_, '_> {
         // the block traverses a changed offset, the arc's start under the new
         // one too: the path lies between the arc under the old offset and
         // under the new, which holds its extremes.
+        // Under TRAORI the way starts where the machine stands, under the
+        // frames and tool now.
+        let way_start = self
+            .transformed
+            .is_some()
+            .then(|| self.to_program(&start_mcs, suppress, tool));
         let mut points = vec![end_mcs.clone()];
         if self.transformed.is_some() {
             if self.motion == Motion::Rapid && !self.rapid_linear {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
             let way = self.way(self.by_vector);
-            // From where the machine stands, under the frames and tool now.
-            let from = self.to_program(&start_mcs, suppress, tool);
-            points.extend(self.transformed_way(&from, &end, suppress, tool, way));
+            let from = way_start.as_deref().unwrap_or(&start);
+            points.extend(self.transformed_way(from, &end, suppress, tool, way));
         }
         if let Some(arc) = &arc {
             for k in 0..3 {
@@ -487,10 +492,9 @@ impl Interpreter<'_, '_> {
         if moved.is_empty() && arc.is_none() {
             return;
         }
-        let tip = self.transformed.is_some().then(|| {
-            let from = self.to_program(&start_mcs, suppress, tool);
-            self.tip_way(&from, &end, suppress)
-        });
+        let tip = way_start
+            .as_deref()
+            .map(|from| self.tip_way(from, &end, suppress));
         self.time(row, span, &moved, arc.as_ref(), tip, exact_here);
     }
 
