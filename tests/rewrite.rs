@@ -358,6 +358,36 @@ const SNIPPETS: &[&str] = &[
     "CYCLE600(0, \"UFK600\", 0, 39, 0, 0, 0, 0, R4, 0, 0, 0, 0, 1, 57, 1, 0, 0)",
 ];
 
+/// A result inlined as a string after a sign would be a syntax error
+/// (`+ "UFK600"`, S005): that read stays the variable, the others are
+/// inlined (found by the rewrite fuzz target).
+#[test]
+fn a_string_result_after_a_sign_is_not_inlined() {
+    let source = b"N10 CYCLE600(0, \"UFK600\", 1, 57, 0, 0, 0, 30, 45, 60, 0, 0, 0, 0, 0, 39, 0, 0, 0)\n\
+N20 STOPRE\nN30 CYCLE800(0,+ _CYC600_1, 0, _CYC600_6, 0,0,0, _CYC600_2, _CYC600_3, _CYC600_4,0,0,0,-1)\nN40 M30\n";
+    let heads = Heads::read(
+        "HEAD_DEF.SPF".into(),
+        b"_HEAD_NAME=\"UFK600\"\n_HEAD_ALLOWED=1\n",
+    );
+    let options = Options {
+        inline_results: true,
+        runtime: Some(None),
+        ..Options::default()
+    };
+    let model = Model::of(source);
+    let analysis = analyze(&model, &Supplied::default(), Some(&heads));
+    let once = apply(source, &rewrite(&model, &analysis, &options).edits);
+    assert_eq!(
+        support::syntax_errors(&once),
+        support::syntax_errors(source)
+    );
+    let text = String::from_utf8_lossy(&once);
+    assert!(
+        text.contains("CYCLE800(0,+ _CYC600_1, 0, 39, 0,0,0, 39.639272,"),
+        "{text}"
+    );
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1000))]
 

@@ -187,6 +187,14 @@ pub fn rewrite_on(
     }
     if options.inline_results {
         for read in &analysis.result_reads {
+            // A string after a sign is a syntax error (S005): such a read
+            // stays the variable it is.
+            let before = source[..read.span.start].trim_ascii_end();
+            if matches!(read.value, Value::Text(_))
+                && before.ends_with(b"+") | before.ends_with(b"-")
+            {
+                continue;
+            }
             let text = literal(&read.value, options.precision);
             // A read may follow an operator, and a sign right after one is
             // not accepted by every control: `<< (-16.28)`, not `<< -16.28`.
