@@ -1130,6 +1130,22 @@ fn forward(
     }
 }
 
+/// The holder's machine position and the rotary axes `names` (B or C of
+/// [`five_axis`]) at the end of the block on 1-based `line`.
+fn holder_at(ends: &Ends, line: usize, names: [&str; 2]) -> (Vector3<f64>, [f64; 2]) {
+    let (_, mcs) = ends
+        .iter()
+        .find(|(at, _)| *at == line)
+        .expect("the block's end");
+    let m = Vector3::new(
+        mcs[0].expect("known"),
+        mcs[1].expect("known"),
+        mcs[2].expect("known"),
+    );
+    let rotary = names.map(|name| mcs[if name == "B" { 3 } else { 4 }].expect("the rotary axis"));
+    (m, rotary)
+}
+
 /// A head, a table and a mixed machine, their axes and offset vectors.
 fn oracle_kinematics() -> [Kinematic; 3] {
     [
@@ -1286,21 +1302,9 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             let plane = (0..3).fold(Matrix3::identity(), |r, i| {
                 r * rodrigues(unit[axes[i]], angles[i])
             });
-            let rotary = |mcs: &[Option<f64>], name: &str| {
-                mcs[if name == "B" { 3 } else { 4 }].expect("the rotary axis turned")
-            };
             for (i, p) in points.iter().enumerate() {
-                let (_, mcs) = ends
-                    .iter()
-                    .find(|(line, _)| *line == 4 + i)
-                    .expect("the move's end");
-                let m = Vector3::new(
-                    mcs[0].expect("known"),
-                    mcs[1].expect("known"),
-                    mcs[2].expect("known"),
-                );
                 let names = [rotary_name(k, 0), rotary_name(k, 1)];
-                let turned = [rotary(mcs, names[0]), rotary(mcs, names[1])];
+                let (m, turned) = holder_at(&ends, 4 + i, names);
                 let (tip, tool) = forward(k, m, turned, length);
                 let expected = Vector3::from(g54)
                     + Vector3::from(zero)
@@ -1406,18 +1410,8 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 report.unknown.iter().all(|u| !u.why.contains("TRAORI")),
                 "{what}"
             );
-            let index = |name: &str| if name == "B" { 3 } else { 4 };
             for (i, (p, angles)) in points.iter().enumerate() {
-                let (_, mcs) = ends
-                    .iter()
-                    .find(|(line, _)| *line == 3 + i)
-                    .expect("the move's end");
-                let m = Vector3::new(
-                    mcs[0].expect("known"),
-                    mcs[1].expect("known"),
-                    mcs[2].expect("known"),
-                );
-                let turned = names.map(|name| mcs[index(name)].expect("the rotary axis"));
+                let (m, turned) = holder_at(&ends, 3 + i, names);
                 assert_near(turned[0], angles[0], 1e-12, &what);
                 assert_near(turned[1], angles[1], 1e-12, &what);
                 let (tip, _) = forward(k, m, turned, length);
@@ -1428,16 +1422,7 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 );
             }
             // A direction by its vector: the tool along it, the tip on the point.
-            let (_, mcs) = ends
-                .iter()
-                .find(|(line, _)| *line == 5)
-                .expect("the vector's block");
-            let m = Vector3::new(
-                mcs[0].expect("known"),
-                mcs[1].expect("known"),
-                mcs[2].expect("known"),
-            );
-            let turned = names.map(|name| mcs[index(name)].expect("the rotary axis"));
+            let (m, turned) = holder_at(&ends, 5, names);
             let (tip, tool) = forward(k, m, turned, length);
             let expected = Vector3::from(g54) + Vector3::from(last);
             assert!(
@@ -1566,11 +1551,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
         let (report, ends) = dry_run_ends(&data, &program);
         let what = format!("case {case}: {program}{:?}", report.unknown);
         // Where the run turned the axes for the vector: onto it.
-        let (_, mcs) = ends
-            .iter()
-            .find(|(line, _)| *line == 4)
-            .expect("the vector's block");
-        let turned = [mcs[4].expect("C"), mcs[3].expect("B")];
+        let (_, turned) = holder_at(&ends, 4, ["C", "B"]);
         assert!((direction(turned) - d1).norm() < 1e-9, "{what}");
         let to = (to.0, turned);
         let d0 = direction(from.1);
