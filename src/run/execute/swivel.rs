@@ -41,7 +41,11 @@ impl Interpreter<'_, '_> {
     /// offline).
     pub(super) fn cycle800(&mut self, row: usize, span: Span, arguments: &[Option<Value>]) {
         if self.transformed.is_some() {
-            return self.unknown(row, span, "CYCLE800 with TRAORI active is not modelled (the control refuses a swivel under a transformation unless its machine data allow it): the swivel is not made".into());
+            return self.unknown(
+                row,
+                span,
+                "CYCLE800 with TRAORI active is not modelled: the swivel is not made".into(),
+            );
         }
         if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
             self.report.assumptions.push(ASSUMED.to_string());
