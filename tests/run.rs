@@ -1689,3 +1689,336 @@ CYCLE800(1,\"HEAD\",0,57,0,0,0,0,20,0,0,0,0,1)\nCYCLE800()\nG1 X10 Y0 Z0 F1000\n
     );
     assert!((known(3).abs() - 20.0).abs() < 1e-9, "B stays: {last:?}");
 }
+
+type Points = Vec<[f64; 2]>;
+
+/// The tool centre's path the textbook way, for a closed polygon under
+/// G41/G42 (`side` +1 left, -1 right) with the radius `r`: each edge moved
+/// along its normal; an inside corner, and under G451 an outside one, where
+/// the moved edges meet (on the bisector); under G450 an outside corner is
+/// a circle about the vertex. Returns each block's end (the approach, the
+/// infeed, the edges, the retraction) and the path's points where its
+/// extremes may lie (lines' ends, arcs sampled), or `None` where an edge is
+/// too short for the radius.
+fn centre_path(
+    vertices: &[[f64; 2]],
+    side: f64,
+    r: f64,
+    circles: bool,
+    from: [f64; 2],
+    to: [f64; 2],
+) -> Option<(Points, Points)> {
+    let n = vertices.len();
+    // The edges v0 v1 .. v(n-1) v0, and v0 v1 again to end on a corner.
+    let edges: Vec<([f64; 2], [f64; 2])> = (0..=n)
+        .map(|k| (vertices[k % n], vertices[(k + 1) % n]))
+        .collect();
+    let unit = |(a, b): ([f64; 2], [f64; 2])| {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let length = dx.hypot(dy);
+        [dx / length, dy / length]
+    };
+    // The offset of an edge: the radius to its left, or right.
+    let offset = |e| {
+        let t = unit(e);
+        [-t[1] * side * r, t[0] * side * r]
+    };
+    let add = |p: [f64; 2], o: [f64; 2]| [p[0] + o[0], p[1] + o[1]];
+    let mut ends = vec![add(edges[0].0, offset(edges[0]))];
+    ends.push(ends[0]);
+    let mut points = vec![from, ends[0]];
+    let mut start = ends[0];
+    for k in 0..=n {
+        let (o, t) = (offset(edges[k]), unit(edges[k]));
+        let vertex = edges[k].1;
+        let (end, next_start) = if k == n {
+            let end = add(vertex, o);
+            (end, end)
+        } else {
+            let (p, q) = (offset(edges[k + 1]), unit(edges[k + 1]));
+            let turn = t[0] * q[1] - t[1] * q[0];
+            let inside = side * turn > 0.0;
+            if inside || !circles {
+                let cos = (o[0] * p[0] + o[1] * p[1]) / (r * r);
+                let meet = add(
+                    vertex,
+                    [(o[0] + p[0]) / (1.0 + cos), (o[1] + p[1]) / (1.0 + cos)],
+                );
+                (meet, meet)
+            } else {
+                let (a, b) = (o[1].atan2(o[0]), p[1].atan2(p[0]));
+                let mut sweep = b - a;
+                if sweep > std::f64::consts::PI {
+                    sweep -= std::f64::consts::TAU;
+                }
+                if sweep < -std::f64::consts::PI {
+                    sweep += std::f64::consts::TAU;
+                }
+                for i in 0..=20_000 {
+                    let angle = a + sweep * f64::from(i) / 20_000.0;
+                    points.push(add(vertex, [r * angle.cos(), r * angle.sin()]));
+                }
+                (add(vertex, o), add(vertex, p))
+            }
+        };
+        // The moved edge must keep its direction: else the tool does not fit.
+        if (end[0] - start[0]) * t[0] + (end[1] - start[1]) * t[1] <= 0.0 {
+            return None;
+        }
+        points.push(end);
+        ends.push(end);
+        start = next_start;
+    }
+    ends.push(to);
+    points.push(to);
+    Some((ends, points))
+}
+
+/// G41/G42 on random convex polygons, left and right, inside and outside,
+/// G450 and G451: each block's end to 1e-9 against [`centre_path`], a move
+/// off the plane run where the approach ends, and the limits 1 µm inside
+/// the path's extremes reported, 1 µm outside not.
+#[test]
+fn radius_compensation_puts_the_centre_beside_the_contour() {
+    let mut numbers = Numbers(45);
+    let mut checked = 0;
+    for case in 0..40 {
+        let n = 3 + case % 4;
+        let (cx, cy, big) = (
+            numbers.between(200.0, 300.0),
+            numbers.between(150.0, 250.0),
+            numbers.between(50.0, 90.0),
+        );
+        let ccw = numbers.next() < 0.5;
+        let vertices: Vec<[f64; 2]> = (0..n)
+            .map(|k| {
+                let step = std::f64::consts::TAU / n as f64;
+                let angle = step * k as f64 + numbers.between(-0.25, 0.25) * step;
+                let angle = if ccw { angle } else { -angle };
+                let radius = big * numbers.between(0.85, 1.0);
+                [
+                    format!("{:.4}", cx + radius * angle.cos())
+                        .parse()
+                        .expect("x"),
+                    format!("{:.4}", cy + radius * angle.sin())
+                        .parse()
+                        .expect("y"),
+                ]
+            })
+            .collect();
+        let side = if numbers.next() < 0.5 { 1.0 } else { -1.0 };
+        let r = numbers.between(1.0, 8.0);
+        let circles = numbers.next() < 0.5;
+        let (from, to) = ([cx + 2.0 * big, cy], [cx + 2.0 * big, cy + 10.0]);
+        let Some((ends, points)) = centre_path(&vertices, side, r, circles, from, to) else {
+            continue;
+        };
+        checked += 1;
+        let mut program = format!(
+            "T1 M6\nD1\nG0 G90 X{} Y{} Z0\nG1 {} {} F1000 X{} Y{}\nZ-5\n",
+            from[0],
+            from[1],
+            if side > 0.0 { "G41" } else { "G42" },
+            if circles { "G450" } else { "G451" },
+            vertices[0][0],
+            vertices[0][1]
+        );
+        for k in 0..=n {
+            let v = vertices[(k + 1) % n];
+            program.push_str(&format!("X{} Y{}\n", v[0], v[1]));
+        }
+        program.push_str(&format!("G40 X{} Y{}\nM30\n", to[0], to[1]));
+        let tool = format!("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={r}\n");
+        let (report, at) = dry_run_ends(&machine(&tool), &program);
+        let unknown: Vec<_> = (report.unknown.iter())
+            .filter(|u| {
+                !(u.why.starts_with("where the axes were before")
+                    || u.why.starts_with("MD20210")
+                    || u.why.starts_with("MD20230"))
+            })
+            .collect();
+        assert!(unknown.is_empty(), "case {case}: {unknown:?}\n{program}");
+        // Blocks from the approach (line 4) to the retraction, in order.
+        let lines: Vec<usize> = at.iter().map(|(line, _)| *line).collect();
+        assert_eq!(lines, (1..=program.lines().count()).collect::<Vec<_>>());
+        for (k, end) in ends.iter().enumerate() {
+            let (line, mcs) = &at[3 + k];
+            for (axis, want) in end.iter().enumerate() {
+                let got = mcs[axis].expect("position");
+                assert!(
+                    (got - want).abs() < 1e-9,
+                    "case {case}, line {line}, axis {axis}: {got} != {want}\n{program}"
+                );
+            }
+        }
+        assert_eq!(at[4].1[2], Some(-5.0), "the infeed's Z");
+        for axis in 0..2 {
+            let values = points.iter().map(|p| p[axis]);
+            let high = values.clone().fold(f64::MIN, f64::max);
+            let low = values.fold(f64::MAX, f64::min);
+            for (side, limit, beyond, datum) in [
+                (Side::Plus, high - 1e-6, true, "N36110 $MA_POS_LIMIT_PLUS"),
+                (Side::Plus, high + 1e-6, false, "N36110 $MA_POS_LIMIT_PLUS"),
+                (Side::Minus, low + 1e-6, true, "N36100 $MA_POS_LIMIT_MINUS"),
+                (Side::Minus, low - 1e-6, false, "N36100 $MA_POS_LIMIT_MINUS"),
+            ] {
+                let limited = format!("{tool}{datum}[AX{}]={limit}\n", axis + 1);
+                let report = dry_run(&machine(&limited), &program);
+                let found = (report.violations.iter())
+                    .any(|v| v.side == side && v.axis == ["X1", "Y1"][axis]);
+                assert_eq!(
+                    found, beyond,
+                    "case {case}, axis {axis}, {side:?} limit {limit}: {:?}\n{program}",
+                    report.violations
+                );
+            }
+        }
+    }
+    assert!(
+        checked >= 30,
+        "only {checked} of 40 polygons fit their tool"
+    );
+}
+
+/// Arcs under G41/G42: a slot's outline (two lines, two half circles, all
+/// tangent) run both ways round, the tool inside and outside: the centre
+/// goes round the same slot grown or shrunk by the radius, whose ends and
+/// extremes are known in closed form.
+#[test]
+fn radius_compensation_follows_arcs_at_their_radius_grown_or_shrunk() {
+    let (cx, cy, half, radius, r) = (300.0, 200.0, 40.0, 25.0, 6.0);
+    for ccw in [true, false] {
+        for side in [1.0, -1.0] {
+            // Round the slot counter-clockwise the tool's left is inside.
+            let inside = (side > 0.0) == ccw;
+            let grown = if inside { radius - r } else { radius + r };
+            let y = |s: f64| if ccw { s } else { -s };
+            let arc = if ccw { "G3" } else { "G2" };
+            let program = format!(
+                "T1 M6\nD1\nG0 G90 X{x0} Y{ya} Z0\nG1 {g} F1000 X{x0} Y{yb}\nX{x1} Y{yb}\n\
+{arc} X{x1} Y{yc} CR={radius}\nG1 X{x0} Y{yc}\n{arc} X{x0} Y{yb} CR={radius}\nG1 X{x1} Y{yb}\n\
+G40 X{x1} Y{ya}\nM30\n",
+                x0 = cx - half,
+                x1 = cx + half,
+                ya = cy + y(-2.0 * radius),
+                yb = cy + y(-radius),
+                yc = cy + y(radius),
+                g = if side > 0.0 { "G41" } else { "G42" },
+            );
+            let tool = format!("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={r}\n");
+            let (report, at) = dry_run_ends(&machine(&tool), &program);
+            let unknown: Vec<_> = (report.unknown.iter())
+                .filter(|u| !u.why.starts_with("where the axes were before"))
+                .collect();
+            assert!(unknown.is_empty(), "{unknown:?}\n{program}");
+            let expected = [
+                (4, cx - half, cy + y(-grown)),
+                (5, cx + half, cy + y(-grown)),
+                (6, cx + half, cy + y(grown)),
+                (7, cx - half, cy + y(grown)),
+                (8, cx - half, cy + y(-grown)),
+                (9, cx + half, cy + y(-grown)),
+                (10, cx + half, cy + y(-2.0 * radius)),
+            ];
+            for (line, x, y) in expected {
+                let mcs = &at[line - 1].1;
+                assert_near(
+                    mcs[0].expect("x"),
+                    x,
+                    1e-9,
+                    &format!("line {line} X\n{program}"),
+                );
+                assert_near(
+                    mcs[1].expect("y"),
+                    y,
+                    1e-9,
+                    &format!("line {line} Y\n{program}"),
+                );
+            }
+            let travel = |k: usize| (report.axes[k].min, report.axes[k].max);
+            assert_eq!(travel(0).1, Some(cx + half + grown), "{program}");
+            assert_eq!(travel(0).0, Some(cx - half - grown), "{program}");
+            let ys = [cy - grown, cy + grown, cy + y(-2.0 * radius)];
+            let lowest = ys.iter().copied().fold(f64::MAX, f64::min);
+            let highest = ys.iter().copied().fold(f64::MIN, f64::max);
+            assert_near(travel(1).0.expect("y min"), lowest, 1e-9, "Y min");
+            assert_near(travel(1).1.expect("y max"), highest, 1e-9, "Y max");
+        }
+    }
+}
+
+/// MD20210 and MD20230 as the data give them: under G451 a corner more
+/// pointed than MD20210 gets a circle after all; under G450 one flatter
+/// than MD20230 gets the meeting point. Without them the run says so.
+#[test]
+fn corners_switch_as_the_machine_data_say() {
+    // Along +X, then back at 135 degrees (pointed), then a 20 degree bend.
+    let program = "T1 M6\nD1\nG0 G90 X0 Y-50 Z0\nG1 G42 G451 F1000 X0 Y0\nX100\n\
+X29.2893 Y70.7107\nX-70.7107 Y107.1075\nG40 X-70 Y150\nM30\n";
+    let tool = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\n";
+    let limits = "N20210 $MC_CUTCOM_CORNER_LIMIT=100\nN20230 $MC_CUTCOM_CURVE_INSERT_LIMIT=30\n";
+    let end_of = |at: &Ends, line: usize| [at[line - 1].1[0], at[line - 1].1[1]];
+    // The data's limits: the pointed corner (line 5 to 6) gets its circle,
+    // line 5 ends square to its end.
+    let (report, at) = dry_run_ends(&machine(&format!("{tool}{limits}")), program);
+    assert!(
+        report.unknown.iter().all(|u| !u.why.starts_with("MD202")),
+        "{:?}",
+        report.unknown
+    );
+    assert_eq!(end_of(&at, 5), [Some(100.0), Some(-5.0)]);
+    // Without them: the meeting point, and the run says why.
+    let (report, at) = dry_run_ends(&machine(tool), program);
+    assert!(
+        report.unknown.iter().any(|u| u.why.starts_with("MD20210")),
+        "{:?}",
+        report.unknown
+    );
+    let x = end_of(&at, 5)[0].expect("x");
+    assert!(x > 105.0, "the meeting point lies past the corner: {x}");
+    // G450 at the 20 degree bend (line 6 to 7): the data say meet, not circle.
+    let program = program.replace("G451", "G450");
+    let (_, at) = dry_run_ends(&machine(&format!("{tool}{limits}")), &program);
+    let [x, y] = end_of(&at, 6).map(|v| v.expect("position"));
+    let half = std::f64::consts::FRAC_1_SQRT_2;
+    let on_normal = [29.2893 - 5.0 * half, 70.7107 - 5.0 * half];
+    assert!(
+        (x - on_normal[0]).hypot(y - on_normal[1]) > 0.05,
+        "meets beyond the square end: {x} {y}"
+    );
+}
+
+/// ROTS and AROTS turn the frame by solid angles: one angle is ROT about
+/// its axis (Programming Manual, "ROTS, AROTS, CROTS"); two angles keep
+/// the new X in the old ZX plane; AROTS adds to what is there.
+#[test]
+fn solid_angles_turn_the_frame() {
+    let ends = |program: &str| {
+        let (report, at) = dry_run_ends(&machine(""), program);
+        let unknown: Vec<_> = (report.unknown.iter())
+            .filter(|u| !u.why.starts_with("where the axes were before"))
+            .collect();
+        assert!(unknown.is_empty(), "{unknown:?}");
+        at.last().map(|(_, mcs)| mcs.clone()).unwrap_or_default()
+    };
+    let rot = ends("ROT Y30\nG0 X10 Y20 Z30\n");
+    let rots = ends("ROTS Y30\nG0 X10 Y20 Z30\n");
+    for (a, b) in rot.iter().zip(&rots) {
+        assert_near(
+            a.expect("ROT"),
+            b.expect("ROTS"),
+            1e-12,
+            "ROTS Y30 = ROT Y30",
+        );
+    }
+    // ROTS X Y: the new X axis lies in the old ZX plane, turned by Y's angle.
+    let x = ends("ROTS X20 Y30\nG0 X1 Y0 Z0\n");
+    let y30 = 30f64.to_radians();
+    assert_near(x[1].expect("y"), 0.0, 1e-12, "new X in the ZX plane");
+    assert_near(x[0].expect("x"), y30.cos(), 1e-12, "new X");
+    assert_near(x[2].expect("z"), -y30.sin(), 1e-12, "new X");
+    // AROTS after TRANS: the shift stays, the turn is added.
+    let added = ends("TRANS X100\nAROTS Z90\nG0 X10 Y0 Z0\n");
+    assert_near(added[0].expect("x"), 100.0, 1e-12, "AROTS keeps TRANS");
+    assert_near(added[1].expect("y"), 10.0, 1e-12, "AROTS turns");
+}

@@ -10,6 +10,7 @@
 //! block in [`Report::unknown`]; the run goes on and says what it took.
 
 pub mod arc;
+pub mod contour;
 mod execute;
 pub mod frame;
 pub mod plot;

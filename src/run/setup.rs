@@ -125,6 +125,12 @@ pub struct Setup {
     /// (ORIAXES, ORIVECT, ...) chooses how the orientation turns, else
     /// ORIWKS/ORIMKS do.
     pub orientation_by_g_code: Option<bool>,
+    /// MD20210 `$MC_CUTCOM_CORNER_LIMIT`: the contour's turn (degrees) from
+    /// which an outside corner under G451 gets a circle after all.
+    pub corner_limit: Option<f64>,
+    /// MD20230 `$MC_CUTCOM_CURVE_INSERT_LIMIT`: the contour's turn (degrees)
+    /// below which an outside corner under G450 gets the meeting point.
+    pub curve_insert_limit: Option<f64>,
     /// Geometry axes the channel does not have (MD20050 0: a lathe's Y):
     /// kept in their place, left out of the report unless a program moves them.
     pub absent_geometry: [bool; 3],
@@ -260,6 +266,8 @@ impl Setup {
             orientations: orientations(data),
             orientation_by_g_code: number("$MC_ORI_IPO_WITH_G_CODE", Some(1), &[])
                 .map(|n| n != 0.0),
+            corner_limit: number("$MC_CUTCOM_CORNER_LIMIT", Some(1), &[]),
+            curve_insert_limit: number("$MC_CUTCOM_CURVE_INSERT_LIMIT", Some(1), &[]),
             absent_geometry,
         }
     }

@@ -234,7 +234,7 @@ fn elemental(axis: Axis, degrees: f64) -> Rotation3<f64> {
 /// the second axis turns the first about it into the oblique plane, the
 /// angle of the first turns the second about it; the new first axis stays in
 /// the plane of the first and third axes. One angle is `ROT` about its axis.
-fn solid_angles(xyz: [Option<f64>; 3]) -> Result<Rotation3<f64>, String> {
+pub(crate) fn solid_angles(xyz: [Option<f64>; 3]) -> Result<Rotation3<f64>, String> {
     let given: Vec<usize> = (0..3).filter(|&i| xyz[i].is_some()).collect();
     let (first, second) = match given.as_slice() {
         [] => return Ok(Rotation3::identity()),

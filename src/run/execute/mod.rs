@@ -3,6 +3,7 @@
 //! machine (see the module above for what is modelled).
 
 mod calls;
+mod compensation;
 mod motion;
 mod polar;
 mod swivel;
@@ -81,13 +82,21 @@ pub fn run(
         }
         machine.report.blocks += 1;
         let flow = machine.block(row);
-        each(BlockEnd {
-            program: machine.program.as_deref(),
-            line: row + 1,
-            mcs: &machine.mcs,
-            t_s: machine.report.time_s,
-            arc: machine.last_arc.take().as_ref(),
-        });
+        machine.tell(&mut each);
+        if machine.compensation.holds() {
+            let arc = machine.last_arc.take();
+            machine
+                .compensation
+                .wait(machine.program.clone(), row + 1, arc);
+        } else {
+            each(BlockEnd {
+                program: machine.program.as_deref(),
+                line: row + 1,
+                mcs: &machine.mcs,
+                t_s: machine.report.time_s,
+                arc: machine.last_arc.take().as_ref(),
+            });
+        }
         let next = match flow {
             Flow::Next => row + 1,
             Flow::To(next) => next,
@@ -106,6 +115,8 @@ pub fn run(
             None => next,
         };
     }
+    machine.end_held(None);
+    machine.tell(&mut each);
     machine.finish()
 }
 
@@ -230,6 +241,26 @@ const DYNAMIC_GROUPS: [&str; 5] = ["DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN"
 /// subprograms (Siemens, Programming Manual Fundamentals, "Nesting depth").
 const MOST_LEVELS: usize = 16;
 
+/// The modes a move's path and its time follow.
+#[derive(Clone, Copy)]
+struct Modes {
+    motion: Motion,
+    /// Feeds to the machine's (G700, G710).
+    feed_scale: f64,
+    feed_mode: FeedMode,
+    /// As programmed, per minute (or per revolution, or inverse time).
+    feed: Option<f64>,
+    spindle: Option<f64>,
+    exact_stop: bool,
+    soft: bool,
+    /// G0 interpolates linearly (RTLION) or each axis on its own (RTLIOF).
+    rapid_linear: bool,
+    /// The dynamic response group whose MD32300/MD32431 the path takes
+    /// (G group 59: 0 DYNNORM, 1 DYNPOS, 2 DYNROUGH, 3 DYNSEMIFIN, 4
+    /// DYNFINISH), from `--dynamic-group` until the program chooses one.
+    dynamic_group: usize,
+}
+
 struct Interpreter<'a, 'src> {
     programs: &'a Programs<'src>,
     model: &'a Model<'src>,
@@ -242,10 +273,6 @@ struct Interpreter<'a, 'src> {
     modal_call: Option<ModalCall>,
     /// The pole and the polar words last programmed (G110-G112, AP, RP).
     polar: polar::Polar,
-    /// The dynamic response group whose MD32300/MD32431 the path takes
-    /// (G group 59: 0 DYNNORM, 1 DYNPOS, 2 DYNROUGH, 3 DYNSEMIFIN, 4
-    /// DYNFINISH), from `--dynamic-group` until the program chooses one.
-    dynamic_group: usize,
     /// The arc the block just run moves along, for [`BlockEnd::arc`].
     last_arc: Option<Arc>,
     source: &'src [u8],
@@ -263,28 +290,21 @@ struct Interpreter<'a, 'src> {
     programmed: Vec<Option<f64>>,
     /// The frames' linear part (rotation, scale, mirror) at the last move.
     last_linear: Matrix3<f64>,
-    motion: Motion,
+    /// What a move's path and time follow, kept with a move held back.
+    modes: Modes,
     incremental: bool,
     /// 0: G17 (XY, infeed Z), 1: G18 (ZX, infeed Y), 2: G19 (YZ, infeed X).
     plane: usize,
     /// Program lengths to the machine's: 25.4 for G70/G700 on a metric machine.
     length_scale: f64,
-    /// Feeds too (G700, G710).
-    feed_scale: f64,
-    feed_mode: FeedMode,
-    /// As programmed, per minute (or per revolution, or inverse time).
-    feed: Option<f64>,
-    spindle: Option<f64>,
-    exact_stop: bool,
-    soft: bool,
-    /// G0 interpolates linearly (RTLION) or each axis on its own (RTLIOF).
-    rapid_linear: bool,
     settable: Frame,
     programmable: Frame,
     /// The swivel of the last CYCLE800, until `CYCLE800()`.
     swivelled: Option<swivel::Swivelled>,
     /// The orientation transformation TRAORI made active, until TRAFOOF.
     transformed: Option<traori::Transformed>,
+    /// Tool radius compensation, and the element it holds back.
+    compensation: compensation::Compensation,
     /// How the tool turns between a block's ends under TRAORI.
     turning: traori::Turning,
     /// The block moving now programs the orientation as a vector.
@@ -362,7 +382,6 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             calling: None,
             modal_call: None,
             polar: polar::Polar::default(),
-            dynamic_group: options.dynamic_group,
             last_arc: None,
             source: model.source,
             setup,
@@ -376,21 +395,25 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             mcs: vec![None; axes],
             programmed: vec![None; axes],
             last_linear: Matrix3::identity(),
-            motion: Motion::Rapid,
+            modes: Modes {
+                motion: Motion::Rapid,
+                feed_scale: 1.0,
+                feed_mode: FeedMode::PerMinute,
+                feed: None,
+                spindle: None,
+                exact_stop,
+                soft,
+                rapid_linear: true,
+                dynamic_group: options.dynamic_group,
+            },
             incremental: false,
             plane: 0,
             length_scale: 1.0,
-            feed_scale: 1.0,
-            feed_mode: FeedMode::PerMinute,
-            feed: None,
-            spindle: None,
-            exact_stop,
-            soft,
-            rapid_linear: true,
             settable: Frame::identity(axes),
             programmable: Frame::identity(axes),
             swivelled: None,
             transformed: None,
+            compensation: compensation::Compensation::default(),
             turning: traori::Turning::default(),
             by_vector: false,
             preselected: None,
@@ -897,6 +920,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     /// What a block's words do: its modal G functions, frames, tool, feed,
     /// and its motion.
     fn apply(&mut self, row: usize, span: Span, content: Content) -> Flow {
+        if self.compensation.holds() && !self.keeps_contour(&content) {
+            self.end_held(Some("before the next move in the plane, a block changes the frames, the tool or the plane, or calls a cycle"));
+        }
         let mut dwell = false;
         let mut exact_here = false;
         let mut suppress_frames = false;
@@ -921,10 +947,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         continue;
                     };
                     match *g as u32 {
-                        0 => self.motion = Motion::Rapid,
-                        1 => self.motion = Motion::Linear,
-                        2 => self.motion = Motion::Clockwise,
-                        3 => self.motion = Motion::Counterclockwise,
+                        0 => self.modes.motion = Motion::Rapid,
+                        1 => self.modes.motion = Motion::Linear,
+                        2 => self.modes.motion = Motion::Clockwise,
+                        3 => self.modes.motion = Motion::Counterclockwise,
                         4 => dwell = true,
                         9 => exact_here = true,
                         17..=19 => {
@@ -934,18 +960,19 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                                 self.polar.plane_changed();
                             }
                         }
-                        41 | 42 => self.note("cutter radius compensation (G41/G42) is not modelled: positions are the programmed contour's".into()),
+                        40..=42 => self.select_compensation(row, span, *g as u32),
+                        450 | 451 => self.compensation.corners(*g as u32),
                         53 | 153 => suppress_frames = true,
                         500 => self.settable = Frame::identity(self.setup.axes.len()),
                         54..=57 | 505..=599 => self.select_frame(row, span, *g as u32),
-                        60 => self.exact_stop = true,
-                        64 | 641..=645 => self.exact_stop = false,
+                        60 => self.modes.exact_stop = true,
+                        64 | 641..=645 => self.modes.exact_stop = false,
                         70 | 700 | 71 | 710 => self.units(row, span, *g as u32),
                         90 => self.incremental = false,
                         91 => self.incremental = true,
-                        93 => self.feed_mode = FeedMode::InverseTime,
-                        94 => self.feed_mode = FeedMode::PerMinute,
-                        95 => self.feed_mode = FeedMode::PerRevolution,
+                        93 => self.modes.feed_mode = FeedMode::InverseTime,
+                        94 => self.modes.feed_mode = FeedMode::PerMinute,
+                        95 => self.modes.feed_mode = FeedMode::PerRevolution,
                         110..=112 => pole = Some(*g as u32),
                         _ => {}
                     }
@@ -988,28 +1015,36 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 },
                 "F" if dwell => dwell_value = Some(value.clone()),
                 "F" => match value {
-                    Ok(f) => self.feed = Some(*f),
+                    Ok(f) => self.modes.feed = Some(*f),
                     Err(why) => {
-                        self.feed = None;
+                        self.modes.feed = None;
                         self.unknown(row, span, format!("the feed is {why}"));
                     }
                 },
                 "S" | "S1" => match value {
                     Ok(s) if dwell => {
                         dwell_value =
-                            Some(match self.spindle {
+                            Some(match self.modes.spindle {
                                 Some(speed) if speed > 0.0 => Ok(s * 60.0 / speed),
                                 _ => Err("a dwell in spindle revolutions without a known speed"
                                     .to_string()),
                             })
                     }
-                    Ok(s) => self.spindle = Some(*s),
-                    Err(_) => self.spindle = None,
+                    Ok(s) => self.modes.spindle = Some(*s),
+                    Err(_) => self.modes.spindle = None,
                 },
                 "I" | "J" | "K" => {
                     let k = (word.name.as_bytes()[0] - b'I') as usize;
                     centre[k] = Some((value.clone(), word.coordinate));
                 }
+                "OFFN" => match value {
+                    Ok(offset) => self.compensation.set_extra(*offset * self.length_scale),
+                    Err(why) => self.unknown(
+                        row,
+                        span,
+                        format!("OFFN is {why}: the contour's offset is left as it was"),
+                    ),
+                },
                 "CR" => shape.radius = Some(value.clone()),
                 "AR" => shape.opening = Some(value.clone()),
                 "TURN" => shape.turns = Some(value.clone()),
@@ -1038,14 +1073,16 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
         for command in &content.commands {
             match command.as_str() {
-                "BRISK" => self.soft = false,
-                "SOFT" => self.soft = true,
+                "BRISK" => self.modes.soft = false,
+                "SOFT" => self.modes.soft = true,
                 "SUPA" => suppress_frames = true,
-                "RTLION" => self.rapid_linear = true,
-                "RTLIOF" => self.rapid_linear = false,
+                "RTLION" => self.modes.rapid_linear = true,
+                "RTLIOF" => self.modes.rapid_linear = false,
                 "TRAORI" => self.traori(row, span, &[]),
                 "TRANSMIT" | "TRACYL" | "TRACON" | "TRAANG" => self.unknown(row, span, format!("{command} (a kinematic transformation) is not modelled yet: the positions after it are of the axes as programmed")),
                 "TRAFOOF" => self.trafoof(row, span),
+                "KONT" | "KONTC" | "KONTT" => self.unknown(row, span, format!("{command}: the approach and retraction around the contour's start are not modelled: taken as NORM (a line square to the contour)")),
+                "CUT3DC" | "CUT3DCC" | "CUT3DCCD" | "CUT3DF" | "CUT3DFF" | "CUT3DFS" | "CUT3DFD" => self.unknown(row, span, format!("{command}: 3-D tool radius compensation is not modelled: the run compensates in the plane (CUT2D)")),
                 "ORIWKS" => self.turning.workpiece = true,
                 "ORIMKS" => {
                     self.turning.workpiece = false;
@@ -1056,7 +1093,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "ORICONCW" | "ORICONCCW" | "ORICONIO" | "ORICONTO" | "ORICURVE" => self.unknown(row, span, format!("{command}: the control turns the tool on a cone or a curve between a block's ends; the run turns it on a great circle")),
                 name => {
                     if let Some(group) = DYNAMIC_GROUPS.iter().position(|g| *g == name) {
-                        self.dynamic_group = group;
+                        self.modes.dynamic_group = group;
                     }
                 }
             }
@@ -1116,7 +1153,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         if self.by_vector {
             self.orientation_vector(row, span, &orientation, &mut targets);
         }
-        let circular = matches!(self.motion, Motion::Clockwise | Motion::Counterclockwise);
+        let circular = matches!(
+            self.modes.motion,
+            Motion::Clockwise | Motion::Counterclockwise
+        );
         let by_centre = circular && shape.opening.is_some() && centre.iter().any(Option::is_some);
         if by_centre && !self.end_of_opening(row, span, &mut targets, &centre, &mut shape) {
             targets.iter_mut().take(3).for_each(|target| *target = None);
@@ -1178,7 +1218,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         };
         match group {
             Some(group) => {
-                self.dynamic_group = group;
+                self.modes.dynamic_group = group;
                 if !self.report.assumptions.iter().any(|a| a == ASSUMED) {
                     self.report.assumptions.push(ASSUMED.to_string());
                 }
@@ -1218,6 +1258,19 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     /// sections of a program repeated (REPEAT), which run at its level.
     fn level(&self) -> usize {
         self.stack.iter().filter(|r| r.section.is_none()).count()
+    }
+
+    /// The blocks finished since last told, in the order they ran.
+    fn tell(&mut self, each: &mut impl FnMut(BlockEnd)) {
+        for told in std::mem::take(&mut self.compensation.told) {
+            each(BlockEnd {
+                program: told.program.as_deref(),
+                line: told.line,
+                mcs: &told.mcs,
+                t_s: told.t_s,
+                arc: told.arc.as_ref(),
+            });
+        }
     }
 
     fn finish(mut self) -> Report {

@@ -11,6 +11,7 @@ use crate::kinematics::Carrier;
 use crate::run::arc::Arc;
 use crate::run::frame::{rpy, scale_mirror, Frame};
 use crate::run::{Side, Violation, MOST_VIOLATIONS};
+use crate::semantic::frame_statements::solid_angles;
 use crate::span::Span;
 use crate::syntax::tree::FrameKind;
 use std::f64::consts::TAU;
@@ -28,7 +29,7 @@ impl Interpreter<'_, '_> {
             }
         };
         self.length_scale = scale;
-        self.feed_scale = if matches!(g, 700 | 710) { scale } else { 1.0 };
+        self.modes.feed_scale = if matches!(g, 700 | 710) { scale } else { 1.0 };
     }
 
     /// G54..G57, G505..G599: the settable frame the machine's data hold.
@@ -100,6 +101,7 @@ impl Interpreter<'_, '_> {
         let axes = self.setup.axes.len();
         let mut values = vec![0.0; axes];
         let mut angles = [0.0; 3];
+        let mut solid: [Option<f64>; 3] = [None; 3];
         // SCALE's factors and MIRROR's axes: those of the geometry axes given.
         let mut scale = [1.0; 3];
         let mut mirrored = [false; 3];
@@ -124,6 +126,7 @@ impl Interpreter<'_, '_> {
                     match self.setup.axes[at].geometry {
                         Some(g) => {
                             angles[g] = value;
+                            solid[g] = Some(value);
                             scale[g] = value;
                             mirrored[g] = true;
                         }
@@ -181,7 +184,16 @@ impl Interpreter<'_, '_> {
                 let linear = self.scaled_or_mirrored(kind, scale, mirrored);
                 self.programmable.linear *= linear;
             }
-            other => self.unknown(row, span, format!("{other:?} (a rotation by solid angles) is not modelled: the frame is left as it was")),
+            FrameKind::Rots | FrameKind::ARots => match solid_angles(solid) {
+                Ok(rotation) => {
+                    if kind == FrameKind::Rots {
+                        self.programmable = Frame::identity(axes);
+                    }
+                    self.programmable.linear *= rotation.into_inner();
+                }
+                Err(why) => self.unknown(row, span, format!("{kind:?}: {why}: the frame is left as it was")),
+            },
+            FrameKind::CRots => self.unknown(row, span, "CROTS turns the frame the control holds in its data, which the run does not follow: the frame is left as it was".into()),
         }
     }
 
@@ -392,6 +404,11 @@ impl Interpreter<'_, '_> {
         // axes it concerns (MD42440, MD42442 at their defaults): an axis not
         // programmed stays where it is; under a rotation, or where it
         // changed, the geometry axes go together.
+        if self.compensate(
+            row, span, &start, &end, targets, centre, shape, suppress, exact_here, tool,
+        ) {
+            return;
+        }
         let reached = self.to_machine(&end, suppress, tool);
         let linear = self.frames_linear(suppress);
         // A rotation couples the geometry axes: one programmed moves them all.
@@ -420,14 +437,14 @@ impl Interpreter<'_, '_> {
             end.clone()
         };
         // The arc, in the machine's coordinates.
-        let arc = match self.motion {
+        let arc = match self.modes.motion {
             Motion::Clockwise | Motion::Counterclockwise if self.transformed.is_some() => {
                 self.unknown(row, span, "an arc under TRAORI: its travel is checked at its ends alone and its time taken on its chord".into());
                 None
             }
-            Motion::Clockwise | Motion::Counterclockwise => {
-                self.arc(row, span, &start, &end, centre, shape, suppress, tool)
-            }
+            Motion::Clockwise | Motion::Counterclockwise => self
+                .programmed_arc(row, span, &start, &end, centre, shape)
+                .map(|arc| self.arc_on_machine(row, span, &arc, suppress, tool)),
             _ => None,
         };
         self.last_arc = arc;
@@ -443,7 +460,7 @@ impl Interpreter<'_, '_> {
             .then(|| self.to_program(&start_mcs, suppress, tool));
         let mut points = vec![end_mcs.clone()];
         if self.transformed.is_some() {
-            if self.motion == Motion::Rapid && !self.rapid_linear {
+            if self.modes.motion == Motion::Rapid && !self.modes.rapid_linear {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
             let way = self.way(self.by_vector);
@@ -462,10 +479,42 @@ impl Interpreter<'_, '_> {
                 }
             }
         }
+        let tip = way_start
+            .as_deref()
+            .map(|from| self.tip_way(from, &end, suppress));
+        self.traverse(
+            row,
+            span,
+            &start_mcs,
+            end_mcs,
+            &points,
+            arc.as_ref(),
+            tip,
+            exact_here,
+        );
+    }
+
+    /// A move from `start_mcs` to `end_mcs` through `points` (its extremes
+    /// besides its end): each against the limits, the travel, the time (along
+    /// `arc` where it is one, or a path of length `path` where that is
+    /// neither the chord nor the arc).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn traverse(
+        &mut self,
+        row: usize,
+        span: Span,
+        start_mcs: &[Option<f64>],
+        end_mcs: Vec<Option<f64>>,
+        points: &[Vec<Option<f64>>],
+        arc: Option<&Arc>,
+        path: Option<f64>,
+        exact_here: bool,
+    ) {
         let mut out = HashSet::new();
-        for point in &points {
+        for point in points {
             self.check(row, span, point, &mut out);
         }
+
         // An axis back within its limits ends its excursion.
         self.beyond.retain(|key, _| out.contains(key));
         // Time.
@@ -489,13 +538,10 @@ impl Interpreter<'_, '_> {
             self.unknown(row, span, "where the axes were before this block is unknown (the program's start, or a value unknown offline): its time is not counted".into());
             return;
         }
-        if moved.is_empty() && arc.is_none() {
+        if moved.is_empty() && arc.is_none() && path.is_none() {
             return;
         }
-        let tip = way_start
-            .as_deref()
-            .map(|from| self.tip_way(from, &end, suppress));
-        self.time(row, span, &moved, arc.as_ref(), tip, exact_here);
+        self.time(row, span, &moved, arc, path, exact_here);
     }
 
     /// An arc by its centre and opening angle (`G2/G3 I.. J.. AR=..`): its
@@ -544,7 +590,7 @@ impl Interpreter<'_, '_> {
             );
             return false;
         }
-        let turn = match self.motion {
+        let turn = match self.modes.motion {
             Motion::Clockwise => -opening,
             _ => opening,
         };
@@ -555,8 +601,9 @@ impl Interpreter<'_, '_> {
         true
     }
 
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn arc(
+    /// The arc a circular block programs, in the work's coordinates;
+    /// `None`, named, where it cannot be known.
+    pub(super) fn programmed_arc(
         &mut self,
         row: usize,
         span: Span,
@@ -564,8 +611,6 @@ impl Interpreter<'_, '_> {
         end: &[Option<f64>],
         centre: &[Option<(Result<f64, String>, Coordinate)>; 3],
         shape: &ArcShape,
-        suppress: bool,
-        tool: [f64; 3],
     ) -> Option<Arc> {
         let point = |p: &[Option<f64>]| Some(Vector3::new(p[0]?, p[1]?, p[2]?));
         let (Some(s), Some(e)) = (point(start), point(end)) else {
@@ -578,7 +623,7 @@ impl Interpreter<'_, '_> {
         };
         let applicate = [2, 1, 0][self.plane];
         let mut normal = Vector3::zeros();
-        normal[applicate] = if self.motion == Motion::Clockwise {
+        normal[applicate] = if self.modes.motion == Motion::Clockwise {
             -1.0
         } else {
             1.0
@@ -648,7 +693,19 @@ impl Interpreter<'_, '_> {
             }
             None => {}
         }
-        // Into the machine: the frames turn and shift the arc, the tool shifts it.
+        Some(arc)
+    }
+
+    /// `arc`, programmed, in the machine: the frames turn and shift it, the
+    /// tool shifts it.
+    pub(super) fn arc_on_machine(
+        &mut self,
+        row: usize,
+        span: Span,
+        arc: &Arc,
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Arc {
         let to_machine = |p: Vector3<f64>| -> Vector3<f64> {
             let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
             wcs[0] = Some(p.x);
@@ -676,7 +733,7 @@ impl Interpreter<'_, '_> {
         if (on_machine.u.norm() - on_machine.v.norm()).abs() > 1e-9 * on_machine.u.norm() {
             self.unknown(row, span, "an arc under unequal scales of its plane's axes: its length and the radius that limits its speed are taken from its start".into());
         }
-        Some(on_machine)
+        on_machine
     }
 
     /// Every position of `point` against its axis's software limits, and

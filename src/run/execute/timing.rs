@@ -45,13 +45,13 @@ impl Interpreter<'_, '_> {
         if length <= 0.0 {
             return;
         }
-        if self.motion == Motion::Rapid && !self.rapid_linear {
+        if self.modes.motion == Motion::Rapid && !self.modes.rapid_linear {
             return self.single_axis_rapid(moved, exact_here);
         }
         // The programmed path velocity.
-        let mut velocity = match self.motion {
+        let mut velocity = match self.modes.motion {
             Motion::Rapid => f64::INFINITY,
-            _ => match (self.feed_mode, self.feed) {
+            _ => match (self.modes.feed_mode, self.modes.feed) {
                 (_, None) => {
                     self.report.blocks_without_time += 1;
                     self.unknown(
@@ -61,9 +61,9 @@ impl Interpreter<'_, '_> {
                     );
                     return;
                 }
-                (FeedMode::PerMinute, Some(f)) => f * self.feed_scale / 60.0,
-                (FeedMode::PerRevolution, Some(f)) => match self.spindle {
-                    Some(s) if s > 0.0 => f * self.feed_scale * s / 60.0,
+                (FeedMode::PerMinute, Some(f)) => f * self.modes.feed_scale / 60.0,
+                (FeedMode::PerRevolution, Some(f)) => match self.modes.spindle {
+                    Some(s) if s > 0.0 => f * self.modes.feed_scale * s / 60.0,
                     _ => {
                         self.report.blocks_without_time += 1;
                         self.unknown(row, span, "a feed per revolution (G95) without a known spindle speed (S): its time is not counted".into());
@@ -74,7 +74,7 @@ impl Interpreter<'_, '_> {
                 (FeedMode::InverseTime, Some(_)) => f64::INFINITY,
             },
         };
-        let group = self.dynamic_group;
+        let group = self.modes.dynamic_group;
         let mut acceleration = f64::INFINITY;
         let mut jerk = f64::INFINITY;
         let mut complete = true;
@@ -120,7 +120,7 @@ impl Interpreter<'_, '_> {
                     complete = false;
                 }
             }
-            if self.soft {
+            if self.modes.soft {
                 match axis.max_jerk(group) {
                     Some(j) => jerk = jerk.min(j / share),
                     None => self.note(format!("MD32431 $MA_MAX_AX_JERK of {name} is not in the machine's data: its SOFT blocks are timed as BRISK")),
@@ -142,11 +142,11 @@ impl Interpreter<'_, '_> {
                 Limits {
                     velocity,
                     acceleration,
-                    jerk: (self.soft && jerk.is_finite()).then_some(jerk),
+                    jerk: (self.modes.soft && jerk.is_finite()).then_some(jerk),
                 },
             )
         });
-        if exact_here || self.exact_stop {
+        if exact_here || self.modes.exact_stop {
             if let Some(upper) = upper {
                 lower = upper;
             }
@@ -188,7 +188,7 @@ impl Interpreter<'_, '_> {
     /// G0 under RTLIOF: each axis at its own velocity, acceleration and
     /// jerk, the block as long as its slowest axis.
     pub(super) fn single_axis_rapid(&mut self, moved: &[(usize, f64)], exact_here: bool) {
-        let group = self.dynamic_group;
+        let group = self.modes.dynamic_group;
         let (mut lower, mut upper) = (0.0f64, Some(0.0f64));
         for &(k, d) in moved {
             let axis = &self.setup.axes[k];
@@ -199,7 +199,7 @@ impl Interpreter<'_, '_> {
                 return;
             };
             lower = lower.max(d.abs() / velocity);
-            let jerk = if self.soft {
+            let jerk = if self.modes.soft {
                 axis.max_jerk(group)
             } else {
                 None
@@ -216,7 +216,7 @@ impl Interpreter<'_, '_> {
                 _ => None,
             };
         }
-        if exact_here || self.exact_stop {
+        if exact_here || self.modes.exact_stop {
             lower = upper.unwrap_or(lower);
         }
         if let Some(cycle) = self.setup.ipo_cycle_s {
