@@ -18,7 +18,8 @@ use crate::semantic::eval::evaluate;
 use crate::semantic::value::Value;
 use crate::semantic::Supplied;
 use crate::span::Span;
-use crate::syntax::tree::{Expr, ExprKind, LineKind, StatementKind};
+use crate::syntax::lines::RawLine;
+use crate::syntax::tree::{BinaryOp, Expr, ExprKind, LineKind, StatementKind};
 use crate::syntax::WordFinder;
 
 /// The prefixes of the data kept: machine data of the NC, the channel and
@@ -49,11 +50,29 @@ pub struct Datum {
     pub span: Span,
 }
 
+/// A frame a line assigns whole (`$P_UIFR[25]=CTRANS(X,1212,Y,1362)`, as
+/// series start-up archives hold them): its components by axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WholeFrame {
+    /// Upper case: `$P_UIFR`, `$P_NCBFR`, `$P_CHBFR`.
+    pub name: String,
+    pub channel: Option<u32>,
+    pub index: u32,
+    pub components: Vec<Component>,
+    pub span: Span,
+}
+
+/// One component of a frame: the axis (upper case), which (`TR`, `FI`,
+/// `RT`, `SC`, `MI`) and its value.
+pub type Component = (String, &'static str, f64);
+
 /// The data of one file, and what in it could not be read.
 #[derive(Debug, Default)]
 pub struct MachineData {
     /// In the order of the lines.
     pub data: Vec<Datum>,
+    /// The frames assigned whole, in the order of the lines.
+    pub frames: Vec<WholeFrame>,
     /// K006, and the syntax errors of the lines not read, in line order.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -76,6 +95,7 @@ impl MachineData {
         let mut channel = None;
         let mut parser = crate::syntax::LineParser::default();
         for raw in crate::syntax::lines::raw_lines(source) {
+            let raw = without_checksum(source, raw);
             let content = raw.content.of(source);
             if !finders.iter().any(|f| f.in_line(content)) {
                 continue;
@@ -122,6 +142,26 @@ impl MachineData {
                             );
                             continue;
                         };
+                        if let (true, [Index::Number(index)]) =
+                            (name.starts_with("$P_"), indices.as_slice())
+                        {
+                            match whole_frame(source, &assign.value, &scope) {
+                                Some(components) => read.frames.push(WholeFrame {
+                                    name,
+                                    channel,
+                                    index: *index,
+                                    components,
+                                    span: statement.span,
+                                }),
+                                None => read.diagnostics.push(
+                                    RULE.at(assign.value.span)
+                                        .message(format!("the frame `{name}[{index}]` is not read: it is neither a chain of CTRANS, CFINE, CROT, CSCALE and CMIRROR with constants nor written component by component"))
+                                        .label("frame not read")
+                                        .help("copy the frame as the control writes it: `$P_UIFR[1]=CTRANS(X,10,Y,20):CROT(Z,30)`, or `$P_UIFR[1,X,TR]=10`"),
+                                ),
+                            }
+                            continue;
+                        }
                         match evaluate(source, &assign.value, &scope) {
                             Ok(value) => read.data.push(Datum {
                                 name,
@@ -130,12 +170,6 @@ impl MachineData {
                                 value,
                                 span: statement.span,
                             }),
-                            Err(_) if name.starts_with("$P_") => read.diagnostics.push(
-                                RULE.at(assign.value.span)
-                                    .message("a settable frame written whole is not read: only its components are (`$P_UIFR[1,X,TR]=10`)")
-                                    .label("frame not read")
-                                    .help("write the frame's components, as the control writes them in `_N_UFR_INI`"),
-                            ),
                             Err(_) => read.diagnostics.push(
                                 RULE.at(assign.value.span)
                                     .message(format!("the value of `{name}` is no constant"))
@@ -165,6 +199,94 @@ impl MachineData {
     pub fn named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Datum> + 'a {
         self.data.iter().filter(move |d| d.name == name)
     }
+}
+
+/// A line as the files of a series start-up archive may hold it ends in a
+/// checksum, a blank, an apostrophe and four hexadecimal digits
+/// (`N10000 $MN_AXCONF_MACHAX_NAME_TAB[1]="C1" '5b7e`): read without it.
+fn without_checksum(source: &[u8], raw: RawLine) -> RawLine {
+    let content = raw.content.of(source).trim_ascii_end();
+    let n = content.len();
+    let checksum = n >= 6
+        && content[n - 6].is_ascii_whitespace()
+        && content[n - 5] == b'\''
+        && content[n - 4..].iter().all(u8::is_ascii_hexdigit);
+    if !checksum {
+        return raw;
+    }
+    RawLine {
+        content: Span::new(raw.content.start, raw.content.start + n - 6),
+        ending: raw.ending,
+    }
+}
+
+/// A frame written whole as a chain of the frame functions the control
+/// writes, each with constants: `CTRANS(X,10,Y,20)` (coarse translation),
+/// `CFINE(X,0.1)`, `CROT(Z,30)` (degrees), `CSCALE(X,2)`, `CMIRROR(X)`, joined
+/// by `:` (Siemens, Job Planning, "Frames", "Predefined frame functions");
+/// `CTRANS()` alone is the zero frame. `None` for anything else, or one
+/// function twice (a chain of two shifts is no longer their components).
+fn whole_frame(
+    source: &[u8],
+    expr: &Expr,
+    scope: &crate::semantic::env::Scope,
+) -> Option<Vec<Component>> {
+    let mut parts = Vec::new();
+    let mut chain = vec![expr];
+    while let Some(expr) = chain.pop() {
+        match &expr.kind {
+            ExprKind::Binary {
+                op: BinaryOp::Chain,
+                lhs,
+                rhs,
+            } => chain.extend([rhs.as_ref(), lhs.as_ref()]),
+            ExprKind::Paren(inner) => chain.push(inner),
+            ExprKind::Call(call) => parts.push(call),
+            _ => return None,
+        }
+    }
+    let mut components = Vec::new();
+    let mut seen = Vec::new();
+    for call in parts {
+        let function = call.name.upper(source);
+        let (component, valued) = match function.as_str() {
+            "CTRANS" => ("TR", true),
+            "CFINE" => ("FI", true),
+            "CROT" => ("RT", true),
+            "CSCALE" => ("SC", true),
+            "CMIRROR" => ("MI", false),
+            _ => return None,
+        };
+        if seen.contains(&component) {
+            return None;
+        }
+        seen.push(component);
+        let mut items = call.arguments.items.iter();
+        while let Some(axis) = items.next() {
+            let Some(Expr {
+                kind: ExprKind::Variable(variable),
+                ..
+            }) = &axis.value
+            else {
+                // `CTRANS()`: one empty argument.
+                if axis.value.is_none() && call.arguments.items.len() == 1 {
+                    break;
+                }
+                return None;
+            };
+            if !variable.indices.is_empty() {
+                return None;
+            }
+            let value = if valued {
+                let value = items.next()?.value.as_ref()?;
+                evaluate(source, value, scope).ok()?.number()?
+            } else {
+                1.0
+            };
+            components.push((variable.name.upper(source), component, value));
+        }
+    }
+    Some(components)
 }
 
 /// An index: a whole number, or an axis's name.
@@ -251,5 +373,24 @@ $MA_MAX_AX_VELO[1.5]=1000\n$MA_MAX_AX_VELO[AX1]=10000\n";
         let codes: Vec<&str> = read.diagnostics.iter().map(|d| d.code()).collect();
         assert_eq!(codes, ["K006", "S005", "K006", "K006"]);
         assert_eq!(read.data.len(), 1);
+    }
+
+    /// The checksum an archive's line may end in is not part of the datum.
+    #[test]
+    fn a_line_checksum_is_read_past() {
+        let source = b"CHANDATA(1) '1234\nN10000 $MN_AXCONF_MACHAX_NAME_TAB[1]=\"C1\" '5b7e\r\n\
+N36110 $MA_POS_LIMIT_PLUS[AX1]=1500.6 'ABCD  \n$MA_POS_LIMIT_MINUS[AX1]=-1 'abcz\n";
+        let read = MachineData::read(source);
+        assert_eq!(
+            read.get("$MN_AXCONF_MACHAX_NAME_TAB", Some(1), &[Index::Number(1)]),
+            Some(&Value::Text("C1".to_string()))
+        );
+        assert_eq!(
+            read.get("$MA_POS_LIMIT_PLUS", Some(1), &[axis("AX1")]),
+            Some(&Value::Number(1500.6))
+        );
+        // Not four hexadecimal digits: no checksum, the line as written.
+        let codes: Vec<&str> = read.diagnostics.iter().map(|d| d.code()).collect();
+        assert_eq!(codes, ["S005"]);
     }
 }

@@ -55,34 +55,72 @@ fn named_frames(
     variable: &str,
     name: impl Fn(u32) -> Option<String>,
 ) -> BTreeMap<String, BTreeMap<String, Components>> {
+    // The first channel's, or the NC's: what a frame's line assigns, a
+    // component or the whole frame, in the order of the lines.
+    let ours = |channel: Option<u32>| variable != "$P_CHBFR" || channel.is_none_or(|c| c == 1);
+    let mut assignments: Vec<Assignment> = data
+        .named(variable)
+        .filter(|datum| ours(datum.channel))
+        .filter_map(|datum| match &datum.indices[..] {
+            [Index::Number(index), Index::Axis(axis), Index::Axis(component)] => Some(Assignment {
+                at: datum.span.start,
+                index: *index,
+                components: vec![(axis.clone(), component.as_str(), datum.value.number())],
+                whole: false,
+            }),
+            _ => None,
+        })
+        .collect();
+    assignments.extend(
+        data.frames
+            .iter()
+            .filter(|frame| frame.name == variable && ours(frame.channel))
+            .map(|frame| {
+                let components = frame
+                    .components
+                    .iter()
+                    .map(|(axis, component, value)| (axis.clone(), *component, Some(*value)))
+                    .collect();
+                Assignment {
+                    at: frame.span.start,
+                    index: frame.index,
+                    components,
+                    whole: true,
+                }
+            }),
+    );
+    assignments.sort_by_key(|a| a.at);
     let mut frames: BTreeMap<String, BTreeMap<String, Components>> = BTreeMap::new();
-    for datum in data.named(variable) {
-        if variable == "$P_CHBFR" && datum.channel.is_some_and(|c| c != 1) {
+    for assignment in assignments {
+        let Some(name) = name(assignment.index) else {
             continue;
+        };
+        let frame = frames.entry(name).or_default();
+        if assignment.whole {
+            frame.clear();
         }
-        let [Index::Number(index), Index::Axis(axis), Index::Axis(component)] = &datum.indices[..]
-        else {
-            continue;
-        };
-        let Some(name) = name(*index) else {
-            continue;
-        };
-        let value = datum.value.number();
-        let components = frames
-            .entry(name)
-            .or_default()
-            .entry(axis.clone())
-            .or_default();
-        match component.as_str() {
-            "TR" => components.tr = value,
-            "FI" => components.fi = value,
-            "RT" => components.rt = value,
-            "SC" => components.sc = value,
-            "MI" => components.mi = value,
-            _ => {}
+        for (axis, component, value) in assignment.components {
+            let components = frame.entry(axis).or_default();
+            match component {
+                "TR" => components.tr = value,
+                "FI" => components.fi = value,
+                "RT" => components.rt = value,
+                "SC" => components.sc = value,
+                "MI" => components.mi = value,
+                _ => {}
+            }
         }
     }
     frames
+}
+
+/// A line's assignment to a frame: one component, or the whole frame.
+struct Assignment<'a> {
+    /// Where the line starts: the order they are taken in.
+    at: usize,
+    index: u32,
+    components: Vec<(String, &'a str, Option<f64>)>,
+    whole: bool,
 }
 
 impl Components {
@@ -108,7 +146,7 @@ mod tests {
         assert_eq!(names[..5], expected.map(|n| Some(n.to_string())));
         assert_eq!(names[5], None);
         let source = b"$P_UIFR[1,X,TR]=100.5\n$P_UIFR[1,X,FI]=0.01\n$P_UIFR[1,Z,RT]=30\n\
-$P_UIFR[6,Y,TR]=-5\n$P_UIFR[1]=CTRANS(X,1)\n";
+$P_UIFR[6,Y,TR]=-5\n";
         let frames = frames(&MachineData::read(source));
         assert_eq!(frames.keys().collect::<Vec<_>>(), ["G506", "G54"]);
         let x = &frames["G54"]["X"];
@@ -120,5 +158,32 @@ $P_UIFR[6,Y,TR]=-5\n$P_UIFR[1]=CTRANS(X,1)\n";
         ));
         assert_eq!(base.keys().collect::<Vec<_>>(), ["CHBFR0", "NCBFR0"]);
         assert!(base["CHBFR0"]["Z"].acts());
+    }
+
+    /// As series start-up archives write them: whole, by the frame
+    /// functions, replacing what lines before gave; `CTRANS()` the zero frame.
+    #[test]
+    fn frames_written_whole_are_read_by_their_components() {
+        let source =
+            b"$P_UIFR[1,X,TR]=100.5\n$P_UIFR[1]=CTRANS(X,1,Y,-2.5):CFINE(X,0.01):CROT(Z,30)\n\
+$P_UIFR[2]=CTRANS()\n$P_UIFR[3]=CTRANS(Z,5):CSCALE(X,2):CMIRROR(Y)\n$P_UIFR[3,Z,TR]=6\n\
+$P_CHBFR[0]=CTRANS(Z,137.3)\n";
+        let data = MachineData::read(source);
+        assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
+        let frames = frames(&data);
+        assert_eq!(frames.keys().collect::<Vec<_>>(), ["G54", "G55", "G56"]);
+        let x = &frames["G54"]["X"];
+        assert_eq!((x.tr, x.fi), (Some(1.0), Some(0.01)));
+        assert_eq!(frames["G54"]["Y"].tr, Some(-2.5));
+        assert_eq!(frames["G54"]["Z"].rt, Some(30.0));
+        assert!(frames["G55"].is_empty());
+        assert_eq!(frames["G56"]["Z"].tr, Some(6.0));
+        assert_eq!(frames["G56"]["X"].sc, Some(2.0));
+        assert_eq!(frames["G56"]["Y"].mi, Some(1.0));
+        assert_eq!(base_frames(&data)["CHBFR0"]["Z"].tr, Some(137.3));
+        // Two shifts in one chain are no longer components: named, not read.
+        let chained = MachineData::read(b"$P_UIFR[1]=CTRANS(X,1):CTRANS(X,2)\n$P_UIFR[2]=R1\n");
+        let codes: Vec<&str> = chained.diagnostics.iter().map(|d| d.code()).collect();
+        assert_eq!(codes, ["K006", "K006"]);
     }
 }

@@ -12,8 +12,11 @@ pub static RULE: RuleInfo = RuleInfo {
 Reports a line of machine data (`$MN_`, `$MC_`, `$MA_`) or setting data (`$SN_`, `$SC_`, `$SA_`)
 that sinuprep cannot read, in a file of machine data (an `.INI` the control writes, an archive's
 `INITIAL_INI`, or any file whose blocks are machine data): a value that is no constant (`$MA_POS_LIMIT_PLUS[AX1]=_LIMIT`), an index that is neither a whole number
-nor an axis (`[AX1]`, `[0,AX1]`), a `CHANDATA` without its channel's number. A line with a
-syntax error is not read either; the syntax error is its finding.
+nor an axis (`[AX1]`, `[0,AX1]`), a `CHANDATA` without its channel's number, a frame
+(`$P_UIFR[n]`, `$P_NCBFR[n]`, `$P_CHBFR[n]`) written whole other than as a chain of `CTRANS`,
+`CFINE`, `CROT`, `CSCALE` and `CMIRROR` with constants, each at most once. A line with a
+syntax error is not read either; the syntax error is its finding. The checksum a line of an
+archive may end in (` '5b7e`) is not part of the line's datum.
 
 ## Why it matters
 What sinuprep knows of the machine (its axes, their limits and dynamics) comes from these data
