@@ -2022,3 +2022,29 @@ fn solid_angles_turn_the_frame() {
     assert_near(added[0].expect("x"), 100.0, 1e-12, "AROTS keeps TRANS");
     assert_near(added[1].expect("y"), 10.0, 1e-12, "AROTS turns");
 }
+
+/// MD20150 `$MC_GCODE_RESET_VALUES`: the G functions the program starts
+/// with where the data hold them (G1 and G54 here), else the control's.
+#[test]
+fn the_program_starts_in_the_g_functions_of_md20150() {
+    let program = "G90 X10 Y-10 Z-10 F100\nX110\n";
+    let frames = "$P_UIFR[1,X,TR]=100\n";
+    let reset = "N20150 $MC_GCODE_RESET_VALUES[0]=2\nN20150 $MC_GCODE_RESET_VALUES[7]=2\n";
+    let (report, at) = dry_run_ends(&machine(&format!("{frames}{reset}")), program);
+    assert_eq!(at[1].1[0], Some(210.0), "G54 active from the start");
+    // G1 at F100: 100 mm take a minute, and more with the ramps.
+    assert!(report.time_s >= 60.0, "{}", report.time_s);
+    assert!(
+        report.assumptions[0].contains("G1 G54 (MD20150)"),
+        "{:?}",
+        report.assumptions
+    );
+    let (report, at) = dry_run_ends(&machine(frames), program);
+    assert_eq!(at[1].1[0], Some(110.0), "no frame at the start");
+    assert!(report.time_s < 1.0, "G0: {}", report.time_s);
+    assert!(
+        report.assumptions[0].contains("hold no MD20150 for them"),
+        "{:?}",
+        report.assumptions
+    );
+}

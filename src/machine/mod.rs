@@ -12,7 +12,7 @@ pub mod tools;
 
 pub use axes::{axes, Axis};
 pub use data::{Datum, Index, MachineData};
-pub use frames::{base_frames, frames, Components};
+pub use frames::{base_frames, frame_name, frames, Components};
 pub use tools::{tools, Tool};
 
 use crate::semantic::value::Value;

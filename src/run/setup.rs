@@ -109,6 +109,10 @@ pub struct Setup {
     pub reset_exact_stop: Option<bool>,
     /// MD20150 `[20]` (G group 21): `Some(true)` for SOFT at the start.
     pub reset_soft: Option<bool>,
+    /// The G functions MD20150 `$MC_GCODE_RESET_VALUES` makes active at the
+    /// start in the groups the run follows (motion, plane, settable frame,
+    /// units, G90/G91, feed type, corners), where the data hold them.
+    pub reset_g_functions: Vec<u32>,
     /// The base frames in the data that move or turn anything (`CHBFR0`):
     /// not applied, since which are active is the control's state.
     pub base_frames: Vec<String>,
@@ -167,6 +171,42 @@ fn orientations(data: &MachineData) -> Vec<Orientation> {
             record: (trafo_type == 72)
                 .then(|| number(format!("$MC_TRAFO5_TCARR_NO_{}", n + 1)))
                 .flatten(),
+        })
+        .collect()
+}
+
+/// The G functions of the groups the run follows, by their place in MD20150
+/// (the G group less one) and in the group (from 1), as the Programming
+/// Manual's table of G functions orders them.
+const RESET_GROUPS: [(u32, &[u32]); 7] = [
+    (0, &[0, 1, 2, 3]),
+    (5, &[17, 18, 19]),
+    (12, &[70, 71, 700, 710]),
+    (13, &[90, 91]),
+    (14, &[93, 94, 95]),
+    (17, &[450, 451]),
+    // G500, G54..G57, G505..G599: the frame's number.
+    (7, &[]),
+];
+
+/// The G functions MD20150 (read by `value` at a group's place) selects at
+/// the start, in the groups the run follows.
+fn reset_g_functions(value: impl Fn(u32) -> Option<f64>) -> Vec<u32> {
+    RESET_GROUPS
+        .iter()
+        .filter_map(|&(group, members)| {
+            let place = value(group)?;
+            if place < 1.0 || place.fract() != 0.0 {
+                return None;
+            }
+            let place = place as usize;
+            if group == 7 {
+                return crate::machine::frame_name(place as u32 - 1)?
+                    .strip_prefix('G')?
+                    .parse()
+                    .ok();
+            }
+            members.get(place - 1).copied()
         })
         .collect()
 }
@@ -254,6 +294,9 @@ impl Setup {
                 .map(|g| g == 1.0),
             reset_soft: number("$MC_GCODE_RESET_VALUES", Some(1), &[Index::Number(20)])
                 .map(|g| g == 2.0),
+            reset_g_functions: reset_g_functions(|group| {
+                number("$MC_GCODE_RESET_VALUES", Some(1), &[Index::Number(group)])
+            }),
             base_frames: crate::machine::base_frames(data)
                 .into_iter()
                 .filter(|(_, axes)| axes.values().any(|c| c.acts()))

@@ -56,6 +56,7 @@ pub fn run(
     mut each: impl FnMut(BlockEnd),
 ) -> Report {
     let mut machine = Interpreter::new(programs, setup, known, options);
+    machine.reset();
     let mut row = 0;
     loop {
         if row >= machine.model.lines.len() {
@@ -353,8 +354,22 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "the control's default; MD20150 not in the data"
             }
         };
+        let reset: Vec<String> = setup
+            .reset_g_functions
+            .iter()
+            .map(|g| format!("G{g}"))
+            .collect();
+        let modes = if reset.is_empty() {
+            "G0 G17 G90 G94 G71 G500 G450 (the control's defaults: the data hold no MD20150 for them)"
+                .to_string()
+        } else {
+            format!(
+                "{} (MD20150), else G0 G17 G90 G94 G71 G500 G450 (the control's defaults)",
+                reset.join(" ")
+            )
+        };
         report.assumptions.push(format!(
-            "at the start: no frame, no tool, G0 G17 G90 G94 G71 (metric), positions unknown until programmed; {} ({}), {} ({})",
+            "at the start: {modes}, no programmable frame, no tool, positions unknown until programmed; {} ({}), {} ({})",
             if exact_stop { "G60 exact stop" } else { "continuous path" },
             said(setup.reset_exact_stop.is_some()),
             if soft { "SOFT" } else { "BRISK" },
@@ -430,6 +445,32 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             tool_times: BTreeMap::new(),
             upper_complete: true,
             words: Vec::with_capacity(16),
+        }
+    }
+
+    /// The G functions MD20150 makes active at the start.
+    fn reset(&mut self) {
+        for &g in &self.setup.reset_g_functions {
+            match g {
+                0 => self.modes.motion = Motion::Rapid,
+                1 => self.modes.motion = Motion::Linear,
+                2 => self.modes.motion = Motion::Clockwise,
+                3 => self.modes.motion = Motion::Counterclockwise,
+                17..=19 => self.plane = g as usize - 17,
+                70 | 71 | 700 | 710 if self.setup.metric.is_some() => {
+                    self.units(0, Span::default(), g)
+                }
+                90 | 91 => self.incremental = g == 91,
+                93 => self.modes.feed_mode = FeedMode::InverseTime,
+                94 => self.modes.feed_mode = FeedMode::PerMinute,
+                95 => self.modes.feed_mode = FeedMode::PerRevolution,
+                450 | 451 => self.compensation.corners(g),
+                54..=57 | 505..=599 if !self.setup.frames.contains_key(&format!("G{g}")) => {
+                    self.note(format!("MD20150 selects G{g} at the start, a frame the machine's data do not hold: taken as zero"));
+                }
+                54..=57 | 505..=599 => self.select_frame(0, Span::default(), g),
+                _ => {}
+            }
         }
     }
 
@@ -1274,6 +1315,15 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     }
 
     fn finish(mut self) -> Report {
+        // An axis that moved with no machine axis behind it: nothing held
+        // it to limits, and the run says so rather than pass in silence.
+        for k in 0..self.setup.axes.len() {
+            let axis = &self.setup.axes[k];
+            if self.minimum[k].is_some() && axis.machine.is_none() {
+                let name = axis.name.clone();
+                self.note(format!("axis `{name}` moves, and the machine's data tie it to no machine axis (MD20050, MD20070, MD20080, MD10000): its limits and dynamics are not known"));
+            }
+        }
         let mut report = std::mem::take(&mut self.report);
         report.violations = std::mem::take(&mut self.violations);
         report.violations.sort_by_key(|v| v.line);
