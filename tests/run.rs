@@ -2048,3 +2048,76 @@ fn the_program_starts_in_the_g_functions_of_md20150() {
         report.assumptions
     );
 }
+
+/// A parameter the call leaves out is passed as 0 where it is a number
+/// by value (Programming Manual, "Subprogram call": incomplete parameter
+/// transfer); a STRING left out stays unknown.
+#[test]
+fn a_parameter_left_out_is_passed_as_zero() {
+    let dir = scratch("run_omitted");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "G0 X5 Y5 Z5\nSUBP(,7)\nSUBP(3)\nNAMED()\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("SUBP.SPF"),
+        "PROC SUBP(INT _A, REAL _B)\nG0 X=_A Y=_B\nM17\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("NAMED.SPF"),
+        "PROC NAMED(STRING[8] _NAME, REAL _Z)\nG0 Z=_Z\nMSG(_NAME)\nM17\n",
+    )
+    .expect("write");
+    let read = run_with_blocks(&dir);
+    let blocks = read["blocks"].as_array().expect("blocks");
+    let at = |x: f64, y: f64| {
+        blocks
+            .iter()
+            .any(|b| b["line"] == 2 && b["mcs"]["X1"] == x && b["mcs"]["Y1"] == y)
+    };
+    assert!(at(0.0, 7.0) && at(3.0, 0.0), "{blocks:?}");
+    assert_eq!(read["axes"]["Z1"]["min"], 0.0, "{read}");
+    let unknown = read["unknown"].to_string();
+    assert!(
+        !unknown.contains("_A") && !unknown.contains("_B") && !unknown.contains("_Z"),
+        "{unknown}"
+    );
+}
+
+/// A subprogram with SAVE gives back the caller's G functions and
+/// programmable frame on its return; one without keeps what it set.
+#[test]
+fn a_subprogram_with_save_gives_back_the_callers_modes() {
+    let dir = scratch("run_save");
+    std::fs::write(
+        dir.join("MACHINE.INI"),
+        machine("N10240 $MN_SCALING_SYSTEM_IS_METRIC=1\n"),
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "G700 G0 X0 Y0 Z0\nSUBS\nG0 X10\nSUBN\nG0 X10\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("SUBS.SPF"),
+        "PROC SUBS SAVE\nG710 G91\nTRANS X5\nG0 Y1\nM17\n",
+    )
+    .expect("write");
+    std::fs::write(dir.join("SUBN.SPF"), "PROC SUBN\nG710\nTRANS X5\nM17\n").expect("write");
+    let read = run_with_blocks(&dir);
+    let blocks = read["blocks"].as_array().expect("blocks");
+    let x_at = |line: usize| -> Vec<f64> {
+        (blocks.iter())
+            .filter(|b| b["line"] == line && b["program"].is_null())
+            .filter_map(|b| b["mcs"]["X1"].as_f64())
+            .collect()
+    };
+    // After SUBS: inch, absolute, no TRANS again (254 mm); after SUBN:
+    // millimetres and its TRANS (15 mm).
+    assert_eq!(x_at(3), [254.0], "{blocks:?}");
+    assert_eq!(x_at(5), [15.0], "{blocks:?}");
+}

@@ -4,12 +4,13 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::{openers, Calling, Flow, Interpreter, Return, MOST_LEVELS};
+use super::{openers, Arguments, Calling, Flow, Interpreter, Modes, Return, MOST_LEVELS};
+use crate::run::frame::Frame;
 use crate::semantic::eval::{evaluate, key};
 use crate::semantic::jumps::Target;
 use crate::semantic::value::Value;
 use crate::span::Span;
-use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind};
+use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind, TypeKind};
 
 impl Interpreter<'_, '_> {
     /// Into the subprogram `call` names, from the block on `row`: where
@@ -24,7 +25,7 @@ impl Interpreter<'_, '_> {
             self.unknown(row, span, format!("`{}` would nest deeper than {MOST_LEVELS} program levels: the control stops with an alarm (14000s); not followed", call.name));
             return next;
         }
-        let caller = Return {
+        let mut caller = Return {
             model: self.model,
             program: self.program.replace(call.name.clone()),
             row: next,
@@ -34,46 +35,74 @@ impl Interpreter<'_, '_> {
             again: call.times.saturating_sub(1),
             arguments: call.arguments,
             section: None,
+            saved: None,
+        };
+        // What SAVE restores, as the caller has it now.
+        let saved = Saved {
+            modes: self.modes,
+            plane: self.plane,
+            incremental: self.incremental,
+            length_scale: self.length_scale,
+            programmable: self.programmable.clone(),
         };
         self.model = callee;
         self.source = callee.source;
         self.variables.local = globals(&caller.locals);
-        self.bind(&caller.arguments);
+        if self.bind(&caller.arguments) {
+            caller.saved = Some(saved);
+        }
         self.stack.push(caller);
         0
     }
 
     /// The PROC line's parameters of the program now running, given
-    /// `arguments` (by position; one not given or unknown stays unknown).
-    pub(super) fn bind(&mut self, arguments: &[Option<Value>]) {
+    /// `arguments` by position: one the call leaves out is 0 where it is a
+    /// number (INT, REAL, BOOL) passed by value; one unknown offline, or
+    /// of another kind left out, stays unknown.
+    /// Whether the PROC line says SAVE.
+    pub(super) fn bind(&mut self, arguments: &Arguments) -> bool {
         let source = self.source;
-        let Some(parameters) = self
-            .model
-            .lines
-            .other_lines()
-            .take(50)
-            .find_map(|(_, line)| {
-                let LineKind::Block(block) = &line.kind else {
-                    return None;
-                };
-                block.statements.iter().find_map(|s| match &s.kind {
-                    StatementKind::Proc(proc) => Some(
-                        proc.parameters
-                            .iter()
-                            .map(|p| p.declarator.name.upper(source))
-                            .collect::<Vec<_>>(),
-                    ),
-                    _ => None,
+        let Some((parameters, saves)) =
+            self.model
+                .lines
+                .other_lines()
+                .take(50)
+                .find_map(|(_, line)| {
+                    let LineKind::Block(block) = &line.kind else {
+                        return None;
+                    };
+                    block.statements.iter().find_map(|s| match &s.kind {
+                        StatementKind::Proc(proc) => Some((
+                            proc.parameters
+                                .iter()
+                                .map(|p| {
+                                    let number = !p.by_reference
+                                        && matches!(
+                                            p.data_type.kind,
+                                            TypeKind::Int | TypeKind::Real | TypeKind::Bool
+                                        )
+                                        && p.declarator.dimensions.is_empty();
+                                    (p.declarator.name.upper(source), number)
+                                })
+                                .collect::<Vec<_>>(),
+                            proc.attributes.iter().any(|a| a.is(source, "SAVE")),
+                        )),
+                        _ => None,
+                    })
                 })
-            })
         else {
-            return;
+            return false;
         };
-        for (name, value) in parameters.into_iter().zip(arguments) {
-            if let Some(value) = value {
-                self.variables.local.insert(key(&name, &[]), value.clone());
-            }
+        for (k, (name, number)) in parameters.into_iter().enumerate() {
+            let omitted = arguments.omitted.get(k).copied().unwrap_or(true);
+            let value = match arguments.values.get(k).cloned().flatten() {
+                Some(value) => value,
+                None if omitted && number => Value::Number(0.0),
+                None => continue,
+            };
+            self.variables.local.insert(key(&name, &[]), value);
         }
+        saves
     }
 
     /// Back from a subprogram at its end (M17, RET, M2, M30 or its last
@@ -92,6 +121,9 @@ impl Interpreter<'_, '_> {
             self.variables.local = globals(&written);
             self.in_for.clear();
             let arguments = std::mem::take(&mut caller.arguments);
+            if let Some(saved) = caller.saved.clone() {
+                self.restore(saved);
+            }
             self.bind(&arguments);
             caller.arguments = arguments;
             self.stack.push(caller);
@@ -99,12 +131,42 @@ impl Interpreter<'_, '_> {
         }
         self.variables.local = caller.locals;
         self.variables.local.extend(globals(&written));
+        if let Some(saved) = caller.saved {
+            self.restore(saved);
+        }
         self.model = caller.model;
         self.program = caller.program;
         self.source = caller.model.source;
         self.openers = caller.openers;
         self.in_for = caller.in_for;
         Some(caller.row)
+    }
+}
+
+/// What a subprogram with SAVE gives back to its caller on its return
+/// (Programming Manual, "Subprogram with SAVE mechanism"): the modal G
+/// functions and the programmable frame as they were at the call. The
+/// feed and the spindle speed are no G functions and stay.
+#[derive(Clone)]
+pub(super) struct Saved {
+    modes: Modes,
+    plane: usize,
+    incremental: bool,
+    length_scale: f64,
+    programmable: Frame,
+}
+
+impl Interpreter<'_, '_> {
+    fn restore(&mut self, saved: Saved) {
+        let (feed, spindle) = (self.modes.feed, self.modes.spindle);
+        self.modes = saved.modes;
+        self.modes.feed = feed;
+        self.modes.spindle = spindle;
+        self.plane = saved.plane;
+        self.incremental = saved.incremental;
+        self.length_scale = saved.length_scale;
+        self.programmable = saved.programmable;
+        self.note("a subprogram with SAVE gives back the caller's G functions and programmable frame; whether it also gives back the settable frame is MD10617 $MN_FRAME_SAVE_MASK's, which the run does not read: it keeps the subprogram's".into());
     }
 }
 
@@ -176,8 +238,9 @@ impl Interpreter<'_, '_> {
             openers: HashMap::new(),
             in_for: HashSet::new(),
             again: times - 1,
-            arguments: Vec::new(),
+            arguments: Arguments::default(),
             section: Some((start, end)),
+            saved: None,
         });
         Flow::To(start)
     }

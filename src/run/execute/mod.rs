@@ -166,7 +166,7 @@ struct Content {
     frame: Option<(FrameKind, Vec<Word>)>,
     commands: Vec<String>,
     /// Subprograms and cycles called.
-    calls: Vec<(String, Vec<Option<Value>>)>,
+    calls: Vec<(String, Arguments)>,
     /// `MCALL NAME(...)`: a modal call from the next block on; `MCALL`
     /// alone (`Some(None)`) ends it.
     modal: Option<Option<ModalCall>>,
@@ -203,10 +203,38 @@ impl Lookup for Variables<'_> {
     }
 }
 
+/// A call's arguments by position: each value, `None` where unknown
+/// offline or left out; and which the call leaves out (`NAME(1,,3)`, or
+/// after its last), which the control passes as 0 (Programming Manual,
+/// "Subprogram call": incomplete parameter transfer).
+#[derive(Clone, Default)]
+struct Arguments {
+    values: Vec<Option<Value>>,
+    omitted: Vec<bool>,
+}
+
+impl Arguments {
+    fn of(source: &[u8], call: &crate::syntax::tree::Call, known: &impl Lookup) -> Arguments {
+        let items = &call.arguments.items;
+        // `NAME()`: no argument, not one left out.
+        let items = match items.as_slice() {
+            [only] if only.value.is_none() => &items[..0],
+            _ => &items[..],
+        };
+        Arguments {
+            values: items
+                .iter()
+                .map(|a| evaluate(source, a.value.as_ref()?, known).ok())
+                .collect(),
+            omitted: items.iter().map(|a| a.value.is_none()).collect(),
+        }
+    }
+}
+
 /// A subprogram's call: what it is given, and how often it runs.
 struct Calling {
     name: String,
-    arguments: Vec<Option<Value>>,
+    arguments: Arguments,
     times: u32,
 }
 
@@ -215,7 +243,7 @@ struct Calling {
 #[derive(Clone)]
 struct ModalCall {
     name: String,
-    arguments: Vec<Option<Value>>,
+    arguments: Arguments,
     level: usize,
 }
 
@@ -229,10 +257,12 @@ struct Return<'a, 'src> {
     in_for: HashSet<usize>,
     /// Runs of the subprogram still to come (`P`).
     again: u32,
-    arguments: Vec<Option<Value>>,
+    arguments: Arguments,
     /// A section of the same program repeated (`REPEAT`): its first and
     /// last rows; the caller's variables are the section's own.
     section: Option<(usize, usize)>,
+    /// What a subprogram with SAVE restores on its return.
+    saved: Option<calls::Saved>,
 }
 
 /// G group 59 in its order, which is MD32300's and MD32431's index.
@@ -645,15 +675,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     content.commands.push(name.upper(source));
                 }
                 StatementKind::Call(call) => {
-                    let arguments = call
-                        .arguments
-                        .items
-                        .iter()
-                        .map(|a| {
-                            let value = a.value.as_ref()?;
-                            evaluate(source, value, &self.variables).ok()
-                        })
-                        .collect();
+                    let arguments = Arguments::of(source, call, &self.variables);
                     content.calls.push((call.name.upper(source), arguments));
                 }
                 StatementKind::IndirectCall { keyword, target } if keyword.is(source, "MCALL") => {
@@ -667,7 +689,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     let name = target
                         .and_then(|t| crate::run::programs::indirect_call(source, &keyword, t));
                     match name {
-                        Some(name) => content.calls.push((name, Vec::new())),
+                        Some(name) => content.calls.push((name, Arguments::default())),
                         None => self.unknown(row, statement.span, format!("{keyword} is not followed (a call whose program is computed at run time): what it moves, and its time, are not in the run")),
                     }
                 }
@@ -974,7 +996,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         let mut centre: [Option<(Result<f64, String>, Coordinate)>; 3] = [None, None, None];
         let mut shape = motion::ArcShape::default();
         let mut dwell_value = None;
-        let mut called: Vec<(String, Vec<Option<Value>>)> = Vec::new();
+        let mut called: Vec<(String, Arguments)> = Vec::new();
         let mut times = 1;
         let (mut ap, mut rp, mut pole): (polar::Given, polar::Given, Option<u32>) =
             (None, None, None);
@@ -1094,7 +1116,9 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "A3" | "B3" | "C3" => {
                     orientation[(word.name.as_bytes()[0] - b'A') as usize] = Some(value.clone());
                 }
-                name if is_numbered_call(name) => called.push((name.to_string(), Vec::new())),
+                name if is_numbered_call(name) => {
+                    called.push((name.to_string(), Arguments::default()))
+                }
                 "P" => match value {
                     Ok(p) if *p >= 1.0 && p.fract() == 0.0 => times = *p as u32,
                     _ => self.unknown(
@@ -1144,15 +1168,15 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             .commands
             .iter()
             .filter(|name| call_kind(name) == CallKind::Subprogram || name.starts_with("CYCLE"))
-            .map(|name| (name.clone(), Vec::new()));
+            .map(|name| (name.clone(), Arguments::default()));
         called.extend(content.calls.into_iter().chain(commands));
         self.given_times(&content.words, &called);
         for (name, arguments) in called {
             match name.as_str() {
-                "CYCLE800" => self.cycle800(row, span, &arguments),
-                "TRAORI" => self.traori(row, span, &arguments),
+                "CYCLE800" => self.cycle800(row, span, &arguments.values),
+                "TRAORI" => self.traori(row, span, &arguments.values),
                 // What moves nothing: messages, settings, the control's own procedures.
-                "CYCLE832" => self.cycle832(row, span, &arguments),
+                "CYCLE832" => self.cycle832(row, span, &arguments.values),
                 "MSG" | "STOPRE" => {}
                 _ if crate::semantic::calls::is_predefined(&name) => {}
                 _ if self.calling.is_some() => self.unknown(
@@ -1280,13 +1304,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             return None;
         }
         let arguments = match &statement.kind {
-            StatementKind::Call(call) => call
-                .arguments
-                .items
-                .iter()
-                .map(|a| evaluate(self.source, a.value.as_ref()?, &self.variables).ok())
-                .collect(),
-            _ => Vec::new(),
+            StatementKind::Call(call) => Arguments::of(self.source, call, &self.variables),
+            _ => Arguments::default(),
         };
         Some(ModalCall {
             name,

@@ -5,7 +5,6 @@
 use super::{FeedMode, Interpreter, Motion, Word};
 use crate::run::arc::Arc;
 use crate::run::profile::{rest_to_rest, Limits};
-use crate::semantic::value::Value;
 use crate::span::Span;
 
 impl Interpreter<'_, '_> {
@@ -159,7 +158,7 @@ impl Interpreter<'_, '_> {
 
     /// The times the user gives for what the block's words and calls do
     /// (`[run] times`: `M6 = 7.5`), each added where it runs.
-    pub(super) fn given_times(&mut self, words: &[Word], called: &[(String, Vec<Option<Value>>)]) {
+    pub(super) fn given_times(&mut self, words: &[Word], called: &[(String, super::Arguments)]) {
         if self.options.times.is_empty() {
             return;
         }
