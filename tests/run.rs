@@ -2058,12 +2058,12 @@ fn a_parameter_left_out_is_passed_as_zero() {
     std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
     std::fs::write(
         dir.join("MAIN.MPF"),
-        "G0 X5 Y5 Z5\nSUBP(,7)\nSUBP(3)\nNAMED()\nM30\n",
+        "G0 X5 Y5 Z5\nSUBP(,7)\nSUBP(3)\nNAMED()\nG0 Z0\nM30\n",
     )
     .expect("write");
     std::fs::write(
         dir.join("SUBP.SPF"),
-        "PROC SUBP(INT _A, REAL _B)\nG0 X=_A Y=_B\nM17\n",
+        "PROC SUBP(INT _A, REAL _B)\nG0 X=_A Y=_B\nIF $P_SUBPAR[1] AND NOT $P_SUBPAR[2]\nG0 Z-3\nENDIF\nM17\n",
     )
     .expect("write");
     std::fs::write(
@@ -2079,8 +2079,10 @@ fn a_parameter_left_out_is_passed_as_zero() {
             .any(|b| b["line"] == 2 && b["mcs"]["X1"] == x && b["mcs"]["Y1"] == y)
     };
     assert!(at(0.0, 7.0) && at(3.0, 0.0), "{blocks:?}");
-    assert_eq!(read["axes"]["Z1"]["min"], 0.0, "{read}");
+    // `$P_SUBPAR`: only SUBP(3) gives the first and not the second.
+    assert_eq!(read["axes"]["Z1"]["min"], -3.0, "{read}");
     let unknown = read["unknown"].to_string();
+    assert!(!unknown.contains("SUBPAR"), "{unknown}");
     assert!(
         !unknown.contains("_A") && !unknown.contains("_B") && !unknown.contains("_Z"),
         "{unknown}"
@@ -2120,4 +2122,30 @@ fn a_subprogram_with_save_gives_back_the_callers_modes() {
     // millimetres and its TRANS (15 mm).
     assert_eq!(x_at(3), [254.0], "{blocks:?}");
     assert_eq!(x_at(5), [15.0], "{blocks:?}");
+}
+
+/// The values an archive holds for GUD variables and R parameters (the
+/// control's state when it was written) are read, below what the user
+/// sets, and said among the assumptions.
+#[test]
+fn the_machines_gud_values_and_r_parameters_are_read() {
+    let dir = scratch("run_gud_values");
+    std::fs::write(
+        dir.join("MACHINE.INI"),
+        machine("_DM_SIZE=1.5\nR[100]=20 '1a2b\n_TABLE[2]=7\n"),
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "G0 X=R100*_DM_SIZE Y=_TABLE[2] Z0\nM30\n",
+    )
+    .expect("write");
+    let read = run_with_blocks(&dir);
+    assert_eq!(read["axes"]["X1"]["max"], 30.0, "{read}");
+    assert_eq!(read["axes"]["Y1"]["max"], 7.0, "{read}");
+    let assumed = read["assumptions"].to_string();
+    assert!(
+        assumed.contains("3 values of GUD variables and R parameters"),
+        "{assumed}"
+    );
 }

@@ -63,13 +63,16 @@ pub fn run(args: &RunArgs) -> Result<ExitStatus, CliError> {
             })?,
         None => Default::default(),
     };
+    let (supplied, from_data) =
+        crate::run::setup::values_with_data(&resolved.settings.supplied, &data);
     let options = Options {
+        values_from_data: from_data,
         dynamic_group: usize::from(args.dynamic_group),
         second_limits: args.second_limits,
         times,
         ..Options::default()
     };
-    let supplied = &resolved.settings.supplied;
+    let supplied = &supplied;
     let names: Vec<String> = setup.axes.iter().map(|a| a.machine_name()).collect();
     // The page's plots, kept as the run goes.
     let mut trace = args

@@ -73,6 +73,10 @@ pub struct MachineData {
     pub data: Vec<Datum>,
     /// The frames assigned whole, in the order of the lines.
     pub frames: Vec<WholeFrame>,
+    /// The values the data give variables of programs: GUD variables
+    /// (`_DM_GUD_INCH_MM=1`) and R parameters (`R[100]=1.2`), as an archive
+    /// holds the control's state; constants only, in the order of the lines.
+    pub values: Vec<Datum>,
     /// K006, and the syntax errors of the lines not read, in line order.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -97,7 +101,8 @@ impl MachineData {
         for raw in crate::syntax::lines::raw_lines(source) {
             let raw = without_checksum(source, raw);
             let content = raw.content.of(source);
-            if !finders.iter().any(|f| f.in_line(content)) {
+            let datum = finders.iter().any(|f| f.in_line(content));
+            if !datum && !assigns_variable(content) {
                 continue;
             }
             let (line, error) = parser.parse_line(source, raw);
@@ -120,6 +125,26 @@ impl MachineData {
                                     .message("CHANDATA takes the channel's number, a whole number from 1")
                                     .label("no channel number"),
                             ),
+                        }
+                    }
+                    StatementKind::Assign(assign) if !datum => {
+                        // A variable's value: kept where it is a constant.
+                        let name = assign.target.name.upper(source);
+                        if name.starts_with('$') {
+                            continue;
+                        }
+                        let indices: Option<Vec<Index>> = (assign.target.indices.iter())
+                            .map(|index| self::index(source, index, &scope))
+                            .collect();
+                        let value = evaluate(source, &assign.value, &scope);
+                        if let (Some(indices), Ok(value)) = (indices, value) {
+                            read.values.push(Datum {
+                                name,
+                                channel,
+                                indices,
+                                value,
+                                span: statement.span,
+                            });
                         }
                     }
                     StatementKind::Assign(assign) => {
@@ -199,6 +224,18 @@ impl MachineData {
     pub fn named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Datum> + 'a {
         self.data.iter().filter(move |d| d.name == name)
     }
+}
+
+/// Whether a line may assign a program's variable: a name first (a GUD
+/// variable, `R[n]`), not a system variable, and an `=`.
+fn assigns_variable(content: &[u8]) -> bool {
+    let start = content.trim_ascii_start();
+    start
+        .first()
+        .is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_')
+        && !start.starts_with(b"DEF ")
+        && !(start[0] == b'N' && start.get(1).is_some_and(u8::is_ascii_digit))
+        && start.contains(&b'=')
 }
 
 /// A line as the files of a series start-up archive may hold it ends in a

@@ -45,6 +45,9 @@ pub struct Options {
     /// Seconds a word (`M6`) or a call (`CYCLE800`) takes each time it
     /// runs, by its text in upper case (`[run] times` in sinuprep.toml).
     pub times: std::collections::BTreeMap<String, f64>,
+    /// How many values of GUD variables and R parameters the machine's data
+    /// gave ([`setup::values_with_data`]): said among the assumptions.
+    pub values_from_data: usize,
 }
 
 impl Default for Options {
@@ -54,6 +57,7 @@ impl Default for Options {
             second_limits: false,
             block_limit: 50_000_000,
             times: std::collections::BTreeMap::new(),
+            values_from_data: 0,
         }
     }
 }

@@ -10,6 +10,7 @@ use std::collections::BTreeMap;
 use crate::machine::data::{Index, MachineData};
 use crate::machine::{axes, frames, tools, Axis, Components, Tool};
 use crate::semantic::value::Value;
+use crate::semantic::Supplied;
 
 /// One axis a program moves.
 #[derive(Clone, Debug, PartialEq)]
@@ -331,4 +332,34 @@ impl Setup {
     pub fn tool(&self, t: u32, d: u32) -> Option<&Tool> {
         self.tools.iter().find(|tool| tool.t == t && tool.d == d)
     }
+}
+
+/// The values a run reads: those the user gives (`--set`, `--values`,
+/// sinuprep.toml), then those the machine's data hold for GUD variables and
+/// R parameters (an archive's: the control's state when it was written),
+/// the NC's and the first channel's; with how many the data gave.
+pub fn values_with_data(given: &Supplied, data: &MachineData) -> (Supplied, usize) {
+    let mut values = given.clone();
+    let mut from_data = 0;
+    for datum in &data.values {
+        if datum.channel.is_some_and(|c| c != 1) {
+            continue;
+        }
+        let indices: Vec<String> = datum
+            .indices
+            .iter()
+            .map(|index| match index {
+                Index::Number(n) => n.to_string(),
+                Index::Axis(axis) => axis.clone(),
+            })
+            .collect();
+        let key = crate::semantic::eval::key(&datum.name, &indices);
+        if given.get(&key).is_none() {
+            if values.get(&key).is_none() {
+                from_data += 1;
+            }
+            values.insert(key, datum.value.clone(), "the machine's data".to_string());
+        }
+    }
+    (values, from_data)
 }

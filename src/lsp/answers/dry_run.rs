@@ -21,16 +21,20 @@ impl Snapshot<'_, '_> {
     /// its axes.
     pub(super) fn dry_run(&self, each: impl FnMut(BlockEnd)) -> Option<(Setup, Report)> {
         let machine = self.settings.machine.as_deref()?;
-        let setup = Setup::of(&MachineData::read(&machine.source)).with_records(&machine.machine);
+        let data = MachineData::read(&machine.source);
+        let setup = Setup::of(&data).with_records(&machine.machine);
         if setup.axes.iter().all(|a| a.machine.is_none()) {
             return None;
         }
+        let (values, from_data) =
+            crate::run::setup::values_with_data(&self.settings.supplied, &data);
         let options = Options {
             block_limit: MOST_RUN_BLOCKS,
+            values_from_data: from_data,
             ..Options::default()
         };
         let programs = Programs::alone(self.model);
-        let report = crate::run::run(&programs, &setup, &self.settings.supplied, &options, each);
+        let report = crate::run::run(&programs, &setup, &values, &options, each);
         Some((setup, report))
     }
 

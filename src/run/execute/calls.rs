@@ -95,6 +95,11 @@ impl Interpreter<'_, '_> {
         };
         for (k, (name, number)) in parameters.into_iter().enumerate() {
             let omitted = arguments.omitted.get(k).copied().unwrap_or(true);
+            // `$P_SUBPAR[n]`: whether the call gives parameter n.
+            self.variables.local.insert(
+                key("$P_SUBPAR", &[(k + 1).to_string()]),
+                Value::Number(if omitted { 0.0 } else { 1.0 }),
+            );
             let value = match arguments.values.get(k).cloned().flatten() {
                 Some(value) => value,
                 None if omitted && number => Value::Number(0.0),

@@ -419,6 +419,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         report.assumptions.push(
             "G0 interpolates linearly (RTLION, until RTLIOF), each block's path at the slowest axis's share of MD32000, MD32300, MD32431".to_string(),
         );
+        if options.values_from_data > 0 {
+            report.assumptions.push(format!(
+                "{} values of GUD variables and R parameters as the machine's data hold them (the control's state when they were written; --set overrides)",
+                options.values_from_data
+            ));
+        }
         Interpreter {
             programs,
             model,
