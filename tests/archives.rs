@@ -545,3 +545,41 @@ fn fmt_formats_each_program_member_and_keeps_the_archive_readable() {
     assert_exit(&again, 0);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--machine` naming a series start-up archive brings its definition
+/// members (GUD variables, macros) along, as if given as definitions.
+#[test]
+fn a_machine_archive_brings_its_definitions() {
+    let dir = scratch("archive_definitions");
+    let program = dir.join("USE.MPF");
+    std::fs::write(&program, "R1=MY_GUD\nM30\n").expect("write");
+    let archive = binary_archive(&[
+        (
+            "/_N_DEF_DIR/_N_SGUD_DEF",
+            b"%_N_SGUD_DEF\nDEF NCK REAL MY_GUD\nM30\n".as_slice(),
+        ),
+        ("/_N_INITIAL_INI", b"CHANDATA(1)\nM17\n".as_slice()),
+    ]);
+    let arc = dir.join("MACHINE.ARC");
+    std::fs::write(&arc, archive).expect("write");
+    let program = program.to_str().expect("utf-8");
+    let alone = run(&["check", "--format", "short", program], b"");
+    assert!(stdout(&alone).contains("N005"), "{}", stdout(&alone));
+    let with = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            "--machine",
+            arc.to_str().expect("utf-8"),
+            program,
+        ],
+        b"",
+    );
+    assert_eq!(
+        stdout(&with),
+        "",
+        "{}",
+        String::from_utf8_lossy(&with.stderr)
+    );
+}

@@ -636,3 +636,36 @@ fn what_the_machine_defines_is_not_the_programs_fault() {
         "`WT_ZONE` is read before any DEF or assignment"
     );
 }
+
+/// A macro the program defines itself is read as the control reads it:
+/// its name is no variable read before its DEF (N005), and a macro that
+/// stands for M30 ends the program (N010); a name the program never
+/// defines is still N005.
+#[test]
+fn the_programs_own_macros_are_no_undefined_names() {
+    let dir = support::scratch("own_macros");
+    let program = dir.join("OWN.MPF");
+    std::fs::write(
+        &program,
+        "DEFINE E_Y AS R1\nDEFINE M99 AS M30\nR2=E_Y+NOT_DEFINED\nG0 X1\nM99\n",
+    )
+    .expect("write");
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            program.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    let report = stdout(&output);
+    assert!(
+        report.contains(":3:8: warning[N005] `NOT_DEFINED`"),
+        "{report}"
+    );
+    assert!(
+        !report.contains("E_Y") && !report.contains("N010"),
+        "{report}"
+    );
+}

@@ -374,6 +374,7 @@ fn analyze_stopping<'src>(
     kept.sort_by_key(|d| (d.span.start, d.code()));
     one_finding_per_cause(&mut kept, &model.labels);
     if !model.macro_uses.is_empty() {
+        kept.retain(|d| !crate::syntax::macros::only_names_the_macro(d, &model.macro_uses));
         for diagnostic in &mut kept {
             crate::syntax::macros::annotate(diagnostic, &model.macro_uses, source);
         }

@@ -66,7 +66,7 @@ pub struct Macro {
 }
 
 impl Macro {
-    fn of(text: &[u8]) -> Self {
+    pub(crate) fn of(text: &[u8]) -> Self {
         let lines = crate::syntax::Lines::new(text);
         let ends_program = lines.block(0).is_some_and(|block| {
             let addresses = crate::semantic::addresses::of_block(text, &block);

@@ -460,7 +460,24 @@ impl Workspace {
         let (files, lenient) = match (self.given.definitions.is_empty(), listed.is_empty()) {
             (false, _) => (self.given.definitions.clone(), false),
             (true, false) => (listed, false),
-            (true, true) => (definitions_beside(program), true),
+            (true, true) => {
+                // Found: beside the program, and the machine's archive's
+                // definition members (`_N_DEF_DIR`: its GUD and macros).
+                let mut found = definitions_beside(program);
+                let machine = match (&self.given.machine, &config.machine) {
+                    (Some(path), _) => Some(path.clone()),
+                    (None, Some(path)) => Some(config.resolve(path)),
+                    (None, None) => None,
+                };
+                let archive = |path: &PathBuf| {
+                    path.is_file()
+                        && path
+                            .extension()
+                            .is_some_and(|e| e.eq_ignore_ascii_case("arc"))
+                };
+                found.extend(machine.filter(archive));
+                (found, true)
+            }
         };
         let found = !files.is_empty();
         let known = self

@@ -113,8 +113,17 @@ impl Check for Checker {
                 .is_some_and(|name| REPOS.iter().any(|repos| name.is(file.source, repos)))
         });
         let addresses = crate::semantic::addresses::of_block(file.source, &block);
+        // A macro of the program's own written in the block (`M99` after
+        // `DEFINE M99 AS M30`): its text is what the control reads.
+        let own_macro_ends = model.macro_uses.iter().any(|used| {
+            !used.recursive
+                && raw.content.start <= used.span.start
+                && used.span.end <= raw.content.end
+                && crate::semantic::environment::Macro::of(used.text.as_bytes()).ends_program
+        });
         let ends = jumps
             || returns
+            || own_macro_ends
             || m_words.iter().any(|m| [2.0, 17.0, 30.0].contains(m))
             || program_end(file, &block, &addresses).is_some();
         // A broken last block may still hold its end where the parser stopped.
