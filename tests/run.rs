@@ -2149,3 +2149,64 @@ fn the_machines_gud_values_and_r_parameters_are_read() {
         "{assumed}"
     );
 }
+
+/// Where compensation cannot go on, the element held back ends square and
+/// the next block starts there: a move to a position unknown offline, a
+/// move under G53; a slot narrower than the tool is a bottleneck, named;
+/// G451 past a small arc, where the extended elements never meet, takes
+/// the circle.
+#[test]
+fn radius_compensation_ends_an_element_where_the_control_would() {
+    let tool = |r: f64| format!("$TC_DP1[1,1]=120\n$TC_DP6[1,1]={r}\n");
+    let head = "T1 M6\nD1\nG0 X0 Y-20 Z0\nG41 G1 X0 Y0 F500\n";
+    // The element to X20 Y20 ends square (X 16.46, Y 23.54); the move to
+    // an unknown X starts there, Y kept.
+    let (_, at) = dry_run_ends(
+        &machine(&tool(5.0)),
+        &format!("{head}X20 Y20\nX=R99\nM30\n"),
+    );
+    let half = 5.0 * std::f64::consts::FRAC_1_SQRT_2;
+    assert_near(
+        at[4].1[1].expect("y"),
+        20.0 + half,
+        1e-9,
+        "the element's square end",
+    );
+    assert_near(
+        at[5].1[1].expect("y"),
+        20.0 + half,
+        1e-9,
+        "Y kept by the next move",
+    );
+    // A G53 move of Z alone: where Z goes is the same with and without G41.
+    let retract = |g: &str| {
+        let program =
+            format!("T1 M6\nD1\nG0 X0 Y-20 Z0\n{g} G1 X0 Y0 F500\nX50\nG53 G0 Z-10\nG1 Y40\nM30\n");
+        let (_, at) = dry_run_ends(&machine(&tool(5.0)), &program);
+        at[5].1[2]
+    };
+    assert_eq!(retract("G41"), retract("G40"));
+    // Inside a slot 8 wide a tool of 10 does not fit between its corners.
+    let slot =
+        format!("{head}Y10\nY0\nX8\nY10\nG40 X20\nM30\n").replace("G0 X0 Y-20", "G0 X-20 Y10");
+    let (report, _) = dry_run_ends(&machine(&tool(5.0)), &slot);
+    assert!(
+        report
+            .unknown
+            .iter()
+            .any(|u| u.why.contains("does not fit the inside corner")),
+        "{:?}",
+        report.unknown
+    );
+    // G451 past a small arc: the circle, no bottleneck.
+    let small = "T1 M6\nD1\nG0 X30 Y-20 Z0\nG41 G451 G1 X20 Y0 F500\nX10\nG3 X0 Y10 I-10 J0\nG1 Y20\nG40 X-20\nM30\n";
+    let (report, _) = dry_run_ends(&machine(&tool(6.0)), small);
+    assert!(
+        report
+            .unknown
+            .iter()
+            .all(|u| !u.why.contains("does not fit")),
+        "{:?}",
+        report.unknown
+    );
+}

@@ -261,8 +261,9 @@ fn without_checksum(source: &[u8], raw: RawLine) -> RawLine {
 /// writes, each with constants: `CTRANS(X,10,Y,20)` (coarse translation),
 /// `CFINE(X,0.1)`, `CROT(Z,30)` (degrees), `CSCALE(X,2)`, `CMIRROR(X)`, joined
 /// by `:` (Siemens, Job Planning, "Frames", "Predefined frame functions");
-/// `CTRANS()` alone is the zero frame. `None` for anything else, or one
-/// function twice (a chain of two shifts is no longer their components).
+/// `CTRANS()` alone is the zero frame. `None` for anything else, one
+/// function twice or out of that order (a chain of two shifts, or a turn
+/// before a shift, is no longer their components).
 fn whole_frame(
     source: &[u8],
     expr: &Expr,
@@ -283,21 +284,23 @@ fn whole_frame(
         }
     }
     let mut components = Vec::new();
-    let mut seen = Vec::new();
+    // In the order the control writes them (a rotation before a shift
+    // would turn it: no longer its components), each once.
+    let mut last = None;
     for call in parts {
         let function = call.name.upper(source);
-        let (component, valued) = match function.as_str() {
-            "CTRANS" => ("TR", true),
-            "CFINE" => ("FI", true),
-            "CROT" => ("RT", true),
-            "CSCALE" => ("SC", true),
-            "CMIRROR" => ("MI", false),
+        let (order, component, valued) = match function.as_str() {
+            "CTRANS" => (0, "TR", true),
+            "CFINE" => (1, "FI", true),
+            "CROT" => (2, "RT", true),
+            "CSCALE" => (3, "SC", true),
+            "CMIRROR" => (4, "MI", false),
             _ => return None,
         };
-        if seen.contains(&component) {
+        if last.is_some_and(|last| order <= last) {
             return None;
         }
-        seen.push(component);
+        last = Some(order);
         let mut items = call.arguments.items.iter();
         while let Some(axis) = items.next() {
             let Some(Expr {

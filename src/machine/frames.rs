@@ -181,9 +181,12 @@ $P_CHBFR[0]=CTRANS(Z,137.3)\n";
         assert_eq!(frames["G56"]["X"].sc, Some(2.0));
         assert_eq!(frames["G56"]["Y"].mi, Some(1.0));
         assert_eq!(base_frames(&data)["CHBFR0"]["Z"].tr, Some(137.3));
-        // Two shifts in one chain are no longer components: named, not read.
-        let chained = MachineData::read(b"$P_UIFR[1]=CTRANS(X,1):CTRANS(X,2)\n$P_UIFR[2]=R1\n");
+        // Two shifts in one chain, or a turn before a shift, are no longer
+        // components: named, not read.
+        let chained = MachineData::read(
+            b"$P_UIFR[1]=CTRANS(X,1):CTRANS(X,2)\n$P_UIFR[2]=R1\n$P_UIFR[3]=CROT(Z,30):CTRANS(X,1)\n",
+        );
         let codes: Vec<&str> = chained.diagnostics.iter().map(|d| d.code()).collect();
-        assert_eq!(codes, ["K006", "K006"]);
+        assert_eq!(codes, ["K006", "K006", "K006"]);
     }
 }

@@ -248,14 +248,15 @@ pub fn join(
     let reverses = turn.abs() <= FLAT;
     let outside = reverses || offset * turn < 0.0;
     let turned = turn.abs().atan2(t_before.dot(&t_after)).to_degrees();
-    if outside && (reverses || circle_outside(turned)) {
+    // The circle about the corner, from the one moved element to the other.
+    let circle = || {
         let (u, w) = (end - corner, start - corner);
         let sweep = if reverses {
             -PI * offset.signum()
         } else {
             cross(u, w).atan2(u.dot(&w))
         };
-        return Ok(Join {
+        Ok(Join {
             end_before: end,
             circle: Some(Element::Arc {
                 centre: corner,
@@ -265,7 +266,10 @@ pub fn join(
             }),
             start_after: start,
             outside,
-        });
+        })
+    };
+    if outside && (reverses || circle_outside(turned)) {
+        return circle();
     }
     let meeting = meetings(before, after)
         .into_iter()
@@ -277,7 +281,23 @@ pub fn join(
             start_after: p,
             outside,
         }),
+        // G451 where the extended elements never meet (a line past a
+        // small arc): the circle, as at a corner too pointed for G451.
+        None if outside => circle(),
         _ => Err(NoJoin::Bottleneck),
+    }
+}
+
+/// Whether the part of `element` from `from` to `to` runs the element's
+/// way: where two inside corners come closer than the tool allows, the
+/// part between them would run backwards (a bottleneck).
+pub fn runs_forward(element: &Element, from: Point, to: Point) -> bool {
+    match element.between(from, to) {
+        Element::Line { from, to } => (to - from).dot(&element.start_direction()) >= -FLAT,
+        Element::Arc { sweep, .. } => match *element {
+            Element::Arc { sweep: whole, .. } => sweep * whole.signum() >= -FLAT,
+            Element::Line { .. } => true,
+        },
     }
 }
 

@@ -44,6 +44,7 @@ impl Interpreter<'_, '_> {
             incremental: self.incremental,
             length_scale: self.length_scale,
             programmable: self.programmable.clone(),
+            compensation: self.compensation.modes(),
         };
         self.model = callee;
         self.source = callee.source;
@@ -159,10 +160,14 @@ pub(super) struct Saved {
     incremental: bool,
     length_scale: f64,
     programmable: Frame,
+    compensation: (Option<f64>, bool, f64),
 }
 
 impl Interpreter<'_, '_> {
     fn restore(&mut self, saved: Saved) {
+        // The element held back ends under the subprogram's frames.
+        self.end_held(None);
+        self.compensation.set_modes(saved.compensation);
         let (feed, spindle) = (self.modes.feed, self.modes.spindle);
         self.modes = saved.modes;
         self.modes.feed = feed;

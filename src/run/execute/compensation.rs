@@ -17,6 +17,7 @@ use super::motion::{plane_axes, ArcShape};
 use super::{Content, Coordinate, Interpreter, Modes, Motion};
 use crate::run::arc::Arc;
 use crate::run::contour::{self, Element, Point};
+use crate::run::frame::Frame;
 use crate::span::Span;
 
 /// Below this, a plane move is none.
@@ -122,6 +123,19 @@ impl Compensation {
     pub(super) fn set_extra(&mut self, offset: f64) {
         self.extra = offset;
     }
+
+    /// The side, the corners and OFFN: what SAVE gives back.
+    pub(super) fn modes(&self) -> (Option<f64>, bool, f64) {
+        (self.side, self.meet_outside, self.extra)
+    }
+
+    /// Back to `modes` (with no element held).
+    pub(super) fn set_modes(&mut self, (side, meet_outside, extra): (Option<f64>, bool, f64)) {
+        if side != self.side {
+            self.approaching = side.is_some();
+        }
+        (self.side, self.meet_outside, self.extra) = (side, meet_outside, extra);
+    }
 }
 
 impl Interpreter<'_, '_> {
@@ -169,6 +183,12 @@ impl Interpreter<'_, '_> {
         if self.compensation.side.is_none() {
             return false;
         }
+        if suppress || self.transformed.is_some() {
+            if suppress {
+                self.unknown(row, span, "G41/G42: a move under G53, G153 or SUPA is taken as programmed, not compensated".into());
+            }
+            return false;
+        }
         let (h, v) = plane_axes(self.plane);
         let circular = matches!(
             self.modes.motion,
@@ -210,13 +230,6 @@ impl Interpreter<'_, '_> {
                 None => false,
             };
         }
-        if suppress || self.transformed.is_some() {
-            self.end_held(Some("a move under G53, G153, SUPA or TRAORI follows"));
-            if suppress {
-                self.unknown(row, span, "G41/G42: a move under G53, G153 or SUPA is taken as programmed, not compensated".into());
-            }
-            return false;
-        }
         let offset = self.cutter_offset(row, span);
         if offset == 0.0 {
             self.end_held(None);
@@ -248,7 +261,17 @@ impl Interpreter<'_, '_> {
             }
             Some(held) => {
                 let (circle, missing) = self.corner_rule();
-                match contour::join(&held.moved, &moved, s2, offset, circle) {
+                let joined =
+                    contour::join(&held.moved, &moved, s2, offset, circle).and_then(|join| {
+                        let forward = held.approach
+                            || contour::runs_forward(&held.moved, held.from, join.end_before);
+                        if forward {
+                            Ok(join)
+                        } else {
+                            Err(contour::NoJoin::Bottleneck)
+                        }
+                    });
+                match joined {
                     Ok(join) => {
                         if let (true, Some(missing)) = (join.outside, missing) {
                             self.note(missing.into());
@@ -383,17 +406,8 @@ impl Interpreter<'_, '_> {
         end[v] = Some(to.y);
         let applicate_to = end[applicate].unwrap_or(held.applicate_from);
         let rise = applicate_to - held.applicate_from;
-        let reached = self.to_machine(&end, false, held.tool);
         let start_mcs = self.mcs.clone();
-        let end_mcs: Vec<Option<f64>> = (0..reached.len())
-            .map(|k| {
-                if k < 3 || held.targeted[k] {
-                    reached[k]
-                } else {
-                    start_mcs[k]
-                }
-            })
-            .collect();
+        let end_mcs = self.reached(&end, held.tool, &held.targeted, [h, v]);
         let lift = |p: Point, z: f64| {
             let mut at = Vector3::zeros();
             at[h] = p.x;
@@ -463,7 +477,7 @@ impl Interpreter<'_, '_> {
                 }
             }
         }
-        let path = (pieces.len() > 1).then_some(total);
+        let path = (pieces.len() > 1).then_some(total.hypot(rise));
         self.traverse(
             row,
             span,
@@ -486,17 +500,8 @@ impl Interpreter<'_, '_> {
             let mut end = dummy.end;
             end[h] = Some(to.x);
             end[v] = Some(to.y);
-            let reached = self.to_machine(&end, false, dummy.tool);
             let start_mcs = self.mcs.clone();
-            let end_mcs: Vec<Option<f64>> = (0..reached.len())
-                .map(|k| {
-                    if k < 3 || dummy.targeted[k] {
-                        reached[k]
-                    } else {
-                        start_mcs[k]
-                    }
-                })
-                .collect();
+            let end_mcs = self.reached(&end, dummy.tool, &dummy.targeted, [h, v]);
             let points = [end_mcs.clone()];
             self.traverse(
                 dummy.row,
@@ -513,6 +518,34 @@ impl Interpreter<'_, '_> {
         self.program = program;
         self.modes = modes;
         self.plane = plane;
+    }
+
+    /// The machine position of the programmed point `end`: the plane's
+    /// axes `moved` and those the block programs go there, the other
+    /// geometry axis too where the frames couple it (a rotation), the rest
+    /// stay where they are (as `motion_block` takes them).
+    fn reached(
+        &self,
+        end: &[Option<f64>],
+        tool: [f64; 3],
+        targeted: &[bool],
+        moved: [usize; 2],
+    ) -> Vec<Option<f64>> {
+        let reached = self.to_machine(end, false, tool);
+        let coupled = Frame {
+            translation: Vec::new(),
+            linear: self.frames_linear(false),
+        }
+        .couples();
+        (0..reached.len())
+            .map(|k| {
+                if targeted[k] || moved.contains(&k) || (k < 3 && coupled) {
+                    reached[k]
+                } else {
+                    self.mcs[k]
+                }
+            })
+            .collect()
     }
 
     /// Tells the blocks that waited, up to the one at `until` among those

@@ -359,7 +359,12 @@ impl Interpreter<'_, '_> {
         exact_here: bool,
     ) {
         let tool = self.tool_offset(row, span);
-        let start_mcs = self.mcs.clone();
+        // A move that leaves the frames or the plane of the compensation
+        // ends the element held back first: it starts where that one ends.
+        if self.compensation.holds() && (suppress || self.transformed.is_some()) {
+            self.end_held(Some("a move under G53, G153, SUPA or TRAORI follows"));
+        }
+        let mut start_mcs = self.mcs.clone();
         // Where the program left each axis; in machine coordinates less the
         // tool for a block that suppresses the frames (G53, G153, SUPA).
         let start = if suppress {
@@ -404,10 +409,15 @@ impl Interpreter<'_, '_> {
         // axes it concerns (MD42440, MD42442 at their defaults): an axis not
         // programmed stays where it is; under a rotation, or where it
         // changed, the geometry axes go together.
+        let held = self.compensation.holds();
         if self.compensate(
             row, span, &start, &end, targets, centre, shape, suppress, exact_here, tool,
         ) {
             return;
+        }
+        // Not compensated, the element held before ended: from its end.
+        if held {
+            start_mcs = self.mcs.clone();
         }
         let reached = self.to_machine(&end, suppress, tool);
         let linear = self.frames_linear(suppress);
