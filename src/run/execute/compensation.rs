@@ -48,14 +48,24 @@ pub(super) struct Compensation {
     pub(super) told: Vec<Told>,
 }
 
-/// An element of the centre's path waiting for the next to know its end.
-struct Held {
+/// A block's move as it was programmed, run later: where it is, the
+/// modes and the tool it runs with, where it ends.
+struct Move {
     row: usize,
     span: Span,
     program: Option<String>,
     modes: Modes,
     exact_here: bool,
     tool: [f64; 3],
+    /// The programmed end, every axis.
+    end: Vec<Option<f64>>,
+    /// The axes the block programs.
+    targeted: Vec<bool>,
+}
+
+/// An element of the centre's path waiting for the next to know its end.
+struct Held {
+    block: Move,
     plane: usize,
     /// The approach: a line from `from` to where the next element starts.
     approach: bool,
@@ -68,10 +78,6 @@ struct Held {
     lead: Option<Element>,
     /// The applicate's programmed value at the block's start.
     applicate_from: f64,
-    /// The programmed end, every axis.
-    end: Vec<Option<f64>>,
-    /// The axes the block programs.
-    targeted: Vec<bool>,
     /// The moves off the plane programmed after it, before the next
     /// element: run where it ends.
     dummies: Vec<Dummy>,
@@ -79,14 +85,7 @@ struct Held {
 
 /// A move without a move in the plane while an element is held.
 struct Dummy {
-    row: usize,
-    span: Span,
-    program: Option<String>,
-    modes: Modes,
-    exact_here: bool,
-    tool: [f64; 3],
-    end: Vec<Option<f64>>,
-    targeted: Vec<bool>,
+    block: Move,
     /// Its place among the blocks waiting since the element was held.
     waiting: usize,
 }
@@ -205,17 +204,9 @@ impl Interpreter<'_, '_> {
             // A move off the plane (an infeed): run once the element before
             // it ends, from there (MD20250 $MC_CUTCOM_MAXNUM_DUMMY_BLOCKS
             // bounds how many the control takes; past them it stops).
-            let waiting = self.compensation.waiting.len();
             let dummy = Dummy {
-                row,
-                span,
-                program: self.program.clone(),
-                modes: self.modes,
-                exact_here,
-                tool,
-                end: end.to_vec(),
-                targeted: targets.iter().map(Option::is_some).collect(),
-                waiting,
+                block: self.move_of(row, span, exact_here, tool, end, targets),
+                waiting: self.compensation.waiting.len(),
             };
             return match &mut self.compensation.held {
                 Some(held) if held.dummies.len() < MOST_DUMMIES => {
@@ -280,7 +271,7 @@ impl Interpreter<'_, '_> {
                         (join.start_after, join.circle)
                     }
                     Err(contour::NoJoin::Bottleneck) => {
-                        let (at, before) = (held.moved.to(), held.row + 1);
+                        let (at, before) = (held.moved.to(), held.block.row + 1);
                         self.finish_held(held, at);
                         self.unknown(row, span, format!("G41/G42: the tool does not fit the inside corner with line {before} (the moved elements do not meet: a bottleneck the control refuses or, with CDON, cuts short): the run goes square from one to the other"));
                         (
@@ -315,20 +306,13 @@ impl Interpreter<'_, '_> {
         self.compensation.approaching = false;
         let applicate = [2, 1, 0][self.plane];
         self.compensation.held = Some(Held {
-            row,
-            span,
-            program: self.program.clone(),
-            modes: self.modes,
-            exact_here,
-            tool,
+            block: self.move_of(row, span, exact_here, tool, end, targets),
             plane: self.plane,
             approach,
             moved: if approach { element } else { moved },
             from,
             lead,
             applicate_from: s[applicate],
-            end: end.to_vec(),
-            targeted: targets.iter().map(Option::is_some).collect(),
             dummies: Vec::new(),
         });
         self.compensation.released = 0;
@@ -355,6 +339,28 @@ impl Interpreter<'_, '_> {
         (rule, limit.is_none().then_some(missing))
     }
 
+    /// The block's move as programmed, to run later.
+    fn move_of(
+        &self,
+        row: usize,
+        span: Span,
+        exact_here: bool,
+        tool: [f64; 3],
+        end: &[Option<f64>],
+        targets: &[Option<(Result<f64, String>, Coordinate)>],
+    ) -> Move {
+        Move {
+            row,
+            span,
+            program: self.program.clone(),
+            modes: self.modes,
+            exact_here,
+            tool,
+            end: end.to_vec(),
+            targeted: targets.iter().map(Option::is_some).collect(),
+        }
+    }
+
     /// Ends the held element square to its end (the retraction's start
     /// under G40); `why` says, on its block, why where it is not G40.
     pub(super) fn end_held(&mut self, why: Option<&str>) {
@@ -362,7 +368,8 @@ impl Interpreter<'_, '_> {
             return;
         };
         if let Some(why) = why {
-            let (program, row, span) = (held.program.clone(), held.row, held.span);
+            let (program, row, span) =
+                (held.block.program.clone(), held.block.row, held.block.span);
             let now = std::mem::replace(&mut self.program, program);
             self.unknown(
                 row,
@@ -374,7 +381,7 @@ impl Interpreter<'_, '_> {
             self.program = now;
         }
         let to = if held.approach {
-            let offset = self.cutter_offset(held.row, held.span);
+            let offset = self.cutter_offset(held.block.row, held.block.span);
             held.moved.offset(offset).unwrap_or(held.moved).to()
         } else {
             held.moved.to()
@@ -385,10 +392,10 @@ impl Interpreter<'_, '_> {
     /// The held element's move, the centre's path ending at `to`; then the
     /// blocks that waited for it are told.
     fn finish_held(&mut self, held: Held, to: Point) {
-        let program = std::mem::replace(&mut self.program, held.program);
-        let modes = std::mem::replace(&mut self.modes, held.modes);
+        let program = std::mem::replace(&mut self.program, held.block.program);
+        let modes = std::mem::replace(&mut self.modes, held.block.modes);
         let plane = std::mem::replace(&mut self.plane, held.plane);
-        let (row, span) = (held.row, held.span);
+        let (row, span) = (held.block.row, held.block.span);
         let main = if held.approach {
             Element::Line {
                 from: held.from,
@@ -401,13 +408,13 @@ impl Interpreter<'_, '_> {
         let total: f64 = pieces.iter().map(Element::length).sum();
         let (h, v) = plane_axes(plane);
         let applicate = [2, 1, 0][plane];
-        let mut end = held.end;
+        let mut end = held.block.end;
         end[h] = Some(to.x);
         end[v] = Some(to.y);
         let applicate_to = end[applicate].unwrap_or(held.applicate_from);
         let rise = applicate_to - held.applicate_from;
         let start_mcs = self.mcs.clone();
-        let end_mcs = self.reached(&end, held.tool, &held.targeted, [h, v]);
+        let end_mcs = self.reached(&end, held.block.tool, &held.block.targeted, [h, v]);
         let lift = |p: Point, z: f64| {
             let mut at = Vector3::zeros();
             at[h] = p.x;
@@ -421,7 +428,7 @@ impl Interpreter<'_, '_> {
         let on_machine = |interpreter: &Self, p: Vector3<f64>| {
             let mut wcs = end.clone();
             wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
-            let at = interpreter.to_machine(&wcs, false, held.tool);
+            let at = interpreter.to_machine(&wcs, false, held.block.tool);
             let mut point = end_mcs.clone();
             point[..3].copy_from_slice(&at[..3]);
             point
@@ -460,7 +467,7 @@ impl Interpreter<'_, '_> {
                         sweep: sweep.abs(),
                         rise: (z1 - z0) * sweep.signum(),
                     };
-                    let arc = self.arc_on_machine(row, span, &arc, false, held.tool);
+                    let arc = self.arc_on_machine(row, span, &arc, false, held.block.tool);
                     points.push(on_machine(self, lift(piece.from(), z0)));
                     for k in 0..3 {
                         for p in arc.turning_points(k) {
@@ -486,7 +493,7 @@ impl Interpreter<'_, '_> {
             &points,
             lone_arc.as_ref(),
             path,
-            held.exact_here,
+            held.block.exact_here,
         );
         self.release(
             held.dummies.first().map_or(usize::MAX, |d| d.waiting),
@@ -495,23 +502,23 @@ impl Interpreter<'_, '_> {
         // The moves off the plane between: from where the element ends.
         let mut dummies = held.dummies.into_iter().peekable();
         while let Some(dummy) = dummies.next() {
-            self.program = dummy.program;
-            self.modes = dummy.modes;
-            let mut end = dummy.end;
+            self.program = dummy.block.program;
+            self.modes = dummy.block.modes;
+            let mut end = dummy.block.end;
             end[h] = Some(to.x);
             end[v] = Some(to.y);
             let start_mcs = self.mcs.clone();
-            let end_mcs = self.reached(&end, dummy.tool, &dummy.targeted, [h, v]);
+            let end_mcs = self.reached(&end, dummy.block.tool, &dummy.block.targeted, [h, v]);
             let points = [end_mcs.clone()];
             self.traverse(
-                dummy.row,
-                dummy.span,
+                dummy.block.row,
+                dummy.block.span,
                 &start_mcs,
                 end_mcs,
                 &points,
                 None,
                 None,
-                dummy.exact_here,
+                dummy.block.exact_here,
             );
             self.release(dummies.peek().map_or(usize::MAX, |d| d.waiting), None);
         }
