@@ -19,7 +19,7 @@ use crate::semantic::value::Value;
 use crate::semantic::Supplied;
 use crate::span::Span;
 use crate::syntax::lines::RawLine;
-use crate::syntax::tree::{BinaryOp, Expr, ExprKind, LineKind, StatementKind};
+use crate::syntax::tree::{BinaryOp, Expr, ExprKind, LineKind, StatementKind, Variable};
 use crate::syntax::WordFinder;
 
 /// The prefixes of the data kept: machine data of the NC, the channel and
@@ -133,9 +133,7 @@ impl MachineData {
                         if name.starts_with('$') {
                             continue;
                         }
-                        let indices: Option<Vec<Index>> = (assign.target.indices.iter())
-                            .map(|index| self::index(source, index, &scope))
-                            .collect();
+                        let indices = indices(source, &assign.target, &scope);
                         let value = evaluate(source, &assign.value, &scope);
                         if let (Some(indices), Ok(value)) = (indices, value) {
                             read.values.push(Datum {
@@ -152,12 +150,7 @@ impl MachineData {
                         if !PREFIXES.iter().any(|p| name.starts_with(p)) {
                             continue;
                         }
-                        let indices: Option<Vec<Index>> = assign
-                            .target
-                            .indices
-                            .iter()
-                            .map(|index| self::index(source, index, &scope))
-                            .collect();
+                        let indices = indices(source, &assign.target, &scope);
                         let Some(indices) = indices else {
                             read.diagnostics.push(
                                 RULE.at(assign.target.span)
@@ -327,6 +320,17 @@ fn whole_frame(
         }
     }
     Some(components)
+}
+
+/// A target's indices, where each is a whole number or an axis's name.
+fn indices(
+    source: &[u8],
+    target: &Variable,
+    scope: &crate::semantic::env::Scope,
+) -> Option<Vec<Index>> {
+    (target.indices.iter())
+        .map(|index| self::index(source, index, scope))
+        .collect()
 }
 
 /// An index: a whole number, or an axis's name.
