@@ -1138,6 +1138,62 @@ fn an_open_definition_file_applies_before_it_is_saved() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Typing in a definition file reads the settings again once the typing
+/// pauses, not at each keystroke (each reading analyses every open document
+/// again); a request about another document reads them first.
+#[test]
+fn typing_in_a_definition_file_reads_the_settings_once_it_pauses() {
+    let dir = scratch("lsp-settled");
+    std::fs::write(dir.join("GUD7.DEF"), "DEF NCK REAL ZERO_A\nM30\n").expect("gud");
+    std::fs::write(dir.join("sinuprep.toml"), "definitions = [\"GUD7.DEF\"]\n").expect("toml");
+    let program = format!("file://{}", dir.join("MAIN.MPF").display());
+    let gud = format!("file://{}", dir.join("GUD7.DEF").display());
+    let capabilities = json!({ "textDocument": { "diagnostic": { "dynamicRegistration": false } },
+                               "workspace": { "diagnostics": { "refreshSupport": true } } });
+    let (mut client, _) = Client::start(capabilities);
+    let refresh = |message: &Value| message["method"] == "workspace/diagnostic/refresh";
+    let open = |uri: &str, text: &str| json!({ "textDocument": { "uri": uri, "languageId": "sinumerik", "version": 1, "text": text } });
+    client.notify(
+        "textDocument/didOpen",
+        open(&program, "R1=ZERO_A+ZERO_B\nM30\n"),
+    );
+    client.notify(
+        "textDocument/didOpen",
+        open(&gud, "DEF NCK REAL ZERO_A\nM30\n"),
+    );
+    let keystrokes = 20;
+    for version in 2..2 + keystrokes {
+        let text = match version < 1 + keystrokes {
+            true => format!("DEF NCK REAL ZERO_A, ZERO{}\nM30\n", &"_B"[..version % 2]),
+            false => "DEF NCK REAL ZERO_A, ZERO_B\nM30\n".to_string(),
+        };
+        client.notify(
+            "textDocument/didChange",
+            json!({ "textDocument": { "uri": gud, "version": version },
+                    "contentChanges": [{ "text": text }] }),
+        );
+    }
+    let pulled = client.request(
+        "textDocument/diagnostic",
+        json!({ "textDocument": { "uri": program } }),
+    );
+    let items = pulled["items"].as_array().expect("items");
+    assert_eq!(
+        codes(items),
+        Vec::<&str>::new(),
+        "the last text counts: {pulled}"
+    );
+    // The opening and the reading before the pull; a slow moment between
+    // two keystrokes may add one.
+    let readings = client.kept(refresh);
+    assert!(
+        readings <= 3,
+        "{readings} readings for {keystrokes} keystrokes"
+    );
+    client.stop();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// An archive is checked as `check` checks it: each program with what the
 /// archive gives it (its macros here), its findings placed in the archive,
 /// named by the member; not as one program (where the macros' member would
@@ -1733,6 +1789,35 @@ fn signature_help_names_the_parameter_being_written() {
     );
 
     assert_eq!(help(&mut client, 4, 3), Value::Null, "outside any call");
+    client.stop();
+
+    // A client without offsets finds each parameter by its text's first
+    // occurrence in the label: CYCLE84's PIT must not be found inside MPIT.
+    let (mut client, _) = Client::start(json!({}));
+    client.open(&uri, "CYCLE84(1, 2, 3, 4, 5, 6, 7, 8, \n");
+    let thread = help(&mut client, 0, 30);
+    let signature = &thread["signatures"][0];
+    let label = signature["label"].as_str().expect("a label");
+    let parameters = signature["parameters"].as_array().expect("parameters");
+    let names: Vec<&str> = label["CYCLE84(".len()..label.len() - 1]
+        .split(", ")
+        .collect();
+    assert_eq!(parameters.len(), names.len(), "{label}");
+    assert!(names.contains(&"MPIT") && names.contains(&"PIT"), "{label}");
+    let mut end = "CYCLE84(".len();
+    for (parameter, name) in parameters.iter().zip(&names) {
+        end = label[end..]
+            .find(name)
+            .map(|at| end + at + name.len())
+            .expect("in order");
+        let text = parameter["label"].as_str().expect("a parameter's text");
+        assert_eq!(text.trim_start_matches([' ', ',']), *name, "{label}");
+        assert_eq!(
+            label.find(text).map(|at| at + text.len()),
+            Some(end),
+            "{text} in {label}"
+        );
+    }
     client.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }

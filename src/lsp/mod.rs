@@ -30,6 +30,9 @@ mod workspace_uses;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
+use std::time::Duration;
+
+use crossbeam_channel::RecvTimeoutError;
 
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
 use lsp_types as lsp;
@@ -142,6 +145,7 @@ fn serve(connection: &Connection) -> Result<(), String> {
         workspace: Workspace::with_buffers(Given::default(), HashMap::new()),
         settings_errors: HashSet::new(),
         refreshes: 0,
+        settings_changed: false,
         unit,
         pull,
         supports,
@@ -157,13 +161,29 @@ fn serve(connection: &Connection) -> Result<(), String> {
     served
 }
 
+/// How long the typing in a file the settings read pauses before the
+/// settings are read again.
+const SETTLED: Duration = Duration::from_millis(250);
+
 /// The messages of the session, until `exit` or the end of the input.
 fn serve_messages(server: &mut Server) -> Result<(), String> {
     let connection = server.connection;
     // After `shutdown` the protocol allows only `exit`; a client that
     // closes the connection instead has still ended the session in order.
     let mut shut_down = false;
-    for message in &connection.receiver {
+    loop {
+        let received = match server.settings_changed {
+            true => connection.receiver.recv_timeout(SETTLED),
+            false => (connection.receiver.recv()).map_err(|_| RecvTimeoutError::Disconnected),
+        };
+        let message = match received {
+            Ok(message) => message,
+            Err(RecvTimeoutError::Timeout) => {
+                server.refresh_settings();
+                continue;
+            }
+            Err(RecvTimeoutError::Disconnected) => break,
+        };
         match message {
             Message::Request(request) if shut_down => {
                 let refused = "the server is shut down: only `exit` is expected".to_string();
@@ -176,7 +196,12 @@ fn serve_messages(server: &mut Server) -> Result<(), String> {
                 shut_down = true;
                 server.send(Message::Response(Response::new_ok(request.id, ())));
             }
-            Message::Request(request) => server.request(request),
+            Message::Request(request) => {
+                if server.settings_changed && !server.is_about_settings(&request) {
+                    server.refresh_settings();
+                }
+                server.request(request);
+            }
             Message::Notification(notification)
                 if notification.method == lsp::notification::Exit::METHOD =>
             {
@@ -253,6 +278,10 @@ struct Server<'c> {
     settings_errors: HashSet<lsp::Uri>,
     /// `workspace/diagnostic/refresh` requests sent, for their ids.
     refreshes: u64,
+    /// A file the settings read was changed in the editor and not yet read
+    /// again: it is once the typing pauses ([`SETTLED`]), or before a
+    /// request about another document is answered.
+    settings_changed: bool,
     /// Publishes the findings of the documents that change (none for a
     /// client that pulls them).
     worker: Option<worker::Worker>,
@@ -331,9 +360,19 @@ impl Server<'_> {
         convert::path(uri).is_some_and(|path| self.workspace.has_read(&path))
     }
 
+    /// Whether `request` is about a document the settings read (a keystroke's
+    /// requests on the file being typed), which it may answer before the
+    /// settings are read again.
+    fn is_about_settings(&self, request: &Request) -> bool {
+        let uri = request.params["textDocument"]["uri"].as_str();
+        uri.and_then(|uri| uri.parse::<lsp::Uri>().ok())
+            .is_some_and(|uri| self.is_read_by_settings(&uri))
+    }
+
     /// Reads the settings of every open document again, the open
     /// documents' unsaved text in place of their files, and reports anew.
     fn refresh_settings(&mut self) {
+        self.settings_changed = false;
         self.workspace = Workspace::with_buffers(Given::default(), self.buffers());
         let published = std::mem::take(&mut self.settings_errors);
         let open: Vec<(lsp::Uri, Held)> = self
@@ -451,9 +490,10 @@ impl Server<'_> {
         self.documents.insert(uri.clone(), open);
         self.publish(uri.clone());
         // An edit of a settings file applies to every open document as it
-        // is typed, before it is saved.
+        // is typed, before it is saved: once the typing pauses, since each
+        // reading analyses every open document again.
         if self.is_read_by_settings(&uri) {
-            self.refresh_settings();
+            self.settings_changed = true;
         }
     }
 

@@ -96,7 +96,7 @@ impl Snapshot<'_, '_> {
             shown.push(lsp::ParameterInformation {
                 label: match offsets {
                     true => lsp::ParameterLabel::LabelOffsets([start, width(&label, self.unit)]),
-                    false => lsp::ParameterLabel::Simple(parameter.to_string()),
+                    false => lsp::ParameterLabel::Simple(found_first(&label, parameter.len())),
                 },
                 documentation: meaning.map(|m| lsp::Documentation::String(m.to_string())),
             });
@@ -112,6 +112,23 @@ impl Snapshot<'_, '_> {
             active_parameter: None,
         }
     }
+}
+
+/// The text a client without offsets finds at the end of `label`, where
+/// it looks for a parameter's text by its first occurrence: the last
+/// `length` bytes, with as much of what stands before as makes them occur
+/// nowhere earlier (CYCLE84's `PIT` stands inside `MPIT` before it; ` PIT`
+/// does not).
+fn found_first(label: &str, length: usize) -> String {
+    let end = label.len();
+    let mut start = end - length;
+    while label.find(&label[start..]) != Some(start) && start > 0 {
+        start -= 1;
+        while !label.is_char_boundary(start) {
+            start -= 1;
+        }
+    }
+    label[start..].to_string()
 }
 
 /// The length of `text` in `unit`.

@@ -122,6 +122,14 @@ impl Client {
         }
     }
 
+    /// How many of the messages kept from before `wanted` takes.
+    pub fn kept(&self, wanted: impl Fn(&Value) -> bool) -> usize {
+        self.pending
+            .iter()
+            .filter(|message| wanted(message))
+            .count()
+    }
+
     pub fn open(&mut self, uri: &str, text: &str) -> Vec<Value> {
         self.notify(
             "textDocument/didOpen",
