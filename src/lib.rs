@@ -65,6 +65,7 @@ pub mod document;
 pub mod edit;
 pub mod emit;
 pub mod format;
+pub mod hash;
 pub mod kinematics;
 pub mod lint;
 pub mod lsp;

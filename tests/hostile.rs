@@ -97,6 +97,18 @@ fn a_hundred_thousand_nested_parentheses() {
     assert!(survive("nested parentheses", source.as_bytes()).contains(&"S008"));
 }
 
+/// A label written fifty thousand times and as many jumps to it: each
+/// jump's search splits the label's lines at the jump (it walked them all,
+/// 49 s for `check` of this program).
+#[test]
+fn fifty_thousand_jumps_to_a_label_written_fifty_thousand_times() {
+    let source = "LA:\nGOTO LA\nLB:\nREPEAT LB P=2\nGOTOF LA\n".repeat(50_000) + "M30\n";
+    let codes = survive("one label, many times", source.as_bytes());
+    // Each GOTO finds LA both ways (N003); the last GOTOF finds none after
+    // it, only before (N002).
+    assert_eq!(codes, ["N002", "N003"]);
+}
+
 #[test]
 fn numbers_beyond_any_range() {
     let huge = format!("R1=1{}\n", "0".repeat(10_000));

@@ -1,8 +1,8 @@
 //! The state of the walk at one point of the program: variables, the arrays
 //! a measuring cycle has filled, and the active swivel rotation.
 
+use crate::hash::{HashMap, HashSet};
 use std::cell::Cell;
-use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use nalgebra::Rotation3;
@@ -249,7 +249,7 @@ impl Vars {
         let writers = Arc::clone(&self.writers);
         // Name -> (stamp, position, mark) of the newest mark covering one of
         // its sites, the last such site among that mark's.
-        let mut newest: HashMap<&str, (u64, usize, usize)> = HashMap::new();
+        let mut newest: HashMap<&str, (u64, usize, usize)> = HashMap::default();
         let mut by_start: Vec<usize> = (0..marks.len()).collect();
         by_start.sort_by_key(|&i| marks[i].start);
         let mut covering = std::collections::BinaryHeap::new();
@@ -488,8 +488,8 @@ impl Default for Env {
     fn default() -> Self {
         Self {
             vars: Vars::default(),
-            array_defaults: HashMap::new(),
-            measured_arrays: HashMap::new(),
+            array_defaults: HashMap::default(),
+            measured_arrays: HashMap::default(),
             r_clobbered: None,
             active: Active::None,
             frame_since_swivel: None,
@@ -633,7 +633,7 @@ impl Env {
     /// Starts walking one branch of an IF.
     pub fn fork(&mut self) -> Fork {
         self.settle();
-        self.vars.journal.push(Journal::new());
+        self.vars.journal.push(Journal::default());
         Fork { rest: self.rest() }
     }
 
@@ -645,7 +645,7 @@ impl Env {
         let rest = self.take_rest();
         self.put_rest(fork.rest);
         let values = self.vars.restore(journal);
-        self.vars.journal.push(Journal::new());
+        self.vars.journal.push(Journal::default());
         Branch { values, rest }
     }
 

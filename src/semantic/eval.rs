@@ -22,6 +22,13 @@ pub fn variable_key(
     lookup: &dyn Lookup,
 ) -> Result<String, Unknown> {
     let name = variable.name.upper(source);
+    if variable.indices.is_empty() {
+        // The name is the key: not made a second time.
+        return Ok(match r_parameter(&name) {
+            Some(number) => format!("R{number}"),
+            None => name,
+        });
+    }
     let mut indices = Vec::with_capacity(variable.indices.len());
     for index in &variable.indices {
         indices.push(index_text(source, index, lookup)?);

@@ -3,7 +3,7 @@
 //! rules, an editor's definition and the renumbering all read this one
 //! answer. Computed targets (`GOTOF "L"<<I`) name nothing here.
 
-use std::collections::HashSet;
+use crate::hash::HashSet;
 
 use crate::syntax::tree::{upper, GotoKind, GotoTarget};
 
@@ -58,12 +58,23 @@ pub(crate) fn reaches(kind: GotoKind, row: usize, from: usize) -> bool {
     }
 }
 
-/// The line a search of `kind` from line `from` finds among `rows` (the
-/// lines holding the target, in order).
-pub(crate) fn search(rows: &[usize], kind: GotoKind, from: usize) -> Option<usize> {
-    let forward = || (rows.iter().copied()).find(|&row| reaches(GotoKind::Forward, row, from));
-    let backward =
-        || (rows.iter().copied().rev()).find(|&row| reaches(GotoKind::Backward, row, from));
+/// The line a search of `kind` from line `from` finds among `items` in the
+/// order of their lines (`row`), of which those `holds` takes hold the
+/// target (GOTOF the first after, GOTOB the last up to it, GOTO and GOTOC
+/// forward first): split at `from` by a binary search,
+/// so a jump costs no walk over every line holding its target (a program
+/// may hold a label a hundred thousand times).
+pub(crate) fn search_in<T>(
+    items: &[T],
+    row: impl Fn(&T) -> usize,
+    holds: impl Fn(&T) -> bool,
+    kind: GotoKind,
+    from: usize,
+) -> Option<usize> {
+    let split = items.partition_point(|item| row(item) <= from);
+    let (before, after) = items.split_at(split);
+    let forward = || after.iter().find(|item| holds(item)).map(&row);
+    let backward = || before.iter().rev().find(|item| holds(item)).map(&row);
     match kind {
         GotoKind::Forward => forward(),
         GotoKind::Backward => backward(),
@@ -78,6 +89,7 @@ mod tests {
 
     #[test]
     fn each_search_finds_as_the_control_does() {
+        let search = |rows: &[usize], kind, from| search_in(rows, |&row| row, |_| true, kind, from);
         let rows = [2, 5, 9];
         assert_eq!(search(&rows, GotoKind::Forward, 5), Some(9));
         assert_eq!(search(&rows, GotoKind::Forward, 9), None);
@@ -86,5 +98,13 @@ mod tests {
         assert_eq!(search(&rows, GotoKind::Both, 9), Some(9));
         assert_eq!(search(&rows, GotoKind::Conditional, 3), Some(5));
         assert_eq!(search(&[], GotoKind::Start, 3), Some(0));
+        // Only the lines that hold the target count.
+        let marked = [(1, true), (4, false), (6, true), (8, false)];
+        let holds = |&(_, holds): &(usize, bool)| holds;
+        let found = |kind, from| search_in(&marked, |&(row, _)| row, holds, kind, from);
+        assert_eq!(found(GotoKind::Forward, 1), Some(6));
+        assert_eq!(found(GotoKind::Forward, 6), None);
+        assert_eq!(found(GotoKind::Backward, 5), Some(1));
+        assert_eq!(found(GotoKind::Both, 7), Some(6));
     }
 }

@@ -3,7 +3,9 @@
 //! look them up). Names are kept here rather than read back from the source:
 //! reads scattered over a large mapped program would map all of it again.
 
+use crate::semantic::jumps;
 use crate::span::Span;
+use crate::syntax::tree::GotoKind;
 
 #[derive(Clone, Copy, Debug)]
 struct Entry {
@@ -68,13 +70,24 @@ impl Labels {
 
     /// The rows where `name` (upper case) stands, in order.
     pub fn rows<'s>(&'s self, name: &'s str) -> impl Iterator<Item = usize> + 's {
-        let wanted = hash(name.as_bytes());
-        let first = self.entries.partition_point(|e| e.hash < wanted);
-        self.entries[first..]
-            .iter()
-            .take_while(move |e| e.hash == wanted)
+        (self.of_hash(name).iter())
             .filter(move |e| self.name(e) == name.as_bytes())
             .map(|e| e.row)
+    }
+
+    /// The line a jump of `kind` from line `from` to label `name` (upper
+    /// case) lands on, searched as the control does.
+    pub fn landing(&self, name: &str, kind: GotoKind, from: usize) -> Option<usize> {
+        let holds = |e: &Entry| self.name(e) == name.as_bytes();
+        jumps::search_in(self.of_hash(name), |e| e.row, holds, kind, from)
+    }
+
+    /// The entries of names hashed as `name` is, in the order of their rows.
+    fn of_hash(&self, name: &str) -> &[Entry] {
+        let wanted = hash(name.as_bytes());
+        let first = self.entries.partition_point(|e| e.hash < wanted);
+        let count = self.entries[first..].partition_point(|e| e.hash == wanted);
+        &self.entries[first..first + count]
     }
 
     /// Whether `name` (upper case) is a label.

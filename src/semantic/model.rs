@@ -8,8 +8,8 @@
 //! the others are kept in the line table (up to `syntax::line_table::KEPT_TREES`
 //! bytes of source), so no pass parses a line twice.
 
+use crate::hash::HashSet;
 use std::cell::OnceCell;
-use std::collections::HashSet;
 use std::sync::{Arc, OnceLock};
 
 use crate::diagnostic::Diagnostic;
@@ -24,10 +24,10 @@ use crate::syntax::lines::RawLine;
 use crate::syntax::macros::{Macros, Use};
 use crate::syntax::plain::{scanned_lines, PlainFacts, Scanned};
 use crate::syntax::tree::{
-    upper, Block, DataType, GotoKind, GotoTarget, Line, LineKind, Statement, StatementKind,
-    Variable, Word, WordValue,
+    upper, upper_in, Block, DataType, GotoKind, GotoTarget, Line, LineKind, Statement,
+    StatementKind, Variable, Word, WordValue,
 };
-use crate::syntax::visit::{gotos, reads};
+use crate::syntax::visit::{each_read, gotos, reads};
 use crate::syntax::{LineParser, Lines, LinesRecorder, ProgramKind};
 
 /// Plain lines passed to [`ModelBuilder::plain_lines`] at once, at most.
@@ -149,15 +149,7 @@ impl<'src> Model<'src> {
     pub fn target_rows(&self, target: &Target) -> Vec<usize> {
         match target {
             Target::Label(name) => self.labels.rows(name).collect(),
-            Target::Number(number) => {
-                let numbers = self.block_numbers();
-                let first = numbers.partition_point(|(n, _)| n < number);
-                numbers[first..]
-                    .iter()
-                    .take_while(|(n, _)| n == number)
-                    .map(|&(_, row)| row)
-                    .collect()
-            }
+            Target::Number(number) => self.numbered(*number).iter().map(|&(_, row)| row).collect(),
         }
     }
 
@@ -170,7 +162,29 @@ impl<'src> Model<'src> {
 
     /// [`Self::landing`] of a jump to `target`.
     pub fn target_landing(&self, target: &Target, kind: GotoKind, from: usize) -> Option<usize> {
-        jumps::search(&self.target_rows(target), kind, from)
+        match target {
+            Target::Label(name) => self.labels.landing(name, kind, from),
+            Target::Number(number) => {
+                let numbers = self.numbered(*number);
+                jumps::search_in(numbers, |&(_, row)| row, |_| true, kind, from)
+            }
+        }
+    }
+
+    /// Whether some line holds `target`.
+    pub fn has_target(&self, target: &Target) -> bool {
+        match target {
+            Target::Label(name) => self.labels.contains(name),
+            Target::Number(number) => !self.numbered(*number).is_empty(),
+        }
+    }
+
+    /// The block numbers `number` with their lines, in order.
+    fn numbered(&self, number: u64) -> &[(u64, usize)] {
+        let numbers = self.block_numbers();
+        let first = numbers.partition_point(|&(n, _)| n < number);
+        let count = numbers[first..].partition_point(|&(n, _)| n == number);
+        &numbers[first..first + count]
     }
 
     /// Every block number a jump names, with its line, sorted by number and
@@ -300,11 +314,7 @@ impl<'l> LineView<'l> {
                 continue;
             }
             plain = false;
-            all_reads.extend(
-                reads(statement)
-                    .into_iter()
-                    .map(|variable| (index, variable)),
-            );
+            each_read(statement, &mut |variable| all_reads.push((index, variable)));
         }
         Self {
             raw: line.raw,
@@ -374,6 +384,8 @@ pub struct ModelBuilder<'src> {
     labels: Labels,
     blocks: BlockMatcher,
     symbols: Vec<Symbol>,
+    /// Where a name is made upper case to be looked up.
+    name_buffer: String,
     read_names: HashSet<String>,
     stopre: Vec<usize>,
     jump_numbers: HashSet<u64>,
@@ -403,9 +415,10 @@ impl<'src> ModelBuilder<'src> {
             labels: Labels::default(),
             blocks: BlockMatcher::default(),
             symbols: Vec::new(),
-            read_names: HashSet::new(),
+            read_names: HashSet::default(),
+            name_buffer: String::new(),
             stopre: Vec::new(),
-            jump_numbers: HashSet::new(),
+            jump_numbers: HashSet::default(),
             first_executable: None,
             declarations_end: None,
             macros: Arc::default(),
@@ -504,12 +517,18 @@ impl<'src> ModelBuilder<'src> {
             jumps::named_number(source, goto.target.as_ref(), &mut self.jump_numbers);
         }
         for (index, statement) in block.statements.iter().enumerate() {
-            self.read_names
-                .extend(view.reads(index).map(|v| upper(v.name.text(source))));
-            if let StatementKind::For { variable, .. } = &statement.kind {
-                // ENDFOR reads the counter: it counts it up and compares it
-                // with the end value.
-                self.read_names.insert(upper(variable.text(source)));
+            // ENDFOR reads the counter: it counts it up and compares it with
+            // the end value.
+            let counter = match &statement.kind {
+                StatementKind::For { variable, .. } => Some(variable.text(source)),
+                _ => None,
+            };
+            let names = view.reads(index).map(|v| v.name.text(source));
+            for name in names.chain(counter) {
+                let name = upper_in(name, &mut self.name_buffer);
+                if !self.read_names.contains(name) {
+                    self.read_names.insert(name.to_string());
+                }
             }
             let symbol = |declarator: &crate::syntax::tree::Declarator,
                           data_type: &DataType,

@@ -3,8 +3,8 @@
 //! lines sinuprep wrote itself (a `; sinuprep:` call and the blocks emitted
 //! for it). Labels, block pairs and STOPRE lines are the model's.
 
+use crate::hash::{HashMap, HashSet};
 use std::borrow::Cow;
-use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::semantic::blocks::opener;
@@ -183,13 +183,13 @@ impl Structure {
     /// The structure of `model` from the facts of its lines.
     pub(crate) fn of(facts: LineFacts, model: &Model) -> Structure {
         let mut structure = Structure {
-            loop_starts: HashMap::new(),
+            loop_starts: HashMap::default(),
             writers: Arc::new(facts.writers),
             rotation_lines: facts.rotation_lines,
             frame_lines: facts.frame_lines,
             cycle600_lines: facts.cycle600_lines,
-            marked: HashMap::new(),
-            emitted: HashSet::new(),
+            marked: HashMap::default(),
+            emitted: HashSet::default(),
         };
         structure.find_emitted(&model.lines);
         if !structure.marked.is_empty() {
@@ -314,7 +314,7 @@ mod tests {
         assert_eq!(read.frame_lines, [2]);
         assert_eq!(read.rotation_lines, [7]);
         assert_eq!(read.cycle600_lines, [8, 14]);
-        assert_eq!(read.loop_starts, HashMap::from([(0, 18), (1, 17)]));
+        assert_eq!(read.loop_starts, HashMap::from_iter([(0, 18), (1, 17)]));
         assert!(read.writers.writes("_OVR", 15, 16) && read.writers.writes("R", 16, 17));
     }
 }

@@ -7,7 +7,7 @@
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::Model;
 use crate::span::Span;
-use crate::syntax::tree::{upper, Block, GotoTarget, Statement, StatementKind};
+use crate::syntax::tree::{upper, Block, GotoKind, GotoTarget, Statement, StatementKind};
 use crate::syntax::visit::{gotos, reads};
 
 /// What a name names.
@@ -117,8 +117,8 @@ impl Uses {
             return model.landing(target, goto.kind, of.row);
         }
         // A REPEAT searches its label backward from the line before it.
-        let labels = model.labels.rows(&of.name);
-        labels.filter(|&row| row < of.row).last()
+        let before = of.row.checked_sub(1)?;
+        model.labels.landing(&of.name, GotoKind::Backward, before)
     }
 }
 

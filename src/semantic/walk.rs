@@ -11,8 +11,8 @@
 //! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
 //! subprogram does beyond possibly changing R parameters.
 
+use crate::hash::{HashMap, HashSet};
 use std::borrow::Cow;
-use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
@@ -30,7 +30,7 @@ use crate::span::Span;
 use crate::syntax::lexer::is_blank;
 use crate::syntax::tree::{starts_with_upper, upper};
 use crate::syntax::tree::{Block, Call, Expr, Initializer, Statement, StatementKind, TypeKind};
-use crate::syntax::visit::{collect_variables, for_each_expression};
+use crate::syntax::visit::{each_variable, for_each_expression};
 
 /// One CYCLE600 call met on the walk.
 #[derive(Debug)]
@@ -187,7 +187,7 @@ fn run_probed(
         Walked::Whole => model.lines.len(),
         Walked::AsFarAsAsked => asked_end(model, probes),
     };
-    let mut modes = HashMap::new();
+    let mut modes = HashMap::default();
     loop {
         let (walker, env) = walk_once(model, supplied, heads, &modes, probes, stop, end);
         if walker.stopped {
@@ -239,7 +239,7 @@ fn walk_once<'a>(
         source: model.source,
         supplied,
         heads,
-        pending: HashMap::new(),
+        pending: HashMap::default(),
         analysis: Analysis::default(),
         depth: 0,
         swivel_calls,
@@ -247,7 +247,7 @@ fn walk_once<'a>(
         unknown_calls,
         forgotten: Vec::new(),
         replayed: Vec::new(),
-        too_deep: HashSet::new(),
+        too_deep: HashSet::default(),
         looks: Looks::new(probes),
         stop,
         lines_walked: 0,
@@ -304,7 +304,7 @@ struct Looks<'a> {
 
 impl<'a> Looks<'a> {
     fn new(probes: &'a [Probe]) -> Self {
-        let mut on_line: HashMap<usize, Vec<usize>> = HashMap::new();
+        let mut on_line: HashMap<usize, Vec<usize>> = HashMap::default();
         for (index, probe) in probes.iter().enumerate() {
             on_line.entry(probe.row).or_default().push(index);
         }
@@ -446,7 +446,7 @@ impl<'a> Walker<'a> {
     fn assumed(&self) -> HashSet<usize> {
         let mut regions = self.forgotten.clone();
         regions.sort_unstable();
-        let mut assumed = HashSet::new();
+        let mut assumed = HashSet::default();
         let mut calls = self.unknown_calls.iter().copied().peekable();
         let mut covered_to = 0;
         for (start, end) in regions {
@@ -1233,16 +1233,18 @@ impl<'a> Walker<'a> {
                 return;
             }
         }
-        let mut reads = Vec::new();
+        // Kept only where a result is read: most statements read none.
+        let (source, mut reads) = (self.source, Vec::new());
         for_each_expression(&statement.kind, &mut |expr| {
-            collect_variables(expr, &mut reads)
+            each_variable(expr, &mut |variable| {
+                let text = variable.name.text(source);
+                if starts_with_upper(text, "_CYC600_") && variable.indices.is_empty() {
+                    reads.push(variable);
+                }
+            })
         });
         for variable in reads {
-            let text = variable.name.text(self.source);
-            if !starts_with_upper(text, "_CYC600_") || !variable.indices.is_empty() {
-                continue;
-            }
-            let name = upper(text);
+            let name = upper(variable.name.text(self.source));
             if let Some(Binding::Known {
                 value,
                 origin: Origin::Cycle600 { .. },

@@ -6,7 +6,7 @@
 //! `check`, the syntax pass and the CYCLE600 walk use them to skip the parser
 //! where the tree could not tell them anything.
 
-use std::collections::HashSet;
+use crate::hash::HashSet;
 
 use crate::span::Span;
 use crate::syntax::block::{block_number_digits, parse_block_number, parse_skip};

@@ -76,6 +76,18 @@ pub fn upper(text: &[u8]) -> String {
     }
 }
 
+/// `text` in upper case, written into `buffer` over what it held: a name
+/// to look up without making a new string for it.
+pub fn upper_in<'b>(text: &[u8], buffer: &'b mut String) -> &'b str {
+    buffer.clear();
+    match std::str::from_utf8(text) {
+        Ok(text) => buffer.push_str(text),
+        Err(_) => buffer.push_str(&String::from_utf8_lossy(text)),
+    }
+    buffer.make_ascii_uppercase();
+    buffer
+}
+
 /// Whether `text` starts with the upper-case `prefix` in any case, as the
 /// control compares names; without making the name's upper case.
 pub fn starts_with_upper(text: &[u8], prefix: &str) -> bool {

@@ -82,21 +82,12 @@ impl Check for Checker {
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {
         for jump in &self.jumps {
-            let mut rows = file.labels().rows(&jump.name);
-            let Some(first) = rows.next() else {
-                continue;
-            };
             // The search as the control makes it: forward to the first
             // label after the jump's block; back to the nearest at or
             // before it.
-            let (mut after, mut before) = (None, None);
-            for row in std::iter::once(first).chain(rows) {
-                if row > jump.row {
-                    after = after.or(Some(row));
-                } else {
-                    before = Some(row);
-                }
-            }
+            let labels = file.labels();
+            let after = labels.landing(&jump.name, GotoKind::Forward, jump.row);
+            let before = labels.landing(&jump.name, GotoKind::Backward, jump.row);
             let (Some(after), Some(before)) = (after, before) else {
                 continue;
             };

@@ -96,7 +96,7 @@ impl Check for Checker {
             kind,
         } in &self.jumps
         {
-            if !file.model().target_rows(target).is_empty() {
+            if file.model().has_target(target) {
                 continue;
             }
             let wanted = target.to_string();

@@ -1,13 +1,15 @@
 //! N005 `undefined-variable`: Finds a user variable read before any DEF, PROC parameter or assignment defines it.
 
-use std::collections::{HashMap, HashSet};
+use crate::hash::{HashMap, HashSet};
 
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::span::Span;
 use crate::suggest::Nearest;
-use crate::syntax::tree::{Expr, ExprKind, Initializer, Statement, StatementKind, TypeKind};
+use crate::syntax::tree::{
+    upper_in, Expr, ExprKind, Initializer, Statement, StatementKind, TypeKind,
+};
 
 pub static RULE: RuleInfo = RuleInfo {
     code: "N005",
@@ -54,6 +56,8 @@ pub struct Checker {
     /// An AXIS variable is among them.
     axis_variables: bool,
     reported: HashSet<String>,
+    /// Where a name is made upper case to be looked up.
+    name_buffer: String,
 }
 
 /// Names that read like user variables but are the language's own: the
@@ -121,60 +125,67 @@ impl Check for Checker {
     fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
         let statement = at.statement;
         let axes = axis_value(file.source, statement, &self.defined, self.axis_variables);
+        // Names are made upper case in one buffer; a string is made only for
+        // a name defined or reported.
+        let mut buffer = std::mem::take(&mut self.name_buffer);
         for variable in at.reads() {
             if axes.contains(&variable.name.span) {
                 continue;
             }
-            let name = upper(file.source, variable.name.span);
-            if is_user_name(&name)
-                && !self.defined.contains_key(&name)
-                && !file.environment.defines(&name)
-                && !PREDEFINED.contains(&name.as_str())
-                && !is_global_r_parameter(&name)
-                && !is_axis_identifier(&name)
-                && self.reported.insert(name.clone())
+            let name = upper_in(variable.name.text(file.source), &mut buffer);
+            if is_user_name(name)
+                && !self.defined.contains_key(name)
+                && !file.environment.defines(name)
+                && !PREDEFINED.contains(&name)
+                && !is_global_r_parameter(name)
+                && !is_axis_identifier(name)
+                && !self.reported.contains(name)
             {
+                self.reported.insert(name.to_string());
                 let given = file.environment.given;
-                out.push(self.undefined(name, variable.name.span, given));
+                out.push(self.undefined(name.to_string(), variable.name.span, given));
             }
         }
+        let text = |span: Span| span.of(file.source);
         match &statement.kind {
             StatementKind::Def(def) => {
                 for d in &def.variables {
-                    self.define(upper(file.source, d.name.span), Some(def.data_type.kind));
+                    let name = upper_in(text(d.name.span), &mut buffer);
+                    self.define(name, Some(def.data_type.kind));
                 }
             }
             StatementKind::Proc(proc) => {
                 for p in &proc.parameters {
-                    let name = upper(file.source, p.declarator.name.span);
+                    let name = upper_in(text(p.declarator.name.span), &mut buffer);
                     self.define(name, Some(p.data_type.kind));
                 }
             }
             StatementKind::Assign(assign) => {
-                self.define(upper(file.source, assign.target.name.span), None)
+                self.define(upper_in(text(assign.target.name.span), &mut buffer), None)
             }
             StatementKind::For { variable, .. } => {
-                self.define(upper(file.source, variable.span), None)
+                self.define(upper_in(text(variable.span), &mut buffer), None)
             }
             _ => {}
         }
+        self.name_buffer = buffer;
     }
 }
 
 impl Checker {
     /// `name` is defined from here on; a type given later (a DEF after an
     /// assignment) is kept.
-    fn define(&mut self, name: String, data_type: Option<TypeKind>) {
+    fn define(&mut self, name: &str, data_type: Option<TypeKind>) {
         self.axis_variables |= data_type == Some(TypeKind::Axis);
-        match self.defined.get_mut(&name) {
+        match self.defined.get_mut(name) {
             Some(known) => {
                 if data_type.is_some() {
                     *known = data_type;
                 }
             }
             None => {
-                self.nearest.push(&name);
-                self.defined.insert(name, data_type);
+                self.nearest.push(name);
+                self.defined.insert(name.to_string(), data_type);
             }
         }
     }
