@@ -1,12 +1,12 @@
 //! The state of the walk at one point of the program: variables, the arrays
 //! a measuring cycle has filled, and the active swivel rotation.
 
-use crate::hash::{HashMap, HashSet};
 use std::cell::Cell;
 use std::sync::Arc;
 
 use nalgebra::Rotation3;
 
+use crate::hash::{HashMap, HashSet};
 use crate::semantic::eval::Lookup;
 use crate::semantic::frames::FrameSeen;
 use crate::semantic::value::{Binding, Origin, Unknown, Value};

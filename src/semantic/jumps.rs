@@ -4,7 +4,6 @@
 //! answer. Computed targets (`GOTOF "L"<<I`) name nothing here.
 
 use crate::hash::HashSet;
-
 use crate::syntax::tree::{upper, GotoKind, GotoTarget};
 
 /// What a jump names: a label (upper case) or a block number (`N100` and

@@ -8,11 +8,11 @@
 //! the others are kept in the line table (up to `syntax::line_table::KEPT_TREES`
 //! bytes of source), so no pass parses a line twice.
 
-use crate::hash::HashSet;
 use std::cell::OnceCell;
 use std::sync::{Arc, OnceLock};
 
 use crate::diagnostic::Diagnostic;
+use crate::hash::HashSet;
 use crate::semantic::addresses::{self, Address};
 use crate::semantic::blocks::{BlockMatcher, Blocks};
 use crate::semantic::jumps::{self, Target};

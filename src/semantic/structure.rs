@@ -3,10 +3,10 @@
 //! lines sinuprep wrote itself (a `; sinuprep:` call and the blocks emitted
 //! for it). Labels, block pairs and STOPRE lines are the model's.
 
-use crate::hash::{HashMap, HashSet};
 use std::borrow::Cow;
 use std::sync::Arc;
 
+use crate::hash::{HashMap, HashSet};
 use crate::semantic::blocks::opener;
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::env::Writers;

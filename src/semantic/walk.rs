@@ -11,11 +11,11 @@
 //! Not followed: computed jump targets (`GOTOF "L"<<I`), and what a user
 //! subprogram does beyond possibly changing R parameters.
 
-use crate::hash::{HashMap, HashSet};
 use std::borrow::Cow;
 use std::sync::Arc;
 
 use crate::diagnostic::Diagnostic;
+use crate::hash::{HashMap, HashSet};
 use crate::rotation::{self, Kind, Sequence};
 use crate::semantic::calls::{call_kind, CallKind};
 use crate::semantic::cycle600::{self, Bound, Evaluation};

@@ -7,7 +7,6 @@
 //! where the tree could not tell them anything.
 
 use crate::hash::HashSet;
-
 use crate::span::Span;
 use crate::syntax::block::{block_number_digits, parse_block_number, parse_skip};
 use crate::syntax::lexer::{is_blank, parse_blank, Input};

@@ -1,8 +1,7 @@
 //! N005 `undefined-variable`: Finds a user variable read before any DEF, PROC parameter or assignment defines it.
 
-use crate::hash::{HashMap, HashSet};
-
 use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
+use crate::hash::{HashMap, HashSet};
 use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::span::Span;
