@@ -41,6 +41,10 @@ self_cell!(
     }
 );
 
+/// The size from which a text's old analysis is freed beside the edit
+/// ([`Held::edit`]): below it, the analysis frees faster than a thread starts.
+const FREED_ASIDE: usize = 256 * 1024;
+
 /// What the requests about one version of a document read.
 pub struct Analysis<'a, 't> {
     pub text: &'t Text,
@@ -123,9 +127,17 @@ impl Held {
         self.borrow_owner()
     }
 
-    /// Edits the text; the analysis of the old text is dropped.
+    /// Edits the text; the analysis of the old text is dropped, on a thread
+    /// of its own for a large text: freeing the trees of 75,000 lines takes
+    /// some 7 ms, which the findings of the edit would otherwise wait for.
     pub fn edit(self, edit: impl FnOnce(&mut Text)) -> Self {
-        let mut text = self.into_owner();
+        let mut text = if self.text().bytes().len() < FREED_ASIDE {
+            self.into_owner()
+        } else {
+            let text = self.text().clone();
+            std::thread::spawn(move || drop(self));
+            text
+        };
         edit(&mut text);
         Self::open(text)
     }
@@ -249,6 +261,23 @@ END:",
         assert!(!clean.contains(&"N001"), "{clean:?}");
         let held = held.edit(|text| text.replace(6..15, b"GOTOF NOWHERE"));
         assert_eq!(held.text().bytes(), b"G1 X1\nGOTOF NOWHERE\nEND:\nM30\n");
+        let (_, edited) = findings(&held, &settings);
+        assert!(edited.contains(&"N001"), "{edited:?}");
+    }
+
+    /// A large text's old analysis is freed aside; the edit is the same.
+    #[test]
+    fn a_large_text_is_edited_as_a_small_one() {
+        let settings = Settings::default();
+        let mut source = b"GOTOF END\n".to_vec();
+        source.extend(b"G1 X1 Y2 Z3 F100\n".repeat(FREED_ASIDE / 10));
+        source.extend(b"END:\nM30\n");
+        let held = Held::open(Text::new(source.clone()));
+        let (_, clean) = findings(&held, &settings);
+        assert!(!clean.contains(&"N001"), "{clean:?}");
+        let held = held.edit(|text| text.replace(6..9, b"NOWHERE"));
+        source.splice(6..9, *b"NOWHERE");
+        assert_eq!(held.text().bytes(), &source[..]);
         let (_, edited) = findings(&held, &settings);
         assert!(edited.contains(&"N001"), "{edited:?}");
     }
