@@ -12,8 +12,8 @@ use crate::cli::input::{binary, read, skip_binary, Bytes, Found};
 use crate::cli::output::{in_place_target, report_to, write_atomically};
 use crate::cli::parallel;
 use crate::cli::render::{
-    github, human, json_end, json_failed, json_file, printable, short, FileReport, Located, Sarif,
-    Statistics, JSON_BETWEEN, JSON_START,
+    printable, Emitter, GithubEmitter, HumanEmitter, JsonEmitter, Program, SarifEmitter,
+    ShortEmitter, StatisticsEmitter,
 };
 use crate::cli::walk::{files, Files};
 use crate::cli::ExitStatus;
@@ -24,11 +24,10 @@ use crate::lint;
 use crate::semantic::swivels::OnMachine;
 use crate::workspace::{Given, Workspace};
 
-/// One file's outcome, its report rendered in the worker: the source is
-/// dropped as soon as its file is checked, and the report printed as soon
-/// as the files before it are.
+/// One file's outcome, beside its part of the report (made in the worker:
+/// the source is dropped as soon as its file is checked, and the part
+/// written as soon as the files before it are).
 struct Checked {
-    report: Report,
     fails: bool,
     counts: Counts,
     unchecked: Unchecked,
@@ -47,7 +46,6 @@ impl Checked {
     /// is an error, as in every command ([`skip_binary`]).
     fn skipped(notes: String) -> Self {
         Self {
-            report: Report::Text(String::new()),
             fails: false,
             counts: Counts::default(),
             unchecked: Unchecked::default(),
@@ -217,16 +215,6 @@ impl Counts {
     }
 }
 
-enum Report {
-    /// The file's part of the output: of a per-file format (short, GitHub,
-    /// human), or its entries of the JSON document's `files`.
-    Text(String),
-    /// SARIF's results of its programs: the log is written at the end.
-    Sarif(Sarif),
-    /// `--statistics`: its findings counted by rule, printed at the end.
-    Statistics(Statistics),
-}
-
 pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let workspace = Workspace::new(Given {
         follow_links: args.walk.follow_links,
@@ -243,24 +231,56 @@ pub fn run(args: &CheckArgs) -> Result<ExitStatus, CliError> {
     let walk = args.walk.walk(&workspace);
     let mut files = files(&named, &walk);
     let colour = args.output_file.is_none() && crate::cli::colour(std::io::stdout().is_terminal());
+    // The format is chosen here, once: the rest of the run is each
+    // emitter's own code.
+    let (files, workspace) = (&mut files, &workspace);
+    match args.format {
+        format if args.statistics => {
+            let emitter = StatisticsEmitter {
+                json: format == Format::Json,
+                unsafe_fixes: args.unsafe_fixes,
+                for_people: matches!(format, Format::Human | Format::Short),
+            };
+            report_through(&emitter, args, files, workspace)
+        }
+        Format::Human => report_through(&HumanEmitter { colour }, args, files, workspace),
+        Format::Short => report_through(&ShortEmitter, args, files, workspace),
+        Format::Github => report_through(&GithubEmitter, args, files, workspace),
+        Format::Json => report_through(&JsonEmitter, args, files, workspace),
+        Format::Sarif => report_through(&SarifEmitter, args, files, workspace),
+    }
+}
+
+/// The report of the files through `emitter`, to the output file or stdout.
+fn report_through(
+    emitter: &impl Emitter,
+    args: &CheckArgs,
+    files: &mut Files,
+    workspace: &Workspace,
+) -> Result<ExitStatus, CliError> {
     report_to(args.output_file.as_deref(), |out| {
-        report(args, &mut files, colour, &workspace, out)
+        report(args, files, emitter, workspace, out)
     })
 }
 
 /// Checks the files as the walk finds them, writing the report to `out` as
 /// each file is done and the summary to stderr.
-fn report(
+fn report<E: Emitter>(
     args: &CheckArgs,
     walk: &mut Files,
-    colour: bool,
+    emitter: &E,
     workspace: &Workspace,
     out: &mut dyn Write,
 ) -> Result<ExitStatus, CliError> {
     // A failure comes with the name of the file, for the JSON and SARIF reports.
     let work = |found: Result<Found, CliError>| match found {
-        Ok(found) => check_file(&found, args, colour, workspace)
-            .map_err(|error| (shown_name(&found.path, args), error)),
+        Ok(found) => {
+            let mut part = E::Part::default();
+            let add = &mut |program: Program| emitter.add(&mut part, program);
+            let checked = check_file(&found, args, emitter.names_archives(), workspace, add)
+                .map_err(|error| (shown_name(&found.path, args), error))?;
+            Ok((checked, part))
+        }
         Err(error) => Err((walked_name(&error), error)),
     };
 
@@ -270,15 +290,13 @@ fn report(
     let mut counts = Counts::default();
     let mut unchecked = Unchecked::default();
     let mut files = 0;
-    let mut held = Held::default();
+    let mut kept = E::Kept::default();
     let mut told = analysis::MachinesTold::default();
-    if args.format == Format::Json && !args.statistics {
-        out.write_all(JSON_START.as_bytes())?;
-    }
-    // Each file's report printed as soon as it and those before it are done.
+    emitter.start(out)?;
+    // Each file's part written as soon as it and those before it are done.
     parallel::each(&mut *walk, work, |result| {
         match result {
-            Ok(mut checked) => {
+            Ok((mut checked, part)) => {
                 if let Some(notes) = &checked.notes {
                     tell!("{notes}");
                 }
@@ -288,9 +306,15 @@ fn report(
                         counts.add(Counts::of(&diagnostics));
                         fails |= diagnostics.iter().any(|d| d.severity == Severity::Error);
                         for (name, source, diagnostics) in on.by_file(&diagnostics) {
-                            let mut report = Report::new(args);
-                            report.add(args, colour, None, name, source, diagnostics);
-                            print(report, args.format, out, &mut held)?;
+                            let mut part = E::Part::default();
+                            let program = Program {
+                                name,
+                                path: None,
+                                source,
+                                diagnostics,
+                            };
+                            emitter.add(&mut part, program);
+                            emitter.write(&mut kept, part, out)?;
                             files += 1;
                         }
                     }
@@ -298,12 +322,12 @@ fn report(
                 fails |= checked.fails;
                 counts.add(checked.counts);
                 unchecked.add(checked.unchecked);
-                print(checked.report, args.format, out, &mut held)?;
+                emitter.write(&mut kept, part, out)?;
                 files += checked.files;
             }
             Err((name, error)) => {
                 failed += 1;
-                held.failed(args, &name, &error, out)?;
+                emitter.failed(&mut kept, &name, &error_chain(&error), out)?;
                 tellln!("{:?}", miette::Report::new(error));
             }
         }
@@ -312,18 +336,13 @@ fn report(
     // What ended the walk early (unreadable settings, a folder without
     // programs) is the run's error, once the reports begun are complete.
     let walked = walk.end();
-    match args.format {
-        _ if args.statistics => out.write_all(held.statistics.render(args.format).as_bytes())?,
-        Format::Json => out.write_all(json_end(held.entries).as_bytes())?,
-        Format::Sarif => out.write_all(held.sarif.finish().as_bytes())?,
-        Format::Short | Format::Github | Format::Human => {}
-    }
+    emitter.end(kept, out)?;
     walked?;
     // For people: on stderr, so that what tools read stays the findings.
     // Nothing checked after an error: the error says it all ("no findings
     // in 0 files" read as a pass).
     let summary = !(failed > 0 && files == 0);
-    if matches!(args.format, Format::Human | Format::Short) && !args.quiet && summary {
+    if emitter.for_people() && !args.quiet && summary {
         match failed {
             0 => tellln!("{}", counts.summary(files)),
             1 => tellln!("{}; 1 file could not be checked", counts.summary(files)),
@@ -343,11 +362,26 @@ fn report(
     })
 }
 
+/// An error and its causes, on one line.
+fn error_chain(error: &CliError) -> String {
+    let mut text = error.to_string();
+    let mut cause = std::error::Error::source(error);
+    while let Some(inner) = cause {
+        text.push_str(&format!(": {inner}"));
+        cause = inner.source();
+    }
+    text
+}
+
+/// Checks one file, handing each of its programs' findings to `add`;
+/// `names_archives`: an archive's programs are reported as the archive
+/// ([`Emitter::names_archives`]).
 fn check_file(
     found: &Found,
     args: &CheckArgs,
-    colour: bool,
+    names_archives: bool,
     workspace: &Workspace,
+    add: &mut dyn FnMut(Program),
 ) -> Result<Checked, CliError> {
     let path = found.path.as_path();
     // Refused before anything is read: stdin, a FIFO, a device.
@@ -385,7 +419,6 @@ fn check_file(
         }
     }
     let mut checked = Checked {
-        report: Report::new(args),
         fails: false,
         counts: Counts::default(),
         unchecked: Unchecked::default(),
@@ -425,10 +458,8 @@ fn check_file(
         checked.fails |= diagnostics.iter().any(|d| {
             d.severity == Severity::Error || (deny_warnings && d.severity == Severity::Warning)
         });
-        // GitHub and code scanning open the file named: the archive.
-        let ci = matches!(args.format, Format::Github | Format::Sarif);
         let (name, source, diagnostics) = match member {
-            Some(member) if ci => (
+            Some(member) if names_archives => (
                 opened.name.clone(),
                 &file.bytes[..],
                 opened.in_archive(&file.bytes, member, diagnostics),
@@ -436,97 +467,17 @@ fn check_file(
             _ => (name, source, diagnostics),
         };
         // The file's own path, which SARIF names by its bytes.
-        let path = (member.is_none() || ci)
+        let path = (member.is_none() || names_archives)
             .then_some(named.as_path())
             .filter(|path| *path != Path::new("-"));
-        checked
-            .report
-            .add(args, colour, path, &name, source, diagnostics);
+        add(Program {
+            name: &name,
+            path,
+            source,
+            diagnostics,
+        });
     }
     Ok(checked)
-}
-
-impl Report {
-    fn new(args: &CheckArgs) -> Self {
-        match args.format {
-            _ if args.statistics => Report::Statistics(Statistics::default()),
-            Format::Sarif => Report::Sarif(Sarif::default()),
-            _ => Report::Text(String::new()),
-        }
-    }
-
-    /// Adds the findings of the program `name`, whose bytes are `source`
-    /// (at `path` if it is a file's own).
-    fn add(
-        &mut self,
-        args: &CheckArgs,
-        colour: bool,
-        path: Option<&Path>,
-        name: &str,
-        source: &[u8],
-        diagnostics: Vec<Diagnostic>,
-    ) {
-        let file_report = FileReport {
-            name,
-            source,
-            diagnostics: &diagnostics,
-        };
-        match self {
-            Report::Text(text) => match args.format {
-                Format::Short => short(&file_report, text),
-                Format::Github => github(&file_report, text),
-                Format::Json => {
-                    if !text.is_empty() {
-                        text.push_str(JSON_BETWEEN);
-                    }
-                    text.push_str(&json_file(&Located::new(name, source, diagnostics)));
-                }
-                _ => human(&file_report, colour, text),
-            },
-            Report::Sarif(sarif) => sarif.add(&Located::new(name, source, diagnostics).at(path)),
-            Report::Statistics(statistics) => statistics.add(&diagnostics, args.unsafe_fixes),
-        }
-    }
-}
-
-/// What is written at the end of a run, from every file's part, and how
-/// many entries of the JSON document's `files` were written.
-#[derive(Default)]
-struct Held {
-    sarif: Sarif,
-    statistics: Statistics,
-    entries: usize,
-}
-
-impl Held {
-    /// A file that could not be checked (`name`, as reports call it): an
-    /// entry of the JSON and SARIF reports as well as the error on stderr.
-    fn failed(
-        &mut self,
-        args: &CheckArgs,
-        name: &str,
-        error: &CliError,
-        out: &mut dyn Write,
-    ) -> Result<(), CliError> {
-        let mut text = error.to_string();
-        let mut cause = std::error::Error::source(error);
-        while let Some(inner) = cause {
-            text.push_str(&format!(": {inner}"));
-            cause = inner.source();
-        }
-        match args.format {
-            _ if args.statistics => {}
-            Format::Json => print(
-                Report::Text(json_failed(name, &text)),
-                args.format,
-                out,
-                self,
-            )?,
-            Format::Sarif => self.sarif.failed(name, &text),
-            Format::Short | Format::Github | Format::Human => {}
-        }
-        Ok(())
-    }
 }
 
 /// The name a file that could not be checked goes by in the reports.
@@ -544,31 +495,6 @@ fn walked_name(error: &CliError) -> String {
         CliError::Read { path, .. } | CliError::IsDirectory { path } => path.display().to_string(),
         other => other.to_string(),
     }
-}
-
-/// Writes a file's report to `out`, or keeps SARIF's results and the
-/// statistics for what is written at the end.
-fn print(
-    report: Report,
-    format: Format,
-    out: &mut dyn Write,
-    held: &mut Held,
-) -> Result<(), CliError> {
-    match report {
-        // An archive without programs, a binary file skipped: no entry.
-        Report::Text(part) if part.is_empty() => {}
-        Report::Text(part) if format == Format::Json => {
-            if held.entries > 0 {
-                out.write_all(JSON_BETWEEN.as_bytes())?;
-            }
-            out.write_all(part.as_bytes())?;
-            held.entries += 1;
-        }
-        Report::Text(part) => out.write_all(part.as_bytes())?,
-        Report::Sarif(part) => held.sarif.extend(part),
-        Report::Statistics(part) => held.statistics.extend(part),
-    }
-    Ok(())
 }
 
 /// What `check` reports of each program of `opened`, in their order.

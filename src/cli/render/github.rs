@@ -1,5 +1,6 @@
 //! GitHub Actions workflow commands: annotations on the changed files.
 
+use super::emitter::{write_text, Emitter, Program};
 use super::{printable, FileReport, COLUMNS};
 use crate::diagnostic::Severity;
 use crate::span::LineIndex;
@@ -26,6 +27,26 @@ pub fn github(report: &FileReport, out: &mut String) {
             escape_property(&format!("{} {}", d.code(), d.name())),
             escape_data(&d.message)
         ));
+    }
+}
+
+/// `check --output-format github`.
+pub struct GithubEmitter;
+
+impl Emitter for GithubEmitter {
+    type Part = String;
+    type Kept = ();
+
+    fn add(&self, part: &mut String, program: Program) {
+        github(&program.file_report(), part);
+    }
+
+    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_text(part, out)
+    }
+
+    fn names_archives(&self) -> bool {
+        true
     }
 }
 

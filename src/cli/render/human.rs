@@ -7,6 +7,7 @@ use miette::{
     SourceCode, SourceSpan, SpanContents,
 };
 
+use super::emitter::{write_text, Emitter, Program};
 use super::{printable, FileReport, COLUMNS};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::{line_end, line_start, next_line_start, previous_line_end, LineIndex, Span};
@@ -32,6 +33,28 @@ pub fn human(report: &FileReport, colour: bool, out: &mut String) {
         // Rendering into a String cannot fail.
         let _ = handler.render_report(out, &shown);
         out.push('\n');
+    }
+}
+
+/// `check --output-format human`, in colour where `colour` says.
+pub struct HumanEmitter {
+    pub colour: bool,
+}
+
+impl Emitter for HumanEmitter {
+    type Part = String;
+    type Kept = ();
+
+    fn add(&self, part: &mut String, program: Program) {
+        human(&program.file_report(), self.colour, part);
+    }
+
+    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_text(part, out)
+    }
+
+    fn for_people(&self) -> bool {
+        true
     }
 }
 

@@ -1,6 +1,9 @@
 //! For tools: one JSON document, written a file at a time (schema in
 //! docs/guide.md).
 
+use std::io::{self, Write};
+
+use super::emitter::{Emitter, Program};
 use super::{indented, Located};
 use crate::diagnostic::{Applicability, Fix, Severity};
 use crate::span::Position;
@@ -59,15 +62,64 @@ impl<'a> JsonFix<'a> {
     }
 }
 
-/// The JSON document for all files, written a file at a time: this, then
-/// each file's [`json_file`] (after [`JSON_BETWEEN`] from the second on),
-/// then [`json_end`]. The text is what one pretty-printed document would be.
-pub const JSON_START: &str = "{\n  \"version\": 1,\n  \"files\": [";
-pub const JSON_BETWEEN: &str = ",";
+/// `check --output-format json`: one document, written a file at a time
+/// (its text is what one pretty-printed document would be).
+pub struct JsonEmitter;
+
+impl Emitter for JsonEmitter {
+    /// The file's entries of `files`.
+    type Part = String;
+    /// The entries written so far.
+    type Kept = usize;
+
+    fn start(&self, out: &mut dyn Write) -> io::Result<()> {
+        out.write_all(b"{\n  \"version\": 1,\n  \"files\": [")
+    }
+
+    fn add(&self, part: &mut String, program: Program) {
+        if !part.is_empty() {
+            part.push_str(BETWEEN);
+        }
+        let located = Located::new(program.name, program.source, program.diagnostics);
+        part.push_str(&file(&located));
+    }
+
+    fn write(&self, entries: &mut usize, part: String, out: &mut dyn Write) -> io::Result<()> {
+        // An archive without programs, a binary file skipped: no entry.
+        if part.is_empty() {
+            return Ok(());
+        }
+        if *entries > 0 {
+            out.write_all(BETWEEN.as_bytes())?;
+        }
+        *entries += 1;
+        out.write_all(part.as_bytes())
+    }
+
+    fn failed(
+        &self,
+        entries: &mut usize,
+        name: &str,
+        error: &str,
+        out: &mut dyn Write,
+    ) -> io::Result<()> {
+        self.write(entries, failed(name, error), out)
+    }
+
+    fn end(&self, entries: usize, out: &mut dyn Write) -> io::Result<()> {
+        out.write_all(match entries {
+            0 => b"]\n}\n",
+            _ => b"\n  ]\n}\n",
+        })
+    }
+}
+
+/// What separates two entries of `files`.
+const BETWEEN: &str = ",";
 
 /// One file's entry of the JSON document, indented for its place there,
 /// preceded by its line break.
-pub fn json_file(report: &Located) -> String {
+fn file(report: &Located) -> String {
     let diagnostics = report
         .each()
         .map(|(d, start, end)| JsonDiagnostic {
@@ -94,7 +146,7 @@ pub fn json_file(report: &Located) -> String {
 /// (not found, unreadable, a directory, a damaged archive): its path, the
 /// error, and no diagnostics, so that a reader of `files` sees it without
 /// reading stderr.
-pub fn json_failed(name: &str, error: &str) -> String {
+fn failed(name: &str, error: &str) -> String {
     #[derive(serde::Serialize)]
     struct Failed<'a> {
         path: &'a str,
@@ -107,12 +159,4 @@ pub fn json_failed(name: &str, error: &str) -> String {
         diagnostics: [],
     };
     indented(&serde_json::to_string_pretty(&file).unwrap_or_default(), 4)
-}
-
-/// The end of the JSON document, after `files` entries.
-pub fn json_end(files: usize) -> &'static str {
-    match files {
-        0 => "]\n}\n",
-        _ => "\n  ]\n}\n",
-    }
 }

@@ -2,9 +2,11 @@
 //! file a format: for people (miette, [`human`]), for problem matchers
 //! ([`short`]), for GitHub Actions ([`github`]), for tools ([`json`],
 //! schema in docs/guide.md; [`sarif`], SARIF 2.1.0) and the findings
-//! counted per rule ([`statistics`]). What they share is here: the columns
-//! they count, a file's findings and their positions.
+//! counted per rule ([`statistics`]); each with the [`Emitter`] `check`
+//! writes its report through. What they share is here: the columns they
+//! count, a file's findings and their positions.
 
+mod emitter;
 mod github;
 mod human;
 mod json;
@@ -12,12 +14,13 @@ mod sarif;
 mod short;
 mod statistics;
 
-pub use github::github;
-pub use human::human;
-pub use json::{json_end, json_failed, json_file, JSON_BETWEEN, JSON_START};
-pub use sarif::Sarif;
-pub use short::short;
-pub use statistics::Statistics;
+pub use emitter::{Emitter, Program};
+pub use github::GithubEmitter;
+pub use human::{human, HumanEmitter};
+pub use json::JsonEmitter;
+pub use sarif::{Sarif, SarifEmitter};
+pub use short::{short, ShortEmitter};
+pub use statistics::StatisticsEmitter;
 
 use crate::diagnostic::Diagnostic;
 use crate::span::{ColumnUnit, LineIndex, Position};

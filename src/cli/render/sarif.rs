@@ -1,9 +1,52 @@
 //! SARIF 2.1.0, for code-scanning tools.
 
+use super::emitter::{Emitter, Program};
 use super::{indented, Located};
 use crate::diagnostic::{Applicability, Severity};
 use crate::lint::reference::{self, REPOSITORY};
 use crate::uri::{uri, Uri};
+
+/// `check --output-format sarif`: the log, written at the end.
+pub struct SarifEmitter;
+
+impl Emitter for SarifEmitter {
+    type Part = Sarif;
+    type Kept = Sarif;
+
+    fn add(&self, part: &mut Sarif, program: Program) {
+        let located = Located::new(program.name, program.source, program.diagnostics);
+        part.add(&located.at(program.path));
+    }
+
+    fn write(
+        &self,
+        log: &mut Sarif,
+        part: Sarif,
+        _: &mut dyn std::io::Write,
+    ) -> std::io::Result<()> {
+        log.extend(part);
+        Ok(())
+    }
+
+    fn failed(
+        &self,
+        log: &mut Sarif,
+        name: &str,
+        error: &str,
+        _: &mut dyn std::io::Write,
+    ) -> std::io::Result<()> {
+        log.failed(name, error);
+        Ok(())
+    }
+
+    fn end(&self, log: Sarif, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        out.write_all(log.finish().as_bytes())
+    }
+
+    fn names_archives(&self) -> bool {
+        true
+    }
+}
 
 /// SARIF 2.1.0: one run, the rules that were found, one result each. The
 /// results of each file are rendered as it comes ([`Sarif::add`]); the log

@@ -1,6 +1,7 @@
 //! `path:line:col: severity[CODE] message`, one line a finding, for
 //! problem matchers and people reading a terminal's width.
 
+use super::emitter::{write_text, Emitter, Program};
 use super::{printable, FileReport, COLUMNS};
 use crate::span::{LineIndex, Position};
 
@@ -16,5 +17,25 @@ pub fn short(report: &FileReport, out: &mut String) {
             diagnostic.code(),
             diagnostic.message
         ));
+    }
+}
+
+/// `check --output-format short`.
+pub struct ShortEmitter;
+
+impl Emitter for ShortEmitter {
+    type Part = String;
+    type Kept = ();
+
+    fn add(&self, part: &mut String, program: Program) {
+        short(&program.file_report(), part);
+    }
+
+    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_text(part, out)
+    }
+
+    fn for_people(&self) -> bool {
+        true
     }
 }

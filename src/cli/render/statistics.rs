@@ -1,6 +1,49 @@
 //! Findings counted per rule (`check --statistics`), as ruff counts them.
 
+use super::emitter::{Emitter, Program};
 use crate::diagnostic::{Applicability, Diagnostic};
+
+/// `check --statistics`: the findings counted per rule, as JSON (`json`)
+/// or as a table, written at the end.
+pub struct StatisticsEmitter {
+    pub json: bool,
+    /// Whether `--fix --unsafe-fixes` is given: unsafe fixes count as fixes.
+    pub unsafe_fixes: bool,
+    /// The table is read at a terminal (the human and short formats).
+    pub for_people: bool,
+}
+
+impl Emitter for StatisticsEmitter {
+    type Part = Statistics;
+    type Kept = Statistics;
+
+    fn add(&self, part: &mut Statistics, program: Program) {
+        part.add(&program.diagnostics, self.unsafe_fixes);
+    }
+
+    fn write(
+        &self,
+        total: &mut Statistics,
+        part: Statistics,
+        _: &mut dyn std::io::Write,
+    ) -> std::io::Result<()> {
+        total.extend(part);
+        Ok(())
+    }
+
+    fn end(&self, total: Statistics, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        let text = if self.json {
+            total.json()
+        } else {
+            total.text()
+        };
+        out.write_all(text.as_bytes())
+    }
+
+    fn for_people(&self) -> bool {
+        self.for_people
+    }
+}
 
 /// Findings per rule (`check --statistics`), summed over a run.
 #[derive(Default)]
@@ -78,14 +121,6 @@ impl Statistics {
             ));
         }
         out
-    }
-
-    /// The table in `format`: JSON for `json`, text for the others.
-    pub fn render(&self, format: crate::cli::args::Format) -> String {
-        match format {
-            crate::cli::args::Format::Json => self.json(),
-            _ => self.text(),
-        }
     }
 
     /// A JSON array of `{code, name, count, fixable}`, as ruff's.
