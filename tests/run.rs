@@ -703,6 +703,43 @@ ONE: G0 X10\nGOTOF END\nTWO: G0 X20\nGOTOF END\nOTHER: G0 X30\nEND: M30\n"
     );
 }
 
+/// `check` on a machine reports the limits the dry run finds passed, as
+/// `run` does (K007: exit 1), on the blocks that pass them; a suppression
+/// on the block and `--ignore` take them away as any finding's.
+#[test]
+fn check_on_a_machine_reports_the_limits_passed() {
+    let dir = scratch("check_limits");
+    let data = dir.join("MACHINE.INI");
+    std::fs::write(&data, machine("N36110 $MA_POS_LIMIT_PLUS[AX1]=50\n")).expect("write");
+    let program = dir.join("P.MPF");
+    std::fs::write(
+        &program,
+        "G0 X0 Y0 Z0\nG60 G0 X100\nG0 X0\nG0 X70 ; sinuprep: ignore K007\nM30\n",
+    )
+    .expect("write");
+    let (data, program) = (
+        data.to_str().expect("utf-8"),
+        program.to_str().expect("utf-8"),
+    );
+    let check = |more: &[&str]| {
+        let mut args = vec!["check", "--machine", data, "--format", "short", program];
+        args.extend(more);
+        command(&args, b"")
+    };
+    let found = check(&[]);
+    assert_exit(&found, 1);
+    let text = stdout(&found);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 1, "{text}");
+    assert!(
+        lines[0].ends_with(":2:1: error[K007] machine axis X1 reaches 100, 50 past its plus software limit 50 (MD36110 $MA_POS_LIMIT_PLUS): the control stops here with alarm 10720"),
+        "{text}"
+    );
+    let ignored = check(&["--ignore", "K007"]);
+    assert_exit(&ignored, 0);
+    assert_eq!(stdout(&ignored), "");
+}
+
 /// The command: JSON as docs/guide.md gives it, the blocks streamed, SARIF,
 /// and exit 1 where a limit is passed.
 #[test]

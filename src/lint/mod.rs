@@ -24,7 +24,9 @@ use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::dispatch::Checkers;
 use crate::lint::rule::{FileContext, LineView, PlainLine};
 use crate::lint::suppression::Suppressions;
-use crate::registry::{cycle600_rewritable, invalid_swivel_data, unreadable_machine_data};
+use crate::registry::{
+    axis_beyond_limit, cycle600_rewritable, invalid_swivel_data, unreadable_machine_data,
+};
 use crate::semantic::environment::holds_machine_data;
 use crate::semantic::machine::{Machine, Reading};
 use crate::semantic::model::ModelBuilder;
@@ -341,6 +343,18 @@ fn analyze_stopping<'src>(
     }
     if let Some(on) = &settings.machine {
         found.extend(swivel_findings(model, analysis.as_ref(), on));
+        // The dry run on the machine: the software limits the program's own
+        // blocks pass, as `sinuprep run` finds them.
+        if selection.enables(axis_beyond_limit::RULE.code) && !file.definition_file {
+            if stopped() {
+                return None;
+            }
+            found.extend(crate::run::on_machine::limit_findings(
+                model,
+                on,
+                &settings.supplied,
+            ));
+        }
     }
     if selection.enables(unreadable_machine_data::RULE.code)
         && (file.definition_file || holds_machine_data(source))

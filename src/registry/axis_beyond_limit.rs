@@ -1,6 +1,6 @@
-//! K007 `axis-beyond-limit`: found by the dry run (`run::execute`,
-//! `sinuprep run`, and the language server where a machine is set); this
-//! file documents it.
+//! K007 `axis-beyond-limit`: found by the dry run (`run::execute`:
+//! `sinuprep run`, and `check` and the language server where a machine is
+//! given, `run::on_machine`); this file documents it.
 
 use crate::diagnostic::{RuleInfo, Severity};
 
@@ -18,8 +18,9 @@ ATRANS, ROT, AROT) and the tool's length (`$TC_DP3` of the active T and D along 
 axis). An arc is checked at its ends and at the points where an axis turns inside it; a straight
 move (G0 as G1) reaches its furthest points at its ends, except under TRAORI, where the linear
 axes follow curves as the tool turns and the way is sampled and its extremes searched. A modulo
-rotary axis (MD30310) has no limits. The language server shows the finding too, where its settings
-name the machine.
+rotary axis (MD30310) has no limits. `sinuprep check` and the language server report it too where
+a machine is given (`--machine`, `machine` in sinuprep.toml): for a program up to 10 MB, run on its
+own (the subprograms it calls are `sinuprep run`'s to follow).
 
 The limits and every other datum come from the machine's own data; an axis without them is not
 checked, and the run says so.

@@ -13,6 +13,7 @@ pub mod arc;
 pub mod contour;
 mod execute;
 pub mod frame;
+pub mod on_machine;
 pub mod plot;
 pub mod profile;
 pub(crate) mod programs;

@@ -1,11 +1,10 @@
 //! `textDocument/publishDiagnostics` and `textDocument/diagnostic`: the document's
-//! findings and, on the machine the settings name, the software limits its
-//! dry run passes (K007); at most [`MOST_SHOWN_FINDINGS`] of them.
+//! findings (on the machine the settings name, the software limits its dry
+//! run passes among them, K007); at most [`MOST_SHOWN_FINDINGS`] of them.
 
 use lsp_types as lsp;
 
 use super::{Snapshot, MOST_SHOWN_FINDINGS};
-use crate::diagnostic::Diagnostic;
 use crate::lsp::convert;
 
 impl Snapshot<'_, '_> {
@@ -22,13 +21,7 @@ impl Snapshot<'_, '_> {
                 ..lsp::Diagnostic::default()
             }];
         }
-        // The analysis's findings, and the limits the dry run finds passed
-        // where the settings name a machine, in the order of the text.
-        let limits = self.limit_findings();
-        let mut findings: Vec<&Diagnostic> = self.findings.iter().chain(&limits).collect();
-        if !limits.is_empty() {
-            findings.sort_by_key(|found| found.span.start);
-        }
+        let findings = self.findings;
         let mut shown: Vec<lsp::Diagnostic> = findings
             .iter()
             .take(MOST_SHOWN_FINDINGS)

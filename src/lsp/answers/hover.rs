@@ -4,6 +4,7 @@
 
 use lsp_types as lsp;
 
+use crate::run::on_machine::run_on;
 use crate::semantic::uses::{Namespace, Role, Use};
 use crate::semantic::{cycle800, walk};
 use crate::span::ColumnUnit;
@@ -79,7 +80,8 @@ impl Snapshot<'_, '_> {
     fn run_hover(&self, row: usize) -> Option<lsp::Hover> {
         let machine = self.settings.machine.as_deref()?;
         let mut passed: Option<(Vec<Option<f64>>, f64)> = None;
-        let (setup, report) = self.dry_run(|end| {
+        let supplied = &self.settings.supplied;
+        let (setup, report) = run_on(self.model, machine, supplied, |end| {
             if passed.is_none() && end.program.is_none() && end.line == row + 1 {
                 passed = Some((end.mcs.to_vec(), end.t_s));
             }

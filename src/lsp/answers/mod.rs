@@ -17,7 +17,6 @@ use super::convert;
 mod code_actions;
 mod definition;
 mod diagnostics;
-mod dry_run;
 mod folding;
 mod hover;
 mod inlay_hints;
