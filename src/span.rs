@@ -177,7 +177,7 @@ pub(crate) fn char_len(lead: u8, utf8: bool) -> usize {
 // same rule; the functions below find a line's bounds around an offset.
 
 /// The line ends (LF, CRLF, lone CR; a CRLF counted at its LF) within `range`.
-fn line_ends(source: &[u8], range: Range<usize>) -> usize {
+pub(crate) fn line_ends(source: &[u8], range: Range<usize>) -> usize {
     let bytes = &source[range.clone()];
     let line_feeds = memchr::memchr_iter(b'\n', bytes).count();
     let lone_returns = memchr::memchr_iter(b'\r', bytes)

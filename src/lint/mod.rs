@@ -33,7 +33,6 @@ use crate::semantic::model::ModelBuilder;
 use crate::semantic::swivels::{self, OnMachine};
 pub use crate::semantic::walk::Stop;
 use crate::semantic::{analyze, Analysis, CallSite, Environment, Heads, Model, Supplied};
-use crate::span::LineIndex;
 use crate::syntax::plain::{scanned_lines_with, PlainScanner, Scanned};
 use crate::syntax::tree::LineKind;
 use crate::syntax::ProgramKind;
@@ -376,11 +375,10 @@ fn analyze_stopping<'src>(
         );
     }
 
-    let index = LineIndex::new(source);
     let mut kept: Vec<Diagnostic> = found
         .into_iter()
         .filter(|d| selection.enables(d.code()) && d.severity >= selection.severity_min)
-        .filter(|d| !suppressions.covers(d, || index.position(d.span.start).row - 1))
+        .filter(|d| !suppressions.covers(d, || model.lines.row_of(d.span.start)))
         .collect();
     if selection.enables("N099") && Severity::Info >= selection.severity_min {
         kept.extend(suppressions.unused(source, |code| selection.enables(code)));

@@ -92,6 +92,19 @@ impl<'src> Lines<'src> {
         self.plain[index / 64] & (1 << (index % 64)) != 0
     }
 
+    /// The line (0-based) `offset` is on, counted as [`crate::span::LineIndex`]
+    /// counts rows: an offset on a line's ending is that line's, the end of
+    /// a file that ends with a line break is on the line after.
+    pub fn row_of(&self, offset: usize) -> usize {
+        let offset = offset.min(self.source.len());
+        let stride = self
+            .strided_starts
+            .partition_point(|&start| start <= offset)
+            .saturating_sub(1);
+        let start = self.strided_starts.get(stride).copied().unwrap_or(0);
+        stride * STRIDE + crate::span::line_ends(self.source, start..offset)
+    }
+
     /// Line `index` (0-based): its content and ending, read on from the
     /// nearest line before it whose start is known.
     pub fn raw(&self, index: usize) -> RawLine {
@@ -268,6 +281,20 @@ mod tests {
     use super::*;
 
     proptest::proptest! {
+        /// The line an offset is on is the row the reports' line index
+        /// gives, at every offset, line endings and the file's end included.
+        #[test]
+        fn an_offset_is_on_the_row_the_line_index_gives(
+            text in "[a ;\r\n]{0,80}|([aN1 X;]{0,6}(\r\n|\n|\r)){0,120}[a ]{0,3}",
+        ) {
+            let source = text.as_bytes();
+            let lines = Lines::new(source);
+            let index = crate::span::LineIndex::new(source);
+            for offset in 0..=source.len() + 1 {
+                proptest::prop_assert_eq!(lines.row_of(offset), index.position(offset).row - 1);
+            }
+        }
+
         /// The line table keeps every 32nd line's start; the lines it gives
         /// back, in any order, are the ones splitting the source gives,
         /// endings included, and so are their plain bits.
