@@ -1,6 +1,6 @@
 //! The line pass's hand-out: which of the selected rules read each kind of
-//! thing ([`Sees`]), and each line's headers, statements, calls, jumps and
-//! blocks given to those alone.
+//! thing ([`Sees`]), and each line's headers, statements, declarations,
+//! calls, jumps and blocks given to those alone.
 
 use crate::diagnostic::Diagnostic;
 use crate::lint::rule::{BlockAt, CallAt, Check, FileContext, JumpAt, Sees, StatementAt};
@@ -15,6 +15,7 @@ pub(crate) struct Checkers {
     blocks: Vec<usize>,
     statements: Vec<usize>,
     calls: Vec<usize>,
+    declarations: Vec<usize>,
     jumps: Vec<usize>,
     plain_lines: Vec<usize>,
 }
@@ -31,6 +32,7 @@ impl Checkers {
             blocks: seeing(Sees::BLOCKS),
             statements: seeing(Sees::STATEMENTS),
             calls: seeing(Sees::CALLS),
+            declarations: seeing(Sees::DECLARATIONS),
             jumps: seeing(Sees::JUMPS),
             plain_lines: seeing(Sees::PLAIN_LINES),
             all,
@@ -78,6 +80,15 @@ impl Checkers {
             };
             for &n in &self.statements {
                 self.all[n].statement(file, &at, out);
+            }
+            let declares = matches!(
+                statement.kind,
+                StatementKind::Def(_) | StatementKind::Proc(_) | StatementKind::Extern { .. }
+            );
+            if declares {
+                for &n in &self.declarations {
+                    self.all[n].declaration(file, &at, out);
+                }
             }
             if let StatementKind::Call(call) = &statement.kind {
                 let at = CallAt { row, call };

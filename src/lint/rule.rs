@@ -114,6 +114,9 @@ impl Sees {
     pub const PLAIN_LINES: Sees = Sees(16);
     /// Calls with arguments (`CYCLE800(...)`, [`Check::call`]).
     pub const CALLS: Sees = Sees(32);
+    /// The DEF, PROC and EXTERN statements ([`Check::declaration`]): what a
+    /// rule of names reads, without being handed every other statement.
+    pub const DECLARATIONS: Sees = Sees(64);
     /// The file's end only ([`Check::finish`]).
     pub const NOTHING: Sees = Sees(0);
 
@@ -186,6 +189,8 @@ pub trait Check {
     fn block(&mut self, _file: &FileContext, _at: &BlockAt, _out: &mut Vec<Diagnostic>) {}
     /// Each statement of a block read into a tree, in order.
     fn statement(&mut self, _file: &FileContext, _at: &StatementAt, _out: &mut Vec<Diagnostic>) {}
+    /// Each DEF, PROC or EXTERN statement, after [`Check::statement`].
+    fn declaration(&mut self, _file: &FileContext, _at: &StatementAt, _out: &mut Vec<Diagnostic>) {}
     /// Each call with arguments, after its statement.
     fn call(&mut self, _file: &FileContext, _at: &CallAt, _out: &mut Vec<Diagnostic>) {}
     /// Each jump, after the statement that holds it.

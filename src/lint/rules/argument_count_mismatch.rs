@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::diagnostic::{Diagnostic, RuleInfo, Severity};
-use crate::lint::rule::{Check, FileContext, Sees, StatementAt};
+use crate::lint::rule::{CallAt, Check, FileContext, Sees, StatementAt};
 use crate::lint::rules::support::*;
 use crate::semantic::calls::is_predefined;
 use crate::span::Span;
@@ -41,10 +41,10 @@ pub struct Checker {
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::STATEMENTS
+        Sees::DECLARATIONS | Sees::CALLS
     }
 
-    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+    fn declaration(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
         let source = file.source;
         match &at.statement.kind {
             StatementKind::Proc(proc) => {
@@ -55,14 +55,15 @@ impl Check for Checker {
                 let count = parameters.map_or(0, |p| parameter_count(p.of(source)));
                 self.declared.insert(upper(source, name.span), count);
             }
-            StatementKind::Call(call) => {
-                let name = upper(source, call.name.span);
-                let arguments = &call.arguments;
-                self.calls
-                    .push((name, arguments.items.len(), arguments.span));
-            }
             _ => {}
         }
+    }
+
+    fn call(&mut self, file: &FileContext, at: &CallAt, _out: &mut Vec<Diagnostic>) {
+        let name = upper(file.source, at.call.name.span);
+        let arguments = &at.call.arguments;
+        self.calls
+            .push((name, arguments.items.len(), arguments.span));
     }
 
     fn finish(&mut self, file: &FileContext, out: &mut Vec<Diagnostic>) {

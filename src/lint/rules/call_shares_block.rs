@@ -51,10 +51,10 @@ fn beside_a_call(source: &[u8], statement: &Statement) -> bool {
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::STATEMENTS | Sees::BLOCKS
+        Sees::DECLARATIONS | Sees::BLOCKS
     }
 
-    fn statement(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
+    fn declaration(&mut self, file: &FileContext, at: &StatementAt, _out: &mut Vec<Diagnostic>) {
         match &at.statement.kind {
             StatementKind::Extern { name, .. } => {
                 self.declared.insert(upper(file.source, name.span));

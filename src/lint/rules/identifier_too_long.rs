@@ -32,7 +32,7 @@ const LIMIT: usize = 31;
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::STATEMENTS | Sees::BLOCKS
+        Sees::DECLARATIONS | Sees::BLOCKS
     }
 
     /// A label is its block's.
@@ -40,7 +40,7 @@ impl Check for Checker {
         check(at.block.label.iter().map(|l| l.span), out);
     }
 
-    fn statement(&mut self, _file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+    fn declaration(&mut self, _file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
         match &at.statement.kind {
             StatementKind::Def(def) => check(def.variables.iter().map(|d| d.name.span), out),
             StatementKind::Proc(proc) => {

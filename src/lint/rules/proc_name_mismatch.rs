@@ -52,7 +52,7 @@ fn program_name(text: &str) -> &str {
 
 impl Check for Checker {
     fn sees(&self) -> Sees {
-        Sees::HEADERS | Sees::STATEMENTS
+        Sees::HEADERS | Sees::DECLARATIONS
     }
 
     fn header(&mut self, file: &FileContext, _row: usize, name: Span) {
@@ -60,7 +60,7 @@ impl Check for Checker {
         self.proc_seen = false;
     }
 
-    fn statement(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
+    fn declaration(&mut self, file: &FileContext, at: &StatementAt, out: &mut Vec<Diagnostic>) {
         let StatementKind::Proc(proc) = &at.statement.kind else {
             return;
         };
