@@ -703,6 +703,49 @@ ONE: G0 X10\nGOTOF END\nTWO: G0 X20\nGOTOF END\nOTHER: G0 X30\nEND: M30\n"
     );
 }
 
+/// The system variables of the channel's state read what the program has
+/// set: the tool it changed in (`$P_TOOLNO`), the one it programmed last
+/// (`$P_TOOLP`), the cutting edge (`$P_TOOL`) and the settable frame
+/// (`$P_UIFRNUM`: 0 for G500, 1 to 4 for G54 to G57, 5 to 99 for G505 to
+/// G599). Before the program sets them they hold the control's state when
+/// it starts, which is not known offline: named, not guessed.
+#[test]
+fn the_channel_state_the_program_set_is_read_back() {
+    let program = "G0 X0 Y0 Z0\nG0 X=$P_TOOLNO\nT3 M6\nG0 X=$P_TOOLNO*10 Y=$P_TOOLP\n\
+T5 D2\nG0 X=$P_TOOLNO Y=$P_TOOLP*10+$P_TOOL\nG55\nG0 X=$P_UIFRNUM*10\n\
+G505\nG0 X=$P_UIFRNUM\nG500\nG0 X=$P_UIFRNUM\nM30\n";
+    let mut ends: Vec<(usize, Option<f64>, Option<f64>)> = Vec::new();
+    let report = dry_run_each(&machine(""), program, |end| {
+        ends.push((end.line, end.mcs[0], end.mcs[1]));
+    });
+    let at = |line: usize| {
+        let found = ends.iter().find(|(l, _, _)| *l == line);
+        found.map(|&(_, x, y)| (x, y))
+    };
+    assert_eq!(at(4), Some((Some(30.0), Some(3.0))));
+    assert_eq!(at(6), Some((Some(3.0), Some(52.0))));
+    assert_eq!(at(8).map(|(x, _)| x), Some(Some(20.0)));
+    assert_eq!(at(10).map(|(x, _)| x), Some(Some(5.0)));
+    assert_eq!(at(12).map(|(x, _)| x), Some(Some(0.0)));
+    // Before the program changes a tool, the one in the spindle is unknown.
+    let told: Vec<(usize, &str)> = report
+        .unknown
+        .iter()
+        .map(|u| (u.line, u.why.as_str()))
+        .collect();
+    assert!(
+        told.iter()
+            .any(|(line, why)| *line == 2 && why.contains("$P_TOOLNO")),
+        "{told:?}"
+    );
+    assert!(
+        !told
+            .iter()
+            .any(|(line, why)| *line > 2 && why.contains("unknown offline: `$P_")),
+        "{told:?}"
+    );
+}
+
 /// `check` on a machine reports the limits the dry run finds passed, as
 /// `run` does (K007: exit 1), on the blocks that pass them; a suppression
 /// on the block and `--ignore` take them away as any finding's.

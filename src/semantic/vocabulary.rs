@@ -342,6 +342,7 @@ pub const WORDS: &[Word] = &[
     // System variables (List Manual System Variables).
     entry("R", SystemVariable, "An R parameter, R0 to R99 by default: an arithmetic variable of type REAL that every program of the channel shares.", FUNDAMENTALS),
     entry("$P_UIFR", SystemVariable, "The settable frames of the data management by number: 0 is G500, 1 to 4 are G54 to G57, 5 onwards G505 to G599.", SYSTEM_VARIABLES),
+    entry("$P_UIFRNUM", SystemVariable, "The number of the active settable frame, as `$P_UIFR` numbers them: 0 for G500, 1 to 4 for G54 to G57, 5 onwards for G505 to G599.", SYSTEM_VARIABLES),
     entry("$P_PFRAME", SystemVariable, "The programmable frame, the one TRANS, ROT, SCALE, MIRROR and their A-forms write.", SYSTEM_VARIABLES),
     entry("$P_ACTFRAME", SystemVariable, "The whole frame in force, the chain of system, basic, settable and programmable frames.", SYSTEM_VARIABLES),
     entry("$P_SETFRAME", SystemVariable, "The system frame in force for setting actual values (preset) and scratching.", SYSTEM_VARIABLES),

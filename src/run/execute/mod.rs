@@ -185,13 +185,31 @@ impl Content {
 
 struct Variables<'a> {
     local: HashMap<String, Value>,
+    /// The channel's state as system variables read it, once the program
+    /// has set it itself (`$P_TOOLNO` after a tool change): before, the
+    /// control's state when the program starts is not known offline.
+    channel: HashMap<&'static str, f64>,
     known: &'a Supplied,
+}
+
+impl Variables<'_> {
+    /// The program sets what the system variable `name` reads: `None`, a
+    /// state the run cannot name (M6 with no T programmed).
+    fn set_channel(&mut self, name: &'static str, value: Option<u32>) {
+        match value {
+            Some(value) => self.channel.insert(name, f64::from(value)),
+            None => self.channel.remove(name),
+        };
+    }
 }
 
 impl Lookup for Variables<'_> {
     fn variable(&self, key: &str) -> Result<Value, Missing> {
         if let Some(value) = self.local.get(key) {
             return Ok(value.clone());
+        }
+        if let Some(&value) = self.channel.get(key) {
+            return Ok(Value::Number(value));
         }
         match self.known.get(key) {
             Some((value, _)) => Ok(value.clone()),
@@ -439,6 +457,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             options,
             variables: Variables {
                 local: HashMap::new(),
+                channel: HashMap::new(),
                 known,
             },
             openers,
@@ -1032,8 +1051,16 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                         40..=42 => self.select_compensation(row, span, *g as u32),
                         450 | 451 => self.compensation.corners(*g as u32),
                         53 | 153 => suppress_frames = true,
-                        500 => self.settable = Frame::identity(self.setup.axes.len()),
-                        54..=57 | 505..=599 => self.select_frame(row, span, *g as u32),
+                        500 => {
+                            self.settable = Frame::identity(self.setup.axes.len());
+                            self.variables.set_channel("$P_UIFRNUM", Some(0));
+                        }
+                        54..=57 | 505..=599 => {
+                            self.select_frame(row, span, *g as u32);
+                            let number = if *g < 500.0 { *g - 53.0 } else { *g - 500.0 };
+                            self.variables
+                                .set_channel("$P_UIFRNUM", Some(number as u32));
+                        }
                         60 => self.modes.exact_stop = true,
                         64 | 641..=645 => self.modes.exact_stop = false,
                         70 | 700 | 71 | 710 => self.units(row, span, *g as u32),
@@ -1054,6 +1081,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "T" => match value {
                     Ok(t) if *t >= 0.0 && t.fract() == 0.0 => {
                         self.preselected = Some(*t as u32);
+                        self.variables.set_channel("$P_TOOLP", self.preselected);
                         match self.setup.tool_change_with_m6 {
                             Some(false) => changes_tool = true,
                             Some(true) => {}
@@ -1069,6 +1097,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 "D" => match value {
                     Ok(d) if *d >= 0.0 && d.fract() == 0.0 => {
                         self.edge = Some(*d as u32);
+                        self.variables.set_channel("$P_TOOL", self.edge);
                         if *d > 0.0
                             && self.tool.is_none()
                             && !changes_tool
@@ -1204,8 +1233,10 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
         if changes_tool {
             self.tool = self.preselected;
+            self.variables.set_channel("$P_TOOLNO", self.tool);
             if let (Some(d), true) = (self.setup.default_edge, self.tool.is_some()) {
                 self.edge = Some(d);
+                self.variables.set_channel("$P_TOOL", self.edge);
             }
         }
         if dwell {
