@@ -7,9 +7,10 @@
 //! bytes -> syntax (lossless lines, spans, trees)
 //!       -> semantic (the model: names, labels, blocks, modal state; the CYCLE600 walk)
 //!       -> rotation, kinematics, measure (pure math: no spans, no syntax)
-//!       -> emit, format (text edits) and lint (findings with their fixes)
-//!       -> document (one program's analysis, over the settings `workspace` resolved)
 //!       -> run (the program executed offline on the machine: positions, limits, time)
+//!       -> emit, format (text edits) and lint (findings with their fixes; on a machine,
+//!          the limits the dry run finds passed among them)
+//!       -> document (one program's analysis, over the settings `workspace` resolved)
 //!       -> report (a call and a swivel in words, for either front end)
 //!       -> cli, lsp (the command line prints it, the server answers from it)
 //! ```
