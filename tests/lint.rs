@@ -352,6 +352,32 @@ fn skipping_plain_lines_changes_no_finding() {
     }
 }
 
+/// The editor's analysis makes the CYCLE600 walk beside the line pass, on a
+/// model of its own: its findings are the command line's, on every fixture
+/// and every program of the outside corpus.
+#[test]
+fn the_walk_beside_the_line_pass_changes_no_finding() {
+    let mut files = support::files_below(&support::repo().join("tests/fixtures"));
+    files.extend(support::corpus_files());
+    let settings = lint::Settings {
+        heads: Some(sample_heads()),
+        ..lint::Settings::default()
+    };
+    let never = || false;
+    let mut walked = 0;
+    for path in &files {
+        let source = std::fs::read(path).expect("readable");
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        let kind = program_kind(Some(name), &source);
+        let here = lint::analyze_program(&source, name, kind, &settings);
+        let aside = lint::analyze_program_until(&source, name, kind, &settings, &never);
+        let aside = aside.expect("never stopped");
+        assert_eq!(here.findings, aside.findings, "{name}");
+        walked += usize::from(here.walk.is_some());
+    }
+    assert!(walked > 20, "{walked} programs walked");
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
 

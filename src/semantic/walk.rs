@@ -110,7 +110,7 @@ pub fn run(model: &Model, supplied: &Supplied, heads: Option<&Heads>) -> (Analys
 
 /// Asked now and then during an analysis whether to stop (its result is no
 /// longer wanted): `true` stops it.
-pub type Stop<'a> = &'a dyn Fn() -> bool;
+pub type Stop<'a> = &'a (dyn Fn() -> bool + Sync);
 
 /// Lines walked between two questions to a [`Stop`].
 const LINES_BETWEEN_STOPS: usize = 4096;
@@ -1262,6 +1262,7 @@ impl<'a> Walker<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 
     const CALL: &str =
         "CYCLE600(0, \"UFK600\", 0, 57, 0, 0, 0, R1000, 45, 60, 0, 0, 0, 1, 39, 0, 0, 0)\n";
@@ -1290,26 +1291,24 @@ mod tests {
     fn a_walk_stops_when_told() {
         let program = nested_loops(3, 20_000);
         let model = Model::of(program.as_bytes());
-        let asked = std::cell::Cell::new(0);
+        // Counted atomically: a stop may be asked from any thread (`Stop`).
+        let asked = AtomicUsize::new(0);
         let never = || {
-            asked.set(asked.get() + 1);
+            asked.fetch_add(1, Relaxed);
             false
         };
         let walked = analyze_until(&model, &Supplied::default(), None, &never);
         assert_eq!(walked.map(|a| a.calls.len()), Some(1));
         // 20,007 lines, every one walked: a question every 4,096 of them,
         // in each walk (twice: the call's `_SW_REC` is learned in the first).
-        let questions = asked.get();
+        let questions = asked.load(Relaxed);
         assert_eq!(questions, 10);
         for stop_at in 1..=questions {
-            asked.set(0);
-            let told = || {
-                asked.set(asked.get() + 1);
-                asked.get() == stop_at
-            };
+            asked.store(0, Relaxed);
+            let told = || asked.fetch_add(1, Relaxed) + 1 == stop_at;
             let stopped = analyze_until(&model, &Supplied::default(), None, &told);
             assert!(stopped.is_none(), "told at question {stop_at}");
-            assert_eq!(asked.get(), stop_at, "no question after the stop");
+            assert_eq!(asked.load(Relaxed), stop_at, "no question after the stop");
         }
     }
 
