@@ -83,7 +83,39 @@ pub trait Emitter: Sync {
     }
 }
 
-/// Writes a format's text part as it is.
-pub(super) fn write_text(part: String, out: &mut dyn Write) -> io::Result<()> {
-    out.write_all(part.as_bytes())
+/// A format whose part of a file is text, written as it comes (human,
+/// short, GitHub): all it says is how a program's findings read.
+pub trait TextFormat: Sync {
+    fn render(&self, report: &FileReport, out: &mut String);
+
+    /// As [`Emitter::names_archives`].
+    fn names_archives(&self) -> bool {
+        false
+    }
+
+    /// As [`Emitter::for_people`].
+    fn for_people(&self) -> bool {
+        false
+    }
+}
+
+impl<T: TextFormat> Emitter for T {
+    type Part = String;
+    type Kept = ();
+
+    fn add(&self, part: &mut String, program: Program) {
+        self.render(&program.file_report(), part);
+    }
+
+    fn write(&self, _: &mut (), part: String, out: &mut dyn Write) -> io::Result<()> {
+        out.write_all(part.as_bytes())
+    }
+
+    fn names_archives(&self) -> bool {
+        TextFormat::names_archives(self)
+    }
+
+    fn for_people(&self) -> bool {
+        TextFormat::for_people(self)
+    }
 }

@@ -1,6 +1,6 @@
 //! GitHub Actions workflow commands: annotations on the changed files.
 
-use super::emitter::{write_text, Emitter, Program};
+use super::emitter::TextFormat;
 use super::{printable, FileReport, COLUMNS};
 use crate::diagnostic::Severity;
 use crate::span::LineIndex;
@@ -33,16 +33,9 @@ pub fn github(report: &FileReport, out: &mut String) {
 /// `check --output-format github`.
 pub struct GithubEmitter;
 
-impl Emitter for GithubEmitter {
-    type Part = String;
-    type Kept = ();
-
-    fn add(&self, part: &mut String, program: Program) {
-        github(&program.file_report(), part);
-    }
-
-    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
-        write_text(part, out)
+impl TextFormat for GithubEmitter {
+    fn render(&self, report: &FileReport, out: &mut String) {
+        github(report, out);
     }
 
     fn names_archives(&self) -> bool {

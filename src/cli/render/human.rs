@@ -7,7 +7,7 @@ use miette::{
     SourceCode, SourceSpan, SpanContents,
 };
 
-use super::emitter::{write_text, Emitter, Program};
+use super::emitter::TextFormat;
 use super::{printable, FileReport, COLUMNS};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::span::{line_end, line_start, next_line_start, previous_line_end, LineIndex, Span};
@@ -41,16 +41,9 @@ pub struct HumanEmitter {
     pub colour: bool,
 }
 
-impl Emitter for HumanEmitter {
-    type Part = String;
-    type Kept = ();
-
-    fn add(&self, part: &mut String, program: Program) {
-        human(&program.file_report(), self.colour, part);
-    }
-
-    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
-        write_text(part, out)
+impl TextFormat for HumanEmitter {
+    fn render(&self, report: &FileReport, out: &mut String) {
+        human(report, self.colour, out);
     }
 
     fn for_people(&self) -> bool {

@@ -1,7 +1,7 @@
 //! `path:line:col: severity[CODE] message`, one line a finding, for
 //! problem matchers and people reading a terminal's width.
 
-use super::emitter::{write_text, Emitter, Program};
+use super::emitter::TextFormat;
 use super::{printable, FileReport, COLUMNS};
 use crate::span::{LineIndex, Position};
 
@@ -23,16 +23,9 @@ pub fn short(report: &FileReport, out: &mut String) {
 /// `check --output-format short`.
 pub struct ShortEmitter;
 
-impl Emitter for ShortEmitter {
-    type Part = String;
-    type Kept = ();
-
-    fn add(&self, part: &mut String, program: Program) {
-        short(&program.file_report(), part);
-    }
-
-    fn write(&self, _: &mut (), part: String, out: &mut dyn std::io::Write) -> std::io::Result<()> {
-        write_text(part, out)
+impl TextFormat for ShortEmitter {
+    fn render(&self, report: &FileReport, out: &mut String) {
+        short(report, out);
     }
 
     fn for_people(&self) -> bool {
