@@ -274,6 +274,10 @@ struct Point {
     branch: usize,
 }
 
+/// A table position and what was measured there (`None`: no solution the
+/// selection takes).
+type Measured = (f64, Option<Point>);
+
 /// Events closer than this (degrees) are one.
 const MERGE: f64 = 1e-10;
 /// How far inside an interval its ends are measured (degrees): a value at
@@ -363,11 +367,17 @@ impl<'a> Problem<'a> {
             .is_none_or(|(min, max)| (min - 1e-9..=max + 1e-9).contains(&gamma));
         // Within the tolerance of a limit counts as at it, and is put there
         // (as the head's positions are): a position printed never lies
-        // beyond a limit it is said to keep.
+        // beyond a limit it is said to keep. Elsewhere `t` stays as
+        // measured: `(low + t) - low` may differ from it in the last bit,
+        // and a best point beside a jump (the head's axis taking another
+        // turn) would then be solved on the jump's other side.
+        let mut t = t;
         if let Some((min, max)) = axis.limits.filter(|_| table_within_limits) {
-            gamma = gamma.clamp(min, max);
+            if !(min..=max).contains(&gamma) {
+                gamma = gamma.clamp(min, max);
+                t = gamma - self.low;
+            }
         }
-        let t = gamma - self.low;
         // The table turns the workpiece by R(u, x)⁻¹: the head makes R(u, x) · R_req.
         let turned = from_axis_angle(self.u, self.x0 + t) * self.request.rotation;
         let head = solve_toward(
@@ -484,13 +494,13 @@ impl<'a> Problem<'a> {
         hirth: Option<Hirth>,
     ) -> Option<Point> {
         // Each event measured on either side, or once where nothing jumps.
-        let sides: Vec<[Option<Point>; 2]> = events
+        let sides: Vec<[Measured; 2]> = events
             .iter()
             .map(|event| {
                 if event.jump && event.t > 0.0 && event.t < self.width {
-                    [-NUDGE, NUDGE].map(|nudge| self.measure(event.t + nudge, goal, select))
+                    [-NUDGE, NUDGE].map(|nudge| self.measured(event.t + nudge, goal, select))
                 } else {
-                    [self.measure(event.t, goal, select); 2]
+                    [self.measured(event.t, goal, select); 2]
                 }
             })
             .collect();
@@ -526,15 +536,20 @@ impl<'a> Problem<'a> {
         best
     }
 
+    /// [`Self::measure`] at `t`, with `t` kept where nothing is found.
+    fn measured(&self, t: f64, goal: Goal, select: Select) -> Measured {
+        (t, self.measure(t, goal, select))
+    }
+
     /// The lowest point between `left` and `right` (measured just inside
     /// two neighbouring events): an end, or where two axes' parts are equal.
-    /// Where the solution measured changes between the ends (an event the
-    /// closed forms placed a rounding away), the change is found and each
-    /// side searched on its own, once.
+    /// Where the solution measured changes between the ends, or is found at
+    /// one end only (an event the closed forms placed a rounding away, near
+    /// a pole), the change is found and each side searched on its own, once.
     fn interval(
         &self,
-        left: Option<Point>,
-        right: Option<Point>,
+        (left_t, left): Measured,
+        (right_t, right): Measured,
         goal: Goal,
         select: Select,
         split_again: bool,
@@ -556,9 +571,8 @@ impl<'a> Problem<'a> {
                 }
             }
             (Some(_), _) | (_, Some(_)) if split_again => {
-                let (a, b) = (left.or(right)?, right.or(left)?);
                 let key = |p: &Option<Point>| p.map(|p| p.branch);
-                let (mut lo, mut hi) = (a.t.min(b.t), a.t.max(b.t));
+                let (mut lo, mut hi) = (left_t, right_t);
                 let left_key = key(&left);
                 for _ in 0..60 {
                     let mid = (lo + hi) / 2.0;
@@ -571,8 +585,12 @@ impl<'a> Problem<'a> {
                         hi = mid;
                     }
                 }
-                consider(self.interval(left, self.measure(lo, goal, select), goal, select, false));
-                consider(self.interval(self.measure(hi, goal, select), right, goal, select, false));
+                let (lo, hi) = (
+                    self.measured(lo, goal, select),
+                    self.measured(hi, goal, select),
+                );
+                consider(self.interval((left_t, left), lo, goal, select, false));
+                consider(self.interval(hi, (right_t, right), goal, select, false));
             }
             _ => {}
         }
@@ -691,10 +709,13 @@ impl<'a> Problem<'a> {
                         (target, false),
                     ]);
                 }
-                // Placed nearest the current position, a turn further at
-                // `min` and `max + 1e-9`.
+                // Placed nearest the current position; the turns it may
+                // take change where a position comes within the
+                // tolerance of a limit (`min - 1e-9`, a turn below the
+                // position `min - 1e-9 + 360`, which may be its turn's
+                // nearest) or leaves it (`max + 1e-9`).
                 Some((min, max)) => at[..3].copy_from_slice(&[
-                    (min, true),
+                    (min - 1e-9, true),
                     (max + 1e-9, true),
                     (current + 180.0, true),
                 ]),
