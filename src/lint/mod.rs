@@ -23,6 +23,7 @@ use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::dispatch::Checkers;
 use crate::lint::rule::{FileContext, LineView, PlainLine};
+use crate::lint::rules::undefined_variable;
 use crate::lint::suppression::Suppressions;
 use crate::registry::{
     axis_beyond_limit, cycle600_rewritable, invalid_swivel_data, unreadable_machine_data,
@@ -429,7 +430,14 @@ fn analyze_stopping<'src>(
     kept.sort_by_key(|d| (d.span.start, d.code()));
     one_finding_per_cause(&mut kept, &model.labels);
     if !model.macro_uses.is_empty() {
-        kept.retain(|d| !crate::syntax::macros::only_names_the_macro(d, &model.macro_uses));
+        // An undefined name (N005) on exactly a macro's name: the spans of an
+        // expansion map to the macro's name, which the rule took for a
+        // variable. Findings on what an expansion is (an ENDIF too many,
+        // N004) stay.
+        kept.retain(|d| {
+            !(d.is(&undefined_variable::RULE)
+                && crate::syntax::macros::is_a_macro_name(d.span, &model.macro_uses))
+        });
         for diagnostic in &mut kept {
             crate::syntax::macros::annotate(diagnostic, &model.macro_uses, source);
         }

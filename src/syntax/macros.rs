@@ -219,17 +219,12 @@ pub fn annotate(diagnostic: &mut Diagnostic, uses: &[Use], source: &[u8]) {
     }
 }
 
-/// Whether `diagnostic` is an undefined name (N005) on exactly a macro's
-/// name as written: the rule reads a name from its span, and the spans of
-/// an expansion map to the macro's name, so it took the macro's name for a
-/// variable the control never reads (it reads the macro's text there).
-/// Findings on what an expansion is (an ENDIF too many, N004) stay.
-pub fn only_names_the_macro(diagnostic: &Diagnostic, uses: &[Use]) -> bool {
-    let span = diagnostic.span;
-    diagnostic.code() == "N005"
-        && uses
-            .binary_search_by(|u| u.span.start.cmp(&span.start))
-            .is_ok_and(|at| uses[at].span == span && !uses[at].recursive)
+/// Whether `span` is exactly a macro's name as written, where the macro
+/// expands: a rule reading a name from its span there reads the macro's
+/// name, which the control never reads (it reads the macro's text).
+pub fn is_a_macro_name(span: Span, uses: &[Use]) -> bool {
+    uses.binary_search_by(|u| u.span.start.cmp(&span.start))
+        .is_ok_and(|at| uses[at].span == span && !uses[at].recursive)
 }
 
 /// Operators written as names: a name after an operand is one of these
