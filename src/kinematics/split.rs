@@ -709,11 +709,10 @@ impl<'a> Problem<'a> {
                         (target, false),
                     ]);
                 }
-                // Placed nearest the current position; the turns it may
-                // take change where a position comes within the
-                // tolerance of a limit (`min - 1e-9`, a turn below the
-                // position `min - 1e-9 + 360`, which may be its turn's
-                // nearest) or leaves it (`max + 1e-9`).
+                // Placed nearest the current position, of its turns
+                // within 1e-9 of the limits: a turn becomes one to take
+                // where it reaches `min - 1e-9` and stops being one past
+                // `max + 1e-9`.
                 Some((min, max)) => at[..3].copy_from_slice(&[
                     (min - 1e-9, true),
                     (max + 1e-9, true),
