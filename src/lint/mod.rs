@@ -23,7 +23,7 @@ use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::dispatch::Checkers;
 use crate::lint::rule::{FileContext, LineView, PlainLine};
-use crate::lint::rules::undefined_variable;
+use crate::lint::rules::{undefined_variable, unused_suppression};
 use crate::lint::suppression::Suppressions;
 use crate::registry::{
     axis_beyond_limit, cycle600_rewritable, invalid_swivel_data, unreadable_machine_data,
@@ -424,7 +424,9 @@ fn analyze_stopping<'src>(
         .filter(|d| selection.enables(d.code()) && d.severity >= selection.severity_min)
         .filter(|d| !suppressions.covers(d, || model.lines.row_of(d.span.start)))
         .collect();
-    if selection.enables("N099") && Severity::Info >= selection.severity_min {
+    if selection.enables(unused_suppression::RULE.code)
+        && unused_suppression::RULE.severity >= selection.severity_min
+    {
         kept.extend(suppressions.unused(source, |code| selection.enables(code)));
     }
     kept.sort_by_key(|d| (d.span.start, d.code()));
