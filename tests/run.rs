@@ -654,6 +654,136 @@ fn what_is_unknown_offline_is_named_with_its_block() {
     assert_eq!(report.axes[0].max, Some(0.0));
 }
 
+/// A run-in program: a pass over the table that jumps back to its start.
+/// `passes`: `None` for the endless original, `Some(n)` for the same pass
+/// written out n times and ended.
+fn run_in(passes: Option<usize>) -> String {
+    let pass = "G1 X100 F6000\nG1 Y50\nG2 X50 Y100 CR=50\nG0 Z5\nG0 X0 Y0 Z0\n";
+    match passes {
+        None => format!("G0 X0 Y0 Z0\nSTART:\n{pass}GOTOB START\n"),
+        Some(n) => format!("G0 X0 Y0 Z0\n{}M30\n", pass.repeat(n)),
+    }
+}
+
+/// A program that comes back to a state it was in runs until it is
+/// stopped: the run ends there, says where and how long a pass takes, and
+/// has found all it ever will (the travel and the violations of the same
+/// passes written out and ended).
+#[test]
+fn a_program_that_comes_back_to_a_state_repeats_it_for_ever() {
+    let data = machine("N36110 $MA_POS_LIMIT_PLUS[AX3]=2\n");
+    let endless = dry_run(&data, &run_in(None));
+    let found = endless.endless.as_ref().expect("endless");
+    assert_eq!((found.line, found.from_line), (2, 8), "{found:?}");
+    assert!(!found.rests_on_unknown, "{:?}", endless.unknown);
+    // One pass: its 7 blocks (the label, five moves, the jump), and the time
+    // of one more pass written out.
+    assert_eq!(found.pass_blocks, 7);
+    let (one, two) = (
+        dry_run(&data, &run_in(Some(1))),
+        dry_run(&data, &run_in(Some(2))),
+    );
+    assert_near(found.pass_s, two.time_s - one.time_s, 1e-9, "a pass");
+    assert!(found.pass_s > 0.0);
+    let written_out = dry_run(&data, &run_in(Some(3)));
+    assert_eq!(endless.axes, written_out.axes);
+    let places = |r: &Report| -> Vec<(String, Side, f64)> {
+        let mut v: Vec<_> = r
+            .violations
+            .iter()
+            .map(|v| (v.axis.clone(), v.side, v.value))
+            .collect();
+        v.dedup();
+        v
+    };
+    assert!(!places(&endless).is_empty());
+    assert_eq!(places(&endless), places(&written_out));
+    // Every way back: LOOP, WHILE 1, a section that calls itself... each
+    // with the same pass.
+    for program in [
+        "G0 X0 Y0 Z0\nLOOP\nG1 X10 F600\nG0 X0\nENDLOOP\n",
+        "G0 X0 Y0 Z0\nWHILE 1\nG1 X10 F600\nG0 X0\nENDWHILE\nM30\n",
+        "G0 X0 Y0 Z0\nN10 G1 X10 F600\nG0 X0\nGOTOB N10\n",
+        "G0 X0 Y0 Z0\nSTART: G1 X10 F600\nG0 X0\nGOTO START\n",
+    ] {
+        let report = dry_run(&data, program);
+        let found = report
+            .endless
+            .as_ref()
+            .unwrap_or_else(|| panic!("{program}"));
+        // G1 at 10 mm/s: 10/10 + 10/2500 s; G0 over 10 mm, too short to
+        // reach 500 mm/s: 2 sqrt(10/2500) s.
+        let pass = 1.0 + 10.0 / 2500.0 + 2.0 * (10.0f64 / 2500.0).sqrt();
+        assert_near(found.pass_s, pass, 1e-9, program);
+    }
+    // A counter that wraps: the state comes back after k passes, not one.
+    for k in 1..=12u32 {
+        let program = format!(
+            "G0 X0 Y0 Z0\nR1=0\nSTART:\nG0 X=R1*10\nR1=R1+1\nIF R1=={k} GOTOF WRAP\nGOTOB START\n\
+WRAP:\nR1=0\nGOTOB START\n"
+        );
+        let report = dry_run(&data, &program);
+        let found = report.endless.as_ref().expect("endless");
+        // Each pass 5 blocks (START to GOTOB), the last 7 (to WRAP's GOTOB).
+        assert_eq!(found.pass_blocks, 5 * u64::from(k) + 2, "k = {k}");
+        assert_eq!(report.axes[0].max, Some(f64::from(k - 1) * 10.0), "k = {k}");
+    }
+    // What the run could not know and took for something is said with it.
+    let guessed = dry_run(
+        &data,
+        "G0 X0 Y0 Z0\nLOOP\nG0 X10\nIF $AA_IM[X]>1000 GOTOF OUT\nENDLOOP\nOUT:\nM30\n",
+    );
+    assert!(guessed.endless.expect("endless").rests_on_unknown);
+}
+
+/// A loop that ends, or that never comes back to a state (an axis that
+/// goes on, a counter that counts on), is never taken for endless.
+#[test]
+fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
+    let data = machine("");
+    for n in [1u32, 2, 3, 7, 64, 65, 1000] {
+        // The positions repeat, the counter does not: n passes, then M30.
+        let counted = dry_run(
+            &data,
+            &format!(
+                "G0 X0 Y0 Z0\nR1=0\nSTART:\nG0 X10\nG0 X0\nR1=R1+1\nIF R1<{n} GOTOB START\nM30\n"
+            ),
+        );
+        assert_eq!(counted.endless, None, "n = {n}");
+        assert_eq!(counted.blocks, 3 + 5 * u64::from(n), "n = {n}");
+        // A subprogram called n times by a section repeated, every level's
+        // state the same but for the repetitions still to come.
+        let repeated = dry_run(
+            &data,
+            &format!("G0 X0 Y0 Z0\nSTART:\nG0 X10\nG0 X0\nREPEAT START P={n}\nM30\n"),
+        );
+        assert_eq!(repeated.endless, None, "n = {n}");
+    }
+    // An axis that moves on at each pass: never the same state; the run
+    // goes on to its block limit, and tells the travel it passes.
+    let options = Options {
+        block_limit: 3000,
+        ..Options::default()
+    };
+    let data = MachineData::read(data.as_bytes());
+    let setup = Setup::of(&data);
+    let model = Model::of(b"G0 X0 Y0 Z0\nSTART:\nG91 G0 X0.1\nG90\nGOTOB START\n");
+    let report = run(
+        &Programs::alone(&model),
+        &setup,
+        &Supplied::default(),
+        &options,
+        |_| {},
+    );
+    assert_eq!(report.endless, None);
+    assert_eq!(report.blocks, 3000);
+    assert!(
+        report.axes[0].max.is_some_and(|x| x > 74.0),
+        "{:?}",
+        report.axes[0]
+    );
+}
+
 /// Loops run as the control runs them, with their counters.
 #[test]
 fn loops_and_jumps_run_as_on_the_control() {

@@ -245,6 +245,7 @@ fn summary(report: &Report, machine: Option<&str>) -> serde_json::Value {
         "unknown": report.unknown,
         "assumptions": report.assumptions,
         "blocks_run": report.blocks,
+        "endless": report.endless,
     })
 }
 
@@ -276,6 +277,9 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
         text.push_str(&format!(", {blocks} not timed"));
     }
     text.push('\n');
+    if let Some(endless) = &report.endless {
+        text.push_str(&endless_text(endless));
+    }
     if !report.tools.is_empty() {
         let tools: Vec<String> = report
             .tools
@@ -318,6 +322,28 @@ fn text(report: &Report, name: &str, machine: Option<&str>) -> String {
         text.push_str(&format!("assumed: {assumption}\n"));
     }
     text
+}
+
+/// What the summary says of a program that runs until stopped.
+fn endless_text(endless: &crate::run::Endless) -> String {
+    let place = match &endless.program {
+        Some(program) => format!("{program}, line {}", endless.line),
+        None => format!("line {}", endless.line),
+    };
+    let blocks = match endless.pass_blocks {
+        1 => "1 block".to_string(),
+        n => format!("{n} blocks"),
+    };
+    let guessed = if endless.rests_on_unknown {
+        " as run here, with what it could not know taken as said below (give the values with --set)"
+    } else {
+        ""
+    };
+    format!(
+        "endless: the jump back from line {} comes to {place} in a state the run was in before{guessed}: the program repeats every {blocks} ({}) until it is stopped; the figures are of the run until then\n",
+        endless.from_line,
+        seconds(endless.pass_s),
+    )
 }
 
 fn seconds(s: f64) -> String {

@@ -185,4 +185,27 @@ pub struct Report {
     pub assumptions: Vec<String>,
     /// Blocks executed.
     pub blocks: u64,
+    /// The program came back to a state it was in: it runs until stopped,
+    /// and the run ended there.
+    pub endless: Option<Endless>,
+}
+
+/// A program that comes back to a state it was in, and so repeats from it
+/// for ever: every block it runs later, it has run from the same state.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Endless {
+    /// The subprogram it repeats in (by name); `None` for the main program.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub program: Option<String>,
+    /// Where the repetition was found (1-based): the line the jump back
+    /// goes to, and the line it jumps from.
+    pub line: usize,
+    pub from_line: usize,
+    /// One pass: its blocks and its time (seconds, as [`Report::time_s`]).
+    pub pass_blocks: u64,
+    pub pass_s: f64,
+    /// In the pass the run took something it could not know for a value
+    /// (said in [`Report::unknown`]): with the true value the program may
+    /// end.
+    pub rests_on_unknown: bool,
 }

@@ -153,7 +153,7 @@ impl Interpreter<'_, '_> {
 /// (Programming Manual, "Subprogram with SAVE mechanism"): the modal G
 /// functions and the programmable frame as they were at the call. The
 /// feed and the spindle speed are no G functions and stay.
-#[derive(Clone)]
+#[derive(Clone, PartialEq)]
 pub(super) struct Saved {
     modes: Modes,
     plane: usize,

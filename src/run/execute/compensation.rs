@@ -111,6 +111,14 @@ impl Compensation {
         self.held.is_some()
     }
 
+    /// The side, the corners, the approach to come and OFFN, where no
+    /// element is held back and no block waits to be told: then they are
+    /// all the compensation holds.
+    pub(super) fn settled(&self) -> Option<(Option<f64>, bool, bool, f64)> {
+        let settled = self.held.is_none() && self.waiting.is_empty() && self.told.is_empty();
+        settled.then_some((self.side, self.meet_outside, self.approaching, self.extra))
+    }
+
     pub(super) fn wait(&mut self, program: Option<String>, line: usize, arc: Option<Arc>) {
         self.waiting.push(Waiting { program, line, arc });
     }

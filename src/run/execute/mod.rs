@@ -6,6 +6,7 @@ mod calls;
 mod compensation;
 mod motion;
 mod polar;
+mod repeat;
 mod swivel;
 mod timing;
 mod traori;
@@ -57,6 +58,7 @@ pub fn run(
 ) -> Report {
     let mut machine = Interpreter::new(programs, setup, known, options);
     machine.reset();
+    let mut watch = repeat::Watch::default();
     let mut row = 0;
     loop {
         if row >= machine.model.lines.len() {
@@ -111,10 +113,17 @@ pub fn run(
             Some((_, end)) if row == end && next == end + 1 => machine.end_section(),
             _ => next,
         };
+        let from = row;
         row = match machine.calling.take() {
             Some(call) => machine.enter(row, call, next),
             None => next,
         };
+        if row <= from {
+            if let Some(endless) = watch.jumped_back(&machine, from, row) {
+                machine.report.endless = Some(endless);
+                break;
+            }
+        }
     }
     machine.end_held(None);
     machine.tell(&mut each);
@@ -225,7 +234,7 @@ impl Lookup for Variables<'_> {
 /// offline or left out; and which the call leaves out (`NAME(1,,3)`, or
 /// after its last), which the control passes as 0 (Programming Manual,
 /// "Subprogram call": incomplete parameter transfer).
-#[derive(Clone, Default)]
+#[derive(Clone, Default, PartialEq)]
 struct Arguments {
     values: Vec<Option<Value>>,
     omitted: Vec<bool>,
@@ -258,7 +267,7 @@ struct Calling {
 
 /// A modal call (`MCALL`): the subprogram called after each block that
 /// moves, at the program level it was set on.
-#[derive(Clone)]
+#[derive(Clone, PartialEq)]
 struct ModalCall {
     name: String,
     arguments: Arguments,
@@ -291,7 +300,7 @@ const DYNAMIC_GROUPS: [&str; 5] = ["DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN"
 const MOST_LEVELS: usize = 16;
 
 /// The modes a move's path and its time follow.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq)]
 struct Modes {
     motion: Motion,
     /// Feeds to the machine's (G700, G710).
@@ -377,6 +386,9 @@ struct Interpreter<'a, 'src> {
     began: HashMap<(Option<String>, usize, usize, bool), usize>,
     tool_times: BTreeMap<String, f64>,
     upper_complete: bool,
+    /// How often the run took something it could not know for something
+    /// (each [`Interpreter::unknown`], told or not).
+    guesses: u64,
     words: Vec<Address>,
 }
 
@@ -499,6 +511,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             began: HashMap::new(),
             tool_times: BTreeMap::new(),
             upper_complete: true,
+            guesses: 0,
             words: Vec::with_capacity(16),
         }
     }
@@ -530,6 +543,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     }
 
     fn unknown(&mut self, row: usize, span: Span, why: String) {
+        self.guesses += 1;
         let told = (self.program.clone(), row, why.clone());
         if self.report.unknown.len() >= MOST_UNKNOWN || !self.told.insert(told) {
             return;

@@ -390,6 +390,10 @@ impl Interpreter<'_, '_> {
                         Coordinate::Incremental => true,
                     };
                     if incremental {
+                        if start[k].is_none() {
+                            let name = &self.setup.axes[k].name;
+                            self.unknown(row, span, format!("axis `{name}` moves incrementally from a position unknown offline (no absolute position before): where it goes is unknown"));
+                        }
                         start[k].map(|s| s + v * scale)
                     } else {
                         Some(v * scale)

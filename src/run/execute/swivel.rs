@@ -24,7 +24,7 @@ use crate::semantic::value::Value;
 use crate::span::Span;
 
 /// The swivel the control holds after a CYCLE800.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) struct Swivelled {
     /// The swivel frame (the plane's zero and rotation).
     pub frame: Frame,

@@ -19,7 +19,7 @@ use crate::semantic::value::Value;
 use crate::span::Span;
 
 /// The transformation TRAORI made active.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) struct Transformed {
     record: Record,
     /// The run axes of the record's two rotary axes.
@@ -40,7 +40,7 @@ pub(super) enum Way {
 /// where MD21104 `$MC_ORI_IPO_WITH_G_CODE` says so (Function Manual F2,
 /// "Orientation": "FALSE: the reference is provided by the G commands
 /// ORIWKS and ORIMKS").
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Turning {
     /// ORIWKS, the control's basic setting (until ORIMKS).
     pub workpiece: bool,
