@@ -728,6 +728,15 @@ WRAP:\nR1=0\nGOTOB START\n"
         assert_eq!(found.pass_blocks, 5 * u64::from(k) + 2, "k = {k}");
         assert_eq!(report.axes[0].max, Some(f64::from(k - 1) * 10.0), "k = {k}");
     }
+    // A warm-up program that counts its passes: the counter, which nothing
+    // else reads, is left aside and named.
+    let counted = dry_run(
+        &data,
+        "DEF INT _PASS\nG0 X0 Y0 Z0\nLOOP\n_PASS=_PASS+1\nMSG(\"pass \"<<_PASS)\nG1 X10 F600\nG0 X0\nENDLOOP\n",
+    );
+    let found = counted.endless.expect("endless");
+    assert_eq!(found.counting, ["_PASS"]);
+    assert_eq!(found.pass_blocks, 5);
     // What the run could not know and took for something is said with it.
     let guessed = dry_run(
         &data,
@@ -782,6 +791,19 @@ fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
         "{:?}",
         report.axes[0]
     );
+    // A counter read where the trees do not show it (a REPEAT's count) is
+    // no counter: every pass is longer than the one before.
+    let model = Model::of(
+        b"G0 X0 Y0 Z0\nR5=0\nLOOP\nR5=R5+1\nSEC: G0 X1\nG0 X0\nREPEAT SEC P=R5\nENDLOOP\n",
+    );
+    let report = run(
+        &Programs::alone(&model),
+        &setup,
+        &Supplied::default(),
+        &options,
+        |_| {},
+    );
+    assert_eq!(report.endless, None);
 }
 
 /// Loops run as the control runs them, with their counters.

@@ -339,8 +339,16 @@ fn endless_text(endless: &crate::run::Endless) -> String {
     } else {
         ""
     };
+    let counting = match endless.counting.as_slice() {
+        [] => String::new(),
+        [name] => format!(" but for {name}, which counts on and which nothing else reads"),
+        names => format!(
+            " but for {}, which count on and which nothing else reads",
+            names.join(", ")
+        ),
+    };
     format!(
-        "endless: the jump back from line {} comes to {place} in a state the run was in before{guessed}: the program repeats every {blocks} ({}) until it is stopped; the figures are of the run until then\n",
+        "endless: the jump back from line {} comes to {place} in a state the run was in before{counting}{guessed}: the program repeats every {blocks} ({}) until it is stopped; the figures are of the run until then\n",
         endless.from_line,
         seconds(endless.pass_s),
     )

@@ -208,4 +208,7 @@ pub struct Endless {
     /// (said in [`Report::unknown`]): with the true value the program may
     /// end.
     pub rests_on_unknown: bool,
+    /// The variables that only count (nothing but themselves reads them)
+    /// and counted on in the pass: left out of the state compared.
+    pub counting: Vec<String>,
 }

@@ -144,6 +144,14 @@ svg{{background:#fafafa;border:1px solid #ddd}}.limit{{stroke:#c00;stroke-dashar
     if trace.every > 1 {
         let _ = write!(page, " (one block end in {} drawn)", trace.every);
     }
+    if let Some(endless) = &report.endless {
+        let _ = write!(
+            page,
+            "; endless: from line {} it repeats every {} until it is stopped (drawn until the repetition was found)",
+            endless.line,
+            seconds(endless.pass_s)
+        );
+    }
     page.push_str("</p>\n");
     page.push_str("<h2>Machine axes over time</h2>\n");
     for k in 0..trace.names.len() {

@@ -4,6 +4,7 @@
 
 mod calls;
 mod compensation;
+mod counters;
 mod motion;
 mod polar;
 mod repeat;

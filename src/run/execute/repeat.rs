@@ -5,6 +5,10 @@
 //! and what the run has found so far is all it will ever find: no block is
 //! run from a state it was not already run from.
 //!
+//! The variables that only count (`_PASS=_PASS+1`, see [`counters`]) are
+//! left out of the state: nothing reads them but themselves, so a program
+//! that counts its passes comes back all the same.
+//!
 //! The states are compared where the run jumps back (the only way to come
 //! back), with Brent's cycle finding: the state is kept at the 1st, 2nd,
 //! 4th, 8th ... jump back and each jump back compares with the one kept,
@@ -15,6 +19,7 @@ use std::collections::{HashMap, HashSet};
 
 use nalgebra::Matrix3;
 
+use super::counters::counters;
 use super::polar::Polar;
 use super::swivel::Swivelled;
 use super::traori::{Transformed, Turning};
@@ -25,6 +30,9 @@ use crate::semantic::value::Value;
 
 /// Watches the jumps back of one run.
 pub(super) struct Watch {
+    /// The variables that only count, found at the first jump back (a
+    /// program without one is never read for them).
+    counters: Option<HashSet<String>>,
     kept: Option<Kept>,
     /// Jumps back since the state was kept, and how many before the next
     /// is kept.
@@ -35,6 +43,7 @@ pub(super) struct Watch {
 impl Default for Watch {
     fn default() -> Self {
         Self {
+            counters: None,
             kept: None,
             since: 0,
             next_keep: 1,
@@ -48,6 +57,8 @@ struct Kept {
     blocks: u64,
     time_s: f64,
     guesses: u64,
+    /// The counters' values at the running level.
+    counted: HashMap<String, Value>,
 }
 
 impl Watch {
@@ -60,10 +71,19 @@ impl Watch {
         from: usize,
         row: usize,
     ) -> Option<Endless> {
+        let counters = self
+            .counters
+            .get_or_insert_with(|| counters(machine.programs));
         if let Some(kept) = &self.kept {
-            if kept.state.may_be(machine, row)
-                && State::of(machine, row).as_ref() == Some(&kept.state)
+            if kept.state.may_be(machine, row, counters)
+                && State::of(machine, row, counters).as_ref() == Some(&kept.state)
             {
+                let mut counting: Vec<String> = counted(machine, counters)
+                    .into_iter()
+                    .filter(|(name, value)| kept.counted.get(name) != Some(value))
+                    .map(|(name, _)| name)
+                    .collect();
+                counting.sort_unstable();
                 return Some(Endless {
                     program: machine.program.clone(),
                     line: row + 1,
@@ -71,6 +91,7 @@ impl Watch {
                     pass_blocks: machine.report.blocks - kept.blocks,
                     pass_s: machine.report.time_s - kept.time_s,
                     rests_on_unknown: machine.guesses > kept.guesses,
+                    counting,
                 });
             }
         }
@@ -78,12 +99,13 @@ impl Watch {
         if self.since >= self.next_keep {
             // Where the state cannot be kept (an element held back under
             // radius compensation), the next jump back tries again.
-            if let Some(state) = State::of(machine, row) {
+            if let Some(state) = State::of(machine, row, counters) {
                 self.kept = Some(Kept {
                     state,
                     blocks: machine.report.blocks,
                     time_s: machine.report.time_s,
                     guesses: machine.guesses,
+                    counted: counted(machine, counters),
                 });
                 self.since = 0;
                 self.next_keep = self.next_keep.saturating_mul(2);
@@ -93,8 +115,28 @@ impl Watch {
     }
 }
 
-/// Everything of the interpreter that a later block reads: what decides
-/// which blocks run next and what they do. What is only told (the report,
+/// The values of the `counters` at the running level.
+fn counted(machine: &Interpreter, counters: &HashSet<String>) -> HashMap<String, Value> {
+    let locals = &machine.variables.local;
+    (locals.iter())
+        .filter(|(name, _)| counters.contains(*name))
+        .map(|(name, value)| (name.clone(), value.clone()))
+        .collect()
+}
+
+/// The `variables` but the counters.
+fn uncounted(
+    variables: &HashMap<String, Value>,
+    counters: &HashSet<String>,
+) -> HashMap<String, Value> {
+    (variables.iter())
+        .filter(|(name, _)| !counters.contains(*name))
+        .map(|(name, value)| (name.clone(), value.clone()))
+        .collect()
+}
+
+/// Everything of the interpreter that a later block reads but the
+/// counters: what decides which blocks run next and what they do. What is only told (the report,
 /// the travel, the violations, the times) is not in it. Numbers compare as
 /// numbers: a NaN never equals itself, and a state holding one is never
 /// taken for a repetition.
@@ -150,7 +192,7 @@ struct Level {
 impl State {
     /// The state of `machine` about to run `row`; `None` while tool radius
     /// compensation holds an element back (blocks run and not yet told).
-    fn of(machine: &Interpreter, row: usize) -> Option<State> {
+    fn of(machine: &Interpreter, row: usize, counters: &HashSet<String>) -> Option<State> {
         // Every field is named, so that a field added to the interpreter is
         // a compile error here until it is said whether it decides what
         // comes next.
@@ -215,10 +257,13 @@ impl State {
             row,
             program: program.clone(),
             model: address(model),
-            stack: stack.iter().map(Level::of).collect(),
+            stack: stack
+                .iter()
+                .map(|level| Level::of(level, counters))
+                .collect(),
             modal_call: modal_call.clone(),
             polar: polar.clone(),
-            locals: variables.local.clone(),
+            locals: uncounted(&variables.local, counters),
             channel: variables.channel.clone(),
             in_for: in_for.clone(),
             mcs: mcs.clone(),
@@ -245,16 +290,19 @@ impl State {
     /// A test of a few fields in place, without a copy: `false` where the
     /// state of `machine` at `row` is surely another (a counter that counts
     /// on, an axis that moves on).
-    fn may_be(&self, machine: &Interpreter, row: usize) -> bool {
+    fn may_be(&self, machine: &Interpreter, row: usize, counters: &HashSet<String>) -> bool {
+        let uncounted =
+            || (machine.variables.local.iter()).filter(|(name, _)| !counters.contains(*name));
         self.row == row
             && self.program == machine.program
             && self.mcs == machine.mcs
-            && self.locals == machine.variables.local
+            && self.locals.len() == uncounted().count()
+            && uncounted().all(|(name, value)| self.locals.get(name) == Some(value))
     }
 }
 
 impl Level {
-    fn of(level: &Return) -> Level {
+    fn of(level: &Return, counters: &HashSet<String>) -> Level {
         let Return {
             model,
             program,
@@ -272,7 +320,7 @@ impl Level {
             model: address(model),
             program: program.clone(),
             row: *row,
-            locals: locals.clone(),
+            locals: uncounted(locals, counters),
             in_for: in_for.clone(),
             again: *again,
             arguments: arguments.clone(),
