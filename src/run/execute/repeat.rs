@@ -135,11 +135,11 @@ fn uncounted(
         .collect()
 }
 
-/// Everything of the interpreter that a later block reads but the
-/// counters: what decides which blocks run next and what they do. What is only told (the report,
-/// the travel, the violations, the times) is not in it. Numbers compare as
-/// numbers: a NaN never equals itself, and a state holding one is never
-/// taken for a repetition.
+/// Everything of the interpreter that a later block reads, but the
+/// counters: what decides which blocks run next and what they do. What is
+/// only told (the report, the travel, the violations, the times) is not in
+/// it. Numbers compare as numbers: a NaN never equals itself, and a state
+/// holding one is never taken for a repetition.
 #[derive(Clone, PartialEq)]
 struct State {
     row: usize,
