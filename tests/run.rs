@@ -737,6 +737,25 @@ WRAP:\nR1=0\nGOTOB START\n"
     let found = counted.endless.expect("endless");
     assert_eq!(found.counting, ["_PASS"]);
     assert_eq!(found.pass_blocks, 5);
+    // -0 is not 0: ATAN2(-0, -1) is -180, ATAN2(0, -1) 180. The second pass
+    // comes back with R1 = -0 and leaves.
+    let signed = dry_run(
+        &data,
+        "G0 X0 Y0 Z0\nR1=0\nGOTOF BACK\nSTART: IF ATAN2(R1,-1)<0 GOTOF OUT\nR1=-R1\nBACK: GOTOB START\nOUT: G0 X5\nM30\n",
+    );
+    assert_eq!(signed.endless, None);
+    assert_eq!(signed.axes[0].max, Some(5.0));
+    // What the run does not model stays with the verdict: a synchronized
+    // action that may set R1 in any block, a procedure of the control
+    // (EXECSTRING) not run offline.
+    for program in [
+        "G0 X0 Y0 Z0\nR1=0\nID=1 WHEN $AC_TIMER[1]>10 DO $R1=1\nSTART: G0 X10\nSTOPRE\nIF R1==0 GOTOB START\nM30\n",
+        "G0 X0 Y0 Z0\nR2=0\nSTART: G0 X10\nEXECSTRING(\"R2=R2+1\")\nIF R2<5 GOTOB START\nM30\n",
+    ] {
+        let report = dry_run(&data, program);
+        let found = report.endless.expect(program);
+        assert!(found.rests_on_unknown, "{program}");
+    }
     // What the run could not know and took for something is said with it.
     let guessed = dry_run(
         &data,
@@ -804,6 +823,69 @@ fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
         |_| {},
     );
     assert_eq!(report.endless, None);
+    // R1 feeds an arc's radius (an address, not a variable), R2 a square
+    // root that fails at the 11th pass: neither is a counter.
+    for program in [
+        "G17 G90 G0 X0 Y0 Z0 F1000\nR1=20\nLOOP\nR1=R1-1\nG2 X10 Y0 CR=R1\nG2 X0 Y0 CR=R1\nENDLOOP\n",
+        "G0 X0 Y0 Z0\nR1=0\nLOOP\nR1=R1+1\nR2=SQRT(10-R1)\nG0 X10\nG0 X0\nENDLOOP\n",
+    ] {
+        let model = Model::of(program.as_bytes());
+        let report = run(
+            &Programs::alone(&model),
+            &setup,
+            &Supplied::default(),
+            &options,
+            |_| {},
+        );
+        assert!(
+            report.endless.as_ref().is_none_or(|e| e.rests_on_unknown),
+            "{program}: {:?}",
+            report.endless
+        );
+    }
+}
+
+/// A subprogram's VAR parameter is not given back offline, nor a GUD
+/// variable it writes: a loop that waits for them is endless only as run
+/// here, and says so.
+#[test]
+fn what_a_subprogram_gives_back_unmodelled_stays_with_the_verdict() {
+    let dir = scratch("run_endless_var");
+    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
+    std::fs::write(
+        dir.join("MAIN.MPF"),
+        "DEF INT _K=0\nG0 X0 Y0 Z0\nSTART: COUNT(_K)\nG0 X10\nG0 X0\nIF _K<5 GOTOB START\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("COUNT.SPF"),
+        "PROC COUNT(VAR INT _N)\n_N=_N+1\nM17\n",
+    )
+    .expect("write");
+    std::fs::write(
+        dir.join("GUD.MPF"),
+        "G0 X0 Y0 Z0\nSTART: BUMP\nG0 X10\nG0 X0\nIF _GUD_N<5 GOTOB START\nM30\n",
+    )
+    .expect("write");
+    std::fs::write(dir.join("BUMP.SPF"), "_GUD_N=_GUD_N+1\nM17\n").expect("write");
+    // The GUD variable's value at the start given, as the control holds it.
+    for main in ["MAIN.MPF", "GUD.MPF"] {
+        let json = command(
+            &[
+                "run",
+                "--machine",
+                dir.join("MACHINE.INI").to_str().expect("utf-8"),
+                "--format",
+                "json",
+                "--set",
+                "_GUD_N=0",
+                dir.join(main).to_str().expect("utf-8"),
+            ],
+            b"",
+        );
+        let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+        assert_eq!(read["endless"]["rests_on_unknown"], true, "{main}: {read}");
+    }
 }
 
 /// Loops run as the control runs them, with their counters.

@@ -83,7 +83,7 @@ impl Interpreter<'_, '_> {
                                             TypeKind::Int | TypeKind::Real | TypeKind::Bool
                                         )
                                         && p.declarator.dimensions.is_empty();
-                                    (p.declarator.name.upper(source), number)
+                                    (p.declarator.name.upper(source), number, p.by_reference)
                                 })
                                 .collect::<Vec<_>>(),
                             proc.attributes.iter().any(|a| a.is(source, "SAVE")),
@@ -94,7 +94,11 @@ impl Interpreter<'_, '_> {
         else {
             return false;
         };
-        for (k, (name, number)) in parameters.into_iter().enumerate() {
+        for (k, (name, number, by_reference)) in parameters.into_iter().enumerate() {
+            if by_reference {
+                self.guesses += 1;
+                self.note(format!("the VAR parameter `{name}` of `{}`: what the subprogram writes to it is not given back to the caller offline", self.program.as_deref().unwrap_or("")));
+            }
             let omitted = arguments.omitted.get(k).copied().unwrap_or(true);
             // `$P_SUBPAR[n]`: whether the call gives parameter n.
             self.variables.local.insert(
@@ -153,7 +157,7 @@ impl Interpreter<'_, '_> {
 /// (Programming Manual, "Subprogram with SAVE mechanism"): the modal G
 /// functions and the programmable frame as they were at the call. The
 /// feed and the spindle speed are no G functions and stay.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) struct Saved {
     modes: Modes,
     plane: usize,
@@ -274,12 +278,15 @@ impl Interpreter<'_, '_> {
 fn globals(variables: &HashMap<String, Value>) -> HashMap<String, Value> {
     variables
         .iter()
-        .filter(|(key, _)| {
-            key.strip_prefix('R')
-                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-        })
+        .filter(|(key, _)| is_r_parameter(key))
         .map(|(key, value)| (key.clone(), value.clone()))
         .collect()
+}
+
+/// `R12`, as the run keys an R parameter.
+pub(super) fn is_r_parameter(key: &str) -> bool {
+    key.strip_prefix('R')
+        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
 }
 
 /// `L105`: a subprogram called by its number (the digits as written:

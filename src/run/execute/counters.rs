@@ -7,6 +7,12 @@
 //! its passes and otherwise comes back to a state repeats for ever all the
 //! same.
 //!
+//! A counter is an R parameter or a variable the programs define (DEF): not
+//! an address written as an assignment (`CR=5`), not a system variable. Its
+//! assignments compute with `+`, `-` and `*` alone, and MSG shows it with
+//! `<<` alone: nothing that can fail at some later pass (a square root, a
+//! division, an index) and stop the program with an alarm.
+//!
 //! Every use of a name must be seen to be one of those. Uses are read from
 //! the trees and counted against the name's occurrences in the text (every
 //! word of the sources, comments and strings included): a use the trees
@@ -18,10 +24,13 @@
 
 use std::collections::{HashMap, HashSet};
 
+use super::calls::is_r_parameter;
 use crate::run::Programs;
 use crate::semantic::eval::key;
 use crate::semantic::model::Model;
-use crate::syntax::tree::{upper, Expr, Initializer, LineKind, StatementKind};
+use crate::syntax::tree::{
+    upper, BinaryOp, Expr, ExprKind, Initializer, LineKind, StatementKind, UnaryOp,
+};
 use crate::syntax::visit::{each_read, each_variable};
 
 /// The counters of the programs the run may enter, by their variables' keys
@@ -41,6 +50,7 @@ pub(super) fn counters(programs: &Programs) -> HashSet<String> {
     let mut counters: HashSet<String> = uses
         .assigned
         .iter()
+        .filter(|name| is_r_parameter(name) || uses.defined.contains(*name))
         .filter(|name| !uses.read_elsewhere.contains(*name))
         .filter(|name| words.get(name) == uses.seen.get(*name))
         .filter(|name| !(words.r_by_number && is_r_parameter(name)))
@@ -68,6 +78,8 @@ pub(super) fn counters(programs: &Programs) -> HashSet<String> {
 struct Uses {
     /// Assigned as a whole (`NAME=...`), not as an array's element.
     assigned: HashSet<String>,
+    /// Defined by a DEF.
+    defined: HashSet<String>,
     /// Read where a value can go anywhere but into an assignment or MSG,
     /// or used as an array.
     read_elsewhere: HashSet<String>,
@@ -93,7 +105,7 @@ impl Uses {
                     StatementKind::Assign(assign) => {
                         let target = name_key(&upper(assign.target.name.text(source)));
                         self.see(&target);
-                        if assign.target.indices.is_empty() {
+                        if assign.target.indices.is_empty() && counts_safely(&assign.value) {
                             self.assigned.insert(target.clone());
                         } else {
                             self.read_elsewhere.insert(target.clone());
@@ -115,10 +127,11 @@ impl Uses {
                     StatementKind::Call(call) if upper(call.name.text(source)) == "MSG" => {
                         let arguments = call.arguments.items.iter();
                         for argument in arguments.filter_map(|a| a.value.as_ref()) {
+                            let shown = shows_safely(argument);
                             each_variable(argument, &mut |variable| {
                                 let read = name_key(&upper(variable.name.text(source)));
                                 self.see(&read);
-                                if !variable.indices.is_empty() {
+                                if !shown {
                                     self.read_elsewhere.insert(read);
                                 }
                             });
@@ -128,6 +141,7 @@ impl Uses {
                         for declarator in &def.variables {
                             let name = name_key(&upper(declarator.name.text(source)));
                             self.see(&name);
+                            self.defined.insert(name.clone());
                             if !declarator.dimensions.is_empty()
                                 || matches!(declarator.init, Some(Initializer::List(_)))
                             {
@@ -174,9 +188,36 @@ fn name_key(name: &str) -> String {
     key(name, &[])
 }
 
-fn is_r_parameter(name: &str) -> bool {
-    name.strip_prefix('R')
-        .is_some_and(|digits| !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()))
+/// A counter's new value: numbers and scalar variables with `+`, `-`, `*`.
+fn counts_safely(expr: &Expr) -> bool {
+    match &expr.kind {
+        ExprKind::Number(_) => true,
+        ExprKind::Variable(variable) => variable.indices.is_empty(),
+        ExprKind::Paren(inner) => counts_safely(inner),
+        ExprKind::Unary { op, operand } => {
+            matches!(op, UnaryOp::Neg | UnaryOp::Plus) && counts_safely(operand)
+        }
+        ExprKind::Binary { op, lhs, rhs } => {
+            matches!(op, BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul)
+                && counts_safely(lhs)
+                && counts_safely(rhs)
+        }
+        _ => false,
+    }
+}
+
+/// What MSG shows: text, numbers and scalar variables joined with `<<`.
+fn shows_safely(expr: &Expr) -> bool {
+    match &expr.kind {
+        ExprKind::Number(_) | ExprKind::String => true,
+        ExprKind::Variable(variable) => variable.indices.is_empty(),
+        ExprKind::Paren(inner) => shows_safely(inner),
+        ExprKind::Unary { op, operand } => *op == UnaryOp::Concat && shows_safely(operand),
+        ExprKind::Binary { op, lhs, rhs } => {
+            *op == BinaryOp::Concat && shows_safely(lhs) && shows_safely(rhs)
+        }
+        _ => false,
+    }
 }
 
 /// The words of the sources, counted for the names in `wanted`.
@@ -258,12 +299,14 @@ mod tests {
             "DEF INT _PASS=0\nLOOP\n_PASS=_PASS+1\nMSG(\"pass \"<<_PASS)\nG0 X10\nENDLOOP\n";
         assert_eq!(of(counting), ["_PASS"]);
         // R01 is R1; a value that feeds only counters is one.
-        let chain = "LOOP\nR01=R1+1\n_SUM=_SUM+R1\nENDLOOP\n";
+        let chain = "DEF REAL _SUM\nLOOP\nR01=R1+1\n_SUM=_SUM+R1*2\nENDLOOP\n";
         assert_eq!(of(chain), ["R1", "_SUM"]);
     }
 
     #[test]
     fn a_variable_whose_value_goes_anywhere_else_is_no_counter() {
+        let def = "DEF INT _A, _B, _C, _P\n";
+        let of = |program: &str| of(&format!("{def}{program}"));
         // A position, a condition (as R01), a variable that is read.
         assert!(of("LOOP\n_P=_P+1\nG0 X=_P\nENDLOOP\n").is_empty());
         assert!(of("LOOP\nR1=R1+1\nIF R01>5 GOTOF OUT\nENDLOOP\nOUT:\nM30\n").is_empty());
@@ -276,9 +319,24 @@ mod tests {
         assert!(of("LOOP\nR5=R5+1\nSEC: G0 X1\nREPEAT SEC P=R5\nENDLOOP\n").is_empty());
         assert!(of("LOOP\n_C=_C+1 ; _C\nENDLOOP\n").is_empty());
         assert_eq!(of("LOOP\nR1=R1+1\n_C=_C+1\nG0 X=R[2]\nENDLOOP\n"), ["_C"]);
-        // An array, an element assigned.
-        assert!(of("DEF INT _A[2]\nLOOP\n_A[0]=_A[0]+1\nENDLOOP\n").is_empty());
+        // An element assigned.
+        assert!(of("DEF INT _ARR[2]\nLOOP\n_ARR[0]=_ARR[0]+1\nENDLOOP\n").is_empty());
         // A block number glued to the name is cut off it.
         assert!(of("LOOP\n_C=_C+1\nN10X=_C\nENDLOOP\n").is_empty());
+        // An address written as an assignment is no variable: what feeds it
+        // moves the axes.
+        assert!(of("R1=20\nLOOP\nR1=R1-1\nG2 X10 Y0 CR=R1\nENDLOOP\n").is_empty());
+        assert!(of("LOOP\nR1=R1+1\n$P_PFRAME=CTRANS(X,R1)\nENDLOOP\n").is_empty());
+        // What may fail at a later pass (an alarm that ends the program).
+        assert!(of("LOOP\nR1=R1+1\nR2=SQRT(10-R1)\nENDLOOP\n").is_empty());
+        assert!(of("LOOP\nR1=R1+1\nR2=R2+1/(5-R1)\nENDLOOP\n").is_empty());
+        assert!(of("LOOP\nR1=R1+1\nMSG(\"x\"<<SQRT(-R1))\nENDLOOP\n").is_empty());
+    }
+
+    #[test]
+    fn a_name_no_def_defines_is_not_known_to_count() {
+        // A GUD variable, say, which the control may read elsewhere.
+        assert!(of("LOOP\n_GUD=_GUD+1\nENDLOOP\n").is_empty());
+        assert_eq!(of("DEF INT _OWN\nLOOP\n_OWN=_OWN+1\nENDLOOP\n"), ["_OWN"]);
     }
 }

@@ -138,7 +138,7 @@ enum Flow {
     End,
 }
 
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Motion {
     Rapid,
     Linear,
@@ -146,7 +146,7 @@ enum Motion {
     Counterclockwise,
 }
 
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum FeedMode {
     PerMinute,
     PerRevolution,
@@ -235,7 +235,7 @@ impl Lookup for Variables<'_> {
 /// offline or left out; and which the call leaves out (`NAME(1,,3)`, or
 /// after its last), which the control passes as 0 (Programming Manual,
 /// "Subprogram call": incomplete parameter transfer).
-#[derive(Clone, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 struct Arguments {
     values: Vec<Option<Value>>,
     omitted: Vec<bool>,
@@ -268,7 +268,7 @@ struct Calling {
 
 /// A modal call (`MCALL`): the subprogram called after each block that
 /// moves, at the program level it was set on.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 struct ModalCall {
     name: String,
     arguments: Arguments,
@@ -301,7 +301,7 @@ const DYNAMIC_GROUPS: [&str; 5] = ["DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN"
 const MOST_LEVELS: usize = 16;
 
 /// The modes a move's path and its time follow.
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct Modes {
     motion: Motion,
     /// Feeds to the machine's (G700, G710).
@@ -390,6 +390,9 @@ struct Interpreter<'a, 'src> {
     /// How often the run took something it could not know for something
     /// (each [`Interpreter::unknown`], told or not).
     guesses: u64,
+    /// A synchronized action was programmed: it may act in any later block,
+    /// and the run does not model it.
+    synchronized: bool,
     words: Vec<Address>,
 }
 
@@ -513,6 +516,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
             tool_times: BTreeMap::new(),
             upper_complete: true,
             guesses: 0,
+            synchronized: false,
             words: Vec::with_capacity(16),
         }
     }
@@ -662,6 +666,12 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     let value = evaluate(source, &assign.value, &self.variables);
                     match (key, value) {
                         (Ok(key), Ok(value)) => {
+                            if !self.variables.local.contains_key(&key)
+                                && !calls::is_r_parameter(&key)
+                                && self.stack.iter().any(|level| level.section.is_none())
+                            {
+                                self.unknown(row, statement.span, format!("`{key}` is not the subprogram's own (not defined in it, no R parameter): the caller does not see what it is given here"));
+                            }
                             self.variables.local.insert(key, value);
                         }
                         (Ok(key), Err(missing)) => {
@@ -893,6 +903,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     return self.then(row, span, content, flow);
                 }
                 StatementKind::SyncAction(_) => {
+                    self.synchronized = true;
                     self.unknown(
                         row,
                         statement.span,
@@ -1228,7 +1239,11 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                 // What moves nothing: messages, settings, the control's own procedures.
                 "CYCLE832" => self.cycle832(row, span, &arguments.values),
                 "MSG" | "STOPRE" => {}
-                _ if crate::semantic::calls::is_predefined(&name) => {}
+                _ if crate::semantic::calls::is_predefined(&name) => self.unknown(
+                    row,
+                    span,
+                    format!("`{name}`: the control's own procedure is not run offline: what it sets or changes is not in the run"),
+                ),
                 _ if self.calling.is_some() => self.unknown(
                     row,
                     span,

@@ -15,7 +15,7 @@ use crate::span::Span;
 pub(super) type Given = Option<(Result<f64, String>, Coordinate)>;
 
 /// The pole and the polar words last programmed.
-#[derive(Clone, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub(super) struct Polar {
     /// The pole in the work's coordinates, machine length units; `None`:
     /// the work's zero.

@@ -76,7 +76,7 @@ impl Watch {
             .get_or_insert_with(|| counters(machine.programs));
         if let Some(kept) = &self.kept {
             if kept.state.may_be(machine, row, counters)
-                && State::of(machine, row, counters).as_ref() == Some(&kept.state)
+                && State::of(machine, row, counters).is_some_and(|now| now.is(&kept.state))
             {
                 let mut counting: Vec<String> = counted(machine, counters)
                     .into_iter()
@@ -90,7 +90,7 @@ impl Watch {
                     from_line: from + 1,
                     pass_blocks: machine.report.blocks - kept.blocks,
                     pass_s: machine.report.time_s - kept.time_s,
-                    rests_on_unknown: machine.guesses > kept.guesses,
+                    rests_on_unknown: machine.guesses > kept.guesses || machine.synchronized,
                     counting,
                 });
             }
@@ -124,23 +124,31 @@ fn counted(machine: &Interpreter, counters: &HashSet<String>) -> HashMap<String,
         .collect()
 }
 
-/// The `variables` but the counters.
+/// The `variables` but the counters, in the order of their names.
 fn uncounted(
     variables: &HashMap<String, Value>,
     counters: &HashSet<String>,
-) -> HashMap<String, Value> {
-    (variables.iter())
+) -> Vec<(String, Value)> {
+    let mut kept: Vec<(String, Value)> = (variables.iter())
         .filter(|(name, _)| !counters.contains(*name))
         .map(|(name, value)| (name.clone(), value.clone()))
-        .collect()
+        .collect();
+    kept.sort_unstable_by(|a, b| a.0.cmp(&b.0));
+    kept
+}
+
+fn sorted<T: Ord + Copy>(items: impl Iterator<Item = T>) -> Vec<T> {
+    let mut items: Vec<T> = items.collect();
+    items.sort_unstable();
+    items
 }
 
 /// Everything of the interpreter that a later block reads, but the
 /// counters: what decides which blocks run next and what they do. What is
 /// only told (the report, the travel, the violations, the times) is not in
-/// it. Numbers compare as numbers: a NaN never equals itself, and a state
-/// holding one is never taken for a repetition.
-#[derive(Clone, PartialEq)]
+/// it. Maps are held in the order of their keys, so that equal states
+/// print alike ([`State::is`]).
+#[derive(Clone, Debug, PartialEq)]
 struct State {
     row: usize,
     program: Option<String>,
@@ -150,9 +158,10 @@ struct State {
     stack: Vec<Level>,
     modal_call: Option<ModalCall>,
     polar: Polar,
-    locals: HashMap<String, Value>,
-    channel: HashMap<&'static str, f64>,
-    in_for: HashSet<usize>,
+    locals: Vec<(String, Value)>,
+    channel: Vec<(&'static str, f64)>,
+    in_for: Vec<usize>,
+    synchronized: bool,
     mcs: Vec<Option<f64>>,
     programmed: Vec<Option<f64>>,
     last_linear: Matrix3<f64>,
@@ -176,13 +185,13 @@ struct State {
 }
 
 /// A program level a subprogram returns to, as [`Return`] holds it.
-#[derive(Clone, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 struct Level {
     model: usize,
     program: Option<String>,
     row: usize,
-    locals: HashMap<String, Value>,
-    in_for: HashSet<usize>,
+    locals: Vec<(String, Value)>,
+    in_for: Vec<usize>,
     again: u32,
     arguments: Arguments,
     section: Option<(usize, usize)>,
@@ -190,6 +199,13 @@ struct Level {
 }
 
 impl State {
+    /// The same state: equal (a NaN never equals itself, and a state holding
+    /// one is never taken for a repetition) and printed alike (-0 is not 0:
+    /// `ATAN2(-0, -1)` is not `ATAN2(0, -1)`; the printed number is exact).
+    fn is(&self, other: &State) -> bool {
+        self == other && format!("{self:?}") == format!("{other:?}")
+    }
+
     /// The state of `machine` about to run `row`; `None` while tool radius
     /// compensation holds an element back (blocks run and not yet told).
     fn of(machine: &Interpreter, row: usize, counters: &HashSet<String>) -> Option<State> {
@@ -244,6 +260,7 @@ impl State {
             tool_times: _,
             upper_complete: _,
             guesses: _,
+            synchronized,
             beyond,
             // A buffer, empty between blocks.
             words: _,
@@ -251,8 +268,11 @@ impl State {
         if calling.is_some() {
             return None;
         }
-        let mut beyond: Vec<(usize, bool)> = beyond.keys().copied().collect();
-        beyond.sort_unstable();
+        let beyond = sorted(beyond.keys().copied());
+        let mut channel: Vec<(&'static str, f64)> = (variables.channel.iter())
+            .map(|(&name, &value)| (name, value))
+            .collect();
+        channel.sort_unstable_by(|a, b| a.0.cmp(b.0));
         Some(State {
             row,
             program: program.clone(),
@@ -264,8 +284,9 @@ impl State {
             modal_call: modal_call.clone(),
             polar: polar.clone(),
             locals: uncounted(&variables.local, counters),
-            channel: variables.channel.clone(),
-            in_for: in_for.clone(),
+            channel,
+            in_for: sorted(in_for.iter().copied()),
+            synchronized: *synchronized,
             mcs: mcs.clone(),
             programmed: programmed.clone(),
             last_linear: *last_linear,
@@ -297,7 +318,12 @@ impl State {
             && self.program == machine.program
             && self.mcs == machine.mcs
             && self.locals.len() == uncounted().count()
-            && uncounted().all(|(name, value)| self.locals.get(name) == Some(value))
+            && uncounted().all(|(name, value)| {
+                let at = self
+                    .locals
+                    .binary_search_by(|(kept, _)| kept.as_str().cmp(name));
+                at.is_ok_and(|at| self.locals[at].1 == *value)
+            })
     }
 }
 
@@ -321,7 +347,7 @@ impl Level {
             program: program.clone(),
             row: *row,
             locals: uncounted(locals, counters),
-            in_for: in_for.clone(),
+            in_for: sorted(in_for.iter().copied()),
             again: *again,
             arguments: arguments.clone(),
             section: *section,
