@@ -845,31 +845,29 @@ fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
     }
 }
 
-/// A subprogram's VAR parameter is not given back offline, nor a GUD
-/// variable it writes: a loop that waits for them is endless only as run
-/// here, and says so.
+/// A subprogram's VAR parameter is not given back offline: a loop that
+/// waits for it is endless only as run here, and says so. GUD variables are
+/// the channel's (what a level writes, the others read), and RET ends a
+/// subprogram: loops that end on them end.
 #[test]
-fn what_a_subprogram_gives_back_unmodelled_stays_with_the_verdict() {
+fn what_a_subprogram_gives_back_decides_the_verdict() {
     let dir = scratch("run_endless_var");
-    std::fs::write(dir.join("MACHINE.INI"), machine("")).expect("write");
-    std::fs::write(
-        dir.join("MAIN.MPF"),
-        "DEF INT _K=0\nG0 X0 Y0 Z0\nSTART: COUNT(_K)\nG0 X10\nG0 X0\nIF _K<5 GOTOB START\nM30\n",
-    )
-    .expect("write");
-    std::fs::write(
-        dir.join("COUNT.SPF"),
-        "PROC COUNT(VAR INT _N)\n_N=_N+1\nM17\n",
-    )
-    .expect("write");
-    std::fs::write(
-        dir.join("GUD.MPF"),
-        "G0 X0 Y0 Z0\nSTART: BUMP\nG0 X10\nG0 X0\nIF _GUD_N<5 GOTOB START\nM30\n",
-    )
-    .expect("write");
-    std::fs::write(dir.join("BUMP.SPF"), "_GUD_N=_GUD_N+1\nM17\n").expect("write");
+    let files = [
+        ("MACHINE.INI", machine("")),
+        ("VAR.MPF", "DEF INT _K=0\nG0 X0 Y0 Z0\nSTART: COUNT(_K)\nG0 X10\nG0 X0\nIF _K<5 GOTOB START\nM30\n".into()),
+        ("COUNT.SPF", "PROC COUNT(VAR INT _N)\n_N=_N+1\nM17\n".into()),
+        ("GUD.MPF", "G0 X0 Y0 Z0\nSTART: BUMP\nG0 X10\nG0 X0\nIF _GUD_N<5 GOTOB START\nG0 Y=_GUD_N\nM30\n".into()),
+        ("BUMP.SPF", "_GUD_N=_GUD_N+1\nM17\n".into()),
+        ("SET.MPF", "G0 X0 Y0 Z0\n_GUD_N=1\nWAIT\nG0 Y7\nM30\n".into()),
+        ("WAIT.SPF", "START: G0 X10\nG0 X0\nIF _GUD_N==0 GOTOB START\nM17\n".into()),
+        ("RET.MPF", "G0 X0 Y0 Z0\nBACK\nG0 Y7\nM30\n".into()),
+        ("BACK.SPF", "START: G0 X10\nRET\nG0 X0\nGOTOB START\n".into()),
+    ];
+    for (name, text) in &files {
+        std::fs::write(dir.join(name), text).expect("write");
+    }
     // The GUD variable's value at the start given, as the control holds it.
-    for main in ["MAIN.MPF", "GUD.MPF"] {
+    let run = |main: &str| -> serde_json::Value {
         let json = command(
             &[
                 "run",
@@ -883,8 +881,17 @@ fn what_a_subprogram_gives_back_unmodelled_stays_with_the_verdict() {
             ],
             b"",
         );
-        let read: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
-        assert_eq!(read["endless"]["rests_on_unknown"], true, "{main}: {read}");
+        serde_json::from_str(&stdout(&json)).expect("JSON")
+    };
+    let var = run("VAR.MPF");
+    assert_eq!(var["endless"]["rests_on_unknown"], true, "{var}");
+    let gud = run("GUD.MPF");
+    assert_eq!(gud["endless"], serde_json::Value::Null, "{gud}");
+    assert_eq!(gud["axes"]["Y1"]["max"], 5.0, "{gud}");
+    for main in ["SET.MPF", "RET.MPF"] {
+        let read = run(main);
+        assert_eq!(read["endless"], serde_json::Value::Null, "{main}: {read}");
+        assert_eq!(read["axes"]["Y1"]["max"], 7.0, "{main}: {read}");
     }
 }
 

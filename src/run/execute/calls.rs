@@ -8,6 +8,7 @@ use super::{openers, Arguments, Calling, Flow, Interpreter, Modes, Return, MOST_
 use crate::run::frame::Frame;
 use crate::semantic::eval::{evaluate, key};
 use crate::semantic::jumps::Target;
+use crate::semantic::model::Model;
 use crate::semantic::value::Value;
 use crate::span::Span;
 use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind, TypeKind};
@@ -48,7 +49,7 @@ impl Interpreter<'_, '_> {
         };
         self.model = callee;
         self.source = callee.source;
-        self.variables.local = globals(&caller.locals);
+        self.variables.local = globals(&caller.locals, caller.model);
         if self.bind(&caller.arguments) {
             caller.saved = Some(saved);
         }
@@ -117,8 +118,9 @@ impl Interpreter<'_, '_> {
 
     /// Back from a subprogram at its end (M17, RET, M2, M30 or its last
     /// line), or into it again while its `P` asks: where the caller goes on;
-    /// `None` at the main program's end. R parameters are the channel's:
-    /// what the subprogram wrote, the caller reads.
+    /// `None` at the main program's end. R parameters, GUD and system
+    /// variables are the channel's: what the subprogram wrote, the caller
+    /// reads.
     pub(super) fn give_back(&mut self) -> Option<usize> {
         // A program that ends inside a section it repeats ends the repetition.
         while self.stack.last().is_some_and(|r| r.section.is_some()) {
@@ -128,7 +130,7 @@ impl Interpreter<'_, '_> {
         let written = std::mem::take(&mut self.variables.local);
         if caller.again > 0 {
             caller.again -= 1;
-            self.variables.local = globals(&written);
+            self.variables.local = globals(&written, self.model);
             self.in_for.clear();
             let arguments = std::mem::take(&mut caller.arguments);
             if let Some(saved) = caller.saved.clone() {
@@ -140,7 +142,7 @@ impl Interpreter<'_, '_> {
             return Some(0);
         }
         self.variables.local = caller.locals;
-        self.variables.local.extend(globals(&written));
+        self.variables.local.extend(globals(&written, self.model));
         if let Some(saved) = caller.saved {
             self.restore(saved);
         }
@@ -274,11 +276,21 @@ impl Interpreter<'_, '_> {
     }
 }
 
-/// The variables every program level shares: the R parameters.
-fn globals(variables: &HashMap<String, Value>) -> HashMap<String, Value> {
+/// The variables every program level shares, of those `model`'s level
+/// holds: all but the level's own (defined by its DEF or its PROC line) and
+/// `$P_SUBPAR` (of its call): the R parameters, GUD variables, system
+/// variables.
+fn globals(variables: &HashMap<String, Value>, model: &Model) -> HashMap<String, Value> {
+    let own: HashSet<&str> = (model.symbols.iter())
+        .filter(|symbol| !symbol.global)
+        .map(|symbol| symbol.name.as_str())
+        .collect();
     variables
         .iter()
-        .filter(|(key, _)| is_r_parameter(key))
+        .filter(|(key, _)| {
+            let name = key.split('[').next().unwrap_or(key);
+            is_r_parameter(key) || !(own.contains(name) || name == "$P_SUBPAR")
+        })
         .map(|(key, value)| (key.clone(), value.clone()))
         .collect()
 }

@@ -9,9 +9,11 @@
 //!
 //! A counter is an R parameter or a variable the programs define (DEF): not
 //! an address written as an assignment (`CR=5`), not a system variable. Its
-//! assignments compute with `+`, `-` and `*` alone, and MSG shows it with
-//! `<<` alone: nothing that can fail at some later pass (a square root, a
-//! division, an index) and stop the program with an alarm.
+//! assignments add numbers to it (`_PASS=_PASS+1`, `R1=0`), and MSG shows it
+//! with `<<` alone: nothing that can fail at some later pass (a square root,
+//! a division, an index, a value that doubles until it overflows) and stop
+//! the program with an alarm. (An INT counted up by one overflows after
+//! 2^31 passes: not in a machine's life.)
 //!
 //! Every use of a name must be seen to be one of those. Uses are read from
 //! the trees and counted against the name's occurrences in the text (every
@@ -105,7 +107,9 @@ impl Uses {
                     StatementKind::Assign(assign) => {
                         let target = name_key(&upper(assign.target.name.text(source)));
                         self.see(&target);
-                        if assign.target.indices.is_empty() && counts_safely(&assign.value) {
+                        if assign.target.indices.is_empty()
+                            && counts_safely(source, &assign.value, &target, &mut false)
+                        {
                             self.assigned.insert(target.clone());
                         } else {
                             self.read_elsewhere.insert(target.clone());
@@ -188,19 +192,25 @@ fn name_key(name: &str) -> String {
     key(name, &[])
 }
 
-/// A counter's new value: numbers and scalar variables with `+`, `-`, `*`.
-fn counts_safely(expr: &Expr) -> bool {
+/// A counter's new value: numbers added to or taken from `target`, which
+/// appears at most once (`seen`): it never more than adds.
+fn counts_safely(source: &[u8], expr: &Expr, target: &str, seen: &mut bool) -> bool {
     match &expr.kind {
         ExprKind::Number(_) => true,
-        ExprKind::Variable(variable) => variable.indices.is_empty(),
-        ExprKind::Paren(inner) => counts_safely(inner),
+        ExprKind::Variable(variable) => {
+            let once = !*seen && variable.indices.is_empty();
+            *seen = true;
+            once && name_key(&upper(variable.name.text(source))) == target
+        }
+        ExprKind::Paren(inner) => counts_safely(source, inner, target, seen),
         ExprKind::Unary { op, operand } => {
-            matches!(op, UnaryOp::Neg | UnaryOp::Plus) && counts_safely(operand)
+            matches!(op, UnaryOp::Neg | UnaryOp::Plus)
+                && counts_safely(source, operand, target, seen)
         }
         ExprKind::Binary { op, lhs, rhs } => {
-            matches!(op, BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul)
-                && counts_safely(lhs)
-                && counts_safely(rhs)
+            matches!(op, BinaryOp::Add | BinaryOp::Sub)
+                && counts_safely(source, lhs, target, seen)
+                && counts_safely(source, rhs, target, seen)
         }
         _ => false,
     }
@@ -298,9 +308,10 @@ mod tests {
         let counting =
             "DEF INT _PASS=0\nLOOP\n_PASS=_PASS+1\nMSG(\"pass \"<<_PASS)\nG0 X10\nENDLOOP\n";
         assert_eq!(of(counting), ["_PASS"]);
-        // R01 is R1; a value that feeds only counters is one.
-        let chain = "DEF REAL _SUM\nLOOP\nR01=R1+1\n_SUM=_SUM+R1*2\nENDLOOP\n";
-        assert_eq!(of(chain), ["R1", "_SUM"]);
+        // R01 is R1; a count down, a reset.
+        let down = "DEF REAL _LEFT\nLOOP\nR01=R1+1\n_LEFT=-(1-_LEFT)\nIF R1>9 R1=0\nENDLOOP\n";
+        assert_eq!(of(down), ["_LEFT"]);
+        assert_eq!(of("LOOP\nR01=R1+1\nR1=0\nENDLOOP\n"), ["R1"]);
     }
 
     #[test]
@@ -331,6 +342,12 @@ mod tests {
         assert!(of("LOOP\nR1=R1+1\nR2=SQRT(10-R1)\nENDLOOP\n").is_empty());
         assert!(of("LOOP\nR1=R1+1\nR2=R2+1/(5-R1)\nENDLOOP\n").is_empty());
         assert!(of("LOOP\nR1=R1+1\nMSG(\"x\"<<SQRT(-R1))\nENDLOOP\n").is_empty());
+        // What grows faster than a count: it overflows at last.
+        assert!(of("R1=2\nLOOP\nR1=R1*R1\nENDLOOP\n").is_empty());
+        assert!(of("R1=2\nLOOP\nR1=R1+R1\nENDLOOP\n").is_empty());
+        assert!(of("LOOP\n_A=_A+_B\n_B=_B+_A\nENDLOOP\n").is_empty());
+        // A value that feeds another counter is read elsewhere.
+        assert!(of("LOOP\nR1=R1+1\n_C=_C+R1\nENDLOOP\n").is_empty());
     }
 
     #[test]

@@ -666,12 +666,6 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     let value = evaluate(source, &assign.value, &self.variables);
                     match (key, value) {
                         (Ok(key), Ok(value)) => {
-                            if !self.variables.local.contains_key(&key)
-                                && !calls::is_r_parameter(&key)
-                                && self.stack.iter().any(|level| level.section.is_none())
-                            {
-                                self.unknown(row, statement.span, format!("`{key}` is not the subprogram's own (not defined in it, no R parameter): the caller does not see what it is given here"));
-                            }
                             self.variables.local.insert(key, value);
                         }
                         (Ok(key), Err(missing)) => {
@@ -1199,6 +1193,8 @@ impl<'a, 'src> Interpreter<'a, 'src> {
         }
         for command in &content.commands {
             match command.as_str() {
+                // The subprogram's end, as M17 (the main program's, as M30).
+                "RET" => ends = true,
                 "BRISK" => self.modes.soft = false,
                 "SOFT" => self.modes.soft = true,
                 "SUPA" => suppress_frames = true,
