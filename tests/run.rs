@@ -43,6 +43,24 @@ fn dry_run(machine_text: &str, program: &str) -> Report {
 
 /// [`dry_run`], each block's end handed to `each` as the run passes it.
 fn dry_run_each(machine_text: &str, program: &str, each: impl FnMut(BlockEnd)) -> Report {
+    dry_run_with(machine_text, program, &Options::default(), each)
+}
+
+/// [`dry_run`], ended after `block_limit` blocks.
+fn dry_run_to(machine_text: &str, program: &str, block_limit: u64) -> Report {
+    let options = Options {
+        block_limit,
+        ..Options::default()
+    };
+    dry_run_with(machine_text, program, &options, |_| {})
+}
+
+fn dry_run_with(
+    machine_text: &str,
+    program: &str,
+    options: &Options,
+    each: impl FnMut(BlockEnd),
+) -> Report {
     let data = MachineData::read(machine_text.as_bytes());
     assert!(data.diagnostics.is_empty(), "{:?}", data.diagnostics);
     let records = sinuprep::semantic::machine::Machine::read(
@@ -52,13 +70,7 @@ fn dry_run_each(machine_text: &str, program: &str, each: impl FnMut(BlockEnd)) -
     let setup = Setup::of(&data).with_records(&records);
     let model = Model::of(program.as_bytes());
     let programs = Programs::alone(&model);
-    run(
-        &programs,
-        &setup,
-        &Supplied::default(),
-        &Options::default(),
-        each,
-    )
+    run(&programs, &setup, &Supplied::default(), options, each)
 }
 
 /// Each block's line and machine positions at its end.
@@ -789,19 +801,10 @@ fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
     }
     // An axis that moves on at each pass: never the same state; the run
     // goes on to its block limit, and tells the travel it passes.
-    let options = Options {
-        block_limit: 3000,
-        ..Options::default()
-    };
-    let data = MachineData::read(data.as_bytes());
-    let setup = Setup::of(&data);
-    let model = Model::of(b"G0 X0 Y0 Z0\nSTART:\nG91 G0 X0.1\nG90\nGOTOB START\n");
-    let report = run(
-        &Programs::alone(&model),
-        &setup,
-        &Supplied::default(),
-        &options,
-        |_| {},
+    let report = dry_run_to(
+        &data,
+        "G0 X0 Y0 Z0\nSTART:\nG91 G0 X0.1\nG90\nGOTOB START\n",
+        3000,
     );
     assert_eq!(report.endless, None);
     assert_eq!(report.blocks, 3000);
@@ -812,31 +815,16 @@ fn a_loop_that_ends_or_goes_on_is_not_taken_for_endless() {
     );
     // A counter read where the trees do not show it (a REPEAT's count) is
     // no counter: every pass is longer than the one before.
-    let model = Model::of(
-        b"G0 X0 Y0 Z0\nR5=0\nLOOP\nR5=R5+1\nSEC: G0 X1\nG0 X0\nREPEAT SEC P=R5\nENDLOOP\n",
-    );
-    let report = run(
-        &Programs::alone(&model),
-        &setup,
-        &Supplied::default(),
-        &options,
-        |_| {},
-    );
-    assert_eq!(report.endless, None);
+    let repeated =
+        "G0 X0 Y0 Z0\nR5=0\nLOOP\nR5=R5+1\nSEC: G0 X1\nG0 X0\nREPEAT SEC P=R5\nENDLOOP\n";
+    assert_eq!(dry_run_to(&data, repeated, 3000).endless, None);
     // R1 feeds an arc's radius (an address, not a variable), R2 a square
     // root that fails at the 11th pass: neither is a counter.
     for program in [
         "G17 G90 G0 X0 Y0 Z0 F1000\nR1=20\nLOOP\nR1=R1-1\nG2 X10 Y0 CR=R1\nG2 X0 Y0 CR=R1\nENDLOOP\n",
         "G0 X0 Y0 Z0\nR1=0\nLOOP\nR1=R1+1\nR2=SQRT(10-R1)\nG0 X10\nG0 X0\nENDLOOP\n",
     ] {
-        let model = Model::of(program.as_bytes());
-        let report = run(
-            &Programs::alone(&model),
-            &setup,
-            &Supplied::default(),
-            &options,
-            |_| {},
-        );
+        let report = dry_run_to(&data, program, 3000);
         assert!(
             report.endless.as_ref().is_none_or(|e| e.rests_on_unknown),
             "{program}: {:?}",

@@ -10,6 +10,7 @@ use crate::semantic::eval::{evaluate, key};
 use crate::semantic::jumps::Target;
 use crate::semantic::model::Model;
 use crate::semantic::value::Value;
+use crate::semantic::vocabulary::is_r_parameter;
 use crate::span::Span;
 use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind, TypeKind};
 
@@ -289,16 +290,10 @@ fn globals(variables: &HashMap<String, Value>, model: &Model) -> HashMap<String,
         .iter()
         .filter(|(key, _)| {
             let name = key.split('[').next().unwrap_or(key);
-            is_r_parameter(key) || !(own.contains(name) || name == "$P_SUBPAR")
+            is_r_parameter(key.as_bytes()) || !(own.contains(name) || name == "$P_SUBPAR")
         })
         .map(|(key, value)| (key.clone(), value.clone()))
         .collect()
-}
-
-/// `R12`, as the run keys an R parameter.
-pub(super) fn is_r_parameter(key: &str) -> bool {
-    key.strip_prefix('R')
-        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
 }
 
 /// `L105`: a subprogram called by its number (the digits as written:

@@ -26,12 +26,12 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::calls::is_r_parameter;
 use crate::run::Programs;
 use crate::semantic::eval::key;
 use crate::semantic::model::Model;
+use crate::semantic::vocabulary::is_r_parameter;
 use crate::syntax::tree::{
-    upper, BinaryOp, Expr, ExprKind, Initializer, LineKind, StatementKind, UnaryOp,
+    upper, BinaryOp, Expr, ExprKind, Initializer, LineKind, Name, StatementKind, UnaryOp,
 };
 use crate::syntax::visit::{each_read, each_variable};
 
@@ -52,10 +52,10 @@ pub(super) fn counters(programs: &Programs) -> HashSet<String> {
     let mut counters: HashSet<String> = uses
         .assigned
         .iter()
-        .filter(|name| is_r_parameter(name) || uses.defined.contains(*name))
+        .filter(|name| is_r_parameter(name.as_bytes()) || uses.defined.contains(*name))
         .filter(|name| !uses.read_elsewhere.contains(*name))
         .filter(|name| words.get(name) == uses.seen.get(*name))
-        .filter(|name| !(words.r_by_number && is_r_parameter(name)))
+        .filter(|name| !(words.r_by_number && is_r_parameter(name.as_bytes())))
         .cloned()
         .collect();
     // A counter's value may feed only counters.
@@ -105,7 +105,7 @@ impl Uses {
             for statement in &block.statements {
                 match &statement.kind {
                     StatementKind::Assign(assign) => {
-                        let target = name_key(&upper(assign.target.name.text(source)));
+                        let target = key_of(source, assign.target.name);
                         self.see(&target);
                         if assign.target.indices.is_empty()
                             && counts_safely(source, &assign.value, &target, &mut false)
@@ -120,7 +120,7 @@ impl Uses {
                                 .for_each(|i| self.elsewhere(source, i));
                         }
                         each_variable(&assign.value, &mut |variable| {
-                            let read = name_key(&upper(variable.name.text(source)));
+                            let read = key_of(source, variable.name);
                             self.see(&read);
                             if !variable.indices.is_empty() {
                                 self.read_elsewhere.insert(read.clone());
@@ -133,7 +133,7 @@ impl Uses {
                         for argument in arguments.filter_map(|a| a.value.as_ref()) {
                             let shown = shows_safely(argument);
                             each_variable(argument, &mut |variable| {
-                                let read = name_key(&upper(variable.name.text(source)));
+                                let read = key_of(source, variable.name);
                                 self.see(&read);
                                 if !shown {
                                     self.read_elsewhere.insert(read);
@@ -143,7 +143,7 @@ impl Uses {
                     }
                     StatementKind::Def(def) => {
                         for declarator in &def.variables {
-                            let name = name_key(&upper(declarator.name.text(source)));
+                            let name = key_of(source, declarator.name);
                             self.see(&name);
                             self.defined.insert(name.clone());
                             if !declarator.dimensions.is_empty()
@@ -153,13 +153,13 @@ impl Uses {
                             }
                         }
                         each_read(statement, &mut |variable| {
-                            let read = name_key(&upper(variable.name.text(source)));
+                            let read = key_of(source, variable.name);
                             self.see(&read);
                             self.read_elsewhere.insert(read);
                         });
                     }
                     _ => each_read(statement, &mut |variable| {
-                        let read = name_key(&upper(variable.name.text(source)));
+                        let read = key_of(source, variable.name);
                         self.see(&read);
                         self.read_elsewhere.insert(read);
                     }),
@@ -180,7 +180,7 @@ impl Uses {
     /// Every variable `expr` reads, read where its value can go anywhere.
     fn elsewhere(&mut self, source: &[u8], expr: &Expr) {
         each_variable(expr, &mut |variable| {
-            let read = name_key(&upper(variable.name.text(source)));
+            let read = key_of(source, variable.name);
             self.see(&read);
             self.read_elsewhere.insert(read);
         });
@@ -192,6 +192,11 @@ fn name_key(name: &str) -> String {
     key(name, &[])
 }
 
+/// The key of the variable `name` stands for in `source`.
+fn key_of(source: &[u8], name: Name) -> String {
+    name_key(&upper(name.text(source)))
+}
+
 /// A counter's new value: numbers added to or taken from `target`, which
 /// appears at most once (`seen`): it never more than adds.
 fn counts_safely(source: &[u8], expr: &Expr, target: &str, seen: &mut bool) -> bool {
@@ -200,7 +205,7 @@ fn counts_safely(source: &[u8], expr: &Expr, target: &str, seen: &mut bool) -> b
         ExprKind::Variable(variable) => {
             let once = !*seen && variable.indices.is_empty();
             *seen = true;
-            once && name_key(&upper(variable.name.text(source))) == target
+            once && key_of(source, variable.name) == target
         }
         ExprKind::Paren(inner) => counts_safely(source, inner, target, seen),
         ExprKind::Unary { op, operand } => {
