@@ -501,3 +501,27 @@ fn names_with_line_breaks_and_escape_sequences_are_printed_escaped() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn names_ending_in_characters_of_several_bytes_are_only_names() {
+    // A folder's names are compared by their ends (`.SPF`, `_DEF`,
+    // `.DEF`): a name whose last bytes cut a character (`Größe`, `€€`) is
+    // neither, and the folder is checked as usual.
+    let dir = support::scratch("hostile-multibyte-names");
+    for name in ["Größe", "€€", "Ä.spf€", "ÜBER_DEF€", "€.SPF", "ö_DEF"] {
+        std::fs::write(dir.join(name), b"").expect("write");
+    }
+    std::fs::write(dir.join("A.MPF"), b"G0 X1\nM30\n").expect("write");
+    let program = dir.join("A.MPF");
+    let output = run(
+        &[
+            "check",
+            "--format",
+            "short",
+            program.to_str().expect("utf-8"),
+        ],
+        b"",
+    );
+    assert_exit(&output, 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -11,7 +11,7 @@
 //! Names only: no file is read here.
 
 use std::collections::BTreeMap;
-use std::ffi::OsString;
+use std::ffi::{OsStr, OsString};
 use std::path::{Path, PathBuf};
 
 use super::{SettingsError, FILE_NAME};
@@ -41,21 +41,23 @@ impl Listing {
     pub(crate) fn read(dir: &Path) -> std::io::Result<Listing> {
         let mut listing = Listing::default();
         for entry in std::fs::read_dir(dir)?.flatten() {
-            let path = entry.path();
+            // The name decides first: a folder of thousands of files (a
+            // home directory on the way up to the settings) costs one
+            // comparison each, no path built.
             let name = entry.file_name();
             if name.eq_ignore_ascii_case(FILE_NAME) {
+                let path = entry.path();
                 if path.is_file() {
                     listing.settings.push(path);
                 }
                 continue;
             }
-            let stem = match (path.file_stem(), path.extension()) {
-                (Some(stem), Some(extension)) if extension.eq_ignore_ascii_case("spf") => stem,
-                _ => continue,
+            let Some(stem) = subprogram_stem(&name) else {
+                continue;
             };
             let link = entry.file_type().is_ok_and(|kind| kind.is_symlink());
             let found = Entry {
-                path: path.clone(),
+                path: entry.path(),
                 link,
             };
             if stem.eq_ignore_ascii_case("HEAD_DEF") {
@@ -111,6 +113,15 @@ pub(crate) fn settings_in(dir: &Path) -> Result<Option<PathBuf>, SettingsError> 
         Ok(listing) => listing.settings(),
         Err(_) => Ok(Some(dir.join(FILE_NAME)).filter(|path| path.is_file())),
     }
+}
+
+/// `name` without its `.SPF` extension (any case), as `Path::file_stem`
+/// reads it (`.SPF` alone is a hidden file's name, no subprogram); the
+/// extension is tested on the bytes first, so most names cost a compare.
+fn subprogram_stem(name: &OsStr) -> Option<&OsStr> {
+    let bytes = name.as_encoded_bytes();
+    let spf = bytes.len() > 4 && bytes[bytes.len() - 4..].eq_ignore_ascii_case(b".spf");
+    spf.then(|| Path::new(name).file_stem()).flatten()
 }
 
 /// The entries a run takes: links only when it follows them.

@@ -806,13 +806,14 @@ pub fn definitions_beside(program: &Path) -> Vec<PathBuf> {
         Some(folder) => folder,
         None => return Vec::new(),
     };
-    let is_definitions = |path: &Path| {
-        path.extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("def"))
-            || path
-                .file_name()
-                .and_then(|n| n.to_str())
-                .is_some_and(|n| n.len() > 4 && n[n.len() - 4..].eq_ignore_ascii_case("_DEF"))
+    // By the bytes' end (`_DEF`, `.DEF`), never a cut of the name: a name
+    // ending in a multi-byte character is no boundary to slice at.
+    let is_definitions = |name: &std::ffi::OsStr| {
+        let bytes = name.as_encoded_bytes();
+        bytes.len() > 4 && {
+            let end = &bytes[bytes.len() - 4..];
+            end.eq_ignore_ascii_case(b"_DEF") || end.eq_ignore_ascii_case(b".DEF")
+        }
     };
     let mut found = Vec::new();
     let folders = [
@@ -824,9 +825,12 @@ pub fn definitions_beside(program: &Path) -> Vec<PathBuf> {
         let Ok(entries) = std::fs::read_dir(&folder) else {
             continue;
         };
+        // By name first, then a stat for the few that match.
         let mut here: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.is_file() && is_definitions(p))
+            .flatten()
+            .filter(|e| is_definitions(&e.file_name()))
+            .map(|e| e.path())
+            .filter(|p| p.is_file())
             .collect();
         here.sort();
         found.extend(here);
