@@ -1769,32 +1769,7 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                     }
                 }
             }
-            // A limit a micrometre inside the way's extreme is passed, one a
-            // micrometre outside it is not, on either side.
-            for (a, name) in ["X1", "Y1", "Z1"].iter().enumerate() {
-                for (side, extreme, sign, md) in [
-                    (Side::Plus, highest[a], 1.0, "N36110 $MA_POS_LIMIT_PLUS"),
-                    (Side::Minus, lowest[a], -1.0, "N36100 $MA_POS_LIMIT_MINUS"),
-                ] {
-                    let inside = format!("{md}[{name}]={}\n", extreme - sign * 1e-3);
-                    let (limited, _) = dry(&inside);
-                    assert!(
-                        limited
-                            .violations
-                            .iter()
-                            .any(|v| v.axis == *name && v.side == side),
-                        "{what}: {inside} {:?}",
-                        limited.violations
-                    );
-                    let outside = format!("{md}[{name}]={}\n", extreme + sign * 1e-3);
-                    let (clear, _) = dry(&outside);
-                    assert!(
-                        clear.violations.is_empty(),
-                        "{what}: {outside} {:?}",
-                        clear.violations
-                    );
-                }
-            }
+            limits_found_at_the_extremes(&dry, lowest, highest, &what);
             for a in 0..3 {
                 let travel = &report.axes[a];
                 assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
@@ -1805,6 +1780,174 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                     &format!("{what} axis {a} {program}"),
                 );
             }
+        }
+    }
+}
+
+/// An arc (G2, G3, a helix too) under TRAORI: the tool tip on the circle
+/// through G54, the rotary axes standing still or turning linearly
+/// (ORIAXES); the run's travel of each machine axis is the one a fine
+/// sampling of the independent chain along the circle finds, a limit just
+/// inside it is found and one just outside is not; the block's time is the
+/// circle's length at the feed at least.
+#[test]
+fn under_traori_an_arc_is_followed_along_its_circle() {
+    const SAMPLES: u32 = 20_000;
+    let mut numbers = Numbers(1100);
+    for k in &oracle_kinematics() {
+        for case in 0..8 {
+            let g54 = [
+                numbers.between(-200.0, 200.0),
+                numbers.between(-200.0, 200.0),
+                numbers.between(-300.0, -100.0),
+            ];
+            let length = numbers.between(50.0, 150.0);
+            let start = [
+                numbers.between(-40.0, 40.0),
+                numbers.between(-40.0, 40.0),
+                numbers.between(0.0, 30.0),
+            ];
+            let from_angles = [numbers.between(-60.0, 60.0), numbers.between(-90.0, 90.0)];
+            // The centre from the start (I, J), the angle swept, the rise.
+            let offset = [numbers.between(-30.0, 30.0), numbers.between(-30.0, 30.0)];
+            let sweep = numbers.between(20.0, 340.0).to_radians();
+            let rise = numbers.between(-10.0, 10.0);
+            let clockwise = case % 2 == 0;
+            // Every other pair of cases the rotary axes turn with the arc.
+            let turning = case % 4 >= 2;
+            let to_angles = if turning {
+                [numbers.between(-60.0, 60.0), numbers.between(-90.0, 90.0)]
+            } else {
+                from_angles
+            };
+            let centre = [start[0] + offset[0], start[1] + offset[1]];
+            let radius = offset[0].hypot(offset[1]);
+            let phase = (-offset[1]).atan2(-offset[0]);
+            let direction = if clockwise { -1.0 } else { 1.0 };
+            let tip = |s: f64| {
+                let angle = phase + direction * sweep * s;
+                Vector3::new(
+                    centre[0] + radius * angle.cos(),
+                    centre[1] + radius * angle.sin(),
+                    start[2] + rise * s,
+                )
+            };
+            let end = tip(1.0);
+            let names = [rotary_name(k, 0), rotary_name(k, 1)];
+            let mut program = format!(
+                "G54 T1 D1 M6\nTRAORI ORIAXES\nG1 X{} Y{} Z{} {}{} {}{} F1000\n",
+                start[0], start[1], start[2], names[0], from_angles[0], names[1], from_angles[1]
+            );
+            program.push_str(&format!(
+                "G{} X{} Y{} Z{} I{} J{}",
+                if clockwise { 2 } else { 3 },
+                end.x,
+                end.y,
+                end.z,
+                offset[0],
+                offset[1]
+            ));
+            if turning {
+                program.push_str(&format!(
+                    " {}{} {}{}",
+                    names[0], to_angles[0], names[1], to_angles[1]
+                ));
+            }
+            program.push_str(" F600\nM30\n");
+            let data = |limits: &str| {
+                five_axis(&format!(
+                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n$MC_ORI_IPO_WITH_G_CODE=1\n\
+$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+                    record_text(k),
+                    g54[0],
+                    g54[1],
+                    g54[2]
+                ))
+            };
+            let dry = |limits: &str| dry_run_ends(&data(limits), &program);
+            let (report, ends) = dry("");
+            let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
+            assert!(
+                report.unknown.iter().all(|u| !u.why.contains("TRAORI")),
+                "{what}"
+            );
+            // At the arc's end: the rotary axes where programmed, the tip on
+            // the end through G54.
+            let (m, turned) = holder_at(&ends, 4, names);
+            assert_near(turned[0], to_angles[0], 1e-12, &what);
+            assert_near(turned[1], to_angles[1], 1e-12, &what);
+            let (at_end, _) = forward(k, m, turned, length);
+            assert!(
+                (at_end - Vector3::from(g54) - end).norm() < 1e-9,
+                "{what}: tip {at_end}"
+            );
+            let mut lowest = [f64::INFINITY; 3];
+            let mut highest = [f64::NEG_INFINITY; 3];
+            for i in 0..=SAMPLES {
+                let s = f64::from(i) / f64::from(SAMPLES);
+                let x = Vector3::from(g54) + tip(s);
+                let angles = [0, 1].map(|j| from_angles[j] + (to_angles[j] - from_angles[j]) * s);
+                let m = holder(k, x, angles, length);
+                for a in 0..3 {
+                    lowest[a] = lowest[a].min(m[a]);
+                    highest[a] = highest[a].max(m[a]);
+                }
+            }
+            // The first block's way, from the start (where the run begins
+            // to know the axes) is its end alone.
+            let (m, _) = holder_at(&ends, 3, names);
+            for a in 0..3 {
+                lowest[a] = lowest[a].min(m[a]);
+                highest[a] = highest[a].max(m[a]);
+            }
+            for a in 0..3 {
+                let travel = &report.axes[a];
+                assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
+                assert_near(travel.max.expect("max"), highest[a], 1e-6, &what);
+            }
+            limits_found_at_the_extremes(&dry, lowest, highest, &what);
+            // The tip's way along the circle at 600 mm/min, at least.
+            let arc_length = (radius * sweep).hypot(rise);
+            assert!(
+                report.time_s >= arc_length / 10.0 - 1e-9,
+                "{what}: {} s for {arc_length} mm",
+                report.time_s
+            );
+        }
+    }
+}
+
+/// A limit a micrometre inside the way's extreme (`lowest`, `highest` of
+/// X1, Y1, Z1) is passed, one a micrometre outside it is not, on either
+/// side: `dry` runs the program on the machine with a line of data added.
+fn limits_found_at_the_extremes(
+    dry: &impl Fn(&str) -> (Report, Ends),
+    lowest: [f64; 3],
+    highest: [f64; 3],
+    what: &str,
+) {
+    for (a, name) in ["X1", "Y1", "Z1"].iter().enumerate() {
+        for (side, extreme, sign, md) in [
+            (Side::Plus, highest[a], 1.0, "N36110 $MA_POS_LIMIT_PLUS"),
+            (Side::Minus, lowest[a], -1.0, "N36100 $MA_POS_LIMIT_MINUS"),
+        ] {
+            let inside = format!("{md}[{name}]={}\n", extreme - sign * 1e-3);
+            let (limited, _) = dry(&inside);
+            assert!(
+                limited
+                    .violations
+                    .iter()
+                    .any(|v| v.axis == *name && v.side == side),
+                "{what}: {inside} {:?}",
+                limited.violations
+            );
+            let outside = format!("{md}[{name}]={}\n", extreme + sign * 1e-3);
+            let (clear, _) = dry(&outside);
+            assert!(
+                clear.violations.is_empty(),
+                "{what}: {outside} {:?}",
+                clear.violations
+            );
         }
     }
 }

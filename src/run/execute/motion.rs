@@ -450,15 +450,33 @@ impl Interpreter<'_, '_> {
         } else {
             end.clone()
         };
-        // The arc, in the machine's coordinates.
-        let arc = match self.modes.motion {
-            Motion::Clockwise | Motion::Counterclockwise if self.transformed.is_some() => {
-                self.unknown(row, span, "an arc under TRAORI: its travel is checked at its ends alone and its time taken on its chord".into());
-                None
+        // Under TRAORI the way starts where the machine stands, under the
+        // frames and tool now.
+        let way_start = self
+            .transformed
+            .is_some()
+            .then(|| self.to_program(&start_mcs, suppress, tool));
+        let way = self.way(self.by_vector);
+        // The arc as programmed (under TRAORI the tool tip's), and in the
+        // machine's coordinates: under TRAORI only while the rotary axes
+        // stand still (a rigid motion of the tip's arc); where they turn,
+        // the way is sampled along the tip's arc instead.
+        let programmed_arc = match self.modes.motion {
+            Motion::Clockwise | Motion::Counterclockwise => {
+                self.programmed_arc(row, span, &start, &end, centre, shape)
             }
-            Motion::Clockwise | Motion::Counterclockwise => self
-                .programmed_arc(row, span, &start, &end, centre, shape)
-                .map(|arc| self.arc_on_machine(row, span, &arc, suppress, tool)),
+            _ => None,
+        };
+        let turning = way_start
+            .as_deref()
+            .is_some_and(|from| self.transformed_turn(from, &end, suppress, way) > 0.0);
+        let arc = match &programmed_arc {
+            Some(arc) if self.transformed.is_none() => {
+                Some(self.arc_on_machine(row, span, arc, suppress, tool))
+            }
+            Some(arc) if !turning => {
+                self.transformed_arc_on_machine(row, span, arc, &end, suppress, tool)
+            }
             _ => None,
         };
         self.last_arc = arc;
@@ -466,20 +484,13 @@ impl Interpreter<'_, '_> {
         // the block traverses a changed offset, the arc's start under the new
         // one too: the path lies between the arc under the old offset and
         // under the new, which holds its extremes.
-        // Under TRAORI the way starts where the machine stands, under the
-        // frames and tool now.
-        let way_start = self
-            .transformed
-            .is_some()
-            .then(|| self.to_program(&start_mcs, suppress, tool));
         let mut points = vec![end_mcs.clone()];
-        if self.transformed.is_some() {
+        if let Some(from) = &way_start {
             if self.modes.motion == Motion::Rapid && !self.modes.rapid_linear {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
-            let way = self.way(self.by_vector);
-            let from = way_start.as_deref().unwrap_or(&start);
-            points.extend(self.transformed_way(from, &end, suppress, tool, way));
+            let tip_arc = programmed_arc.as_ref().filter(|_| turning);
+            points.extend(self.transformed_way(from, &end, suppress, tool, way, tip_arc));
         }
         if let Some(arc) = &arc {
             for k in 0..3 {
@@ -493,9 +504,12 @@ impl Interpreter<'_, '_> {
                 }
             }
         }
-        let tip = way_start
-            .as_deref()
-            .map(|from| self.tip_way(from, &end, suppress));
+        // The tool tip's way under TRAORI: its arc, or the line between the
+        // block's ends.
+        let tip = way_start.as_deref().map(|from| match &programmed_arc {
+            Some(arc) => self.tip_arc_length(arc, suppress),
+            None => self.tip_way(from, &end, suppress),
+        });
         self.traverse(
             row,
             span,
@@ -720,34 +734,55 @@ impl Interpreter<'_, '_> {
         suppress: bool,
         tool: [f64; 3],
     ) -> Arc {
-        let to_machine = |p: Vector3<f64>| -> Vector3<f64> {
+        let on_machine = arc_through(arc, |p| {
             let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
-            wcs[0] = Some(p.x);
-            wcs[1] = Some(p.y);
-            wcs[2] = Some(p.z);
-            let at = self.to_machine(&wcs, suppress, tool);
-            Vector3::new(
-                at[0].unwrap_or(0.0),
-                at[1].unwrap_or(0.0),
-                at[2].unwrap_or(0.0),
-            )
-        };
-        let origin = to_machine(Vector3::zeros());
-        let turn = |d: Vector3<f64>| to_machine(d) - origin;
-        let on_machine = Arc {
-            centre: to_machine(arc.centre),
-            u: turn(arc.u),
-            v: turn(arc.v),
-            normal: turn(arc.normal),
-            sweep: arc.sweep,
-            rise: arc.rise,
-        };
-        // Unequal scales make the circle an ellipse: its extremes are still
-        // exact, its length and radius (the time) taken from its start.
-        if (on_machine.u.norm() - on_machine.v.norm()).abs() > 1e-9 * on_machine.u.norm() {
+            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
+            Some(self.to_machine(&wcs, suppress, tool))
+        })
+        .unwrap_or(*arc);
+        self.ellipse_named(row, span, &on_machine);
+        on_machine
+    }
+
+    /// Under TRAORI, `arc` (the tool tip's, programmed) in the machine while
+    /// the rotary axes stand at their positions in `at` (programmed): the
+    /// chain at fixed angles is a rigid motion, so the holder too moves on
+    /// an arc. `None` where a rotary axis's position is unknown.
+    pub(super) fn transformed_arc_on_machine(
+        &mut self,
+        row: usize,
+        span: Span,
+        arc: &Arc,
+        at: &[Option<f64>],
+        suppress: bool,
+        tool: [f64; 3],
+    ) -> Option<Arc> {
+        let on_machine = arc_through(arc, |p| {
+            let mut wcs = at.to_vec();
+            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
+            Some(self.to_machine(&wcs, suppress, tool))
+        })?;
+        self.ellipse_named(row, span, &on_machine);
+        Some(on_machine)
+    }
+
+    /// The length of `arc` (programmed) through the frames: the tool tip's
+    /// way under TRAORI, which the feed is programmed for.
+    pub(super) fn tip_arc_length(&self, arc: &Arc, suppress: bool) -> f64 {
+        arc_through(arc, |p| {
+            let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
+            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
+            Some(self.frames_only(&wcs, suppress))
+        })
+        .map_or(arc.length(), |tip| tip.length())
+    }
+
+    /// Unequal scales make the circle an ellipse: its extremes are still
+    /// exact, its length and radius (the time) taken from its start.
+    fn ellipse_named(&mut self, row: usize, span: Span, arc: &Arc) {
+        if (arc.u.norm() - arc.v.norm()).abs() > 1e-9 * arc.u.norm() {
             self.unknown(row, span, "an arc under unequal scales of its plane's axes: its length and the radius that limits its speed are taken from its start".into());
         }
-        on_machine
     }
 
     /// Every position of `point` against its axis's software limits, and
@@ -875,4 +910,25 @@ fn radius_of_opening(
 /// towards the second is counter-clockwise about the plane's normal.
 pub(super) fn plane_axes(plane: usize) -> (usize, usize) {
     [(0, 1), (2, 0), (1, 2)][plane]
+}
+
+/// `arc` through the affine map `map` (a point's coordinates, every run
+/// axis, from its geometry axes): the centre mapped, its directions as the
+/// map moves them from the origin. `None` where the map leaves a geometry
+/// coordinate unknown.
+fn arc_through(arc: &Arc, map: impl Fn(Vector3<f64>) -> Option<Vec<Option<f64>>>) -> Option<Arc> {
+    let point = |p: Vector3<f64>| -> Option<Vector3<f64>> {
+        let at = map(p)?;
+        Some(Vector3::new(at[0]?, at[1]?, at[2]?))
+    };
+    let origin = point(Vector3::zeros())?;
+    let turn = |d: Vector3<f64>| Some(point(d)? - origin);
+    Some(Arc {
+        centre: point(arc.centre)?,
+        u: turn(arc.u)?,
+        v: turn(arc.v)?,
+        normal: turn(arc.normal)?,
+        sweep: arc.sweep,
+        rise: arc.rise,
+    })
 }

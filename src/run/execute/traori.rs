@@ -15,6 +15,7 @@ use nalgebra::Vector3;
 use super::{Coordinate, Interpreter};
 use crate::kinematics::swivel::solutions;
 use crate::kinematics::{Carrier, Record, Solution};
+use crate::run::arc::Arc;
 use crate::semantic::value::Value;
 use crate::span::Span;
 
@@ -58,12 +59,13 @@ impl Default for Turning {
 }
 
 /// Said once a run that transforms: what the model rests on.
-const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 evenly at most, as many again where a great circle turns them faster) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends; of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line, or on the arc of G2/G3, and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn or of an arc's sweep (64 evenly at most, as many again where a great circle turns them faster) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends (on an arc whose rotary axes stand still, from the holder's arc, as without TRAORI); of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
 
 /// A transformed block is sampled at a point every this many degrees of
-/// its rotary axes' turn, before the extremes between the samples are
-/// searched: over so short a turn a linear axis's way has one extreme at
-/// most. A block whose axes do not turn is a line: its ends hold its extremes.
+/// its rotary axes' turn or of its arc's sweep, before the extremes
+/// between the samples are searched: over so short a turn a linear axis's
+/// way has one extreme at most. A block whose axes do not turn is a line
+/// (its ends hold its extremes) or an arc (its turning points do).
 const DEGREES_PER_SAMPLE: f64 = 4.0;
 
 /// Even samples of a block at most (a turn of 360 degrees, 5.6 degrees
@@ -240,10 +242,47 @@ impl Interpreter<'_, '_> {
         }
     }
 
+    /// How far the rotary axes turn along a transformed block from `start`
+    /// to `end` (programmed; degrees, 0 where they stand still), and the
+    /// great circle they turn the tool on where they do so.
+    fn turning(
+        &self,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        suppress: bool,
+        way: Way,
+    ) -> (f64, Option<GreatCircle>) {
+        let Some(transformed) = &self.transformed else {
+            return (0.0, None);
+        };
+        let circle = match way {
+            Way::GreatCircle => self.great_circle(transformed, start, end, suppress),
+            Way::Axes => None,
+        };
+        let turn = transformed.turn(start, end);
+        let turn = circle
+            .as_ref()
+            .map_or(turn, |c| turn.max(c.angle.to_degrees()));
+        (turn, circle)
+    }
+
+    /// [`Self::turning`]'s turn alone.
+    pub(super) fn transformed_turn(
+        &self,
+        start: &[Option<f64>],
+        end: &[Option<f64>],
+        suppress: bool,
+        way: Way,
+    ) -> f64 {
+        self.turning(start, end, suppress, way).0
+    }
+
     /// The machine positions along a transformed block from `start` to
     /// `end` (programmed, every run axis): every axis at the sampled
     /// points, and each geometry axis at its extremes between them, found
     /// by a golden-section search on the bracket a sampled extreme lies in.
+    /// The tool tip goes on the line between the ends, or on `arc` (G2, G3)
+    /// where the block is one.
     pub(super) fn transformed_way(
         &self,
         start: &[Option<f64>],
@@ -251,13 +290,9 @@ impl Interpreter<'_, '_> {
         suppress: bool,
         tool: [f64; 3],
         way: Way,
+        arc: Option<&Arc>,
     ) -> Vec<Vec<Option<f64>>> {
-        let circle = match (way, &self.transformed) {
-            (Way::GreatCircle, Some(transformed)) => {
-                self.great_circle(transformed, start, end, suppress)
-            }
-            _ => None,
-        };
+        let (turn, circle) = self.turning(start, end, suppress, way);
         let at = |s: f64| -> Vec<Option<f64>> {
             let mut between: Vec<Option<f64>> = start
                 .iter()
@@ -267,19 +302,18 @@ impl Interpreter<'_, '_> {
                     _ => *b,
                 })
                 .collect();
+            if let Some(arc) = arc {
+                let tip = arc.point(s * arc.sweep);
+                between[..3].copy_from_slice(&[Some(tip.x), Some(tip.y), Some(tip.z)]);
+            }
             if let Some(circle) = &circle {
                 let machine = self.frames_only(&between, suppress);
                 circle.turn(s, &mut between, &machine);
             }
             self.to_machine(&between, suppress, tool)
         };
-        let turn = self
-            .transformed
-            .as_ref()
-            .map_or(0.0, |t| t.turn(start, end));
-        let turn = circle
-            .as_ref()
-            .map_or(turn, |c| turn.max(c.angle.to_degrees()));
+        // An arc is sampled as often as a turn of its sweep's degrees.
+        let turn = turn.max(arc.map_or(0.0, |arc| arc.sweep.to_degrees()));
         if turn == 0.0 {
             return vec![at(0.0), at(1.0)];
         }
