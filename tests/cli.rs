@@ -2431,6 +2431,22 @@ fn force_exclude_leaves_out_files_named_that_exclude_matches() {
     .expect("config");
     let output = run(&["check", "--format", "short", old], b"");
     assert_exit(&output, 0);
+    // A file that does not exist is matched as its path reads, however
+    // spelt (`dir/./old`, `//dir` on Unix): left out, never a crash.
+    let gone = dir.join(".").join("old").join("GONE.MPF");
+    let mut spellings = vec![gone.to_str().expect("utf-8").to_owned()];
+    if cfg!(unix) {
+        spellings.push(format!("/{}", dir.join("old").join("GONE.MPF").display()));
+    }
+    for gone in &spellings {
+        let output = run(&["check", "--format", "short", gone], b"");
+        assert_exit(&output, 0);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("is excluded (force-exclude)"),
+            "{gone}: {stderr}"
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -1617,6 +1617,32 @@ fn labels(items: &[Value]) -> Vec<&str> {
         .collect()
 }
 
+/// On the empty line an editor counts after the last line end (and in an
+/// empty document), completion and signature help answer: the words of the
+/// language, no error.
+#[test]
+fn completion_on_the_empty_last_line_answers() {
+    let (mut client, _) = Client::start(json!({}));
+    for (n, text) in ["", "G0 X1\n", "G0 X1\r\n", "G0 X1\r", "M30\n\n"]
+        .into_iter()
+        .enumerate()
+    {
+        let uri = format!("untitled:LAST{n}.MPF");
+        client.open(&uri, text);
+        let line = u32::try_from(
+            text.matches('\n').count() + text.matches('\r').count() - text.matches("\r\n").count(),
+        )
+        .expect("a few lines");
+        let items = client.request("textDocument/completion", at(&uri, line, 0));
+        assert!(items.get("error").is_none(), "{text:?}: {items}");
+        let words = items.as_array().expect("a list of items");
+        assert!(labels(words).contains(&"STOPRE"), "{text:?}: {items}");
+        let help = client.request("textDocument/signatureHelp", at(&uri, line, 0));
+        assert!(help.get("error").is_none(), "{text:?}: {help}");
+    }
+    client.stop();
+}
+
 const JUMPS: &str = "\
 DEF REAL _DEPTH=5, _DEPTH2
 START:

@@ -883,6 +883,63 @@ fn what_a_subprogram_gives_back_decides_the_verdict() {
     }
 }
 
+/// Calls nested past the control's program levels stop the run where the
+/// control stops with its alarm: a subprogram calling itself three times,
+/// an L-number repeated 9999 times and calling itself, a REPEAT of a
+/// section holding it, each end at the limit within a few hundred blocks
+/// (going on past it ran each level's calls again: tens of millions).
+#[test]
+fn calls_nested_past_the_program_levels_stop_the_run() {
+    let dir = scratch("run_nested_past_levels");
+    let files = [
+        ("MACHINE.INI", machine("")),
+        ("SELF.MPF", "G0 X0 Y0 Z0\nSUBX\nG0 Y7\nM30\n".into()),
+        (
+            "SUBX.SPF",
+            "PROC SUBX\nG1 X1 F10\nSUBX\nSUBX\nSUBX\nM17\n".into(),
+        ),
+        ("NUMBER.MPF", "G0 X0 Y0 Z0\nL10\nG0 Y7\nM30\n".into()),
+        ("L10.SPF", "G0 X1\nL10 P9999\nM17\n".into()),
+        (
+            "SECTION.MPF",
+            "G0 X0 Y0 Z0\nSTART: G0 X1\nREPEAT START FIN P=3\nFIN: G0 X2\nG0 Y7\nM30\n".into(),
+        ),
+    ];
+    for (name, text) in &files {
+        std::fs::write(dir.join(name), text).expect("write");
+    }
+    for main in ["SELF.MPF", "NUMBER.MPF", "SECTION.MPF"] {
+        let json = command(
+            &[
+                "run",
+                "--machine",
+                dir.join("MACHINE.INI").to_str().expect("utf-8"),
+                "--format",
+                "json",
+                "--blocks",
+                dir.join(main).to_str().expect("utf-8"),
+            ],
+            b"",
+        );
+        let report: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+        let blocks = report["blocks"].as_array().expect("blocks").len();
+        assert!(blocks < 1_000, "{main}: {blocks} blocks");
+        let whys: Vec<&str> = report["unknown"]
+            .as_array()
+            .expect("unknown")
+            .iter()
+            .filter_map(|u| u["why"].as_str())
+            .collect();
+        assert!(
+            whys.iter()
+                .any(|why| why.contains("program levels") && why.contains("the run ends here")),
+            "{main}: {whys:?}"
+        );
+        // The blocks after the calls never run: Y stays at 0.
+        assert_eq!(report["axes"]["Y1"]["max"], 0.0, "{main}: {report}");
+    }
+}
+
 /// Loops run as the control runs them, with their counters.
 #[test]
 fn loops_and_jumps_run_as_on_the_control() {

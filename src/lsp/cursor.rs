@@ -41,7 +41,15 @@ impl<'a, 't> Snapshot<'a, 't> {
     pub(super) fn cursor(&self, position: lsp::Position) -> Cursor<'t> {
         let at = self.offset(position);
         let row = self.text.position(at, ColumnUnit::Bytes).row - 1;
-        let line = self.model.lines.raw(row).content;
+        // The editor counts an empty line after the last line end (and an
+        // empty document as one line), the program's lines do not: there
+        // the cursor's line is empty.
+        let lines = &self.model.lines;
+        let line = if row < lines.len() {
+            lines.raw(row).content
+        } else {
+            Span::new(at, at)
+        };
         let source: &'t [u8] = self.text.bytes();
         let at = at.clamp(line.start, line.end);
         let before = read(&source[line.start..at]);

@@ -150,9 +150,15 @@ impl Patterns {
     /// Whether `exclude` leaves out the file at `path` (absolute), named on
     /// the command line: it, or a folder it lies in, matches.
     pub fn excludes_named(&self, path: &Path) -> bool {
+        // A path that could not be resolved (a file that does not exist)
+        // is as typed: `//dir` and `dir/./x` are read as `/dir` and `dir/x`
+        // by `starts_with`, not by the matcher, which cuts its root off the
+        // bytes (and panics where they differ). Rebuilt from its components,
+        // the bytes say what the components do.
+        let path: PathBuf = path.components().collect();
         self.exclude.iter().any(|m| {
             // The matcher reads only paths below its own root.
-            path.starts_with(m.path()) && m.matched_path_or_any_parents(path, false).is_ignore()
+            path.starts_with(m.path()) && m.matched_path_or_any_parents(&path, false).is_ignore()
         })
     }
 

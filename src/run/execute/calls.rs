@@ -16,16 +16,20 @@ use crate::syntax::tree::{upper, Expr, GotoKind, LineKind, Name, StatementKind, 
 
 impl Interpreter<'_, '_> {
     /// Into the subprogram `call` names, from the block on `row`: where
-    /// the run goes on (`next` where it is not followed).
-    pub(super) fn enter(&mut self, row: usize, call: Calling, next: usize) -> usize {
+    /// the run goes on (`next` where it is not followed), `None` where the
+    /// control stops.
+    pub(super) fn enter(&mut self, row: usize, call: Calling, next: usize) -> Option<usize> {
         let span = self.model.lines.raw(row).content;
         let Some(callee) = self.programs.subprograms.get(&call.name) else {
             self.unknown(row, span, format!("`{}` is not followed: no subprogram of that name beside the program or in the cycle directories (--cycles); what it moves, and its time, are not in the run", call.name));
-            return next;
+            return Some(next);
         };
+        // Going on past the alarm would run each level's calls again, a
+        // number of blocks growing with every level (a subprogram calling
+        // itself three times: 43 million blocks before the block limit).
         if self.stack.len() + 1 >= MOST_LEVELS {
-            self.unknown(row, span, format!("`{}` would nest deeper than {MOST_LEVELS} program levels: the control stops with an alarm (14000s); not followed", call.name));
-            return next;
+            self.unknown(row, span, format!("`{}` would nest deeper than {MOST_LEVELS} program levels: the control stops with an alarm (14000s); the run ends here", call.name));
+            return None;
         }
         let mut caller = Return {
             model: self.model,
@@ -55,7 +59,7 @@ impl Interpreter<'_, '_> {
             caller.saved = Some(saved);
         }
         self.stack.push(caller);
-        0
+        Some(0)
     }
 
     /// The PROC line's parameters of the program now running, given
@@ -243,9 +247,9 @@ impl Interpreter<'_, '_> {
             self.unknown(
                 row,
                 span,
-                format!("REPEAT would nest deeper than {MOST_LEVELS} levels: not followed"),
+                format!("REPEAT would nest deeper than {MOST_LEVELS} program levels (each repetition takes one): the control stops with an alarm; the run ends here"),
             );
-            return Flow::Next;
+            return Flow::Stop;
         }
         self.stack.push(Return {
             model,

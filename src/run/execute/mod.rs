@@ -108,6 +108,7 @@ pub fn run(
                 Some(back) => back,
                 None => break,
             },
+            Flow::Stop => break,
         };
         // The last block of a section REPEAT repeats: again, or back.
         let next = match machine.stack.last().and_then(|r| r.section) {
@@ -116,7 +117,10 @@ pub fn run(
         };
         let from = row;
         row = match machine.calling.take() {
-            Some(call) => machine.enter(row, call, next),
+            Some(call) => match machine.enter(row, call, next) {
+                Some(row) => row,
+                None => break,
+            },
             None => next,
         };
         if row <= from {
@@ -135,7 +139,10 @@ pub fn run(
 enum Flow {
     Next,
     To(usize),
+    /// The program level ends (a subprogram returns).
     End,
+    /// The control stops with an alarm: the run ends.
+    Stop,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -934,7 +941,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
     /// The block's words applied, then `flow` (unless the block ends the program).
     fn then(&mut self, row: usize, span: Span, content: Content, flow: Flow) -> Flow {
         match self.apply(row, span, content) {
-            Flow::End => Flow::End,
+            end @ (Flow::End | Flow::Stop) => end,
             _ => flow,
         }
     }
