@@ -459,7 +459,7 @@ impl Interpreter<'_, '_> {
         let way = self.way(self.by_vector);
         // The arc as programmed (under TRAORI the tool tip's), and in the
         // machine's coordinates: under TRAORI only while the rotary axes
-        // stand still (a rigid motion of the tip's arc); where they turn,
+        // stand still (an affine map of the tip's arc); where they turn,
         // the way is sampled along the tip's arc instead.
         let programmed_arc = match self.modes.motion {
             Motion::Clockwise | Motion::Counterclockwise => {
@@ -469,7 +469,7 @@ impl Interpreter<'_, '_> {
         };
         let turning = way_start
             .as_deref()
-            .is_some_and(|from| self.transformed_turn(from, &end, suppress, way) > 0.0);
+            .is_some_and(|from| self.rotary_axes_turn(from, &end, suppress, way));
         let arc = match &programmed_arc {
             Some(arc) if self.transformed.is_none() => {
                 Some(self.arc_on_machine(row, span, arc, suppress, tool))
@@ -746,8 +746,8 @@ impl Interpreter<'_, '_> {
 
     /// Under TRAORI, `arc` (the tool tip's, programmed) in the machine while
     /// the rotary axes stand at their positions in `at` (programmed): the
-    /// chain at fixed angles is a rigid motion, so the holder too moves on
-    /// an arc. `None` where a rotary axis's position is unknown.
+    /// frames and the chain at fixed angles are an affine map, so the
+    /// holder too moves on an arc (an ellipse under unequal scales). `None` where a rotary axis's position is unknown.
     pub(super) fn transformed_arc_on_machine(
         &mut self,
         row: usize,
@@ -923,12 +923,20 @@ fn arc_through(arc: &Arc, map: impl Fn(Vector3<f64>) -> Option<Vec<Option<f64>>>
     };
     let origin = point(Vector3::zeros())?;
     let turn = |d: Vector3<f64>| Some(point(d)? - origin);
+    // The normal kept a unit vector, the rise scaled as it is (SCALE on
+    // the infeed axis): the points are the same, the length is right.
+    let normal = turn(arc.normal)?;
+    let stretch = normal.norm();
+    let (normal, rise) = match stretch > 1e-12 {
+        true => (normal / stretch, arc.rise * stretch),
+        false => (normal, arc.rise),
+    };
     Some(Arc {
         centre: point(arc.centre)?,
         u: turn(arc.u)?,
         v: turn(arc.v)?,
-        normal: turn(arc.normal)?,
+        normal,
         sweep: arc.sweep,
-        rise: arc.rise,
+        rise,
     })
 }

@@ -68,8 +68,14 @@ const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 
 /// (its ends hold its extremes) or an arc (its turning points do).
 const DEGREES_PER_SAMPLE: f64 = 4.0;
 
-/// Even samples of a block at most (a turn of 360 degrees, 5.6 degrees
-/// apart); as many again at most where a great circle turns the axes faster.
+/// A rotary turn of a block at most this many degrees is none: a frame's
+/// rotary offset put on and taken off again leaves a few ulps.
+const STANDING: f64 = 1e-9;
+
+/// Even samples of a block's rotary turn at most (a turn of 360 degrees,
+/// 5.6 degrees apart; an arc's sweep is sampled evenly whatever its
+/// length); as many again at most where a great circle turns the axes
+/// faster.
 const MOST_SAMPLES: usize = 64;
 
 /// How far inside a block's ends (a share of the block) the run looks
@@ -266,15 +272,16 @@ impl Interpreter<'_, '_> {
         (turn, circle)
     }
 
-    /// [`Self::turning`]'s turn alone.
-    pub(super) fn transformed_turn(
+    /// Whether the rotary axes turn along a transformed block (more than
+    /// [`STANDING`]).
+    pub(super) fn rotary_axes_turn(
         &self,
         start: &[Option<f64>],
         end: &[Option<f64>],
         suppress: bool,
         way: Way,
-    ) -> f64 {
-        self.turning(start, end, suppress, way).0
+    ) -> bool {
+        self.turning(start, end, suppress, way).0 > STANDING
     }
 
     /// The machine positions along a transformed block from `start` to
@@ -293,6 +300,21 @@ impl Interpreter<'_, '_> {
         arc: Option<&Arc>,
     ) -> Vec<Vec<Option<f64>>> {
         let (turn, circle) = self.turning(start, end, suppress, way);
+        // The tip on the arc, from where the machine stands: where a frame
+        // or the tool changed since the arc's programmed start, the way
+        // there is spread over the block, so that it starts at `start`.
+        let on_arc = arc.map(|arc| {
+            let from = Vector3::new(
+                start[0].unwrap_or(0.0),
+                start[1].unwrap_or(0.0),
+                start[2].unwrap_or(0.0),
+            );
+            let shift = match start[..3] {
+                [Some(_), Some(_), Some(_)] => from - arc.point(0.0),
+                _ => Vector3::zeros(),
+            };
+            (arc, shift)
+        });
         let at = |s: f64| -> Vec<Option<f64>> {
             let mut between: Vec<Option<f64>> = start
                 .iter()
@@ -302,8 +324,8 @@ impl Interpreter<'_, '_> {
                     _ => *b,
                 })
                 .collect();
-            if let Some(arc) = arc {
-                let tip = arc.point(s * arc.sweep);
+            if let Some((arc, shift)) = &on_arc {
+                let tip = arc.point(s * arc.sweep) + shift * (1.0 - s);
                 between[..3].copy_from_slice(&[Some(tip.x), Some(tip.y), Some(tip.z)]);
             }
             if let Some(circle) = &circle {
@@ -312,12 +334,18 @@ impl Interpreter<'_, '_> {
             }
             self.to_machine(&between, suppress, tool)
         };
-        // An arc is sampled as often as a turn of its sweep's degrees.
-        let turn = turn.max(arc.map_or(0.0, |arc| arc.sweep.to_degrees()));
-        if turn == 0.0 {
+        if turn <= STANDING && arc.is_none() {
             return vec![at(0.0), at(1.0)];
         }
-        let count = ((turn / DEGREES_PER_SAMPLE).ceil() as usize).clamp(1, MOST_SAMPLES);
+        // An arc is sampled every DEGREES_PER_SAMPLE of its sweep, its full
+        // turns too (TURN=, up to 999): fewer would let two of a
+        // coordinate's extremes fall between two samples.
+        let by_sweep = arc.map_or(0, |arc| {
+            (arc.sweep.to_degrees() / DEGREES_PER_SAMPLE).ceil() as usize
+        });
+        let count = ((turn / DEGREES_PER_SAMPLE).ceil() as usize)
+            .clamp(1, MOST_SAMPLES)
+            .max(by_sweep);
         let mut samples: Vec<(f64, Vec<Option<f64>>)> = (0..=count)
             .map(|i| {
                 let s = i as f64 / count as f64;
