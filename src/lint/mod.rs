@@ -22,7 +22,7 @@ use crate::diagnostic::{Applicability, Diagnostic, Fix, RuleInfo, Severity};
 use crate::edit::Edit;
 use crate::emit::cycle600::{call_edits, Form, Options};
 use crate::lint::dispatch::Checkers;
-use crate::lint::rule::{FileContext, LineView, PlainLine};
+use crate::lint::rule::{Check, Checking, FileContext, InLineOrder, LineView, PlainLine};
 use crate::lint::rules::{undefined_variable, unused_suppression};
 use crate::lint::suppression::Suppressions;
 use crate::registry::{
@@ -283,6 +283,27 @@ fn analyze_with<'src>(
 /// [`PlainRun::LINES`]).
 const LINES_BETWEEN_STOPS: usize = 4096;
 
+/// The checkers of the rules `selection` enables: each its own, the modal
+/// rules one walk together.
+fn checkers_of(selection: &Selection) -> Vec<Box<dyn Check>> {
+    let mut own = Vec::new();
+    let mut modal = Vec::new();
+    for rule in rules::all() {
+        if !selection.enables(rule.info.code) {
+            continue;
+        }
+        match rule.checking {
+            Checking::Own(make) => own.push(make()),
+            Checking::InLineOrder(make) => modal.push(make()),
+            Checking::Elsewhere => {}
+        }
+    }
+    if !modal.is_empty() {
+        own.push(Box::new(InLineOrder::new(modal)));
+    }
+    own
+}
+
 fn analyze_stopping<'src>(
     scan_plain_line: PlainScanner,
     source: &'src [u8],
@@ -299,13 +320,7 @@ fn analyze_stopping<'src>(
         ..
     } = settings;
     let file = FileContext::new(source, name, kind, environment);
-    let mut checkers = Checkers::new(
-        rules::all()
-            .into_iter()
-            .filter(|r| selection.enables(r.info.code))
-            .filter_map(|r| r.checker.map(|make| make()))
-            .collect(),
-    );
+    let mut checkers = Checkers::new(checkers_of(selection));
     let mut plain_run = PlainRun {
         lines: Vec::with_capacity(PlainRun::LINES),
     };

@@ -229,32 +229,82 @@ pub struct ModalStep<'a> {
     pub compensated_since: usize,
 }
 
-/// The checker of a [`ModalRule`]. A jump, a block structure (IF, ELSE,
-/// loops, CASE), a subprogram or cycle call or a PROC ends what it knows
-/// (the state is then unknown, so nothing is reported from it); a block
-/// the operator may skip (`/`) makes what it changes unknown; a program
-/// header (`%_N_PART_MPF`) starts over.
-#[derive(Default)]
-pub struct InLineOrder<R> {
+/// A [`ModalRule`] behind a pointer, as [`InLineOrder`] holds every one
+/// selected.
+pub trait ModalCheck {
+    fn reads(&self, file: &FileContext, main: bool) -> bool;
+    fn may_matter(&self, facts: &PlainFacts) -> bool;
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>);
+    /// Another program of the file: what the rule remembers is forgotten.
+    fn restart(&mut self);
+}
+
+impl<R: ModalRule> ModalCheck for R {
+    fn reads(&self, file: &FileContext, main: bool) -> bool {
+        <R as ModalRule>::reads(file, main)
+    }
+
+    fn may_matter(&self, facts: &PlainFacts) -> bool {
+        <R as ModalRule>::may_matter(facts)
+    }
+
+    fn restart(&mut self) {
+        *self = R::default();
+    }
+
+    fn block(&mut self, file: &FileContext, step: &ModalStep, out: &mut Vec<Diagnostic>) {
+        ModalRule::block(self, file, step, out);
+    }
+}
+
+/// The checker of the [`ModalRule`]s, one walk for all of them: the state
+/// is the same whoever reads it, so each block is applied once. A jump, a
+/// block structure (IF, ELSE, loops, CASE), a subprogram or cycle call or a
+/// PROC ends what it knows (the state is then unknown, so nothing is
+/// reported from it); a block the operator may skip (`/`) makes what it
+/// changes unknown; a program header (`%_N_PART_MPF`) starts over. A plain
+/// line is applied where it may matter to a rule that reads the program,
+/// and handed to those alone: a line that cannot matter to a rule changes
+/// nothing that rule follows, so its state is the one it would keep alone.
+pub struct InLineOrder {
     /// The program a header started is a main program; `None` before any
     /// header.
     header_main: Option<bool>,
     modal: Modal,
     /// The 0-based line of the compensation in force.
     compensated_since: usize,
-    rule: R,
+    rules: Vec<Box<dyn ModalCheck>>,
+    /// Which of `rules` read the program now: set at each header.
+    reading: Vec<bool>,
     /// A plain line's words, the buffer kept from line to line.
     words: Vec<Address>,
 }
 
-impl<R: ModalRule> InLineOrder<R> {
-    fn reads(&self, file: &FileContext) -> bool {
-        let main = self.header_main.unwrap_or(file.kind == ProgramKind::Main);
-        R::reads(file, main)
+impl InLineOrder {
+    pub fn new(rules: Vec<Box<dyn ModalCheck>>) -> Self {
+        Self {
+            header_main: None,
+            modal: Modal::default(),
+            compensated_since: 0,
+            reading: Vec::new(),
+            rules,
+            words: Vec::new(),
+        }
     }
 
-    /// One block that keeps the line order; `frames` is its tree when it
-    /// may hold frame statements (more than address words).
+    /// Whether any rule reads the program now; which do, kept.
+    fn reads(&mut self, file: &FileContext) -> bool {
+        if self.reading.len() != self.rules.len() {
+            let main = self.header_main.unwrap_or(file.kind == ProgramKind::Main);
+            self.reading = self.rules.iter().map(|r| r.reads(file, main)).collect();
+        }
+        self.reading.contains(&true)
+    }
+
+    /// One block that keeps the line order, handed to the rules `to` takes;
+    /// `frames` is its tree when it may hold frame statements (more than
+    /// address words).
+    #[allow(clippy::too_many_arguments)]
     fn step(
         &mut self,
         file: &FileContext,
@@ -262,6 +312,7 @@ impl<R: ModalRule> InLineOrder<R> {
         frames: Option<&Block>,
         addresses: &[Address],
         skippable: bool,
+        to: impl Fn(&dyn ModalCheck) -> bool,
         out: &mut Vec<Diagnostic>,
     ) {
         let source = file.source;
@@ -279,7 +330,14 @@ impl<R: ModalRule> InLineOrder<R> {
             after,
             compensated_since: self.compensated_since,
         };
-        self.rule.block(file, &step, out);
+        for (rule, _) in self
+            .rules
+            .iter_mut()
+            .zip(&self.reading)
+            .filter(|(rule, &reading)| reading && to(rule.as_ref()))
+        {
+            rule.block(file, &step, out);
+        }
         if skippable {
             self.modal.may_have_run(after);
         } else {
@@ -291,18 +349,20 @@ impl<R: ModalRule> InLineOrder<R> {
     }
 }
 
-impl<R: ModalRule> Check for InLineOrder<R> {
+impl Check for InLineOrder {
     fn sees(&self) -> Sees {
         Sees::HEADERS | Sees::BLOCKS | Sees::PLAIN_LINES
     }
 
     /// Another program of the file.
     fn header(&mut self, file: &FileContext, _row: usize, name: Span) {
-        *self = Self {
-            header_main: Some(starts_main_program(file.source, name)),
-            words: std::mem::take(&mut self.words),
-            ..Self::default()
-        };
+        self.header_main = Some(starts_main_program(file.source, name));
+        self.modal = Modal::default();
+        self.compensated_since = 0;
+        self.reading.clear();
+        for rule in &mut self.rules {
+            rule.restart();
+        }
     }
 
     fn block(&mut self, file: &FileContext, at: &BlockAt, out: &mut Vec<Diagnostic>) {
@@ -317,7 +377,8 @@ impl<R: ModalRule> Check for InLineOrder<R> {
             return;
         }
         let frames = (!line.plain).then_some(block);
-        self.step(file, at.row, frames, addresses, block.skip.is_some(), out);
+        let skippable = block.skip.is_some();
+        self.step(file, at.row, frames, addresses, skippable, |_| true, out);
     }
 
     fn plain_lines(&mut self, file: &FileContext, lines: &[PlainLine], out: &mut Vec<Diagnostic>) {
@@ -331,13 +392,19 @@ impl<R: ModalRule> Check for InLineOrder<R> {
                 self.modal = Modal::default(); // a subprogram call
                 continue;
             }
-            if !R::may_matter(facts) {
+            let matters = |rule: &dyn ModalCheck| rule.may_matter(facts);
+            let matters_to_one = self
+                .rules
+                .iter()
+                .zip(&self.reading)
+                .any(|(rule, &reading)| reading && matters(rule.as_ref()));
+            if !matters_to_one {
                 continue;
             }
             let mut words = std::mem::take(&mut self.words);
             addresses::of_plain_into(source, line.raw.content, &mut words);
             // A skippable block (`/N10 ...`) is never a plain line.
-            self.step(file, line.row, None, &words, false, out);
+            self.step(file, line.row, None, &words, false, matters, out);
             self.words = words;
         }
     }

@@ -7,8 +7,8 @@ use std::collections::BTreeSet;
 
 use crate::diagnostic::{Diagnostic, RuleInfo};
 pub use crate::lint::readers::{
-    AtEnd, BlockWords, EachBlock, FromProgramStart, FromStart, InLineOrder, ModalRule, ModalStep,
-    Moves, OnModel, Words,
+    AtEnd, BlockWords, EachBlock, FromProgramStart, FromStart, InLineOrder, ModalCheck, ModalRule,
+    ModalStep, Moves, OnModel, Words,
 };
 use crate::semantic::jumps::Target;
 use crate::semantic::labels::Labels;
@@ -208,9 +208,18 @@ pub trait Check {
     fn finish(&mut self, _file: &FileContext, _out: &mut Vec<Diagnostic>) {}
 }
 
-/// A rule with the checker that implements it; rules whose findings come
-/// from the parser or the CYCLE600 walk have none.
+/// A rule with the checker that implements it.
 pub struct Rule {
     pub info: &'static RuleInfo,
-    pub checker: Option<fn() -> Box<dyn Check>>,
+    pub checking: Checking,
+}
+
+/// How a rule's findings are made.
+pub enum Checking {
+    /// Elsewhere: by the parser, the CYCLE600 walk, the suppressions.
+    Elsewhere,
+    /// By a checker of its own.
+    Own(fn() -> Box<dyn Check>),
+    /// By the one [`InLineOrder`] walk every selected modal rule shares.
+    InLineOrder(fn() -> Box<dyn ModalCheck>),
 }

@@ -36,31 +36,38 @@ pub mod undefined_variable;
 pub mod unused_suppression;
 pub mod unused_variable;
 
-use crate::lint::rule::{AtEnd, Check, EachBlock, FromStart, InLineOrder, Rule};
+use crate::lint::rule::{AtEnd, Check, Checking, EachBlock, FromStart, ModalCheck, Rule};
 
 fn checker<C: Check + Default + 'static>() -> Box<dyn Check> {
     Box::new(C::default())
 }
 
+fn modal_checker<C: ModalCheck + Default + 'static>() -> Box<dyn ModalCheck> {
+    Box::new(C::default())
+}
+
 /// The rules of the modules named, each module's `Checker` its checker:
 /// `in` names the checker that reads the program for it (`AtEnd`,
-/// `EachBlock`, `FromStart`, `InLineOrder`), `: none` says that its findings come from
-/// elsewhere (the suppressions).
+/// `EachBlock`, `FromStart`; `InLineOrder`, one for all its rules), `: none`
+/// says that its findings come from elsewhere (the suppressions).
 macro_rules! rules {
     ($($module:ident $(in $reader:ident)? $(: $none:ident)?,)*) => {
         vec![$(Rule {
             info: &$module::RULE,
-            checker: rules!(@checker $module $($reader)? $(: $none)?),
+            checking: rules!(@checking $module $($reader)? $(: $none)?),
         },)*]
     };
-    (@checker $module:ident : none) => {
-        None
+    (@checking $module:ident : none) => {
+        Checking::Elsewhere
     };
-    (@checker $module:ident) => {
-        Some(checker::<$module::Checker>)
+    (@checking $module:ident InLineOrder) => {
+        Checking::InLineOrder(modal_checker::<$module::Checker>)
     };
-    (@checker $module:ident $reader:ident) => {
-        Some(checker::<$reader<$module::Checker>>)
+    (@checking $module:ident) => {
+        Checking::Own(checker::<$module::Checker>)
+    };
+    (@checking $module:ident $reader:ident) => {
+        Checking::Own(checker::<$reader<$module::Checker>>)
     };
 }
 
@@ -104,7 +111,7 @@ pub fn all() -> Vec<Rule> {
     ];
     rules.extend(crate::registry::ALL.iter().map(|&info| Rule {
         info,
-        checker: None,
+        checking: Checking::Elsewhere,
     }));
     rules.sort_by_key(|r| r.info.code);
     rules
