@@ -2432,7 +2432,9 @@ fn force_exclude_leaves_out_files_named_that_exclude_matches() {
     let output = run(&["check", "--format", "short", old], b"");
     assert_exit(&output, 0);
     // A file that does not exist is matched as its path reads, however
-    // spelt (`dir/./old`, `//dir` on Unix): left out, never a crash.
+    // spelt (`dir/./old`, `//dir`): left out on Unix, never a crash. (On
+    // Windows the path as typed may not begin as the folder's resolved
+    // name does: the file is then taken, and is not found.)
     let gone = dir.join(".").join("old").join("GONE.MPF");
     let mut spellings = vec![gone.to_str().expect("utf-8").to_owned()];
     if cfg!(unix) {
@@ -2440,8 +2442,15 @@ fn force_exclude_leaves_out_files_named_that_exclude_matches() {
     }
     for gone in &spellings {
         let output = run(&["check", "--format", "short", gone], b"");
-        assert_exit(&output, 0);
         let stderr = String::from_utf8_lossy(&output.stderr);
+        if cfg!(windows) {
+            assert!(
+                matches!(output.status.code(), Some(0 | 2)),
+                "{gone}: {stderr}"
+            );
+            continue;
+        }
+        assert_exit(&output, 0);
         assert!(
             stderr.contains("is excluded (force-exclude)"),
             "{gone}: {stderr}"

@@ -352,6 +352,63 @@ fn skipping_plain_lines_changes_no_finding() {
     }
 }
 
+/// The modal rules (N028, N030, N031) walk the blocks together: their
+/// findings together are those of each walking alone, on every fixture,
+/// every program of the outside corpus and a file of several programs with
+/// lines only one of them reads (an M alone, a G the others ignore), calls,
+/// skippable blocks and structures.
+#[test]
+fn the_modal_rules_together_find_what_each_finds_alone() {
+    const MODAL: [&str; 3] = ["N028", "N030", "N031"];
+    let several = b"%_N_FIRST_MPF\nG17 G41 G1 X10 Y10 F100\nM3 S100\nTRAORI\nG18 X20\nM30\n\
+%_N_SUB_SPF\nG42 G1 X0 F10\n/ G40 X1\nG19 X2\nL100\nG18 X3\nIF R1 == 1\nG17\nENDIF\nM2\n\
+%_N_SECOND_MPF\nG91 G42 X1 F100\nM5\nTRANS X10\nN10 G1 X1\nG18 Y2\nM30\n";
+    let mut sources: Vec<(String, Vec<u8>)> = vec![("SEVERAL.MPF".into(), several.to_vec())];
+    let mut files = support::files_below(&support::repo().join("tests/fixtures"));
+    files.extend(support::corpus_files());
+    for path in &files {
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        sources.push((name.into(), std::fs::read(path).expect("readable")));
+    }
+    let findings = |name: &str, source: &[u8], select: &[&str]| -> Vec<(usize, &str, String)> {
+        let settings = lint::Settings {
+            selection: Selection {
+                select: select.iter().map(|code| code.to_string()).collect(),
+                ..Selection::default()
+            },
+            ..lint::Settings::default()
+        };
+        let kind = program_kind(Some(name), source);
+        lint::check(source, name, kind, &settings)
+            .into_iter()
+            .filter(|d| MODAL.contains(&d.code()))
+            .map(|d| (d.span.start, d.code(), d.message.clone()))
+            .collect()
+    };
+    let mut found = 0;
+    for (name, source) in &sources {
+        let together = findings(name, source, &MODAL);
+        let mut alone: Vec<(usize, &str, String)> = MODAL
+            .iter()
+            .flat_map(|code| findings(name, source, &[code]))
+            .collect();
+        alone.sort();
+        let mut sorted = together.clone();
+        sorted.sort();
+        assert_eq!(sorted, alone, "{name}");
+        found += together.len();
+    }
+    // The file of several programs finds each rule.
+    let several = findings("SEVERAL.MPF", several, &MODAL);
+    for code in MODAL {
+        assert!(
+            several.iter().any(|(_, c, _)| *c == code),
+            "{code}: {several:?}"
+        );
+    }
+    assert!(found >= 10, "{found}");
+}
+
 /// The editor's analysis makes the CYCLE600 walk beside the line pass, on a
 /// model of its own: its findings are the command line's, on every fixture
 /// and every program of the outside corpus.

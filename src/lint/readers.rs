@@ -264,8 +264,9 @@ impl<R: ModalRule> ModalCheck for R {
 /// reported from it); a block the operator may skip (`/`) makes what it
 /// changes unknown; a program header (`%_N_PART_MPF`) starts over. A plain
 /// line is applied where it may matter to a rule that reads the program,
-/// and handed to those alone: a line that cannot matter to a rule changes
-/// nothing that rule follows, so its state is the one it would keep alone.
+/// and handed to those alone. Every [`ModalRule`] keeps the promise that
+/// makes this the state it would follow alone: a line that cannot matter
+/// to it (`may_matter`) changes nothing of the state it reads.
 pub struct InLineOrder {
     /// The program a header started is a main program; `None` before any
     /// header.
@@ -274,7 +275,8 @@ pub struct InLineOrder {
     /// The 0-based line of the compensation in force.
     compensated_since: usize,
     rules: Vec<Box<dyn ModalCheck>>,
-    /// Which of `rules` read the program now: set at each header.
+    /// Which of `rules` read the program now: cleared at each header,
+    /// found again at the next block or plain line.
     reading: Vec<bool>,
     /// A plain line's words, the buffer kept from line to line.
     words: Vec<Address>,

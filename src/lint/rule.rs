@@ -208,7 +208,7 @@ pub trait Check {
     fn finish(&mut self, _file: &FileContext, _out: &mut Vec<Diagnostic>) {}
 }
 
-/// A rule with the checker that implements it.
+/// A rule and how its findings are made.
 pub struct Rule {
     pub info: &'static RuleInfo,
     pub checking: Checking,

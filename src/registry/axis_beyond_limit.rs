@@ -17,7 +17,8 @@ point through the settable frame (G54..G599 from `$P_UIFR`), the programmable fr
 ATRANS, ROT, AROT) and the tool's length (`$TC_DP3` of the active T and D along the plane's infeed
 axis). An arc is checked at its ends and at the points where an axis turns inside it; a straight
 move (G0 as G1) reaches its furthest points at its ends, except under TRAORI, where the linear
-axes follow curves as the tool turns and the way is sampled and its extremes searched. A modulo
+axes follow curves as the tool turns and the way (along the arc, for G2/G3) is sampled and its
+extremes searched. A modulo
 rotary axis (MD30310) has no limits. `sinuprep check` and the language server report it too where
 a machine is given (`--machine`, `machine` in sinuprep.toml): for a program up to 10 MB, run on its
 own (the subprograms it calls are `sinuprep run`'s to follow).

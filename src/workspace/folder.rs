@@ -119,9 +119,17 @@ pub(crate) fn settings_in(dir: &Path) -> Result<Option<PathBuf>, SettingsError> 
 /// reads it (`.SPF` alone is a hidden file's name, no subprogram); the
 /// extension is tested on the bytes first, so most names cost a compare.
 fn subprogram_stem(name: &OsStr) -> Option<&OsStr> {
+    name_ends_with(name, b".SPF")
+        .then(|| Path::new(name).file_stem())
+        .flatten()
+}
+
+/// Whether `name` is longer than `end` and ends in it, in any case; by its
+/// bytes, never a cut of the name (a multi-byte character at its end is no
+/// boundary to slice a `&str` at).
+pub(crate) fn name_ends_with(name: &OsStr, end: &[u8]) -> bool {
     let bytes = name.as_encoded_bytes();
-    let spf = bytes.len() > 4 && bytes[bytes.len() - 4..].eq_ignore_ascii_case(b".spf");
-    spf.then(|| Path::new(name).file_stem()).flatten()
+    bytes.len() > end.len() && bytes[bytes.len() - end.len()..].eq_ignore_ascii_case(end)
 }
 
 /// The entries a run takes: links only when it follows them.

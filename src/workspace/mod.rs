@@ -806,14 +806,8 @@ pub fn definitions_beside(program: &Path) -> Vec<PathBuf> {
         Some(folder) => folder,
         None => return Vec::new(),
     };
-    // By the bytes' end (`_DEF`, `.DEF`), never a cut of the name: a name
-    // ending in a multi-byte character is no boundary to slice at.
     let is_definitions = |name: &std::ffi::OsStr| {
-        let bytes = name.as_encoded_bytes();
-        bytes.len() > 4 && {
-            let end = &bytes[bytes.len() - 4..];
-            end.eq_ignore_ascii_case(b"_DEF") || end.eq_ignore_ascii_case(b".DEF")
-        }
+        folder::name_ends_with(name, b"_DEF") || folder::name_ends_with(name, b".DEF")
     };
     let mut found = Vec::new();
     let folders = [

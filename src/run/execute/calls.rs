@@ -241,7 +241,7 @@ impl Interpreter<'_, '_> {
         };
         let Some((start, end)) = section.filter(|(start, end)| start <= end) else {
             self.unknown(row, span, "REPEAT's label is not found where the control searches it: the control stops with an alarm here".into());
-            return Flow::End;
+            return Flow::Stop;
         };
         if self.stack.len() + 1 >= MOST_LEVELS {
             self.unknown(

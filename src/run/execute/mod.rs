@@ -139,7 +139,8 @@ pub fn run(
 enum Flow {
     Next,
     To(usize),
-    /// The program level ends (a subprogram returns).
+    /// The program level ends: a subprogram returns, a main program
+    /// ends the run.
     End,
     /// The control stops with an alarm: the run ends.
     Stop,
@@ -1002,7 +1003,7 @@ impl<'a, 'src> Interpreter<'a, 'src> {
                     "the jump's target is not found: the control stops with an alarm here"
                         .to_string(),
                 );
-                Flow::End
+                Flow::Stop
             }
         }
     }

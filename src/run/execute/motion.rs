@@ -467,16 +467,23 @@ impl Interpreter<'_, '_> {
             }
             _ => None,
         };
-        let turning = way_start
+        let turn = way_start
             .as_deref()
-            .is_some_and(|from| self.rotary_axes_turn(from, &end, suppress, way));
+            .map(|from| self.block_turn(from, &end, suppress, way))
+            .unwrap_or_default();
+        let turning = turn.turns();
+        let from_unknown_angles = match (&self.transformed, &way_start) {
+            (Some(transformed), Some(from)) => !transformed.rotary_known(from),
+            _ => false,
+        };
+        if programmed_arc.is_some() && from_unknown_angles {
+            self.unknown(row, span, "an arc under TRAORI from rotary axes whose positions are unknown offline: its way is taken with the axes at the block's end".into());
+        }
         let arc = match &programmed_arc {
             Some(arc) if self.transformed.is_none() => {
                 Some(self.arc_on_machine(row, span, arc, suppress, tool))
             }
-            Some(arc) if !turning => {
-                self.transformed_arc_on_machine(row, span, arc, &end, suppress, tool)
-            }
+            Some(arc) if !turning => self.arc_on_machine_at(row, span, arc, &end, suppress, tool),
             _ => None,
         };
         self.last_arc = arc;
@@ -490,7 +497,7 @@ impl Interpreter<'_, '_> {
                 self.unknown(row, span, "G0 under TRAORI after RTLIOF: the run takes the tip on the line between the block's ends, where the control may move the machine axes each on its own".into());
             }
             let tip_arc = programmed_arc.as_ref().filter(|_| turning);
-            points.extend(self.transformed_way(from, &end, suppress, tool, way, tip_arc));
+            points.extend(self.transformed_way(from, &end, suppress, tool, &turn, tip_arc));
         }
         if let Some(arc) = &arc {
             for k in 0..3 {
@@ -504,8 +511,9 @@ impl Interpreter<'_, '_> {
                 }
             }
         }
-        // The tool tip's way under TRAORI: its arc, or the line between the
-        // block's ends.
+        // The tool tip's way under TRAORI: its arc (where a frame or tool
+        // changed since its programmed start, without the shift the sampled
+        // way spreads over it), or the line between the block's ends.
         let tip = way_start.as_deref().map(|from| match &programmed_arc {
             Some(arc) => self.tip_arc_length(arc, suppress),
             None => self.tip_way(from, &end, suppress),
@@ -725,7 +733,7 @@ impl Interpreter<'_, '_> {
     }
 
     /// `arc`, programmed, in the machine: the frames turn and shift it, the
-    /// tool shifts it.
+    /// tool shifts it. Without TRAORI every point has a machine position.
     pub(super) fn arc_on_machine(
         &mut self,
         row: usize,
@@ -734,21 +742,17 @@ impl Interpreter<'_, '_> {
         suppress: bool,
         tool: [f64; 3],
     ) -> Arc {
-        let on_machine = arc_through(arc, |p| {
-            let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
-            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
-            Some(self.to_machine(&wcs, suppress, tool))
-        })
-        .unwrap_or(*arc);
-        self.ellipse_named(row, span, &on_machine);
-        on_machine
+        let origin = vec![Some(0.0); self.setup.axes.len()];
+        self.arc_on_machine_at(row, span, arc, &origin, suppress, tool)
+            .unwrap_or(*arc)
     }
 
-    /// Under TRAORI, `arc` (the tool tip's, programmed) in the machine while
-    /// the rotary axes stand at their positions in `at` (programmed): the
-    /// frames and the chain at fixed angles are an affine map, so the
-    /// holder too moves on an arc (an ellipse under unequal scales). `None` where a rotary axis's position is unknown.
-    pub(super) fn transformed_arc_on_machine(
+    /// `arc` (under TRAORI the tool tip's, programmed) in the machine, the
+    /// other axes at their positions in `at` (programmed): the frames, and
+    /// under TRAORI the chain at the rotary axes' fixed angles, are an
+    /// affine map, so the holder too moves on an arc (an ellipse under
+    /// unequal scales). `None` where a rotary axis's position is unknown.
+    pub(super) fn arc_on_machine_at(
         &mut self,
         row: usize,
         span: Span,
@@ -757,11 +761,7 @@ impl Interpreter<'_, '_> {
         suppress: bool,
         tool: [f64; 3],
     ) -> Option<Arc> {
-        let on_machine = arc_through(arc, |p| {
-            let mut wcs = at.to_vec();
-            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
-            Some(self.to_machine(&wcs, suppress, tool))
-        })?;
+        let on_machine = arc_through(arc, at, |p| self.to_machine(p, suppress, tool))?;
         self.ellipse_named(row, span, &on_machine);
         Some(on_machine)
     }
@@ -769,12 +769,9 @@ impl Interpreter<'_, '_> {
     /// The length of `arc` (programmed) through the frames: the tool tip's
     /// way under TRAORI, which the feed is programmed for.
     pub(super) fn tip_arc_length(&self, arc: &Arc, suppress: bool) -> f64 {
-        arc_through(arc, |p| {
-            let mut wcs: Vec<Option<f64>> = vec![Some(0.0); self.setup.axes.len()];
-            wcs[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
-            Some(self.frames_only(&wcs, suppress))
-        })
-        .map_or(arc.length(), |tip| tip.length())
+        let origin = vec![Some(0.0); self.setup.axes.len()];
+        arc_through(arc, &origin, |p| self.frames_only(p, suppress))
+            .map_or(arc.length(), |tip| tip.length())
     }
 
     /// Unequal scales make the circle an ellipse: its extremes are still
@@ -913,12 +910,19 @@ pub(super) fn plane_axes(plane: usize) -> (usize, usize) {
 }
 
 /// `arc` through the affine map `map` (a point's coordinates, every run
-/// axis, from its geometry axes): the centre mapped, its directions as the
-/// map moves them from the origin. `None` where the map leaves a geometry
-/// coordinate unknown.
-fn arc_through(arc: &Arc, map: impl Fn(Vector3<f64>) -> Option<Vec<Option<f64>>>) -> Option<Arc> {
+/// axis, from a programmed point: `base` with the arc's point on the
+/// geometry axes): the centre mapped, its directions as the map moves them
+/// from the origin. `None` where the map leaves a geometry coordinate
+/// unknown.
+fn arc_through(
+    arc: &Arc,
+    base: &[Option<f64>],
+    map: impl Fn(&[Option<f64>]) -> Vec<Option<f64>>,
+) -> Option<Arc> {
     let point = |p: Vector3<f64>| -> Option<Vector3<f64>> {
-        let at = map(p)?;
+        let mut programmed = base.to_vec();
+        programmed[..3].copy_from_slice(&[Some(p.x), Some(p.y), Some(p.z)]);
+        let at = map(&programmed);
         Some(Vector3::new(at[0]?, at[1]?, at[2]?))
     };
     let origin = point(Vector3::zeros())?;

@@ -59,7 +59,7 @@ impl Default for Turning {
 }
 
 /// Said once a run that transforms: what the model rests on.
-const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line, or on the arc of G2/G3, and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn or of an arc's sweep (64 evenly at most, as many again where a great circle turns them faster) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends (on an arc whose rotary axes stand still, from the holder's arc, as without TRAORI); of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
+const ASSUMED: &str = "TRAORI: the kinematics of the swivel data record MD24582 names (MD24100 type 72), the tool tip kept on the programmed point through the frames, the rotary axes at their programmed positions, the tool's length along its turned direction; between a block's ends the tip on the line, or on the arc of G2/G3, and the rotary axes turning linearly where their positions are programmed; where a vector is, the tool turning on the great circle between its directions (ORIWKS, the basic setting, with MD21104 0 or not in the data; ORIVECT, G group 51's default, or ORIPLANE with MD21104 1), the axes at the solution nearest their linear way, or each axis linearly (ORIMKS; ORIAXES with MD21104 1); the limits checked along each block at a point every 4 degrees of the rotary axes' turn (64 evenly at most, as many again where a great circle turns them faster; on an arc whose axes turn, every 4 degrees of its sweep too, whatever its length) and at the extremes between them; a block's time from the tip's way at the feed, each axis's share of it from the block's ends (on an arc whose rotary axes stand still, from the holder's arc, as without TRAORI); of two rotary positions for an orientation vector (A3, B3, C3), one inside the record's limits whose farther axis turns less, then whose axes turn less together (the control's choice is in no Siemens text found)";
 
 /// A transformed block is sampled at a point every this many degrees of
 /// its rotary axes' turn or of its arc's sweep, before the extremes
@@ -88,6 +88,11 @@ impl Transformed {
     pub(super) fn carrier(&self, at: &[Option<f64>]) -> Option<Carrier> {
         let [a, b] = self.axes;
         Some(Carrier::at(&self.record, [at[a]?, at[b]?]))
+    }
+
+    /// Whether both rotary axes' positions are known in `at`.
+    pub(super) fn rotary_known(&self, at: &[Option<f64>]) -> bool {
+        self.axes.iter().all(|&k| at[k].is_some())
     }
 
     /// The larger turn of the rotary axes from `p` to `q` (degrees; 0
@@ -248,40 +253,27 @@ impl Interpreter<'_, '_> {
         }
     }
 
-    /// How far the rotary axes turn along a transformed block from `start`
-    /// to `end` (programmed; degrees, 0 where they stand still), and the
-    /// great circle they turn the tool on where they do so.
-    fn turning(
+    /// How the rotary axes turn along a transformed block from `start` to
+    /// `end` (programmed).
+    pub(super) fn block_turn(
         &self,
         start: &[Option<f64>],
         end: &[Option<f64>],
         suppress: bool,
         way: Way,
-    ) -> (f64, Option<GreatCircle>) {
+    ) -> BlockTurn {
         let Some(transformed) = &self.transformed else {
-            return (0.0, None);
+            return BlockTurn::default();
         };
         let circle = match way {
             Way::GreatCircle => self.great_circle(transformed, start, end, suppress),
             Way::Axes => None,
         };
         let turn = transformed.turn(start, end);
-        let turn = circle
+        let degrees = circle
             .as_ref()
             .map_or(turn, |c| turn.max(c.angle.to_degrees()));
-        (turn, circle)
-    }
-
-    /// Whether the rotary axes turn along a transformed block (more than
-    /// [`STANDING`]).
-    pub(super) fn rotary_axes_turn(
-        &self,
-        start: &[Option<f64>],
-        end: &[Option<f64>],
-        suppress: bool,
-        way: Way,
-    ) -> bool {
-        self.turning(start, end, suppress, way).0 > STANDING
+        BlockTurn { degrees, circle }
     }
 
     /// The machine positions along a transformed block from `start` to
@@ -296,10 +288,14 @@ impl Interpreter<'_, '_> {
         end: &[Option<f64>],
         suppress: bool,
         tool: [f64; 3],
-        way: Way,
+        turn: &BlockTurn,
         arc: Option<&Arc>,
     ) -> Vec<Vec<Option<f64>>> {
-        let (turn, circle) = self.turning(start, end, suppress, way);
+        let BlockTurn {
+            degrees: turn,
+            circle,
+        } = turn;
+        let turn = *turn;
         // The tip on the arc, from where the machine stands: where a frame
         // or the tool changed since the arc's programmed start, the way
         // there is spread over the block, so that it starts at `start`.
@@ -458,6 +454,23 @@ impl Interpreter<'_, '_> {
             (Some(a), Some(b)) => (b - a).norm(),
             _ => 0.0,
         }
+    }
+}
+
+/// How the rotary axes turn along a transformed block.
+#[derive(Default)]
+pub(super) struct BlockTurn {
+    /// The larger turn of the two axes, or of the tool on its great
+    /// circle: degrees, 0 where a position is unknown.
+    degrees: f64,
+    /// The great circle the tool turns on, where it does.
+    circle: Option<GreatCircle>,
+}
+
+impl BlockTurn {
+    /// Whether the axes turn (more than [`STANDING`]).
+    pub(super) fn turns(&self) -> bool {
+        self.degrees > STANDING
     }
 }
 
