@@ -909,19 +909,7 @@ fn calls_nested_past_the_program_levels_stop_the_run() {
         std::fs::write(dir.join(name), text).expect("write");
     }
     for main in ["SELF.MPF", "NUMBER.MPF", "SECTION.MPF"] {
-        let json = command(
-            &[
-                "run",
-                "--machine",
-                dir.join("MACHINE.INI").to_str().expect("utf-8"),
-                "--format",
-                "json",
-                "--blocks",
-                dir.join(main).to_str().expect("utf-8"),
-            ],
-            b"",
-        );
-        let report: serde_json::Value = serde_json::from_str(&stdout(&json)).expect("JSON");
+        let report = run_program_with_blocks(&dir, main);
         let blocks = report["blocks"].as_array().expect("blocks").len();
         assert!(blocks < 1_000, "{main}: {blocks} blocks");
         let whys: Vec<&str> = report["unknown"]
@@ -1223,6 +1211,11 @@ fn every_real_program_runs_without_a_panic() {
 
 /// `run --format json --blocks` of `MAIN.MPF` on `MACHINE.INI` in `dir`.
 fn run_with_blocks(dir: &std::path::Path) -> serde_json::Value {
+    run_program_with_blocks(dir, "MAIN.MPF")
+}
+
+/// `run --format json --blocks` of `main` on `MACHINE.INI` in `dir`.
+fn run_program_with_blocks(dir: &std::path::Path, main: &str) -> serde_json::Value {
     let json = command(
         &[
             "run",
@@ -1231,7 +1224,7 @@ fn run_with_blocks(dir: &std::path::Path) -> serde_json::Value {
             "--format",
             "json",
             "--blocks",
-            dir.join("MAIN.MPF").to_str().expect("utf-8"),
+            dir.join(main).to_str().expect("utf-8"),
         ],
         b"",
     );
@@ -1721,12 +1714,7 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
     let mut numbers = Numbers(900);
     for k in &oracle_kinematics() {
         for case in 0..16 {
-            let g54 = [
-                numbers.between(-200.0, 200.0),
-                numbers.between(-200.0, 200.0),
-                numbers.between(-300.0, -100.0),
-            ];
-            let length = numbers.between(50.0, 150.0);
+            let (g54, length) = g54_and_tool_length(&mut numbers);
             let mut point = || {
                 (
                     [
@@ -1744,16 +1732,7 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
                 numbers.between(-40.0, 40.0),
                 numbers.between(0.0, 30.0),
             ];
-            let data = |limits: &str| {
-                five_axis(&format!(
-                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n$MC_ORI_IPO_WITH_G_CODE=1\n\
-$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
-                    record_text(k),
-                    g54[0],
-                    g54[1],
-                    g54[2]
-                ))
-            };
+            let data = |limits: &str| traori_machine(k, g54, length, limits);
             let names = [rotary_name(k, 0), rotary_name(k, 1)];
             let mut program = String::from("G54 T1 D1 M6\nTRAORI ORIAXES\n");
             for (p, angles) in &points {
@@ -1827,16 +1806,7 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 }
             }
             limits_found_at_the_extremes(&dry, lowest, highest, &what);
-            for a in 0..3 {
-                let travel = &report.axes[a];
-                assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
-                assert_near(
-                    travel.max.expect("max"),
-                    highest[a],
-                    1e-6,
-                    &format!("{what} axis {a} {program}"),
-                );
-            }
+            travel_is(&report, lowest, highest, &format!("{what} {program}"));
         }
     }
 }
@@ -1854,12 +1824,7 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
     let mut numbers = Numbers(1100);
     for k in &oracle_kinematics() {
         for case in 0..10 {
-            let g54 = [
-                numbers.between(-200.0, 200.0),
-                numbers.between(-200.0, 200.0),
-                numbers.between(-300.0, -100.0),
-            ];
-            let length = numbers.between(50.0, 150.0);
+            let (g54, length) = g54_and_tool_length(&mut numbers);
             // A full circle (the end its start), and two turns more (TURN=2).
             let (full, turns) = (case == 8, u32::from(case == 9) * 2);
             let start = [
@@ -1920,16 +1885,7 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
                 program.push_str(&format!(" TURN={turns}"));
             }
             program.push_str(" F600\nM30\n");
-            let data = |limits: &str| {
-                five_axis(&format!(
-                    "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n$MC_ORI_IPO_WITH_G_CODE=1\n\
-$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
-                    record_text(k),
-                    g54[0],
-                    g54[1],
-                    g54[2]
-                ))
-            };
+            let data = |limits: &str| traori_machine(k, g54, length, limits);
             let dry = |limits: &str| dry_run_ends(&data(limits), &program);
             let (report, ends) = dry("");
             let what = format!("{} case {case}: {program}{:?}", k.letter, report.unknown);
@@ -1964,11 +1920,7 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 lowest[a] = lowest[a].min(m[a]);
                 highest[a] = highest[a].max(m[a]);
             }
-            for a in 0..3 {
-                let travel = &report.axes[a];
-                assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
-                assert_near(travel.max.expect("max"), highest[a], 1e-6, &what);
-            }
+            travel_is(&report, lowest, highest, &what);
             limits_found_at_the_extremes(&dry, lowest, highest, &what);
             // The tip's way along the circle at 600 mm/min, with no more
             // than a start and a stop (the first block, from an unknown
@@ -1980,6 +1932,48 @@ $P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$T
                 report.time_s
             );
         }
+    }
+}
+
+/// A G54 of the oracle's TRAORI tests and the tool's length.
+fn g54_and_tool_length(numbers: &mut Numbers) -> ([f64; 3], f64) {
+    let g54 = [
+        numbers.between(-200.0, 200.0),
+        numbers.between(-200.0, 200.0),
+        numbers.between(-300.0, -100.0),
+    ];
+    (g54, numbers.between(50.0, 150.0))
+}
+
+/// The five-axis machine with TRAORI on the record of `k` (ORIAXES by
+/// MD21104), `g54` and a tool of `length`; `limits` lines of data first.
+fn traori_machine(k: &Kinematic, g54: [f64; 3], length: f64, limits: &str) -> String {
+    five_axis(&format!(
+        "{limits}{}CHANDATA(1)\n$MC_TRAFO_TYPE_1=72\n$MC_TRAFO5_TCARR_NO_1=1\n$MC_ORI_IPO_WITH_G_CODE=1\n\
+$P_UIFR[1,X,TR]={}\n$P_UIFR[1,Y,TR]={}\n$P_UIFR[1,Z,TR]={}\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
+        record_text(k),
+        g54[0],
+        g54[1],
+        g54[2]
+    ))
+}
+
+/// The run's travel of X1, Y1, Z1 is `lowest`..`highest`, to 1e-6.
+fn travel_is(report: &Report, lowest: [f64; 3], highest: [f64; 3], what: &str) {
+    for a in 0..3 {
+        let travel = &report.axes[a];
+        assert_near(
+            travel.min.expect("min"),
+            lowest[a],
+            1e-6,
+            &format!("{what} axis {a}"),
+        );
+        assert_near(
+            travel.max.expect("max"),
+            highest[a],
+            1e-6,
+            &format!("{what} axis {a}"),
+        );
     }
 }
 
@@ -2123,11 +2117,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             seen(next.1);
             previous = next;
         }
-        for a in 0..3 {
-            let travel = &report.axes[a];
-            assert_near(travel.min.expect("min"), lowest[a], 1e-6, &what);
-            assert_near(travel.max.expect("max"), highest[a], 1e-6, &what);
-        }
+        travel_is(&report, lowest, highest, &what);
     }
 }
 

@@ -300,13 +300,8 @@ impl Interpreter<'_, '_> {
         // or the tool changed since the arc's programmed start, the way
         // there is spread over the block, so that it starts at `start`.
         let on_arc = arc.map(|arc| {
-            let from = Vector3::new(
-                start[0].unwrap_or(0.0),
-                start[1].unwrap_or(0.0),
-                start[2].unwrap_or(0.0),
-            );
             let shift = match start[..3] {
-                [Some(_), Some(_), Some(_)] => from - arc.point(0.0),
+                [Some(x), Some(y), Some(z)] => Vector3::new(x, y, z) - arc.point(0.0),
                 _ => Vector3::zeros(),
             };
             (arc, shift)
