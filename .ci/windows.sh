@@ -14,7 +14,11 @@ target=x86_64-pc-windows-gnu
 if ! rustup target list --installed | grep -qx "$target"; then
   rustup target add "$target"
 fi
-cargo build --release --locked --target "$target"
+# One release build: the command-line tests' (tests/cli.rs, tests/files.rs),
+# whose binary is also the one run by hand below. A separate `cargo build`
+# would compile the crate and half its dependencies a second time (the test
+# build's dev-dependencies unify other features), about 3.5 minutes.
+cargo test --release --locked --target "$target" --test cli --test files --no-run
 out="target/$target/release"
 x86_64-w64-mingw32-gcc -shared -o "$out/bcryptprimitives.dll" .ci/bcryptprimitives.c -ladvapi32
 
@@ -50,13 +54,11 @@ set -e
 [[ $status -eq 1 ]] || { echo "check exited $status, not 1"; exit 1; }
 grep -q "N022_trigger.mpf:2:12: error\[N022\]" "$scratch/check.txt"
 
-# The command-line tests, built in the release profile so that they reuse
-# the build above (a debug build of every dependency would take minutes
-# more), run by Wine (cargo's runner for the target). Each test executable
-# and the binary it runs need the stub DLL beside them. What Wine cannot run
-# (symbolic links, FIFOs, modes and owners) is left out in the tests, by
-# `cfg`, each with its reason.
-cargo test --release --locked --target "$target" --test cli --test files --no-run
+# The command-line tests, built above in the release profile (a debug build
+# of every dependency would take minutes more), run by Wine (cargo's runner
+# for the target). Each test executable and the binary it runs need the stub
+# DLL beside them. What Wine cannot run (symbolic links, FIFOs, modes and
+# owners) is left out in the tests, by `cfg`, each with its reason.
 cp "$out/bcryptprimitives.dll" "$out/deps/"
 CARGO_TARGET_X86_64_PC_WINDOWS_GNU_RUNNER=wine \
   cargo test --release --locked --target "$target" --test cli --test files

@@ -319,7 +319,9 @@ fn assert_shortcut_agrees(name: &str, source: &[u8]) {
     assert_eq!(fast, reference, "{name}");
 }
 
-/// The findings of `check` and of `check` parsing every line, all rules on.
+/// The findings of `check` and of `check` parsing every line, all rules on;
+/// `check` with the lines read ahead on a thread of their own must find
+/// what parsing every line finds.
 fn on_both_paths(
     source: impl AsRef<[u8]>,
     name: &str,
@@ -336,7 +338,48 @@ fn on_both_paths(
     let fast = lint::check(source, name, kind, &settings);
     let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
     let reference = lint::check_with(every_line, source, name, kind, &settings);
+    let ahead = lint::check_read_ahead(source, name, kind, &settings);
+    assert_eq!(ahead, reference, "{name}: the lines read ahead");
     (fast, reference)
+}
+
+/// The lines of a large program are read on a thread of their own, ahead
+/// of the rules: the findings are those of every line parsed in turn, in a
+/// program past the size that reads ahead, in batches whose boundaries fall
+/// anywhere (a call left open across lines among them), and in one that
+/// defines a macro halfway (the lines after it are read here, with it:
+/// `syntax::ahead`'s own tests show the hand-over).
+#[test]
+fn reading_the_lines_ahead_changes_no_finding() {
+    let cycles = "POCKET{n}:\n_Z=0\nWHILE _Z>-5\n_Z=_Z-0.5\nIF R{r}>_Z*2\n\
+G1 X=R{r}+10 Y=R{r}*0.5 Z=_Z F800\nELSE\nG1 X10 Y20 Z=_Z F400\nENDIF\nENDWHILE\n\
+CYCLE81(10, 0, 2, , -5\n, 1)\nIF _N<3 GOTOB POCKET{n}\nG1 X=UNDEFINED_{n} Y2 Y3\nL{sub}\n";
+    let mut large = String::from("DEF REAL _Z\nDEF INT _N\n");
+    let mut n = 0;
+    while large.len() < 300 * 1024 {
+        n += 1;
+        let lines = cycles
+            .replace("{n}", &n.to_string())
+            .replace("{r}", &(n % 99 + 1).to_string())
+            .replace("{sub}", &(n % 7 + 100).to_string());
+        large.push_str(&lines);
+        // A line more now and then: the batches' boundaries move.
+        if n % 3 == 0 {
+            large.push_str("N10 G1 X1\n");
+        }
+    }
+    large.push_str("M30\n");
+    let (fast, reference) = on_both_paths(&large, "LARGE.MPF");
+    assert_eq!(fast, reference);
+    assert!(reference.len() > 1000, "{}", reference.len());
+
+    let mut with_macro = String::from("R1=_SPEED\n");
+    with_macro.push_str(&"G1 X1 Y2\nR1=R2+1\n".repeat(400));
+    with_macro.push_str("DEFINE _SPEED AS 1000\n");
+    with_macro.push_str(&"R1=_SPEED\nG1 X1 Y2\nR1=R2+1\n".repeat(400));
+    with_macro.push_str("M30\n");
+    let (fast, reference) = on_both_paths(&with_macro, "MACRO.MPF");
+    assert_eq!(fast, reference);
 }
 
 /// Plain lines (`N10 G1 X5`) skip the parser and most rules: that must change
@@ -507,7 +550,9 @@ proptest::proptest! {
         }
         let every_line = sinuprep::syntax::plain::PlainScanner::ParseEveryLine;
         let reference = lint::check_with(every_line, source.as_bytes(), "RANDOM.MPF", kind, &settings);
-        proptest::prop_assert_eq!(found, reference);
+        let ahead = lint::check_read_ahead(source.as_bytes(), "RANDOM.MPF", kind, &settings);
+        proptest::prop_assert_eq!(&found, &reference);
+        proptest::prop_assert_eq!(ahead, reference);
     }
 
     /// Control bytes are blanks to the parser: a plain line's M words end

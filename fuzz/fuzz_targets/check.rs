@@ -1,5 +1,6 @@
 //! Linting never panics, every finding points inside the input, and the
-//! plain-line shortcut finds exactly what parsing every line finds; every
+//! plain-line shortcut and the lines read ahead on a thread of their own
+//! find exactly what parsing every line finds; every
 //! finding renders in the human and short formats, also where the input's
 //! first line starts 70,000 columns further right (past miette's 16 bits).
 #![no_main]
@@ -7,7 +8,7 @@
 use libfuzzer_sys::fuzz_target;
 use sinuprep::cli::render::{human, short, FileReport};
 use sinuprep::diagnostic::Diagnostic;
-use sinuprep::lint::{check, check_with, Settings};
+use sinuprep::lint::{check, check_read_ahead, check_with, Settings};
 use sinuprep::span::Span;
 use sinuprep::semantic::Heads;
 use sinuprep::syntax::plain::PlainScanner;
@@ -27,6 +28,7 @@ fuzz_target!(|data: &[u8]| {
     let every_line = PlainScanner::ParseEveryLine;
     let reference = check_with(every_line, data, "FUZZ.MPF", kind, &settings);
     assert_eq!(findings, reference);
+    assert_eq!(check_read_ahead(data, "FUZZ.MPF", kind, &settings), reference);
     for finding in &findings {
         assert!(
             finding.span.start <= finding.span.end && finding.span.end <= data.len(),

@@ -128,7 +128,7 @@ impl<'src> Model<'src> {
                     plain.clear();
                     let tree = builder.parse(raw);
                     builder.learn(&LineView::new(&tree));
-                    builder.keep(tree);
+                    drop(builder.keep(tree));
                 }
             }
         }
@@ -486,6 +486,22 @@ impl<'src> ModelBuilder<'src> {
         tree
     }
 
+    /// The next line, one that is not plain, parsed ahead of the model
+    /// (see [`crate::syntax::ahead`]): its syntax error kept.
+    pub fn parsed(&mut self, tree: Line, error: Option<Diagnostic>) -> Line {
+        debug_assert!(self.macros.is_empty(), "lines with macros are parsed here");
+        self.table.record_other(tree.raw.content.start);
+        self.row += 1;
+        self.syntax.extend(error);
+        tree
+    }
+
+    /// The parser the lines read ahead leave (see [`crate::syntax::ahead`]):
+    /// the model parses the next lines with it.
+    pub fn parse_on_with(&mut self, parser: LineParser) {
+        self.parser = parser;
+    }
+
     /// What the line just parsed defines, reads and marks.
     pub fn learn(&mut self, view: &LineView) {
         let row = self.row - 1;
@@ -568,21 +584,26 @@ impl<'src> ModelBuilder<'src> {
 
     /// Keeps the tree of the line just parsed for the passes after this one
     /// (if the builder keeps trees; passes asking for a line not kept parse it).
+    /// A tree not kept is given back, to be dropped where the caller says
+    /// (the thread that made it: see [`crate::syntax::ahead`]).
     /// Inlined: a tree is a few hundred bytes, copied on every call.
     #[inline]
-    pub fn keep(&mut self, line: Line) {
-        if self.keep_trees {
-            let statements = match &line.kind {
-                LineKind::Block(block) => block.statements.len(),
-                _ => 0,
-            };
-            self.kept += std::mem::size_of::<(usize, Line)>()
-                + statements * std::mem::size_of::<Statement>()
-                + TREE_BYTES_PER_BYTE * line.raw.content.len();
-            if self.kept <= KEPT_TREE_BYTES {
-                self.table.keep(line);
-            }
+    pub fn keep(&mut self, line: Line) -> Option<Line> {
+        if !self.keep_trees {
+            return Some(line);
         }
+        let statements = match &line.kind {
+            LineKind::Block(block) => block.statements.len(),
+            _ => 0,
+        };
+        self.kept += std::mem::size_of::<(usize, Line)>()
+            + statements * std::mem::size_of::<Statement>()
+            + TREE_BYTES_PER_BYTE * line.raw.content.len();
+        if self.kept > KEPT_TREE_BYTES {
+            return Some(line);
+        }
+        self.table.keep(line);
+        None
     }
 
     pub fn finish(self, kind: ProgramKind) -> Model<'src> {

@@ -6,6 +6,7 @@
 //! `print(parse(x)) == x` for every input. This layer knows spelling only:
 //! no values, no rotations.
 
+pub mod ahead;
 pub(crate) mod block;
 pub mod clean;
 mod errors;

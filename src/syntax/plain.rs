@@ -264,11 +264,12 @@ pub fn scanned_lines(source: &[u8]) -> ScannedLines<'_> {
 
 /// [`scanned_lines`], or with [`PlainScanner::ParseEveryLine`] every line parsed.
 pub fn scanned_lines_with(source: &[u8], scan: PlainScanner) -> ScannedLines<'_> {
-    ScannedLines {
-        source,
-        at: 0,
-        scan,
-    }
+    scanned_lines_from(source, 0, scan)
+}
+
+/// [`scanned_lines_with`], from the line that starts at `at`.
+pub fn scanned_lines_from(source: &[u8], at: usize, scan: PlainScanner) -> ScannedLines<'_> {
+    ScannedLines { source, at, scan }
 }
 
 pub struct ScannedLines<'a> {
