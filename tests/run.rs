@@ -1457,20 +1457,20 @@ fn forward(
     k: &Kinematic,
     m: Vector3<f64>,
     angles: [f64; 2],
-    length: f64,
+    tool: Vector3<f64>,
 ) -> (Vector3<f64>, Vector3<f64>) {
     let [l1, l2, l3, _] = k.offsets.map(Vector3::from);
     let (r1, r2) = (
         rodrigues(k.vectors[0], angles[0]),
         rodrigues(k.vectors[1], angles[1]),
     );
-    let tool = Vector3::new(0.0, 0.0, length);
+    let along = tool.normalize();
     match k.letter {
         'T' => {
             let pivot_1 = m - l1;
             let pivot_2 = pivot_1 - r1 * l2;
             let tip = pivot_2 - r1 * r2 * (l3 + tool);
-            (tip, r1 * r2 * Vector3::z())
+            (tip, r1 * r2 * along)
         }
         'P' => {
             // A point x of the workpiece at rest goes to p1 + R1 (p2 - p1 +
@@ -1478,13 +1478,13 @@ fn forward(
             let (p1, p2) = (l2, l2 + l3);
             let tip = m - tool;
             let x = p2 + r2.transpose() * (r1.transpose() * (tip - p1) - (p2 - p1));
-            (x, (r1 * r2).transpose() * Vector3::z())
+            (x, (r1 * r2).transpose() * along)
         }
         _ => {
             // Axis 1 turns the head about its pivot, axis 2 the table about its own.
             let tip = m - l1 - r1 * (l2 + tool);
             let x = l3 + r2.transpose() * (tip - l3);
-            (x, r2.transpose() * r1 * Vector3::z())
+            (x, r2.transpose() * r1 * along)
         }
     }
 }
@@ -1664,7 +1664,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
             for (i, p) in points.iter().enumerate() {
                 let names = [rotary_name(k, 0), rotary_name(k, 1)];
                 let (m, turned) = holder_at(&ends, 4 + i, names);
-                let (tip, tool) = forward(k, m, turned, length);
+                let (tip, tool) = forward(k, m, turned, along_z(length));
                 let expected = Vector3::from(g54)
                     + Vector3::from(zero)
                     + plane * (Vector3::from(after) + Vector3::from(trans) + Vector3::from(*p));
@@ -1685,13 +1685,12 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
 /// Where `forward` puts the holder for the tool tip on the workpiece's
 /// point `x` with the rotary axes at `angles`: its chain solved for the
 /// holder, in closed form.
-fn holder(k: &Kinematic, x: Vector3<f64>, angles: [f64; 2], length: f64) -> Vector3<f64> {
+fn holder(k: &Kinematic, x: Vector3<f64>, angles: [f64; 2], tool: Vector3<f64>) -> Vector3<f64> {
     let [l1, l2, l3, _] = k.offsets.map(Vector3::from);
     let (r1, r2) = (
         rodrigues(k.vectors[0], angles[0]),
         rodrigues(k.vectors[1], angles[1]),
     );
-    let tool = Vector3::new(0.0, 0.0, length);
     match k.letter {
         'T' => x + l1 + r1 * l2 + r1 * r2 * (l3 + tool),
         'P' => {
@@ -1700,6 +1699,21 @@ fn holder(k: &Kinematic, x: Vector3<f64>, angles: [f64; 2], length: f64) -> Vect
         }
         _ => l3 + r2 * (x - l3) + l1 + r1 * (l2 + tool),
     }
+}
+
+/// The tool of `length` in plane G17: along Z.
+fn along_z(length: f64) -> Vector3<f64> {
+    tool_in_plane(length, 0)
+}
+
+/// The tool of `length` in plane `plane` (0: G17, 1: G18, 2: G19): along
+/// the plane's infeed axis, Z, Y or X. A change of plane turns the tool's
+/// length and its basic orientation alike (Function Manual Basic
+/// Functions W1, "Basic tool orientation").
+fn tool_in_plane(length: f64, plane: usize) -> Vector3<f64> {
+    let mut tool = Vector3::zeros();
+    tool[[2, 1, 0][plane]] = length;
+    tool
 }
 
 /// TRAORI with the kinematics of a swivel data record (MD24100 type 72,
@@ -1759,7 +1773,7 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
                 let (m, turned) = holder_at(&ends, 3 + i, names);
                 assert_near(turned[0], angles[0], 1e-12, &what);
                 assert_near(turned[1], angles[1], 1e-12, &what);
-                let (tip, _) = forward(k, m, turned, length);
+                let (tip, _) = forward(k, m, turned, along_z(length));
                 let expected = Vector3::from(g54) + Vector3::from(*p);
                 assert!(
                     (tip - expected).norm() < 1e-9,
@@ -1768,7 +1782,7 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
             }
             // A direction by its vector: the tool along it, the tip on the point.
             let (m, turned) = holder_at(&ends, 5, names);
-            let (tip, tool) = forward(k, m, turned, length);
+            let (tip, tool) = forward(k, m, turned, along_z(length));
             let expected = Vector3::from(g54) + Vector3::from(last);
             assert!(
                 (tip - expected).norm() < 1e-9,
@@ -1796,8 +1810,8 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
                         + (Vector3::from(to) - Vector3::from(from)) * s;
                     let angles =
                         [0, 1].map(|j| from_angles[j] + (to_angles[j] - from_angles[j]) * s);
-                    let m = holder(k, x, angles, length);
-                    let (tip, _) = forward(k, m, angles, length);
+                    let m = holder(k, x, angles, along_z(length));
+                    let (tip, _) = forward(k, m, angles, along_z(length));
                     assert!((tip - x).norm() < 1e-9, "the oracle's own round trip");
                     for a in 0..3 {
                         lowest[a] = lowest[a].min(m[a]);
@@ -1811,8 +1825,9 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
     }
 }
 
-/// An arc (G2, G3, a helix too) under TRAORI: the tool tip on the circle
-/// through G54, the rotary axes standing still or turning linearly
+/// An arc (G2, G3, a helix too) under TRAORI, in each plane (G17, G18,
+/// G19), its centre given by the plane's I, J, K or by its radius (CR=):
+/// the tool tip on the circle through G54, the rotary axes standing still or turning linearly
 /// (ORIAXES); the run's travel of each machine axis is the one a fine
 /// sampling of the independent chain along the circle finds (a full
 /// circle and a helix of two turns more among them), a limit just inside
@@ -1848,32 +1863,54 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
             } else {
                 from_angles
             };
-            let centre = [start[0] + offset[0], start[1] + offset[1]];
+            // The plane: its first axis, its second, the one across it.
+            let plane = case % 3;
+            let [first, second, across] = [[0, 1, 2], [2, 0, 1], [1, 2, 0]][plane];
+            // The radius alone (CR=, negative past a half circle) where the
+            // end and the radius name the circle.
+            let by_radius = case == 1 || case == 5;
+            let centre = [start[first] + offset[0], start[second] + offset[1]];
             let radius = offset[0].hypot(offset[1]);
             let phase = (-offset[1]).atan2(-offset[0]);
             let direction = if clockwise { -1.0 } else { 1.0 };
             let tip = |s: f64| {
                 let angle = phase + direction * sweep * s;
-                Vector3::new(
-                    centre[0] + radius * angle.cos(),
-                    centre[1] + radius * angle.sin(),
-                    start[2] + rise * s,
-                )
+                let mut tip = Vector3::from(start);
+                tip[first] = centre[0] + radius * angle.cos();
+                tip[second] = centre[1] + radius * angle.sin();
+                tip[across] = start[across] + rise * s;
+                tip
             };
             let end = tip(1.0);
             let names = [rotary_name(k, 0), rotary_name(k, 1)];
             let mut program = format!(
-                "G54 T1 D1 M6\nTRAORI ORIAXES\nG1 X{} Y{} Z{} {}{} {}{} F1000\n",
-                start[0], start[1], start[2], names[0], from_angles[0], names[1], from_angles[1]
+                "G54 G{} T1 D1 M6\nTRAORI ORIAXES\nG1 X{} Y{} Z{} {}{} {}{} F1000\n",
+                17 + plane,
+                start[0],
+                start[1],
+                start[2],
+                names[0],
+                from_angles[0],
+                names[1],
+                from_angles[1]
             );
+            let centre_words = match by_radius {
+                true if sweep > std::f64::consts::PI => format!("CR=-{radius}"),
+                true => format!("CR={radius}"),
+                false => {
+                    let letters = ["I", "J", "K"];
+                    format!(
+                        "{}{} {}{}",
+                        letters[first], offset[0], letters[second], offset[1]
+                    )
+                }
+            };
             program.push_str(&format!(
-                "G{} X{} Y{} Z{} I{} J{}",
+                "G{} X{} Y{} Z{} {centre_words}",
                 if clockwise { 2 } else { 3 },
                 end.x,
                 end.y,
                 end.z,
-                offset[0],
-                offset[1]
             ));
             if turning {
                 program.push_str(&format!(
@@ -1896,7 +1933,8 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
             let (m, turned) = holder_at(&ends, 4, names);
             assert_near(turned[0], to_angles[0], 1e-12, &what);
             assert_near(turned[1], to_angles[1], 1e-12, &what);
-            let (at_end, _) = forward(k, m, turned, length);
+            let tool = tool_in_plane(length, plane);
+            let (at_end, _) = forward(k, m, turned, tool);
             assert!(
                 (at_end - Vector3::from(g54) - end).norm() < 1e-9,
                 "{what}: tip {at_end}"
@@ -1907,7 +1945,7 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
                 let s = f64::from(i) / f64::from(SAMPLES);
                 let x = Vector3::from(g54) + tip(s);
                 let angles = [0, 1].map(|j| from_angles[j] + (to_angles[j] - from_angles[j]) * s);
-                let m = holder(k, x, angles, length);
+                let m = holder(k, x, angles, tool);
                 for a in 0..3 {
                     lowest[a] = lowest[a].min(m[a]);
                     highest[a] = highest[a].max(m[a]);
@@ -2087,7 +2125,7 @@ $TC_DP1[1,1]=120\n$TC_DP3[1,1]={length}\n",
                 "the oracle's own solution"
             );
             let x = Vector3::from(from.0) + (Vector3::from(to.0) - Vector3::from(from.0)) * s;
-            (turned, holder(head, x, turned, length))
+            (turned, holder(head, x, turned, along_z(length)))
         };
         let mut lowest = [f64::INFINITY; 3];
         let mut highest = [f64::NEG_INFINITY; 3];
