@@ -1826,7 +1826,8 @@ fn under_traori_the_tip_stays_on_the_programmed_point() {
 }
 
 /// An arc (G2, G3, a helix too) under TRAORI, in each plane (G17, G18,
-/// G19), its centre given by the plane's I, J, K or by its radius (CR=):
+/// G19), its centre given by the plane's I, J, K, by its radius (CR=) or
+/// by the angle it sweeps (AR=):
 /// the tool tip on the circle through G54, the rotary axes standing still or turning linearly
 /// (ORIAXES); the run's travel of each machine axis is the one a fine
 /// sampling of the independent chain along the circle finds (a full
@@ -1869,6 +1870,8 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
             // The radius alone (CR=, negative past a half circle) where the
             // end and the radius name the circle.
             let by_radius = case == 1 || case == 5;
+            // The angle swept alone (AR=) with the end.
+            let by_angle = case == 3 || case == 7;
             let centre = [start[first] + offset[0], start[second] + offset[1]];
             let radius = offset[0].hypot(offset[1]);
             let phase = (-offset[1]).atan2(-offset[0]);
@@ -1894,10 +1897,11 @@ fn under_traori_an_arc_is_followed_along_its_circle() {
                 names[1],
                 from_angles[1]
             );
-            let centre_words = match by_radius {
-                true if sweep > std::f64::consts::PI => format!("CR=-{radius}"),
-                true => format!("CR={radius}"),
-                false => {
+            let centre_words = match (by_radius, by_angle) {
+                (true, _) if sweep > std::f64::consts::PI => format!("CR=-{radius}"),
+                (true, _) => format!("CR={radius}"),
+                (_, true) => format!("AR={}", sweep.to_degrees()),
+                _ => {
                     let letters = ["I", "J", "K"];
                     format!(
                         "{}{} {}{}",
