@@ -719,6 +719,7 @@ mod tests {
         let settings = Settings::default();
         let kind = ProgramKind::Main;
         // The lines read here and ahead: the same questions at the same lines.
+        let mut questions_here = None;
         for ahead in [ReadAhead::Never, ReadAhead::Always] {
             let until = |stop: Stop| {
                 let walk = Walk::Here;
@@ -735,6 +736,7 @@ mod tests {
             };
             let whole = until(&never).expect("never told to stop");
             let questions = asked.load(Relaxed);
+            assert_eq!(*questions_here.get_or_insert(questions), questions);
             let complete = analyze_program(source, "BIG.MPF", kind, &settings);
             assert_eq!(whole.findings, complete.findings);
             assert_eq!(whole.walk.map(|w| w.calls.len()), Some(1));

@@ -15,7 +15,7 @@
 //! the analysis itself, as without this module.
 
 use std::sync::mpsc::{channel, sync_channel, Receiver, Sender, SyncSender};
-use std::thread::Scope;
+use std::thread::{Scope, ScopedJoinHandle};
 
 use super::plain::{scanned_lines_from, Plain, PlainScanner, Scanned, ScannedLines};
 use super::tree::{Line, LineKind, StatementKind};
@@ -42,6 +42,11 @@ pub enum Read {
 /// than the line's parse.
 const BATCH: usize = 256;
 
+/// Bytes of parsed lines in a batch, at most (give or take a line): a tree
+/// is some 50 bytes a byte of its line, and a batch of 256 long lines
+/// would otherwise hold hundreds of megabytes.
+const BATCH_BYTES: usize = 16 * 1024;
+
 /// Batches read ahead and not yet taken, at most: enough to cover the
 /// analysis's slower lines, few enough to hold little memory.
 const BATCHES_AHEAD: usize = 8;
@@ -66,7 +71,8 @@ pub fn pays(source: &[u8]) -> bool {
     for sample in 0..SAMPLES {
         let from = source.len() / SAMPLES * sample;
         // From the next line's start.
-        let Some(start) = memchr::memchr(b'\n', &source[from..]).map(|n| from + n + 1) else {
+        let Some(start) = memchr::memchr2(b'\n', b'\r', &source[from..]).map(|n| from + n + 1)
+        else {
             continue;
         };
         for line in scanned_lines_from(source, start, PlainScanner::Scan).take(LINES) {
@@ -85,13 +91,13 @@ fn has_a_core_to_spare() -> bool {
 }
 
 /// The lines of `source`, in order, as [`Read`]s.
-pub struct ReadLines<'src> {
+pub struct ReadLines<'src, 'scope> {
     source: &'src [u8],
     scan: PlainScanner,
-    from: From<'src>,
+    from: From<'src, 'scope>,
 }
 
-enum From<'src> {
+enum From<'src, 'scope> {
     /// Read here, line by line.
     Here(ScannedLines<'src>),
     /// Read ahead: the batch being taken, and the channel of the next ones.
@@ -101,6 +107,9 @@ enum From<'src> {
         /// The trees taken and done with, sent back to be dropped.
         spent: Vec<Line>,
         back: Sender<Vec<Line>>,
+        /// The thread, joined once its channel closes: a panic there is
+        /// raised again here, with its message.
+        thread: Option<ScopedJoinHandle<'scope, ()>>,
     },
 }
 
@@ -111,7 +120,7 @@ enum Message {
     Handover { parser: LineParser, at: usize },
 }
 
-impl<'src> ReadLines<'src> {
+impl<'src, 'scope> ReadLines<'src, 'scope> {
     /// Every line read here, by the analysis.
     pub fn here(source: &'src [u8], scan: PlainScanner) -> Self {
         Self {
@@ -121,19 +130,21 @@ impl<'src> ReadLines<'src> {
         }
     }
 
-    /// The lines read ahead on a thread of `scope`. The thread ends when the
-    /// lines do, or soon after this is dropped (an analysis stopped).
-    pub fn ahead<'scope>(
-        scope: &'scope Scope<'scope, '_>,
-        source: &'src [u8],
-        scan: PlainScanner,
-    ) -> Self
+    /// The lines read ahead on a thread of `scope` (here, where no thread
+    /// can be made). The thread ends when the lines do, or soon after this
+    /// is dropped (an analysis stopped).
+    pub fn ahead(scope: &'scope Scope<'scope, '_>, source: &'src [u8], scan: PlainScanner) -> Self
     where
         'src: 'scope,
     {
         let (sender, next) = sync_channel(BATCHES_AHEAD);
         let (back, spent) = channel();
-        scope.spawn(move || read_ahead(source, scan, &sender, &spent));
+        let thread = std::thread::Builder::new()
+            .name("sinuprep-lines-ahead".into())
+            .spawn_scoped(scope, move || read_ahead(source, scan, &sender, &spent));
+        let Ok(thread) = thread else {
+            return Self::here(source, scan);
+        };
         Self {
             source,
             scan,
@@ -142,6 +153,7 @@ impl<'src> ReadLines<'src> {
                 next,
                 spent: Vec::with_capacity(BATCH),
                 back,
+                thread: Some(thread),
             },
         }
     }
@@ -159,7 +171,7 @@ impl<'src> ReadLines<'src> {
     }
 }
 
-impl Iterator for ReadLines<'_> {
+impl Iterator for ReadLines<'_, '_> {
     type Item = Read;
 
     fn next(&mut self) -> Option<Read> {
@@ -168,12 +180,24 @@ impl Iterator for ReadLines<'_> {
                 Scanned::Plain(plain) => Read::Plain(plain),
                 Scanned::Other(raw) => Read::Other(raw),
             }),
-            From::Ahead { batch, next, .. } => loop {
+            From::Ahead {
+                batch,
+                next,
+                thread,
+                ..
+            } => loop {
                 if let Some(read) = batch.next() {
                     return Some(read);
                 }
-                // A closed channel: every line was sent.
-                match next.recv().ok()? {
+                let Ok(message) = next.recv() else {
+                    // A closed channel: every line was sent, or the thread
+                    // panicked.
+                    if let Some(Err(panic)) = thread.take().map(ScopedJoinHandle::join) {
+                        std::panic::resume_unwind(panic);
+                    }
+                    return None;
+                };
+                match message {
                     Message::Lines(lines) => *batch = lines.into_iter(),
                     Message::Handover { parser, at } => {
                         self.from = From::Here(scanned_lines_from(self.source, at, self.scan));
@@ -195,6 +219,7 @@ fn read_ahead(
 ) {
     let mut parser = LineParser::default();
     let mut batch = Vec::with_capacity(BATCH);
+    let mut bytes = 0;
     for line in scanned_lines_from(source, 0, scan) {
         match line {
             Scanned::Plain(plain) => {
@@ -202,6 +227,7 @@ fn read_ahead(
                 batch.push(Read::Plain(plain));
             }
             Scanned::Other(raw) => {
+                bytes += raw.content.len();
                 let (line, error) = parser.parse_line(source, raw);
                 let defines = defines_a_macro(&line);
                 batch.push(Read::Parsed(line, error));
@@ -215,7 +241,8 @@ fn read_ahead(
                 }
             }
         }
-        if batch.len() == BATCH {
+        if batch.len() == BATCH || bytes >= BATCH_BYTES {
+            bytes = 0;
             spent.try_iter().for_each(drop);
             let full = std::mem::replace(&mut batch, Vec::with_capacity(BATCH));
             if sender.send(Message::Lines(full)).is_err() {
@@ -300,14 +327,13 @@ mod tests {
     }
 
     #[test]
-    fn a_stopped_analysis_ends_the_thread() {
-        let source = "R1=2\n".repeat(BATCH * (BATCHES_AHEAD + 4));
-        std::thread::scope(|scope| {
-            let mut lines = ReadLines::ahead(scope, source.as_bytes(), PlainScanner::Scan);
-            assert!(lines.next().is_some());
-            // Dropped with the thread blocked on a full channel: the scope
-            // returns, so the thread ended.
-        });
+    fn lines_longer_than_a_batch_holds_all_come_in_order() {
+        let line = format!("R1={}\n", "1+".repeat(2_000) + "1");
+        let source = line.repeat(40);
+        let (kinds, starts) = read(source.as_bytes());
+        assert_eq!(kinds, "T".repeat(40));
+        let expected: Vec<usize> = (0..40).map(|n| n * line.len()).collect();
+        assert_eq!(starts, expected);
     }
 
     #[test]
@@ -318,5 +344,7 @@ mod tests {
         assert_eq!(pays(hand_written.as_bytes()), spare);
         assert!(!pays(cam.as_bytes()));
         assert!(!pays(&hand_written.as_bytes()[..AHEAD_FROM - 1]));
+        // Lines that end in a carriage return alone are sampled as well.
+        assert_eq!(pays(hand_written.replace('\n', "\r").as_bytes()), spare);
     }
 }
