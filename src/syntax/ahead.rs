@@ -174,6 +174,9 @@ impl<'src, 'scope> ReadLines<'src, 'scope> {
 impl Iterator for ReadLines<'_, '_> {
     type Item = Read;
 
+    // Inlined into the line pass, so that a CAM program's millions of
+    // plain lines are built where they are read, not copied there.
+    #[inline(always)]
     fn next(&mut self) -> Option<Read> {
         match &mut self.from {
             From::Here(lines) => lines.next().map(|line| match line {
