@@ -59,8 +59,9 @@ pub const AHEAD_FROM: usize = 256 * 1024;
 /// lines are parsed (read from a few samples across it). The lines of a CAM
 /// program are nearly all plain: their scan is quick, and moving each to the
 /// other thread would cost more than it saves (1.8 times the time of 10 MB
-/// read here, where hand-written cycles take 0.68 times; `farm-bench` of
-/// `check` on the throughput bench's inputs).
+/// read here, where hand-written cycles take 0.68 times: whole-process
+/// timings of `check` on the throughput bench's inputs, the two builds in
+/// alternation).
 pub fn pays(source: &[u8]) -> bool {
     const SAMPLES: usize = 4;
     const LINES: usize = 256;
